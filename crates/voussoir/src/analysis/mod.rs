@@ -1,0 +1,7 @@
+//! Analyses: each is a composition of the structure, the kinematic map and the two LP forms.
+
+pub mod limit;
+pub mod settlement;
+
+pub use limit::{limit, LimitResult, LimitStatus};
+pub use settlement::{settle, SettlementResult, SettlementStatus};

@@ -1,0 +1,150 @@
+//! The kinematic map: one sparse assembly shared by every analysis.
+//!
+//! Blocks carry DOFs `d = (u_i, v_i, θ_i)` at their centroids (`3·i … 3·i+2`). For every
+//! collocation point `k` of a joint between bodies `a` and `b` (normal `n` from `a` into `b`,
+//! tangent `t = (−n_y, n_x)`), the jump `[u] = u_b(x) − u_a(x)` gives
+//!
+//! ```text
+//!   opening  u_n,k = N_k d + g_n,k      (≥ 0: the paper's (63), with A = −N)
+//!   sliding  u_t,k = T_k d + g_t,k      (= 0: the paper's (64))
+//! ```
+//! where `g` collects the prescribed motions of supports (the paper's (65), `C d = û0`, folded
+//! into the joint rows of block–support joints). The transposes are the equilibrium operators:
+//! a compressive normal force `p_n,k ≥ 0` on `b` along `+n` and a shear `p_t,k` along `+t` give
+//! block resultants `Nᵀ p_n + Tᵀ p_t`, so that equilibrium reads `F + Nᵀ p_n + Tᵀ p_t = 0`.
+
+use crate::geometry::{cross, small_displacement, sub};
+use crate::structure::{Body, Structure};
+use sprs::{CsMat, TriMat};
+
+/// A collocation point in the global numbering: joint index and point index in the joint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PointRef {
+    pub joint: usize,
+    pub index: usize,
+}
+
+/// The assembled kinematic map of a structure.
+#[derive(Clone, Debug)]
+pub struct KinematicMap {
+    pub num_dofs: usize,
+    pub points: Vec<PointRef>,
+    /// Opening rows `N` (points × DOFs), CSR.
+    pub normal: CsMat<f64>,
+    /// Sliding rows `T` (points × DOFs), CSR.
+    pub tangent: CsMat<f64>,
+    /// Opening caused by prescribed support motions at each point.
+    pub support_normal: Vec<f64>,
+    /// Sliding caused by prescribed support motions at each point.
+    pub support_tangent: Vec<f64>,
+    /// Whether each point belongs to a bilateral (fixed-support) joint.
+    pub bilateral: Vec<bool>,
+    /// Current gap of each point (0 for a point in contact).
+    pub gap: Vec<f64>,
+    /// First global point of each joint (length `joints + 1`).
+    pub joint_start: Vec<usize>,
+}
+
+impl KinematicMap {
+    pub fn new(st: &Structure) -> KinematicMap {
+        let num_dofs = 3 * st.blocks.len();
+        let npts: usize = st.joints.iter().map(|j| j.points.len()).sum();
+        let mut tn = TriMat::with_capacity((npts, num_dofs), 6 * npts);
+        let mut tt = TriMat::with_capacity((npts, num_dofs), 6 * npts);
+        let mut points = Vec::with_capacity(npts);
+        let mut support_normal = Vec::with_capacity(npts);
+        let mut support_tangent = Vec::with_capacity(npts);
+        let mut bilateral = Vec::with_capacity(npts);
+        let mut gap = Vec::with_capacity(npts);
+        let mut joint_start = Vec::with_capacity(st.joints.len() + 1);
+        for (j, joint) in st.joints.iter().enumerate() {
+            joint_start.push(points.len());
+            let n = joint.normal;
+            let t = joint.tangent();
+            for (k, p) in joint.points.iter().enumerate() {
+                let row = points.len();
+                let (mut gn, mut gt) = (0.0, 0.0);
+                for (body, sign) in [(joint.a, -1.0), (joint.b, 1.0)] {
+                    match body {
+                        Body::Block(i) => {
+                            let r = sub(p.x, st.blocks[i].centroid);
+                            for (tri, dir) in [(&mut tn, n), (&mut tt, t)] {
+                                tri.add_triplet(row, 3 * i, sign * dir[0]);
+                                tri.add_triplet(row, 3 * i + 1, sign * dir[1]);
+                                tri.add_triplet(row, 3 * i + 2, sign * cross(r, dir));
+                            }
+                        }
+                        Body::Support(s) => {
+                            let sp = &st.supports[s];
+                            let u = small_displacement(sp.centroid, sp.motion, p.x);
+                            gn += sign * (n[0] * u[0] + n[1] * u[1]);
+                            gt += sign * (t[0] * u[0] + t[1] * u[1]);
+                        }
+                    }
+                }
+                points.push(PointRef { joint: j, index: k });
+                support_normal.push(gn);
+                support_tangent.push(gt);
+                bilateral.push(joint.bilateral);
+                gap.push(p.gap);
+            }
+        }
+        joint_start.push(points.len());
+        KinematicMap {
+            num_dofs,
+            points,
+            normal: tn.to_csr(),
+            tangent: tt.to_csr(),
+            support_normal,
+            support_tangent,
+            bilateral,
+            gap,
+            joint_start,
+        }
+    }
+
+    pub fn num_points(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Row `k` of `N` (or `T`) as `(dof, value)` pairs.
+    pub fn row(m: &CsMat<f64>, k: usize) -> Vec<(usize, f64)> {
+        m.outer_view(k).map(|v| v.iter().map(|(c, &x)| (c, x)).collect()).unwrap_or_default()
+    }
+
+    /// Openings `N d + s·g_n` and slidings `T d + s·g_t` for block DOFs `d`, with the support
+    /// motions scaled by `s` (1 for the motions as prescribed, 0 to ignore them).
+    pub fn jumps(&self, d: &[f64], s: f64) -> (Vec<f64>, Vec<f64>) {
+        let apply = |m: &CsMat<f64>, g: &[f64]| -> Vec<f64> {
+            (0..self.num_points())
+                .map(|k| {
+                    let mut v = s * g[k];
+                    if let Some(row) = m.outer_view(k) {
+                        for (c, &x) in row.iter() {
+                            v += x * d[c];
+                        }
+                    }
+                    v
+                })
+                .collect()
+        };
+        (apply(&self.normal, &self.support_normal), apply(&self.tangent, &self.support_tangent))
+    }
+
+    /// `Nᵀ p_n + Tᵀ p_t`: block resultants of point forces.
+    pub fn resultants(&self, pn: &[f64], pt: &[f64]) -> Vec<f64> {
+        let mut f = vec![0.0; self.num_dofs];
+        for k in 0..self.num_points() {
+            for (m, p) in [(&self.normal, pn[k]), (&self.tangent, pt[k])] {
+                if p != 0.0 {
+                    if let Some(row) = m.outer_view(k) {
+                        for (c, &x) in row.iter() {
+                            f[c] += x * p;
+                        }
+                    }
+                }
+            }
+        }
+        f
+    }
+}

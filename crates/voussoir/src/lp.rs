@@ -1,0 +1,280 @@
+//! A solver-neutral sparse linear program and its HiGHS backend.
+//!
+//! ```text
+//!   optimise  cᵀx   (minimise or maximise)
+//!   s.t.      row_lower ≤ A x ≤ row_upper
+//!             col_lower ≤ x   ≤ col_upper
+//! ```
+//! `A` is stored by columns (CSC). Every analysis in voussoir builds one of these and hands it to
+//! [`solve`]; the backend is HiGHS (dual simplex by default, so that mechanisms are vertex
+//! solutions with crisp hinges).
+
+use crate::error::{Error, Result};
+use highs::{ColProblem, HighsModelStatus, Sense};
+use serde::{Deserialize, Serialize};
+
+/// Optimisation sense.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    Minimise,
+    Maximise,
+}
+
+/// A sparse LP in column form.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct LinearProgram {
+    pub maximise: bool,
+    pub cost: Vec<f64>,
+    pub col_lower: Vec<f64>,
+    pub col_upper: Vec<f64>,
+    pub row_lower: Vec<f64>,
+    pub row_upper: Vec<f64>,
+    pub col_start: Vec<usize>,
+    pub row_index: Vec<usize>,
+    pub value: Vec<f64>,
+}
+
+impl LinearProgram {
+    pub fn new(direction: Direction) -> Self {
+        LinearProgram {
+            maximise: direction == Direction::Maximise,
+            col_start: vec![0],
+            ..Default::default()
+        }
+    }
+    /// Add a row `lo ≤ a·x ≤ hi` (its entries come with the columns); returns its index.
+    pub fn add_row(&mut self, lo: f64, hi: f64) -> usize {
+        self.row_lower.push(lo);
+        self.row_upper.push(hi);
+        self.row_lower.len() - 1
+    }
+    /// Add a column with its cost, bounds and `(row, value)` entries; returns its index.
+    pub fn add_column(&mut self, cost: f64, lo: f64, hi: f64, entries: impl IntoIterator<Item = (usize, f64)>) -> usize {
+        self.cost.push(cost);
+        self.col_lower.push(lo);
+        self.col_upper.push(hi);
+        for (r, v) in entries {
+            if v != 0.0 {
+                self.row_index.push(r);
+                self.value.push(v);
+            }
+        }
+        self.col_start.push(self.row_index.len());
+        self.cost.len() - 1
+    }
+    pub fn num_cols(&self) -> usize {
+        self.cost.len()
+    }
+    pub fn num_rows(&self) -> usize {
+        self.row_lower.len()
+    }
+    pub fn num_nonzeros(&self) -> usize {
+        self.value.len()
+    }
+    /// Entries of column `j`.
+    pub fn column(&self, j: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
+        (self.col_start[j]..self.col_start[j + 1]).map(move |k| (self.row_index[k], self.value[k]))
+    }
+    /// `A x` (row activities).
+    pub fn row_activity(&self, x: &[f64]) -> Vec<f64> {
+        let mut r = vec![0.0; self.num_rows()];
+        for (j, &xj) in x.iter().enumerate() {
+            if xj != 0.0 {
+                for (i, v) in self.column(j) {
+                    r[i] += v * xj;
+                }
+            }
+        }
+        r
+    }
+}
+
+/// What the solver concluded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LpStatus {
+    Optimal,
+    Infeasible,
+    Unbounded,
+}
+
+/// The LP method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Method {
+    /// Dual simplex: vertex solutions (crisp hinges). The default.
+    #[default]
+    DualSimplex,
+    /// Primal simplex.
+    PrimalSimplex,
+    /// Interior point followed by crossover to a vertex.
+    Ipm,
+    /// Let HiGHS choose.
+    Choose,
+}
+
+/// Solver settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolverOptions {
+    pub method: Method,
+    pub presolve: bool,
+    /// Seconds; `None` for no limit.
+    pub time_limit: Option<f64>,
+    /// Primal and dual feasibility tolerance.
+    pub feasibility_tolerance: f64,
+    pub threads: usize,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        SolverOptions {
+            method: Method::DualSimplex,
+            presolve: true,
+            time_limit: None,
+            feasibility_tolerance: 1e-9,
+            threads: 1,
+        }
+    }
+}
+
+/// A solution (primal values and duals); vectors are empty unless `status` is optimal.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LpSolution {
+    pub status: LpStatus,
+    pub objective: f64,
+    pub x: Vec<f64>,
+    pub row_dual: Vec<f64>,
+    pub col_dual: Vec<f64>,
+    pub iterations: i64,
+}
+
+fn opt<V: highs::HighsOptionValue>(m: &mut highs::Model, k: &str, v: V) -> Result<()> {
+    m.try_set_option(k, v)
+        .map_err(|e| Error::Solver(format!("HiGHS option {k}: {e:?}")))
+}
+
+fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
+    m.make_quiet();
+    opt(m, "output_flag", false)?;
+    opt(m, "presolve", if o.presolve { "on" } else { "off" })?;
+    match o.method {
+        Method::DualSimplex => {
+            opt(m, "solver", "simplex")?;
+            opt(m, "simplex_strategy", 1)?;
+        }
+        Method::PrimalSimplex => {
+            opt(m, "solver", "simplex")?;
+            opt(m, "simplex_strategy", 4)?;
+        }
+        Method::Ipm => {
+            opt(m, "solver", "ipm")?;
+            opt(m, "run_crossover", "on")?;
+        }
+        Method::Choose => opt(m, "solver", "choose")?,
+    }
+    opt(m, "primal_feasibility_tolerance", o.feasibility_tolerance)?;
+    opt(m, "dual_feasibility_tolerance", o.feasibility_tolerance)?;
+    opt(m, "threads", o.threads.max(1) as i32)?;
+    opt(m, "random_seed", 0)?;
+    if let Some(t) = o.time_limit {
+        opt(m, "time_limit", t)?;
+    }
+    Ok(())
+}
+
+fn build(lp: &LinearProgram) -> highs::Model {
+    let mut p = ColProblem::default();
+    let rows: Vec<highs::Row> = (0..lp.num_rows())
+        .map(|i| p.add_row(lp.row_lower[i]..=lp.row_upper[i]))
+        .collect();
+    for j in 0..lp.num_cols() {
+        let entries: Vec<(highs::Row, f64)> = lp.column(j).map(|(i, v)| (rows[i], v)).collect();
+        p.add_column(lp.cost[j], lp.col_lower[j]..=lp.col_upper[j], entries);
+    }
+    p.optimise(if lp.maximise { Sense::Maximise } else { Sense::Minimise })
+}
+
+/// Solve `lp`. Infeasible and unbounded are statuses, not errors. An "unbounded or infeasible"
+/// answer from presolve is settled by solving again without presolve.
+pub fn solve(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
+    for b in lp.row_lower.iter().chain(&lp.row_upper).chain(&lp.col_lower).chain(&lp.col_upper) {
+        if b.is_nan() {
+            return Err(Error::Solver("the LP has a NaN bound".into()));
+        }
+    }
+    if lp.cost.iter().chain(&lp.value).any(|v| !v.is_finite()) {
+        return Err(Error::Solver("the LP has a coefficient that is not finite".into()));
+    }
+    let mut opts = *o;
+    loop {
+        let mut m = build(lp);
+        configure(&mut m, &opts)?;
+        let solved = m
+            .try_solve()
+            .map_err(|e| Error::Solver(format!("HiGHS run failed: {e:?}")))?;
+        let status = solved.status();
+        let status = match status {
+            HighsModelStatus::Optimal => LpStatus::Optimal,
+            HighsModelStatus::Infeasible => LpStatus::Infeasible,
+            HighsModelStatus::Unbounded => LpStatus::Unbounded,
+            HighsModelStatus::UnboundedOrInfeasible if opts.presolve => {
+                opts.presolve = false;
+                continue;
+            }
+            HighsModelStatus::ModelEmpty => LpStatus::Optimal,
+            other => return Err(Error::Solver(format!("HiGHS stopped with status {other:?}"))),
+        };
+        if status != LpStatus::Optimal {
+            return Ok(LpSolution {
+                status,
+                objective: f64::NAN,
+                x: vec![],
+                row_dual: vec![],
+                col_dual: vec![],
+                iterations: solved.simplex_iteration_count(),
+            });
+        }
+        let s = solved.get_solution();
+        return Ok(LpSolution {
+            status,
+            objective: solved.objective_value(),
+            x: s.columns().to_vec(),
+            row_dual: s.dual_rows().to_vec(),
+            col_dual: s.dual_columns().to_vec(),
+            iterations: solved.simplex_iteration_count() + solved.ipm_iteration_count(),
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_lp_and_duals() {
+        // max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x, y ≥ 0  → x = 1.6, y = 1.2, obj 2.8
+        let mut lp = LinearProgram::new(Direction::Maximise);
+        let r0 = lp.add_row(f64::NEG_INFINITY, 4.0);
+        let r1 = lp.add_row(f64::NEG_INFINITY, 6.0);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
+        let s = solve(&lp, &SolverOptions::default()).unwrap();
+        assert_eq!(s.status, LpStatus::Optimal);
+        assert!((s.objective - 2.8).abs() < 1e-9);
+        // Duals: y0 = 0.4, y1 = 0.2 (shadow prices), up to HiGHS's sign convention.
+        assert!((s.row_dual[0].abs() - 0.4).abs() < 1e-9);
+        assert!((s.row_dual[1].abs() - 0.2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn unbounded_and_infeasible_are_statuses() {
+        let mut lp = LinearProgram::new(Direction::Maximise);
+        let r = lp.add_row(0.0, f64::INFINITY);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r, 1.0)]);
+        assert_eq!(solve(&lp, &SolverOptions::default()).unwrap().status, LpStatus::Unbounded);
+        let mut lp = LinearProgram::new(Direction::Minimise);
+        let r = lp.add_row(1.0, 1.0);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r, -1.0)]);
+        assert_eq!(solve(&lp, &SolverOptions::default()).unwrap().status, LpStatus::Infeasible);
+    }
+}

@@ -1,0 +1,205 @@
+//! The user's description of a structure: blocks, supports, materials and loads.
+//!
+//! Units are SI throughout: metres, kilonewtons, kN/m³, kPa. `x` points right, `y` up,
+//! gravity acts along −y. Angles are radians inside the library.
+//!
+//! The JSON schema is the serde form of [`Model`]; unknown fields are rejected.
+
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// A 2D point or vector `[x, y]`.
+pub type Point = [f64; 2];
+
+/// A rigid, no-tension block structure.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Model {
+    /// Free text: what this model is.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub description: String,
+    /// Materials by name. A block without a `material` uses `"default"`, and if no material of that
+    /// name is given, `unit_weight` 18 kN/m³ and `width` 1 m.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub materials: BTreeMap<String, Material>,
+    /// The blocks (rigid bodies with three degrees of freedom each). A block's id is its index.
+    pub blocks: Vec<Block>,
+    /// Foundations: rigid bodies whose motion is prescribed.
+    pub supports: Vec<Support>,
+    /// Dead and live loads.
+    #[serde(default)]
+    pub loads: Loads,
+    /// Geometric tolerance for interface detection, relative to the model's bounding-box
+    /// diagonal (default 1e-7).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+}
+
+/// Material of a block.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Material {
+    /// Unit weight γ in kN/m³.
+    pub unit_weight: f64,
+    /// Out-of-plane width in m (default 1).
+    #[serde(default = "one")]
+    pub width: f64,
+    /// Compressive strength f_c in kPa (absent: infinite, Heyman's hypothesis).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compressive_strength: Option<f64>,
+    /// Coulomb friction coefficient μ (absent: infinite, no sliding).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
+    /// Cohesion c in kPa (default 0).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub cohesion: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
+fn is_true(b: &bool) -> bool {
+    *b
+}
+fn yes() -> bool {
+    true
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            unit_weight: 18.0,
+            width: 1.0,
+            compressive_strength: None,
+            friction: None,
+            cohesion: 0.0,
+        }
+    }
+}
+
+/// A rigid block: a simple polygon (convex or not).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Block {
+    /// Vertices, counter-clockwise (a clockwise list is reversed on loading).
+    pub polygon: Vec<Point>,
+    /// Material name (default `"default"`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub material: Option<String>,
+}
+
+/// How a support is connected to the blocks resting on it.
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum Connection {
+    /// A unilateral joint like any other: no tension, no sliding (Heyman).
+    #[default]
+    Contact,
+    /// Bilateral: the blocks' faces follow the support (the paper's essential boundary condition).
+    Fixed,
+}
+
+/// A foundation: a rigid body with a prescribed motion.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Support {
+    /// Unique name, used on the command line (`--move NAME=u,v`).
+    pub name: String,
+    /// Vertices, counter-clockwise.
+    pub polygon: Vec<Point>,
+    /// Prescribed motion `[u, v, θ]`: translation in m of the polygon's centroid and rotation in
+    /// radians (counter-clockwise) about it. Default: no motion.
+    #[serde(default, skip_serializing_if = "is_still")]
+    pub motion: [f64; 3],
+    /// `contact` (default) or `fixed`.
+    #[serde(default, skip_serializing_if = "is_contact")]
+    pub connection: Connection,
+}
+
+fn is_still(m: &[f64; 3]) -> bool {
+    m.iter().all(|&x| x == 0.0)
+}
+fn is_contact(c: &Connection) -> bool {
+    *c == Connection::Contact
+}
+
+/// Dead loads (always present) and live loads (multiplied by the load multiplier λ).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Loads {
+    /// Self-weight of every block as a dead load (default true).
+    #[serde(default = "yes", skip_serializing_if = "is_true")]
+    pub self_weight: bool,
+    /// Extra dead loads.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub dead: Vec<Load>,
+    /// Live loads, multiplied by λ.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub live: Vec<Load>,
+}
+
+impl Default for Loads {
+    fn default() -> Self {
+        Loads {
+            self_weight: true,
+            dead: Vec::new(),
+            live: Vec::new(),
+        }
+    }
+}
+
+/// How a distributed edge load is measured.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Per {
+    /// Per unit horizontal projection of the edge (kN/m² × width).
+    #[default]
+    Horizontal,
+    /// Per unit length of the edge.
+    Length,
+}
+
+/// One load.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+pub enum Load {
+    /// A force `[fx, fy]` in kN applied at point `at` of block `block`.
+    Point {
+        block: usize,
+        at: Point,
+        force: Point,
+    },
+    /// A vertical pressure `q` (kN/m², positive downwards) on edge `edge` of block `block`
+    /// (edge k runs from vertex k to vertex k+1 of the block's counter-clockwise polygon),
+    /// per unit horizontal projection or per unit length, times the block's width.
+    Edge {
+        block: usize,
+        edge: usize,
+        q: f64,
+        #[serde(default)]
+        per: Per,
+    },
+    /// A force proportional to each block's weight W, at its centroid: `W·[cx, cy]`
+    /// (`[1, 0]` is the tilting-table horizontal load). `blocks` absent: every block.
+    Body {
+        coefficients: Point,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        blocks: Option<Vec<usize>>,
+    },
+}
+
+impl Model {
+    /// The material of block `i` (the named one, `"default"`, or the built-in default).
+    pub fn material_of(&self, i: usize) -> Material {
+        let name = self.blocks[i].material.as_deref().unwrap_or("default");
+        self.materials.get(name).cloned().unwrap_or_default()
+    }
+
+    /// Index of the support named `name`.
+    pub fn support_index(&self, name: &str) -> Option<usize> {
+        self.supports.iter().position(|s| s.name == name)
+    }
+}

@@ -1,0 +1,528 @@
+//! A validated, discretised structure: bodies, joints with collocation points, applied loads.
+//!
+//! [`Structure::new`] turns a user [`Model`] into this form (validation + interface detection).
+//! [`Structure::deformed`] moves it by a finite rigid motion per block and returns a new one:
+//! deformation is a geometry operation, so every analysis runs unchanged on a deformed structure.
+
+use crate::error::{model_err, Result};
+use crate::geometry::{self, area_centroid, bbox, RigidMotion};
+use crate::model::{Connection, Load, Material, Model, Per, Point};
+use serde::{Deserialize, Serialize};
+
+/// A body of the structure: a block (3 DOFs) or a support (prescribed motion).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub enum Body {
+    Block(usize),
+    Support(usize),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlockGeom {
+    pub polygon: Vec<Point>,
+    pub centroid: Point,
+    pub area: f64,
+    /// Self-weight in kN (γ · area · width).
+    pub weight: f64,
+    pub material: Material,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SupportGeom {
+    pub name: String,
+    pub polygon: Vec<Point>,
+    pub centroid: Point,
+    /// Prescribed motion `[u, v, θ]` about `centroid`.
+    pub motion: [f64; 3],
+    pub connection: Connection,
+}
+
+/// A collocation point of a joint.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactPoint {
+    pub x: Point,
+    /// Current gap (≥ 0). A point with a gap carries no force until it closes.
+    pub gap: f64,
+}
+
+/// A joint between bodies `a` and `b` along a straight segment.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    pub a: Body,
+    pub b: Body,
+    /// Unit normal from `a` into `b`.
+    pub normal: Point,
+    /// Collocation points (the two ends of the contact segment, fewer after deformation).
+    pub points: Vec<ContactPoint>,
+    /// Original contact length (m) and out-of-plane width (m).
+    pub length: f64,
+    pub width: f64,
+    /// Bilateral joint (block tied to a `fixed` support): tension allowed, no opening.
+    pub bilateral: bool,
+}
+
+impl Joint {
+    /// Unit tangent `t = (−n_y, n_x)`.
+    pub fn tangent(&self) -> Point {
+        [-self.normal[1], self.normal[0]]
+    }
+    /// Midpoint of the original contact segment (mean of the points).
+    pub fn midpoint(&self) -> Point {
+        let n = self.points.len().max(1) as f64;
+        let s = self.points.iter().fold([0.0, 0.0], |s, p| [s[0] + p.x[0], s[1] + p.x[1]]);
+        [s[0] / n, s[1] / n]
+    }
+}
+
+/// A force applied to a block at a point; live loads are multiplied by λ.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AppliedLoad {
+    pub block: usize,
+    pub at: Point,
+    pub force: Point,
+    pub live: bool,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Structure {
+    pub blocks: Vec<BlockGeom>,
+    pub supports: Vec<SupportGeom>,
+    pub joints: Vec<Joint>,
+    pub loads: Vec<AppliedLoad>,
+    /// Absolute geometric tolerance (m).
+    pub tolerance: f64,
+}
+
+/// Options for building a structure.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct BuildOptions {
+    /// Override of the model's relative tolerance.
+    pub tolerance: Option<f64>,
+}
+
+fn finite(p: &[Point]) -> bool {
+    p.iter().all(|q| q[0].is_finite() && q[1].is_finite())
+}
+
+/// Check a polygon and return it counter-clockwise.
+fn clean_polygon(what: &str, p: &[Point], tol: f64) -> Result<Vec<Point>> {
+    if p.len() < 3 {
+        return model_err(format!("{what}: polygon has {} vertices, needs at least 3", p.len()));
+    }
+    if !finite(p) {
+        return model_err(format!("{what}: polygon has a coordinate that is not a finite number"));
+    }
+    // Drop a closing vertex equal to the first (as CAD exports often have).
+    let mut q: Vec<Point> = p.to_vec();
+    while q.len() > 3 && geometry::norm(geometry::sub(q[0], q[q.len() - 1])) <= tol {
+        q.pop();
+    }
+    for i in 0..q.len() {
+        let j = (i + 1) % q.len();
+        if geometry::norm(geometry::sub(q[i], q[j])) <= tol {
+            return model_err(format!("{what}: vertices {i} and {j} coincide (zero-length edge)"));
+        }
+    }
+    let a = geometry::signed_area(&q);
+    let b = bbox(&q);
+    let scale = (b[2] - b[0]).max(b[3] - b[1]);
+    if a.abs() <= tol * scale {
+        return model_err(format!("{what}: polygon is degenerate (zero area)"));
+    }
+    if let Some((i, j)) = geometry::self_intersection(&q, tol) {
+        return model_err(format!("{what}: polygon is self-intersecting (edges {i} and {j} cross or touch)"));
+    }
+    if a < 0.0 {
+        q.reverse();
+    }
+    Ok(q)
+}
+
+impl Structure {
+    /// Validate `model` and find its joints.
+    pub fn new(model: &Model, opts: BuildOptions) -> Result<Structure> {
+        if model.blocks.is_empty() {
+            return model_err("the model has no blocks");
+        }
+        if model.supports.is_empty() {
+            return model_err("the model has no supports: at least one foundation is needed");
+        }
+        // Tolerance from the overall size.
+        let mut all = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+        for p in model.blocks.iter().map(|b| &b.polygon).chain(model.supports.iter().map(|s| &s.polygon)) {
+            if finite(p) && !p.is_empty() {
+                let b = bbox(p);
+                all = [all[0].min(b[0]), all[1].min(b[1]), all[2].max(b[2]), all[3].max(b[3])];
+            }
+        }
+        let rel = opts.tolerance.or(model.tolerance).unwrap_or(1e-7);
+        if !(rel.is_finite() && rel > 0.0 && rel < 0.1) {
+            return model_err(format!("tolerance {rel} must be a positive number below 0.1"));
+        }
+        let diag = (all[2] - all[0]).hypot(all[3] - all[1]);
+        let tol = rel * if diag.is_finite() && diag > 0.0 { diag } else { 1.0 };
+
+        for (name, m) in &model.materials {
+            let ok = m.unit_weight.is_finite()
+                && m.unit_weight >= 0.0
+                && m.width.is_finite()
+                && m.width > 0.0
+                && m.compressive_strength.is_none_or(|f| f.is_finite() && f > 0.0)
+                && m.friction.is_none_or(|f| f.is_finite() && f >= 0.0)
+                && m.cohesion.is_finite()
+                && m.cohesion >= 0.0;
+            if !ok {
+                return model_err(format!(
+                    "material '{name}': unit_weight ≥ 0, width > 0, compressive_strength > 0, friction ≥ 0 and cohesion ≥ 0 must be finite numbers"
+                ));
+            }
+        }
+
+        let mut blocks = Vec::with_capacity(model.blocks.len());
+        for (i, b) in model.blocks.iter().enumerate() {
+            let what = format!("block {i}");
+            if let Some(m) = &b.material {
+                if m != "default" && !model.materials.contains_key(m) {
+                    return model_err(format!("{what}: unknown material '{m}'"));
+                }
+            }
+            let polygon = clean_polygon(&what, &b.polygon, tol)?;
+            let (area, centroid) = area_centroid(&polygon);
+            let material = model.material_of(i);
+            blocks.push(BlockGeom {
+                weight: material.unit_weight * area * material.width,
+                polygon,
+                centroid,
+                area,
+                material,
+            });
+        }
+        let mut supports = Vec::with_capacity(model.supports.len());
+        for (i, s) in model.supports.iter().enumerate() {
+            let what = format!("support '{}'", s.name);
+            if s.name.is_empty() {
+                return model_err(format!("support {i} has an empty name"));
+            }
+            if model.supports[..i].iter().any(|t| t.name == s.name) {
+                return model_err(format!("{what}: name used twice"));
+            }
+            if !s.motion.iter().all(|x| x.is_finite()) {
+                return model_err(format!("{what}: motion has a value that is not a finite number"));
+            }
+            let polygon = clean_polygon(&what, &s.polygon, tol)?;
+            let (_, centroid) = area_centroid(&polygon);
+            supports.push(SupportGeom {
+                name: s.name.clone(),
+                polygon,
+                centroid,
+                motion: s.motion,
+                connection: s.connection,
+            });
+        }
+
+        let mut st = Structure {
+            blocks,
+            supports,
+            joints: Vec::new(),
+            loads: Vec::new(),
+            tolerance: tol,
+        };
+        st.check_overlaps()?;
+        st.find_joints()?;
+        st.loads = resolve_loads(model, &st)?;
+        Ok(st)
+    }
+
+    fn body_name(&self, k: usize) -> String {
+        let nb = self.blocks.len();
+        if k < nb {
+            format!("block {k}")
+        } else {
+            format!("support '{}'", self.supports[k - nb].name)
+        }
+    }
+
+    fn polygons(&self) -> Vec<&[Point]> {
+        self.blocks
+            .iter()
+            .map(|b| b.polygon.as_slice())
+            .chain(self.supports.iter().map(|s| s.polygon.as_slice()))
+            .collect()
+    }
+
+    /// Reject overlapping bodies (support–support overlaps are allowed). Candidate pairs come
+    /// from a uniform grid of bounding boxes, so this is linear in the number of bodies for
+    /// models of similar-sized blocks.
+    fn check_overlaps(&self) -> Result<()> {
+        let polys = self.polygons();
+        let tol = self.tolerance;
+        let boxes: Vec<[f64; 4]> = polys
+            .iter()
+            .map(|p| {
+                let b = bbox(p);
+                [b[0] + tol, b[1] + tol, b[2] - tol, b[3] - tol]
+            })
+            .collect();
+        let nb = self.blocks.len();
+        let mut sizes: Vec<f64> = boxes[..nb].iter().map(|b| (b[2] - b[0]).max(b[3] - b[1])).collect();
+        sizes.sort_by(f64::total_cmp);
+        let cell = sizes[sizes.len() / 2].max(tol * 10.0);
+        let mut entries: Vec<(i64, i64, usize)> = Vec::new();
+        for (k, b) in boxes.iter().enumerate() {
+            let (i0, j0) = ((b[0] / cell).floor() as i64, (b[1] / cell).floor() as i64);
+            let (i1, j1) = ((b[2] / cell).floor() as i64, (b[3] / cell).floor() as i64);
+            // Very large bodies (a long foundation) are put in every cell they cover; bounded by
+            // the number of cells the model spans.
+            for i in i0..=i1 {
+                for j in j0..=j1 {
+                    entries.push((i, j, k));
+                }
+            }
+        }
+        entries.sort_unstable();
+        let mut pairs: Vec<(usize, usize)> = Vec::new();
+        let mut s = 0;
+        while s < entries.len() {
+            let mut e = s + 1;
+            while e < entries.len() && entries[e].0 == entries[s].0 && entries[e].1 == entries[s].1 {
+                e += 1;
+            }
+            for x in s..e {
+                for y in x + 1..e {
+                    let (p, q) = (entries[x].2, entries[y].2);
+                    if p >= nb && q >= nb {
+                        continue;
+                    }
+                    let (bp, bq) = (boxes[p], boxes[q]);
+                    if bp[0] < bq[2] && bq[0] < bp[2] && bp[1] < bq[3] && bq[1] < bp[3] {
+                        pairs.push((p.min(q), p.max(q)));
+                    }
+                }
+            }
+            s = e;
+        }
+        pairs.sort_unstable();
+        pairs.dedup();
+        for (p, q) in pairs {
+            if geometry::polygons_overlap(polys[p], polys[q], tol) {
+                return model_err(format!("{} and {} overlap", self.body_name(p), self.body_name(q)));
+            }
+        }
+        Ok(())
+    }
+
+    fn find_joints(&mut self) -> Result<()> {
+        let nb = self.blocks.len();
+        let (ifs, clashes) = {
+            let polys = self.polygons();
+            geometry::detect_interfaces(&polys, self.tolerance)
+        };
+        if let Some(c) = clashes.iter().find(|c| c.a < nb || c.b < nb) {
+            return model_err(format!("{} and {} overlap", self.body_name(c.a), self.body_name(c.b)));
+        }
+        let to_body = |k: usize| if k < nb { Body::Block(k) } else { Body::Support(k - nb) };
+        let mut touched = vec![false; nb];
+        for it in ifs {
+            if it.a >= nb && it.b >= nb {
+                continue; // support–support: nothing moves relative to anything
+            }
+            let (a, b) = (to_body(it.a), to_body(it.b));
+            let mut bilateral = false;
+            let mut width = f64::INFINITY;
+            for body in [a, b] {
+                match body {
+                    Body::Block(i) => {
+                        touched[i] = true;
+                        width = width.min(self.blocks[i].material.width);
+                    }
+                    Body::Support(s) => bilateral = self.supports[s].connection == Connection::Fixed,
+                }
+            }
+            self.joints.push(Joint {
+                a,
+                b,
+                normal: it.normal,
+                length: geometry::norm(geometry::sub(it.ends[1], it.ends[0])),
+                width,
+                points: it.ends.iter().map(|&x| ContactPoint { x, gap: 0.0 }).collect(),
+                bilateral,
+            });
+        }
+        if let Some(i) = touched.iter().position(|t| !t) {
+            return model_err(format!(
+                "block {i} touches nothing: it shares no edge with another block or a support"
+            ));
+        }
+        Ok(())
+    }
+
+    pub fn num_blocks(&self) -> usize {
+        self.blocks.len()
+    }
+
+    /// Reference point of a body.
+    pub fn center(&self, b: Body) -> Point {
+        match b {
+            Body::Block(i) => self.blocks[i].centroid,
+            Body::Support(s) => self.supports[s].centroid,
+        }
+    }
+
+    /// Display name of a body: the block index or the support name.
+    pub fn name(&self, b: Body) -> String {
+        match b {
+            Body::Block(i) => i.to_string(),
+            Body::Support(s) => self.supports[s].name.clone(),
+        }
+    }
+
+    /// Load resultants per block `[Fx, Fy, M]` (M about the block's centroid), dead or live.
+    pub fn load_vector(&self, live: bool) -> Vec<f64> {
+        let mut f = vec![0.0; 3 * self.blocks.len()];
+        for l in self.loads.iter().filter(|l| l.live == live) {
+            let c = self.blocks[l.block].centroid;
+            let r = geometry::sub(l.at, c);
+            f[3 * l.block] += l.force[0];
+            f[3 * l.block + 1] += l.force[1];
+            f[3 * l.block + 2] += geometry::cross(r, l.force);
+        }
+        f
+    }
+
+    /// Whether the structure has any live load.
+    pub fn has_live_loads(&self) -> bool {
+        self.loads.iter().any(|l| l.live && (l.force[0] != 0.0 || l.force[1] != 0.0))
+    }
+
+    /// A copy with the supports' prescribed motions replaced.
+    pub fn with_support_motions(&self, motions: &[[f64; 3]]) -> Structure {
+        let mut s = self.clone();
+        for (sp, m) in s.supports.iter_mut().zip(motions) {
+            sp.motion = *m;
+        }
+        s
+    }
+
+    /// Move every block by the finite rigid motion `s·d_i` and every support by `s·motion`;
+    /// points of each joint take their new position (mean of the images on both sides) and
+    /// their gap `s·opening` (`openings[j][k]` for point `k` of joint `j`). Points whose gap
+    /// exceeds `gap_tol` stay in the structure with that gap (they carry no force until they
+    /// close); joints move with their bodies; loads move with their blocks (directions kept).
+    pub fn deformed(&self, d: &[f64], s: f64, openings: &[Vec<f64>], gap_tol: f64) -> Structure {
+        let motion = |b: Body| -> RigidMotion {
+            match b {
+                Body::Block(i) => RigidMotion::scaled(self.blocks[i].centroid, [d[3 * i], d[3 * i + 1], d[3 * i + 2]], s),
+                Body::Support(k) => RigidMotion::scaled(self.supports[k].centroid, self.supports[k].motion, s),
+            }
+        };
+        let mut out = self.clone();
+        for (i, b) in out.blocks.iter_mut().enumerate() {
+            let m = motion(Body::Block(i));
+            b.polygon = b.polygon.iter().map(|&p| m.apply(p)).collect();
+            b.centroid = m.apply(b.centroid);
+        }
+        for (k, sp) in out.supports.iter_mut().enumerate() {
+            let m = motion(Body::Support(k));
+            sp.polygon = sp.polygon.iter().map(|&p| m.apply(p)).collect();
+            sp.centroid = m.apply(sp.centroid);
+            sp.motion = [0.0; 3];
+        }
+        for (j, joint) in out.joints.iter_mut().enumerate() {
+            let (ma, mb) = (motion(joint.a), motion(joint.b));
+            let mean = RigidMotion {
+                center: [0.0, 0.0],
+                translation: [0.0, 0.0],
+                theta: 0.5 * (ma.theta + mb.theta),
+            };
+            joint.normal = mean.rotate(joint.normal);
+            for (k, p) in joint.points.iter_mut().enumerate() {
+                let (xa, xb) = (ma.apply(p.x), mb.apply(p.x));
+                p.x = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
+                let g = p.gap + s * openings.get(j).and_then(|o| o.get(k)).copied().unwrap_or(0.0);
+                p.gap = if g > gap_tol { g } else { 0.0 };
+            }
+        }
+        for l in out.loads.iter_mut() {
+            l.at = motion(Body::Block(l.block)).apply(l.at);
+        }
+        out
+    }
+}
+
+fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
+    let nb = st.blocks.len();
+    let mut out = Vec::new();
+    if model.loads.self_weight {
+        for (i, b) in st.blocks.iter().enumerate() {
+            if b.weight > 0.0 {
+                out.push(AppliedLoad { block: i, at: b.centroid, force: [0.0, -b.weight], live: false });
+            }
+        }
+    }
+    for (live, list) in [(false, &model.loads.dead), (true, &model.loads.live)] {
+        let kind = if live { "live" } else { "dead" };
+        for (n, l) in list.iter().enumerate() {
+            let what = format!("{kind} load {n}");
+            let check_block = |b: usize| {
+                if b < nb {
+                    Ok(())
+                } else {
+                    model_err(format!("{what}: block {b} does not exist (the model has {nb} blocks)"))
+                }
+            };
+            match l {
+                Load::Point { block, at, force } => {
+                    check_block(*block)?;
+                    if !finite(&[*at, *force]) {
+                        return model_err(format!("{what}: a value is not a finite number"));
+                    }
+                    out.push(AppliedLoad { block: *block, at: *at, force: *force, live });
+                }
+                Load::Edge { block, edge, q, per } => {
+                    check_block(*block)?;
+                    let b = &st.blocks[*block];
+                    // Edge numbering refers to the block's polygon as given; the polygon was
+                    // possibly reversed, so find the edge by its end points.
+                    let given = &model.blocks[*block].polygon;
+                    if *edge >= given.len() {
+                        return model_err(format!("{what}: block {block} has no edge {edge}"));
+                    }
+                    if !q.is_finite() {
+                        return model_err(format!("{what}: q is not a finite number"));
+                    }
+                    let (p0, p1) = (given[*edge], given[(*edge + 1) % given.len()]);
+                    let len = match per {
+                        Per::Horizontal => (p1[0] - p0[0]).abs(),
+                        Per::Length => geometry::norm(geometry::sub(p1, p0)),
+                    };
+                    let fy = -q * len * b.material.width;
+                    out.push(AppliedLoad {
+                        block: *block,
+                        at: [(p0[0] + p1[0]) / 2.0, (p0[1] + p1[1]) / 2.0],
+                        force: [0.0, fy],
+                        live,
+                    });
+                }
+                Load::Body { coefficients, blocks } => {
+                    if !finite(&[*coefficients]) {
+                        return model_err(format!("{what}: a coefficient is not a finite number"));
+                    }
+                    let list: Vec<usize> = match blocks {
+                        Some(v) => v.clone(),
+                        None => (0..nb).collect(),
+                    };
+                    for b in list {
+                        check_block(b)?;
+                        let w = st.blocks[b].weight;
+                        out.push(AppliedLoad {
+                            block: b,
+                            at: st.blocks[b].centroid,
+                            force: [w * coefficients[0], w * coefficients[1]],
+                            live,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    Ok(out)
+}

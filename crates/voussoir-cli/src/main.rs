@@ -1,1 +1,70 @@
-fn main() {}
+//! The `voussoir` command: parse flags, call the library, write results. Nothing else.
+
+mod common;
+mod gen;
+
+use clap::{Parser, Subcommand};
+use common::{Fail, ModelArgs, OutArgs, SettleArgs};
+use voussoir::analysis::{limit, settle};
+
+#[derive(Parser)]
+#[command(
+    name = "voussoir",
+    version,
+    about = "Masonry as rigid no-tension blocks in unilateral contact: settlement, limit analysis, capacity.",
+    long_about = "Masonry as rigid no-tension blocks in unilateral contact (Heyman's hypotheses).\n\
+        Units: metres, kilonewtons, kN/m³, kPa; angles in degrees on the command line.\n\
+        Models are JSON files (see the README for the schema); `voussoir gen` writes them."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Generate a model (arch, lintel, wall) as JSON.
+    #[command(subcommand)]
+    Gen(gen::Gen),
+    /// Classic limit analysis: collapse load multiplier λ of the live loads and the mechanism.
+    Limit {
+        #[command(flatten)]
+        model: ModelArgs,
+        #[command(flatten)]
+        out: OutArgs,
+    },
+    /// Settlement analysis: mechanism (crack pattern) and contact forces for prescribed support
+    /// motions, by the paper's primal and dual LPs, with the duality gap as a certificate.
+    Settle {
+        #[command(flatten)]
+        model: ModelArgs,
+        #[command(flatten)]
+        settle: SettleArgs,
+        #[command(flatten)]
+        out: OutArgs,
+    },
+}
+
+fn run(cli: Cli) -> Result<(), Fail> {
+    match cli.command {
+        Command::Gen(g) => gen::run(g),
+        Command::Limit { model, out } => {
+            let (st, opts) = model.structure(None)?;
+            let r = limit(&st, &opts)?;
+            out.emit(&r, || common::limit_summary(&st, &r))
+        }
+        Command::Settle { model, settle: s, out } => {
+            let (st, opts) = model.structure(Some(&s))?;
+            let r = settle(&st, &opts)?;
+            out.emit(&r, || common::settle_summary(&st, &r))
+        }
+    }
+}
+
+fn main() {
+    let cli = Cli::parse();
+    if let Err(e) = run(cli) {
+        eprintln!("error: {e}");
+        std::process::exit(1);
+    }
+}

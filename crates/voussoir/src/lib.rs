@@ -40,6 +40,7 @@ pub mod lp;
 pub mod model;
 pub mod programs;
 pub mod result;
+pub mod settlement_input;
 pub mod structure;
 
 pub use error::{Error, Result};

@@ -110,6 +110,58 @@ pub struct Reaction {
     pub cy: f64,
 }
 
+/// The geometry a result refers to, so that a saved result can be drawn on its own.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Geometry {
+    /// Block polygons (counter-clockwise), by block id.
+    pub blocks: Vec<Vec<[f64; 2]>>,
+    pub supports: Vec<SupportShape>,
+    /// Applied loads (dead and live) at their points.
+    pub loads: Vec<LoadArrow>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SupportShape {
+    pub name: String,
+    pub polygon: Vec<[f64; 2]>,
+    /// Prescribed motion `[u, v, θ]` about the centroid.
+    pub motion: [f64; 3],
+    pub fixed: bool,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LoadArrow {
+    pub block: usize,
+    pub x: f64,
+    pub y: f64,
+    pub fx: f64,
+    pub fy: f64,
+    pub live: bool,
+}
+
+impl Geometry {
+    pub fn of(st: &Structure) -> Geometry {
+        Geometry {
+            blocks: st.blocks.iter().map(|b| b.polygon.clone()).collect(),
+            supports: st
+                .supports
+                .iter()
+                .map(|s| SupportShape {
+                    name: s.name.clone(),
+                    polygon: s.polygon.clone(),
+                    motion: s.motion,
+                    fixed: s.connection == crate::model::Connection::Fixed,
+                })
+                .collect(),
+            loads: st
+                .loads
+                .iter()
+                .map(|l| LoadArrow { block: l.block, x: l.at[0], y: l.at[1], fx: l.force[0], fy: l.force[1], live: l.live })
+                .collect(),
+        }
+    }
+}
+
 /// Round values that are pure round-off to zero so that output is stable and readable.
 pub(crate) fn clean(v: f64, scale: f64) -> f64 {
     if v.abs() <= 1e-12 * scale {

@@ -8,7 +8,7 @@ use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
 use crate::programs::ForceProgram;
-use crate::result::{report, BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::result::{report, Geometry, BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
 
@@ -53,6 +53,8 @@ pub struct LimitResult {
     pub reactions: Vec<Reaction>,
     /// Simplex iterations spent.
     pub iterations: i64,
+    /// The geometry analysed (for drawing a saved result).
+    pub geometry: Geometry,
 }
 
 /// The raw vectors of a limit analysis, for the analyses built on top of it.
@@ -146,5 +148,6 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,
+        geometry: Geometry::of(st),
     }
 }

@@ -21,7 +21,7 @@ use crate::discretize::KinematicMap;
 use crate::error::Result;
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
 use crate::programs::{ForceProgram, MotionProgram};
-use crate::result::{report, BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::result::{report, Geometry, BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
 
@@ -81,6 +81,8 @@ pub struct SettlementResult {
     pub hinges: Vec<Hinge>,
     pub thrust_line: Vec<ThrustPoint>,
     pub reactions: Vec<Reaction>,
+    /// The geometry analysed (for drawing a saved result).
+    pub geometry: Geometry,
 }
 
 /// Raw vectors of a settlement analysis.
@@ -159,6 +161,7 @@ pub fn settlement_result(st: &Structure, map: &KinematicMap, s: &SettlementSolut
             hinges: vec![],
             thrust_line: vec![],
             reactions: vec![],
+            geometry: Geometry::of(st),
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
@@ -206,5 +209,6 @@ pub fn settlement_result(st: &Structure, map: &KinematicMap, s: &SettlementSolut
         hinges: rep.hinges,
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
+        geometry: Geometry::of(st),
     }
 }

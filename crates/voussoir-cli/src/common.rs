@@ -1,0 +1,196 @@
+//! Flags shared by the analysis commands, model loading, output and human summaries.
+
+use clap::Args;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use voussoir::analysis::{LimitResult, SettlementResult};
+use voussoir::lp::{Method, SolverOptions};
+use voussoir::settlement_input::{apply_profile, fix_support, move_support, Profile};
+use voussoir::{BuildOptions, Model, Structure};
+
+/// A failure: one line for the user.
+#[derive(Debug)]
+pub struct Fail(pub String);
+
+impl std::fmt::Display for Fail {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+impl From<voussoir::Error> for Fail {
+    fn from(e: voussoir::Error) -> Self {
+        Fail(e.to_string())
+    }
+}
+impl From<voussoir_io::IoError> for Fail {
+    fn from(e: voussoir_io::IoError) -> Self {
+        Fail(e.0)
+    }
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct ModelArgs {
+    /// The model: a JSON file (see README, "Model format").
+    pub model: PathBuf,
+    /// Geometric tolerance for joint detection, relative to the model's size (default 1e-7).
+    #[arg(long)]
+    pub tolerance: Option<f64>,
+    /// LP method: dual-simplex (default; crisp vertex mechanisms), primal-simplex, ipm, choose.
+    #[arg(long, value_enum, default_value = "dual-simplex")]
+    pub method: MethodArg,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum MethodArg {
+    DualSimplex,
+    PrimalSimplex,
+    Ipm,
+    Choose,
+}
+
+#[derive(Args, Clone, Debug, Default)]
+pub struct SettleArgs {
+    /// Prescribed motion of a support: NAME=u,v[,θ] with u, v in metres (v up) and θ in
+    /// degrees counter-clockwise about the support's centroid. Repeatable.
+    #[arg(long = "move", value_name = "NAME=U,V[,THETA]")]
+    pub moves: Vec<String>,
+    /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
+    #[arg(long = "fixed", value_name = "NAME")]
+    pub fixed: Vec<String>,
+    /// Vertical settlement profile along x (m) applied to every support by its centroid:
+    /// uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…  (v up, so a settlement is < 0).
+    #[arg(long)]
+    pub profile: Option<String>,
+}
+
+impl SettleArgs {
+    /// Apply the moves, fixed supports and profile to a model.
+    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+        for f in &self.fixed {
+            fix_support(model, f)?;
+        }
+        for m in &self.moves {
+            let (name, vals) = m
+                .split_once('=')
+                .ok_or_else(|| Fail(format!("--move {m}: expected NAME=u,v[,θ]")))?;
+            let nums: Vec<f64> = vals
+                .split(',')
+                .map(|x| x.trim().parse::<f64>())
+                .collect::<Result<_, _>>()
+                .map_err(|_| Fail(format!("--move {m}: u, v and θ must be numbers")))?;
+            let motion = match nums.as_slice() {
+                [u, v] => [*u, *v, 0.0],
+                [u, v, t] => [*u, *v, t.to_radians()],
+                _ => return Err(Fail(format!("--move {m}: expected NAME=u,v[,θ]"))),
+            };
+            move_support(model, name, motion)?;
+        }
+        if let Some(p) = &self.profile {
+            apply_profile(model, &Profile::parse(p)?)?;
+        }
+        Ok(())
+    }
+}
+
+impl ModelArgs {
+    pub fn solver(&self) -> SolverOptions {
+        SolverOptions {
+            method: match self.method {
+                MethodArg::DualSimplex => Method::DualSimplex,
+                MethodArg::PrimalSimplex => Method::PrimalSimplex,
+                MethodArg::Ipm => Method::Ipm,
+                MethodArg::Choose => Method::Choose,
+            },
+            ..SolverOptions::default()
+        }
+    }
+
+    pub fn load(&self) -> Result<Model, Fail> {
+        Ok(voussoir_io::read_model(&self.model)?)
+    }
+
+    /// Load, apply settlement flags, validate and discretise.
+    pub fn structure(&self, settle: Option<&SettleArgs>) -> Result<(Structure, SolverOptions), Fail> {
+        let mut model = self.load()?;
+        if let Some(s) = settle {
+            s.apply(&mut model)?;
+        }
+        let st = Structure::new(&model, BuildOptions { tolerance: self.tolerance })?;
+        Ok((st, self.solver()))
+    }
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct OutArgs {
+    /// Print the full result as JSON on stdout (instead of the summary).
+    #[arg(long)]
+    pub json: bool,
+    /// Write the full JSON result to this file (the summary still goes to stdout).
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+impl OutArgs {
+    pub fn emit<T: Serialize>(&self, result: &T, summary: impl Fn() -> String) -> Result<(), Fail> {
+        let json = voussoir_io::files::to_json(result)?;
+        if let Some(path) = &self.output {
+            voussoir_io::write_atomic(path, json.as_bytes())?;
+        }
+        if self.json && self.output.is_none() {
+            print!("{json}");
+        } else {
+            print!("{}", summary());
+        }
+        Ok(())
+    }
+}
+
+fn hinge_list(st: &Structure, hinges: &[voussoir::result::Hinge]) -> String {
+    let mut s = String::new();
+    for h in hinges {
+        let j = &st.joints[h.joint];
+        let _ = writeln!(
+            s,
+            "  joint {:>4} ({} | {}) at ({:.4}, {:.4})",
+            h.joint,
+            st.name(j.a),
+            st.name(j.b),
+            h.x,
+            h.y
+        );
+    }
+    s
+}
+
+pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "blocks {}, joints {}, supports {}", st.blocks.len(), st.joints.len(), st.supports.len());
+    let _ = writeln!(s, "{}", r.message);
+    if !r.hinges.is_empty() {
+        let _ = writeln!(s, "hinges of the collapse mechanism ({}):", r.hinges.len());
+        s.push_str(&hinge_list(st, &r.hinges));
+    }
+    s
+}
+
+pub fn settle_summary(st: &Structure, r: &SettlementResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "blocks {}, joints {}, supports {}", st.blocks.len(), st.joints.len(), st.supports.len());
+    let _ = writeln!(s, "{}", r.message);
+    if let (Some(p), Some(d), Some(g)) = (r.work_dead_loads, r.work_reactions, r.duality_gap) {
+        let _ = writeln!(s, "work of dead loads {p:.6e} kN·m, work on supports {d:.6e} kN·m, relative gap {g:.2e}");
+    }
+    if !r.hinges.is_empty() {
+        let _ = writeln!(s, "hinges ({}):", r.hinges.len());
+        s.push_str(&hinge_list(st, &r.hinges));
+    }
+    let open = r.joints.iter().filter(|j| j.state == voussoir::result::JointState::Open).count();
+    if open > 0 {
+        let _ = writeln!(s, "fully open joints: {open}");
+    }
+    for re in &r.reactions {
+        let _ = writeln!(s, "reaction {:>8}: fx {:>10.4} kN  fy {:>10.4} kN  m {:>10.4} kN·m", re.support, re.fx, re.fy, re.m);
+    }
+    s
+}

@@ -1,0 +1,235 @@
+//! `voussoir gen`: model generators.
+
+use crate::common::Fail;
+use clap::{Args, Subcommand, ValueEnum};
+use std::path::PathBuf;
+use voussoir::generate::{self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec};
+use voussoir::Model;
+
+#[derive(Subcommand)]
+pub enum Gen {
+    /// A semicircular, segmental or pointed arch of voussoirs with radial joints on two
+    /// supports named `left` and `right`.
+    Arch(ArchArgs),
+    /// A flat lintel: one course of bricks between supports `left` and `right`.
+    Lintel(LintelArgs),
+    /// A running-bond wall on foundation segments f0, f1, … (one per base unit).
+    Wall(WallArgs),
+}
+
+#[derive(Args)]
+pub struct Output {
+    /// Where to write the model JSON (stdout if absent).
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum ShapeArg {
+    Semicircular,
+    Segmental,
+    Pointed,
+}
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum RadiusAtArg {
+    Intrados,
+    Centreline,
+    Extrados,
+}
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum LiveArg {
+    None,
+    Full,
+    Left,
+    Right,
+    Horizontal,
+}
+impl From<LiveArg> for LiveLoad {
+    fn from(l: LiveArg) -> Self {
+        match l {
+            LiveArg::None => LiveLoad::None,
+            LiveArg::Full => LiveLoad::Full,
+            LiveArg::Left => LiveLoad::Left,
+            LiveArg::Right => LiveLoad::Right,
+            LiveArg::Horizontal => LiveLoad::Horizontal,
+        }
+    }
+}
+
+#[derive(Args)]
+pub struct ArchArgs {
+    /// Shape of the arch.
+    #[arg(long, value_enum, default_value = "semicircular")]
+    pub shape: ShapeArg,
+    /// Radius in m (where: see --radius-at).
+    #[arg(long, default_value_t = 2.86)]
+    pub radius: f64,
+    /// Where the radius is measured.
+    #[arg(long, value_enum, default_value = "intrados")]
+    pub radius_at: RadiusAtArg,
+    /// Ring thickness in m.
+    #[arg(long, default_value_t = 0.33)]
+    pub thickness: f64,
+    /// Number of voussoirs.
+    #[arg(long, default_value_t = 64)]
+    pub voussoirs: usize,
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0)]
+    pub unit_weight: f64,
+    /// Out-of-plane width in m.
+    #[arg(long, default_value_t = 1.0)]
+    pub width: f64,
+    /// Live load: none, full span, left or right half (vertical, on the extrados), or
+    /// horizontal (equal to each block's weight).
+    #[arg(long, value_enum, default_value = "none")]
+    pub live: LiveArg,
+    /// Live load intensity q in kN/m² per unit horizontal projection of the extrados.
+    #[arg(long, default_value_t = 1.0)]
+    pub live_load: f64,
+    /// Segmental arch: half of the angle the arch subtends, in degrees.
+    #[arg(long, default_value_t = 60.0)]
+    pub half_angle: f64,
+    /// Pointed arch: distance of each arc's centre from the middle, as a fraction of the
+    /// intrados radius (0.5: equilateral).
+    #[arg(long, default_value_t = 0.5)]
+    pub offset: f64,
+    #[command(flatten)]
+    pub out: Output,
+}
+
+#[derive(Args)]
+pub struct LintelArgs {
+    /// Clear span in m.
+    #[arg(long, default_value_t = 1.5)]
+    pub span: f64,
+    /// Depth (thickness) in m.
+    #[arg(long, default_value_t = 0.24)]
+    pub thickness: f64,
+    /// Number of bricks.
+    #[arg(long, default_value_t = 6)]
+    pub bricks: usize,
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0)]
+    pub unit_weight: f64,
+    /// Out-of-plane width in m.
+    #[arg(long, default_value_t = 1.0)]
+    pub width: f64,
+    /// Live load on the top face in kN/m.
+    #[arg(long, default_value_t = 1.0)]
+    pub live_load: f64,
+    /// Compressive strength f_c in kPa (absent: infinite).
+    #[arg(long)]
+    pub compressive_strength: Option<f64>,
+    #[command(flatten)]
+    pub out: Output,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum FirstCourseArg {
+    Full,
+    Half,
+}
+
+#[derive(Args)]
+pub struct WallArgs {
+    /// Number of courses.
+    #[arg(long, default_value_t = 6)]
+    pub courses: usize,
+    /// Units per full course.
+    #[arg(long, default_value_t = 5)]
+    pub units: usize,
+    /// Unit size LENGTH,HEIGHT in m.
+    #[arg(long, default_value = "0.4,0.175")]
+    pub unit: String,
+    /// Whether the first course is made of full units or starts with half units.
+    #[arg(long, value_enum, default_value = "full")]
+    pub first_course: FirstCourseArg,
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0)]
+    pub unit_weight: f64,
+    /// Out-of-plane width in m.
+    #[arg(long, default_value_t = 1.0)]
+    pub width: f64,
+    /// Live load: none, horizontal (tilting table: each block's weight, along +x) or full
+    /// (1 kN/m² on the top course).
+    #[arg(long, value_enum, default_value = "none")]
+    pub live: LiveArg,
+    #[command(flatten)]
+    pub out: Output,
+}
+
+fn write(model: &Model, out: &Output) -> Result<(), Fail> {
+    let json = voussoir_io::files::to_json(model)?;
+    match &out.output {
+        Some(p) => {
+            voussoir_io::write_atomic(p, json.as_bytes())?;
+            eprintln!("wrote {} ({} blocks, {} supports)", p.display(), model.blocks.len(), model.supports.len());
+        }
+        None => print!("{json}"),
+    }
+    Ok(())
+}
+
+pub fn run(g: Gen) -> Result<(), Fail> {
+    match g {
+        Gen::Arch(a) => {
+            let shape = match a.shape {
+                ShapeArg::Semicircular => ArchShape::Semicircular,
+                ShapeArg::Segmental => ArchShape::Segmental { half_angle: a.half_angle.to_radians() },
+                ShapeArg::Pointed => ArchShape::Pointed { offset: a.offset },
+            };
+            let m = generate::arch(&ArchSpec {
+                shape,
+                radius: a.radius,
+                radius_at: match a.radius_at {
+                    RadiusAtArg::Intrados => RadiusAt::Intrados,
+                    RadiusAtArg::Centreline => RadiusAt::Centreline,
+                    RadiusAtArg::Extrados => RadiusAt::Extrados,
+                },
+                thickness: a.thickness,
+                voussoirs: a.voussoirs,
+                unit_weight: a.unit_weight,
+                width: a.width,
+                live: a.live.into(),
+                live_load: a.live_load,
+            })?;
+            write(&m, &a.out)
+        }
+        Gen::Lintel(l) => {
+            let m = generate::lintel(&LintelSpec {
+                span: l.span,
+                thickness: l.thickness,
+                bricks: l.bricks,
+                unit_weight: l.unit_weight,
+                width: l.width,
+                live_load: l.live_load,
+                compressive_strength: l.compressive_strength,
+            })?;
+            write(&m, &l.out)
+        }
+        Gen::Wall(w) => {
+            let unit: Vec<f64> = w
+                .unit
+                .split(',')
+                .map(|x| x.trim().parse::<f64>())
+                .collect::<Result<_, _>>()
+                .map_err(|_| Fail(format!("--unit {}: expected LENGTH,HEIGHT in metres", w.unit)))?;
+            let [ul, uh] = unit[..] else {
+                return Err(Fail(format!("--unit {}: expected LENGTH,HEIGHT in metres", w.unit)));
+            };
+            let m = generate::wall(&WallSpec {
+                courses: w.courses,
+                units: w.units,
+                unit: [ul, uh],
+                first_course: match w.first_course {
+                    FirstCourseArg::Full => FirstCourse::Full,
+                    FirstCourseArg::Half => FirstCourse::Half,
+                },
+                unit_weight: w.unit_weight,
+                width: w.width,
+                live: w.live.into(),
+            })?;
+            write(&m, &w.out)
+        }
+    }
+}

@@ -1,0 +1,154 @@
+//! Prescribed support motions: per-support moves and settlement profiles along a foundation
+//! made of many segments.
+//!
+//! A profile `v(x)` (vertical, m, positive up) is applied to each support as the rigid motion
+//! that matches it at the support's centroid: translation `v(c_x)` and rotation `dv/dx`
+//! (exact for a linear profile). Supports outside the profile's range do not move.
+
+use crate::error::{Error, Result};
+use crate::model::Model;
+use serde::{Deserialize, Serialize};
+
+/// A vertical settlement profile along x.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+pub enum Profile {
+    /// `v` on `x0 ≤ x ≤ x1` (by support centroid), 0 elsewhere.
+    Uniform { x0: f64, x1: f64, v: f64 },
+    /// Linear between `(x0, v0)` and `(x1, v1)`, 0 outside `[x0, x1]`.
+    Linear { x0: f64, v0: f64, x1: f64, v1: f64 },
+    /// Piecewise-linear interpolation of `(x, v)` pairs (sorted by x), 0 outside.
+    Table { points: Vec<[f64; 2]> },
+}
+
+impl Profile {
+    /// `(v, dv/dx)` at `x`.
+    pub fn eval(&self, x: f64) -> (f64, f64) {
+        match self {
+            Profile::Uniform { x0, x1, v } => {
+                if x >= *x0 && x <= *x1 {
+                    (*v, 0.0)
+                } else {
+                    (0.0, 0.0)
+                }
+            }
+            Profile::Linear { x0, v0, x1, v1 } => {
+                if x >= x0.min(*x1) && x <= x0.max(*x1) && x1 != x0 {
+                    let s = (v1 - v0) / (x1 - x0);
+                    (v0 + s * (x - x0), s)
+                } else {
+                    (0.0, 0.0)
+                }
+            }
+            Profile::Table { points } => {
+                for w in points.windows(2) {
+                    let ([xa, va], [xb, vb]) = (w[0], w[1]);
+                    if x >= xa && x <= xb && xb > xa {
+                        let s = (vb - va) / (xb - xa);
+                        return (va + s * (x - xa), s);
+                    }
+                }
+                (0.0, 0.0)
+            }
+        }
+    }
+
+    pub fn validate(&self) -> Result<()> {
+        let bad = |m: &str| Err(Error::Request(format!("settlement profile: {m}")));
+        match self {
+            Profile::Uniform { x0, x1, v } => {
+                if ![*x0, *x1, *v].iter().all(|a| a.is_finite()) || x1 < x0 {
+                    return bad("uniform needs finite x0 ≤ x1 and v");
+                }
+            }
+            Profile::Linear { x0, v0, x1, v1 } => {
+                if ![*x0, *v0, *x1, *v1].iter().all(|a| a.is_finite()) || x1 <= x0 {
+                    return bad("linear needs finite values and x0 < x1");
+                }
+            }
+            Profile::Table { points } => {
+                if points.len() < 2 || points.iter().any(|p| !p[0].is_finite() || !p[1].is_finite()) {
+                    return bad("a table needs at least two finite (x, v) pairs");
+                }
+                if points.windows(2).any(|w| w[1][0] <= w[0][0]) {
+                    return bad("table x values must increase");
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Parse the command-line form: `uniform:X0,X1,V`, `linear:X0,V0,X1,V1` or
+    /// `table:X,V;X,V;…` (metres).
+    pub fn parse(s: &str) -> Result<Profile> {
+        let bad = || Error::Request(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"));
+        let (kind, rest) = s.split_once(':').ok_or_else(bad)?;
+        let nums = |t: &str| -> Result<Vec<f64>> {
+            t.split(',').map(|x| x.trim().parse::<f64>().map_err(|_| bad())).collect()
+        };
+        let p = match kind {
+            "uniform" => match nums(rest)?.as_slice() {
+                [x0, x1, v] => Profile::Uniform { x0: *x0, x1: *x1, v: *v },
+                _ => return Err(bad()),
+            },
+            "linear" => match nums(rest)?.as_slice() {
+                [x0, v0, x1, v1] => Profile::Linear { x0: *x0, v0: *v0, x1: *x1, v1: *v1 },
+                _ => return Err(bad()),
+            },
+            "table" => {
+                let mut points = Vec::new();
+                for pair in rest.split(';').filter(|t| !t.trim().is_empty()) {
+                    match nums(pair)?.as_slice() {
+                        [x, v] => points.push([*x, *v]),
+                        _ => return Err(bad()),
+                    }
+                }
+                Profile::Table { points }
+            }
+            _ => return Err(bad()),
+        };
+        p.validate()?;
+        Ok(p)
+    }
+}
+
+/// Add a profile's motion to every support of `model` (by centroid).
+pub fn apply_profile(model: &mut Model, profile: &Profile) -> Result<()> {
+    profile.validate()?;
+    for s in model.supports.iter_mut() {
+        if s.polygon.len() < 3 {
+            continue;
+        }
+        let (_, c) = crate::geometry::area_centroid(&s.polygon);
+        let (v, slope) = profile.eval(c[0]);
+        s.motion[1] += v;
+        s.motion[2] += slope;
+    }
+    Ok(())
+}
+
+/// Set the motion of support `name` (θ in radians).
+pub fn move_support(model: &mut Model, name: &str, motion: [f64; 3]) -> Result<()> {
+    if !motion.iter().all(|x| x.is_finite()) {
+        return Err(Error::Request(format!("motion of support '{name}' is not finite")));
+    }
+    let known = || model.supports.iter().map(|s| s.name.clone()).collect::<Vec<_>>().join(", ");
+    match model.supports.iter().position(|s| s.name == name) {
+        Some(i) => {
+            model.supports[i].motion = motion;
+            Ok(())
+        }
+        None => Err(Error::Request(format!("no support named '{name}' (the model has: {})", known()))),
+    }
+}
+
+/// Declare support `name` fixed (bilateral).
+pub fn fix_support(model: &mut Model, name: &str) -> Result<()> {
+    match model.supports.iter_mut().find(|s| s.name == name) {
+        Some(s) => {
+            s.connection = crate::model::Connection::Fixed;
+            Ok(())
+        }
+        None => Err(Error::Request(format!("no support named '{name}'"))),
+    }
+}

@@ -109,7 +109,9 @@ impl KinematicMap {
 
     /// Row `k` of `N` (or `T`) as `(dof, value)` pairs.
     pub fn row(m: &CsMat<f64>, k: usize) -> Vec<(usize, f64)> {
-        m.outer_view(k).map(|v| v.iter().map(|(c, &x)| (c, x)).collect()).unwrap_or_default()
+        m.outer_view(k)
+            .map(|v| v.iter().map(|(c, &x)| (c, x)).collect())
+            .unwrap_or_default()
     }
 
     /// Openings `N d + s·g_n` and slidings `T d + s·g_t` for block DOFs `d`, with the support
@@ -128,7 +130,10 @@ impl KinematicMap {
                 })
                 .collect()
         };
-        (apply(&self.normal, &self.support_normal), apply(&self.tangent, &self.support_tangent))
+        (
+            apply(&self.normal, &self.support_normal),
+            apply(&self.tangent, &self.support_tangent),
+        )
     }
 
     /// `Nᵀ p_n + Tᵀ p_t`: block resultants of point forces.

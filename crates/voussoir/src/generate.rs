@@ -86,7 +86,11 @@ fn material_map(unit_weight: f64, width: f64) -> BTreeMap<String, Material> {
     let mut m = BTreeMap::new();
     m.insert(
         "default".to_string(),
-        Material { unit_weight, width, ..Material::default() },
+        Material {
+            unit_weight,
+            width,
+            ..Material::default()
+        },
     );
     m
 }
@@ -118,16 +122,33 @@ fn springing_support(name: &str, p_in: Point, p_out: Point, dir: Point, depth: f
         [p_out[0] + depth * dir[0], p_out[1] + depth * dir[1]],
         [p_in[0] + depth * dir[0], p_in[1] + depth * dir[1]],
     ];
-    Support { name: name.into(), polygon: ccw(poly), motion: [0.0; 3], connection: Default::default() }
+    Support {
+        name: name.into(),
+        polygon: ccw(poly),
+        motion: [0.0; 3],
+        connection: Default::default(),
+    }
 }
 
 /// Generate an arch on two supports named `left` and `right`.
 pub fn arch(s: &ArchSpec) -> Result<Model> {
-    req(s.radius.is_finite() && s.radius > 0.0, "arch radius must be positive")?;
-    req(s.thickness.is_finite() && s.thickness > 0.0, "arch thickness must be positive")?;
+    req(
+        s.radius.is_finite() && s.radius > 0.0,
+        "arch radius must be positive",
+    )?;
+    req(
+        s.thickness.is_finite() && s.thickness > 0.0,
+        "arch thickness must be positive",
+    )?;
     req(s.voussoirs >= 2, "an arch needs at least 2 voussoirs")?;
-    req(s.unit_weight.is_finite() && s.unit_weight >= 0.0, "unit weight must be ≥ 0")?;
-    req(s.width.is_finite() && s.width > 0.0, "width must be positive")?;
+    req(
+        s.unit_weight.is_finite() && s.unit_weight >= 0.0,
+        "unit weight must be ≥ 0",
+    )?;
+    req(
+        s.width.is_finite() && s.width > 0.0,
+        "width must be positive",
+    )?;
     req(s.live_load.is_finite(), "live load must be a finite number")?;
     let ri = match s.radius_at {
         RadiusAt::Intrados => s.radius,
@@ -143,7 +164,10 @@ pub fn arch(s: &ArchSpec) -> Result<Model> {
         ArchShape::Semicircular | ArchShape::Segmental { .. } => {
             let half = match s.shape {
                 ArchShape::Segmental { half_angle } => {
-                    req(half_angle > 0.0 && half_angle < PI / 2.0 + 1e-12, "segmental half-angle must be in (0°, 90°]")?;
+                    req(
+                        half_angle > 0.0 && half_angle < PI / 2.0 + 1e-12,
+                        "segmental half-angle must be in (0°, 90°]",
+                    )?;
                     half_angle
                 }
                 _ => PI / 2.0,
@@ -162,8 +186,14 @@ pub fn arch(s: &ArchSpec) -> Result<Model> {
             }
         }
         ArchShape::Pointed { offset } => {
-            req((0.0..1.0).contains(&offset), "pointed-arch offset must be in [0, 1) of the radius")?;
-            req(n % 2 == 0, "a pointed arch needs an even number of voussoirs")?;
+            req(
+                (0.0..1.0).contains(&offset),
+                "pointed-arch offset must be in [0, 1) of the radius",
+            )?;
+            req(
+                n % 2 == 0,
+                "a pointed arch needs an even number of voussoirs",
+            )?;
             let e = offset * ri;
             // Left half: centre (+e, 0), from angle π to the crown angle where x = 0.
             let top = (-e / ri).acos();
@@ -199,12 +229,23 @@ pub fn arch(s: &ArchSpec) -> Result<Model> {
             _ => false,
         };
         if loaded && s.live_load != 0.0 {
-            live.push(Load::Edge { block: k, edge, q: s.live_load, per: Per::Horizontal });
+            live.push(Load::Edge {
+                block: k,
+                edge,
+                q: s.live_load,
+                per: Per::Horizontal,
+            });
         }
-        blocks.push(Block { polygon: poly, material: None });
+        blocks.push(Block {
+            polygon: poly,
+            material: None,
+        });
     }
     if s.live == LiveLoad::Horizontal {
-        live.push(Load::Body { coefficients: [1.0, 0.0], blocks: None });
+        live.push(Load::Body {
+            coefficients: [1.0, 0.0],
+            blocks: None,
+        });
     }
     // Supports: extend away from the arch, perpendicular to the springing joint.
     let depth = s.thickness.max(0.1 * ri);
@@ -229,7 +270,9 @@ pub fn arch(s: &ArchSpec) -> Result<Model> {
     ];
     let shape = match s.shape {
         ArchShape::Semicircular => "semicircular".to_string(),
-        ArchShape::Segmental { half_angle } => format!("segmental ({:.1}° half-angle)", half_angle.to_degrees()),
+        ArchShape::Segmental { half_angle } => {
+            format!("segmental ({:.1}° half-angle)", half_angle.to_degrees())
+        }
         ArchShape::Pointed { offset } => format!("pointed (centres at ±{offset}·R)"),
     };
     Ok(Model {
@@ -279,35 +322,70 @@ impl Default for LintelSpec {
 /// A flat lintel: `bricks` equal bricks spanning between supports `left` and `right` (vertical
 /// faces). The live load is a vertical load on the top face of every brick.
 pub fn lintel(s: &LintelSpec) -> Result<Model> {
-    req(s.span > 0.0 && s.thickness > 0.0 && s.bricks >= 1, "lintel needs span > 0, thickness > 0, bricks ≥ 1")?;
-    req(s.unit_weight >= 0.0 && s.width > 0.0, "unit weight ≥ 0 and width > 0")?;
+    req(
+        s.span > 0.0 && s.thickness > 0.0 && s.bricks >= 1,
+        "lintel needs span > 0, thickness > 0, bricks ≥ 1",
+    )?;
+    req(
+        s.unit_weight >= 0.0 && s.width > 0.0,
+        "unit weight ≥ 0 and width > 0",
+    )?;
     let (h, w) = (s.thickness, s.span / s.bricks as f64);
     let mut blocks = Vec::new();
     let mut live = Vec::new();
     for k in 0..s.bricks {
         let x0 = -s.span / 2.0 + k as f64 * w;
-        let x1 = if k + 1 == s.bricks { s.span / 2.0 } else { x0 + w };
-        blocks.push(Block { polygon: vec![[x0, 0.0], [x1, 0.0], [x1, h], [x0, h]], material: None });
+        let x1 = if k + 1 == s.bricks {
+            s.span / 2.0
+        } else {
+            x0 + w
+        };
+        blocks.push(Block {
+            polygon: vec![[x0, 0.0], [x1, 0.0], [x1, h], [x0, h]],
+            material: None,
+        });
         if s.live_load != 0.0 {
-            live.push(Load::Edge { block: k, edge: 2, q: s.live_load / s.width, per: Per::Length });
+            live.push(Load::Edge {
+                block: k,
+                edge: 2,
+                q: s.live_load / s.width,
+                per: Per::Length,
+            });
         }
     }
     let a = h; // abutment width
     let (l, r) = (-s.span / 2.0, s.span / 2.0);
     let supports = vec![
-        Support { name: "left".into(), polygon: vec![[l - a, 0.0], [l, 0.0], [l, h], [l - a, h]], motion: [0.0; 3], connection: Default::default() },
-        Support { name: "right".into(), polygon: vec![[r, 0.0], [r + a, 0.0], [r + a, h], [r, h]], motion: [0.0; 3], connection: Default::default() },
+        Support {
+            name: "left".into(),
+            polygon: vec![[l - a, 0.0], [l, 0.0], [l, h], [l - a, h]],
+            motion: [0.0; 3],
+            connection: Default::default(),
+        },
+        Support {
+            name: "right".into(),
+            polygon: vec![[r, 0.0], [r + a, 0.0], [r + a, h], [r, h]],
+            motion: [0.0; 3],
+            connection: Default::default(),
+        },
     ];
     let mut materials = material_map(s.unit_weight, s.width);
     if let Some(m) = materials.get_mut("default") {
         m.compressive_strength = s.compressive_strength;
     }
     Ok(Model {
-        description: format!("flat lintel, span {} m, thickness {} m, {} bricks", s.span, s.thickness, s.bricks),
+        description: format!(
+            "flat lintel, span {} m, thickness {} m, {} bricks",
+            s.span, s.thickness, s.bricks
+        ),
         materials,
         blocks,
         supports,
-        loads: Loads { self_weight: true, dead: vec![], live },
+        loads: Loads {
+            self_weight: true,
+            dead: vec![],
+            live,
+        },
         tolerance: None,
     })
 }
@@ -352,9 +430,18 @@ impl Default for WallSpec {
 /// from left to right). A `full` course has `units` whole units; a `half` course has `units − 1`
 /// whole units and a half unit at each end. Courses alternate.
 pub fn wall(s: &WallSpec) -> Result<Model> {
-    req(s.courses >= 1 && s.units >= 1, "a wall needs at least one course and one unit")?;
-    req(s.unit[0] > 0.0 && s.unit[1] > 0.0, "unit size must be positive")?;
-    req(s.unit_weight >= 0.0 && s.width > 0.0, "unit weight ≥ 0 and width > 0")?;
+    req(
+        s.courses >= 1 && s.units >= 1,
+        "a wall needs at least one course and one unit",
+    )?;
+    req(
+        s.unit[0] > 0.0 && s.unit[1] > 0.0,
+        "unit size must be positive",
+    )?;
+    req(
+        s.unit_weight >= 0.0 && s.width > 0.0,
+        "unit weight ≥ 0 and width > 0",
+    )?;
     let [l, h] = s.unit;
     let mut blocks = Vec::with_capacity(s.courses * (s.units + 1));
     let mut base_spans: Vec<(f64, f64)> = Vec::new();
@@ -370,7 +457,10 @@ pub fn wall(s: &WallSpec) -> Result<Model> {
             xs.push(s.units as f64 * l);
         }
         for w in xs.windows(2) {
-            blocks.push(Block { polygon: vec![[w[0], y0], [w[1], y0], [w[1], y1], [w[0], y1]], material: None });
+            blocks.push(Block {
+                polygon: vec![[w[0], y0], [w[1], y0], [w[1], y1], [w[0], y1]],
+                material: None,
+            });
             if c == 0 {
                 base_spans.push((w[0], w[1]));
             }
@@ -388,7 +478,10 @@ pub fn wall(s: &WallSpec) -> Result<Model> {
         })
         .collect();
     let live = match s.live {
-        LiveLoad::Horizontal => vec![Load::Body { coefficients: [1.0, 0.0], blocks: None }],
+        LiveLoad::Horizontal => vec![Load::Body {
+            coefficients: [1.0, 0.0],
+            blocks: None,
+        }],
         LiveLoad::None => vec![],
         _ => {
             // Vertical load on the top course.
@@ -396,7 +489,12 @@ pub fn wall(s: &WallSpec) -> Result<Model> {
             let top_y = s.courses as f64 * h;
             (0..nb)
                 .filter(|&i| blocks[i].polygon[2][1] == top_y)
-                .map(|i| Load::Edge { block: i, edge: 2, q: 1.0, per: Per::Horizontal })
+                .map(|i| Load::Edge {
+                    block: i,
+                    edge: 2,
+                    q: 1.0,
+                    per: Per::Horizontal,
+                })
                 .collect()
         }
     };
@@ -408,7 +506,11 @@ pub fn wall(s: &WallSpec) -> Result<Model> {
         materials: material_map(s.unit_weight, s.width),
         blocks,
         supports,
-        loads: Loads { self_weight: true, dead: vec![], live },
+        loads: Loads {
+            self_weight: true,
+            dead: vec![],
+            live,
+        },
         tolerance: None,
     })
 }

@@ -37,7 +37,10 @@ pub fn area_centroid(p: &[Point]) -> (f64, Point) {
     if area == 0.0 {
         return (0.0, o);
     }
-    (area.abs(), [o[0] + cx / (6.0 * area), o[1] + cy / (6.0 * area)])
+    (
+        area.abs(),
+        [o[0] + cx / (6.0 * area), o[1] + cy / (6.0 * area)],
+    )
 }
 
 /// 2D cross product.
@@ -60,7 +63,12 @@ pub fn norm(a: Point) -> f64 {
 
 /// Axis-aligned bounding box `[xmin, ymin, xmax, ymax]`.
 pub fn bbox(p: &[Point]) -> [f64; 4] {
-    let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
     for q in p {
         b[0] = b[0].min(q[0]);
         b[1] = b[1].min(q[1]);
@@ -163,7 +171,8 @@ pub fn polygons_overlap(p: &[Point], q: &[Point], tol: f64) -> bool {
         (0..k).any(|i| {
             let v = a[i];
             let w = a[(i + 1) % k];
-            strictly_inside(v, b, tol) || strictly_inside([(v[0] + w[0]) / 2.0, (v[1] + w[1]) / 2.0], b, tol)
+            strictly_inside(v, b, tol)
+                || strictly_inside([(v[0] + w[0]) / 2.0, (v[1] + w[1]) / 2.0], b, tol)
         })
     };
     if probe(p, q) || probe(q, p) {
@@ -209,7 +218,10 @@ impl RigidMotion {
     /// The inverse motion.
     pub fn inverse(&self) -> Self {
         RigidMotion {
-            center: [self.center[0] + self.translation[0], self.center[1] + self.translation[1]],
+            center: [
+                self.center[0] + self.translation[0],
+                self.center[1] + self.translation[1],
+            ],
             translation: [-self.translation[0], -self.translation[1]],
             theta: -self.theta,
         }
@@ -257,10 +269,20 @@ struct EdgeRec {
 /// Returns the interfaces sorted by `(a, b, position)` and any same-orientation overlaps.
 pub fn detect_interfaces(bodies: &[&[Point]], tol: f64) -> (Vec<Interface>, Vec<Clash>) {
     // Reference origin: centre of everything, so offsets are well conditioned.
-    let mut bb = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    let mut bb = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
     for p in bodies {
         let b = bbox(p);
-        bb = [bb[0].min(b[0]), bb[1].min(b[1]), bb[2].max(b[2]), bb[3].max(b[3])];
+        bb = [
+            bb[0].min(b[0]),
+            bb[1].min(b[1]),
+            bb[2].max(b[2]),
+            bb[3].max(b[3]),
+        ];
     }
     let o = [(bb[0] + bb[2]) / 2.0, (bb[1] + bb[3]) / 2.0];
     let size = (bb[2] - bb[0]).hypot(bb[3] - bb[1]).max(tol);
@@ -304,7 +326,11 @@ pub fn detect_interfaces(bodies: &[&[Point]], tol: f64) -> (Vec<Interface>, Vec<
             });
         }
     }
-    edges.sort_by(|x, y| x.angle.total_cmp(&y.angle).then(x.offset.total_cmp(&y.offset)));
+    edges.sort_by(|x, y| {
+        x.angle
+            .total_cmp(&y.angle)
+            .then(x.offset.total_cmp(&y.offset))
+    });
 
     let mut found: Vec<Interface> = Vec::new();
     let mut clashes: Vec<Clash> = Vec::new();

@@ -49,7 +49,13 @@ impl LinearProgram {
         self.row_lower.len() - 1
     }
     /// Add a column with its cost, bounds and `(row, value)` entries; returns its index.
-    pub fn add_column(&mut self, cost: f64, lo: f64, hi: f64, entries: impl IntoIterator<Item = (usize, f64)>) -> usize {
+    pub fn add_column(
+        &mut self,
+        cost: f64,
+        lo: f64,
+        hi: f64,
+        entries: impl IntoIterator<Item = (usize, f64)>,
+    ) -> usize {
         self.cost.push(cost);
         self.col_lower.push(lo);
         self.col_upper.push(hi);
@@ -191,19 +197,31 @@ fn build(lp: &LinearProgram) -> highs::Model {
         let entries: Vec<(highs::Row, f64)> = lp.column(j).map(|(i, v)| (rows[i], v)).collect();
         p.add_column(lp.cost[j], lp.col_lower[j]..=lp.col_upper[j], entries);
     }
-    p.optimise(if lp.maximise { Sense::Maximise } else { Sense::Minimise })
+    p.optimise(if lp.maximise {
+        Sense::Maximise
+    } else {
+        Sense::Minimise
+    })
 }
 
 /// Solve `lp`. Infeasible and unbounded are statuses, not errors. An "unbounded or infeasible"
 /// answer from presolve is settled by solving again without presolve.
 pub fn solve(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
-    for b in lp.row_lower.iter().chain(&lp.row_upper).chain(&lp.col_lower).chain(&lp.col_upper) {
+    for b in lp
+        .row_lower
+        .iter()
+        .chain(&lp.row_upper)
+        .chain(&lp.col_lower)
+        .chain(&lp.col_upper)
+    {
         if b.is_nan() {
             return Err(Error::Solver("the LP has a NaN bound".into()));
         }
     }
     if lp.cost.iter().chain(&lp.value).any(|v| !v.is_finite()) {
-        return Err(Error::Solver("the LP has a coefficient that is not finite".into()));
+        return Err(Error::Solver(
+            "the LP has a coefficient that is not finite".into(),
+        ));
     }
     let mut opts = *o;
     loop {
@@ -222,7 +240,11 @@ pub fn solve(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
                 continue;
             }
             HighsModelStatus::ModelEmpty => LpStatus::Optimal,
-            other => return Err(Error::Solver(format!("HiGHS stopped with status {other:?}"))),
+            other => {
+                return Err(Error::Solver(format!(
+                    "HiGHS stopped with status {other:?}"
+                )))
+            }
         };
         if status != LpStatus::Optimal {
             return Ok(LpSolution {
@@ -271,10 +293,16 @@ mod tests {
         let mut lp = LinearProgram::new(Direction::Maximise);
         let r = lp.add_row(0.0, f64::INFINITY);
         lp.add_column(1.0, 0.0, f64::INFINITY, [(r, 1.0)]);
-        assert_eq!(solve(&lp, &SolverOptions::default()).unwrap().status, LpStatus::Unbounded);
+        assert_eq!(
+            solve(&lp, &SolverOptions::default()).unwrap().status,
+            LpStatus::Unbounded
+        );
         let mut lp = LinearProgram::new(Direction::Minimise);
         let r = lp.add_row(1.0, 1.0);
         lp.add_column(1.0, 0.0, f64::INFINITY, [(r, -1.0)]);
-        assert_eq!(solve(&lp, &SolverOptions::default()).unwrap().status, LpStatus::Infeasible);
+        assert_eq!(
+            solve(&lp, &SolverOptions::default()).unwrap().status,
+            LpStatus::Infeasible
+        );
     }
 }

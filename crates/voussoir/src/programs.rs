@@ -48,8 +48,18 @@ impl ForceProgram {
             }
             let (cn, ct) = cost(k);
             let lo = if map.bilateral[k] { -INF } else { 0.0 };
-            pn.push(Some(lp.add_column(cn, lo, INF, KinematicMap::row(&map.normal, k))));
-            pt.push(Some(lp.add_column(ct, -INF, INF, KinematicMap::row(&map.tangent, k))));
+            pn.push(Some(lp.add_column(
+                cn,
+                lo,
+                INF,
+                KinematicMap::row(&map.normal, k),
+            )));
+            pt.push(Some(lp.add_column(
+                ct,
+                -INF,
+                INF,
+                KinematicMap::row(&map.tangent, k),
+            )));
         }
         ForceProgram { lp, lambda, pn, pt }
     }
@@ -57,7 +67,10 @@ impl ForceProgram {
     /// Point forces `(p_n, p_t)` from a solution vector (0 where a point has no column).
     pub fn forces(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
         let get = |c: &Option<usize>| c.map_or(0.0, |j| x[j]);
-        (self.pn.iter().map(get).collect(), self.pt.iter().map(get).collect())
+        (
+            self.pn.iter().map(get).collect(),
+            self.pt.iter().map(get).collect(),
+        )
     }
 }
 
@@ -98,6 +111,10 @@ impl MotionProgram {
         for (c, entries) in cols.into_iter().enumerate() {
             lp.add_column(work[c], -INF, INF, entries);
         }
-        MotionProgram { lp, normal_row, tangent_row }
+        MotionProgram {
+            lp,
+            normal_row,
+            tangent_row,
+        }
     }
 }

@@ -156,7 +156,14 @@ impl Geometry {
             loads: st
                 .loads
                 .iter()
-                .map(|l| LoadArrow { block: l.block, x: l.at[0], y: l.at[1], fx: l.force[0], fy: l.force[1], live: l.live })
+                .map(|l| LoadArrow {
+                    block: l.block,
+                    x: l.at[0],
+                    y: l.at[1],
+                    fx: l.force[0],
+                    fy: l.force[1],
+                    live: l.live,
+                })
                 .collect(),
         }
     }
@@ -256,11 +263,19 @@ pub fn report(
         if state == JointState::Hinge {
             // The hinge is the closed point (the one with the smallest opening).
             if let Some(p) = points.iter().min_by(|a, b| a.opening.total_cmp(&b.opening)) {
-                hinges.push(Hinge { joint: j, x: p.x, y: p.y });
+                hinges.push(Hinge {
+                    joint: j,
+                    x: p.x,
+                    y: p.y,
+                });
             }
         }
         let eccentricity = if nf > 1e-9 * fscale {
-            thrust_line.push(ThrustPoint { joint: j, x: cx / nf, y: cy / nf });
+            thrust_line.push(ThrustPoint {
+                joint: j,
+                x: cx / nf,
+                y: cy / nf,
+            });
             Some(mom / nf)
         } else {
             None
@@ -278,7 +293,14 @@ pub fn report(
         });
     }
     let reactions = reactions(st, map, pn, pt);
-    JointReport { blocks, joints, hinges, thrust_line, reactions, openings: open }
+    JointReport {
+        blocks,
+        joints,
+        hinges,
+        thrust_line,
+        reactions,
+        openings: open,
+    }
 }
 
 /// Reactions: force of each support on the structure and moment about the support centroid.
@@ -289,7 +311,10 @@ pub fn reactions(st: &Structure, map: &KinematicMap, pn: &[f64], pt: &[f64]) -> 
         let t = joint.tangent();
         let x = joint.points[pr.index].x;
         // Force on b along +n and +t; on a the opposite.
-        let f = [pn[k] * joint.normal[0] + pt[k] * t[0], pn[k] * joint.normal[1] + pt[k] * t[1]];
+        let f = [
+            pn[k] * joint.normal[0] + pt[k] * t[0],
+            pn[k] * joint.normal[1] + pt[k] * t[1],
+        ];
         for (body, sign) in [(joint.a, 1.0), (joint.b, -1.0)] {
             // The support is `body`; the structure is the other side, which receives +f if the
             // support is a, −f if the support is b.
@@ -302,7 +327,11 @@ pub fn reactions(st: &Structure, map: &KinematicMap, pn: &[f64], pt: &[f64]) -> 
             }
         }
     }
-    let scale = acc.iter().flat_map(|a| a.iter()).fold(0.0f64, |m, x| m.max(x.abs())).max(1e-300);
+    let scale = acc
+        .iter()
+        .flat_map(|a| a.iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+        .max(1e-300);
     st.supports
         .iter()
         .zip(acc)

@@ -67,7 +67,11 @@ impl Profile {
                 }
             }
             Profile::Table { points } => {
-                if points.len() < 2 || points.iter().any(|p| !p[0].is_finite() || !p[1].is_finite()) {
+                if points.len() < 2
+                    || points
+                        .iter()
+                        .any(|p| !p[0].is_finite() || !p[1].is_finite())
+                {
                     return bad("a table needs at least two finite (x, v) pairs");
                 }
                 if points.windows(2).any(|w| w[1][0] <= w[0][0]) {
@@ -81,18 +85,31 @@ impl Profile {
     /// Parse the command-line form: `uniform:X0,X1,V`, `linear:X0,V0,X1,V1` or
     /// `table:X,V;X,V;…` (metres).
     pub fn parse(s: &str) -> Result<Profile> {
-        let bad = || Error::Request(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"));
+        let bad = || {
+            Error::Request(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"))
+        };
         let (kind, rest) = s.split_once(':').ok_or_else(bad)?;
         let nums = |t: &str| -> Result<Vec<f64>> {
-            t.split(',').map(|x| x.trim().parse::<f64>().map_err(|_| bad())).collect()
+            t.split(',')
+                .map(|x| x.trim().parse::<f64>().map_err(|_| bad()))
+                .collect()
         };
         let p = match kind {
             "uniform" => match nums(rest)?.as_slice() {
-                [x0, x1, v] => Profile::Uniform { x0: *x0, x1: *x1, v: *v },
+                [x0, x1, v] => Profile::Uniform {
+                    x0: *x0,
+                    x1: *x1,
+                    v: *v,
+                },
                 _ => return Err(bad()),
             },
             "linear" => match nums(rest)?.as_slice() {
-                [x0, v0, x1, v1] => Profile::Linear { x0: *x0, v0: *v0, x1: *x1, v1: *v1 },
+                [x0, v0, x1, v1] => Profile::Linear {
+                    x0: *x0,
+                    v0: *v0,
+                    x1: *x1,
+                    v1: *v1,
+                },
                 _ => return Err(bad()),
             },
             "table" => {
@@ -130,15 +147,27 @@ pub fn apply_profile(model: &mut Model, profile: &Profile) -> Result<()> {
 /// Set the motion of support `name` (θ in radians).
 pub fn move_support(model: &mut Model, name: &str, motion: [f64; 3]) -> Result<()> {
     if !motion.iter().all(|x| x.is_finite()) {
-        return Err(Error::Request(format!("motion of support '{name}' is not finite")));
+        return Err(Error::Request(format!(
+            "motion of support '{name}' is not finite"
+        )));
     }
-    let known = || model.supports.iter().map(|s| s.name.clone()).collect::<Vec<_>>().join(", ");
+    let known = || {
+        model
+            .supports
+            .iter()
+            .map(|s| s.name.clone())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     match model.supports.iter().position(|s| s.name == name) {
         Some(i) => {
             model.supports[i].motion = motion;
             Ok(())
         }
-        None => Err(Error::Request(format!("no support named '{name}' (the model has: {})", known()))),
+        None => Err(Error::Request(format!(
+            "no support named '{name}' (the model has: {})",
+            known()
+        ))),
     }
 }
 

@@ -68,7 +68,10 @@ impl Joint {
     /// Midpoint of the original contact segment (mean of the points).
     pub fn midpoint(&self) -> Point {
         let n = self.points.len().max(1) as f64;
-        let s = self.points.iter().fold([0.0, 0.0], |s, p| [s[0] + p.x[0], s[1] + p.x[1]]);
+        let s = self
+            .points
+            .iter()
+            .fold([0.0, 0.0], |s, p| [s[0] + p.x[0], s[1] + p.x[1]]);
         [s[0] / n, s[1] / n]
     }
 }
@@ -106,10 +109,15 @@ fn finite(p: &[Point]) -> bool {
 /// Check a polygon and return it counter-clockwise.
 fn clean_polygon(what: &str, p: &[Point], tol: f64) -> Result<Vec<Point>> {
     if p.len() < 3 {
-        return model_err(format!("{what}: polygon has {} vertices, needs at least 3", p.len()));
+        return model_err(format!(
+            "{what}: polygon has {} vertices, needs at least 3",
+            p.len()
+        ));
     }
     if !finite(p) {
-        return model_err(format!("{what}: polygon has a coordinate that is not a finite number"));
+        return model_err(format!(
+            "{what}: polygon has a coordinate that is not a finite number"
+        ));
     }
     // Drop a closing vertex equal to the first (as CAD exports often have).
     let mut q: Vec<Point> = p.to_vec();
@@ -119,7 +127,9 @@ fn clean_polygon(what: &str, p: &[Point], tol: f64) -> Result<Vec<Point>> {
     for i in 0..q.len() {
         let j = (i + 1) % q.len();
         if geometry::norm(geometry::sub(q[i], q[j])) <= tol {
-            return model_err(format!("{what}: vertices {i} and {j} coincide (zero-length edge)"));
+            return model_err(format!(
+                "{what}: vertices {i} and {j} coincide (zero-length edge)"
+            ));
         }
     }
     let a = geometry::signed_area(&q);
@@ -129,7 +139,9 @@ fn clean_polygon(what: &str, p: &[Point], tol: f64) -> Result<Vec<Point>> {
         return model_err(format!("{what}: polygon is degenerate (zero area)"));
     }
     if let Some((i, j)) = geometry::self_intersection(&q, tol) {
-        return model_err(format!("{what}: polygon is self-intersecting (edges {i} and {j} cross or touch)"));
+        return model_err(format!(
+            "{what}: polygon is self-intersecting (edges {i} and {j} cross or touch)"
+        ));
     }
     if a < 0.0 {
         q.reverse();
@@ -147,26 +159,49 @@ impl Structure {
             return model_err("the model has no supports: at least one foundation is needed");
         }
         // Tolerance from the overall size.
-        let mut all = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-        for p in model.blocks.iter().map(|b| &b.polygon).chain(model.supports.iter().map(|s| &s.polygon)) {
+        let mut all = [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        for p in model
+            .blocks
+            .iter()
+            .map(|b| &b.polygon)
+            .chain(model.supports.iter().map(|s| &s.polygon))
+        {
             if finite(p) && !p.is_empty() {
                 let b = bbox(p);
-                all = [all[0].min(b[0]), all[1].min(b[1]), all[2].max(b[2]), all[3].max(b[3])];
+                all = [
+                    all[0].min(b[0]),
+                    all[1].min(b[1]),
+                    all[2].max(b[2]),
+                    all[3].max(b[3]),
+                ];
             }
         }
         let rel = opts.tolerance.or(model.tolerance).unwrap_or(1e-7);
         if !(rel.is_finite() && rel > 0.0 && rel < 0.1) {
-            return model_err(format!("tolerance {rel} must be a positive number below 0.1"));
+            return model_err(format!(
+                "tolerance {rel} must be a positive number below 0.1"
+            ));
         }
         let diag = (all[2] - all[0]).hypot(all[3] - all[1]);
-        let tol = rel * if diag.is_finite() && diag > 0.0 { diag } else { 1.0 };
+        let tol = rel
+            * if diag.is_finite() && diag > 0.0 {
+                diag
+            } else {
+                1.0
+            };
 
         for (name, m) in &model.materials {
             let ok = m.unit_weight.is_finite()
                 && m.unit_weight >= 0.0
                 && m.width.is_finite()
                 && m.width > 0.0
-                && m.compressive_strength.is_none_or(|f| f.is_finite() && f > 0.0)
+                && m.compressive_strength
+                    .is_none_or(|f| f.is_finite() && f > 0.0)
                 && m.friction.is_none_or(|f| f.is_finite() && f >= 0.0)
                 && m.cohesion.is_finite()
                 && m.cohesion >= 0.0;
@@ -206,7 +241,9 @@ impl Structure {
                 return model_err(format!("{what}: name used twice"));
             }
             if !s.motion.iter().all(|x| x.is_finite()) {
-                return model_err(format!("{what}: motion has a value that is not a finite number"));
+                return model_err(format!(
+                    "{what}: motion has a value that is not a finite number"
+                ));
             }
             let polygon = clean_polygon(&what, &s.polygon, tol)?;
             let (_, centroid) = area_centroid(&polygon);
@@ -263,7 +300,10 @@ impl Structure {
             })
             .collect();
         let nb = self.blocks.len();
-        let mut sizes: Vec<f64> = boxes[..nb].iter().map(|b| (b[2] - b[0]).max(b[3] - b[1])).collect();
+        let mut sizes: Vec<f64> = boxes[..nb]
+            .iter()
+            .map(|b| (b[2] - b[0]).max(b[3] - b[1]))
+            .collect();
         sizes.sort_by(f64::total_cmp);
         let cell = sizes[sizes.len() / 2].max(tol * 10.0);
         let mut entries: Vec<(i64, i64, usize)> = Vec::new();
@@ -283,7 +323,8 @@ impl Structure {
         let mut s = 0;
         while s < entries.len() {
             let mut e = s + 1;
-            while e < entries.len() && entries[e].0 == entries[s].0 && entries[e].1 == entries[s].1 {
+            while e < entries.len() && entries[e].0 == entries[s].0 && entries[e].1 == entries[s].1
+            {
                 e += 1;
             }
             for x in s..e {
@@ -304,7 +345,11 @@ impl Structure {
         pairs.dedup();
         for (p, q) in pairs {
             if geometry::polygons_overlap(polys[p], polys[q], tol) {
-                return model_err(format!("{} and {} overlap", self.body_name(p), self.body_name(q)));
+                return model_err(format!(
+                    "{} and {} overlap",
+                    self.body_name(p),
+                    self.body_name(q)
+                ));
             }
         }
         Ok(())
@@ -317,9 +362,19 @@ impl Structure {
             geometry::detect_interfaces(&polys, self.tolerance)
         };
         if let Some(c) = clashes.iter().find(|c| c.a < nb || c.b < nb) {
-            return model_err(format!("{} and {} overlap", self.body_name(c.a), self.body_name(c.b)));
+            return model_err(format!(
+                "{} and {} overlap",
+                self.body_name(c.a),
+                self.body_name(c.b)
+            ));
         }
-        let to_body = |k: usize| if k < nb { Body::Block(k) } else { Body::Support(k - nb) };
+        let to_body = |k: usize| {
+            if k < nb {
+                Body::Block(k)
+            } else {
+                Body::Support(k - nb)
+            }
+        };
         let mut touched = vec![false; nb];
         for it in ifs {
             if it.a >= nb && it.b >= nb {
@@ -334,7 +389,9 @@ impl Structure {
                         touched[i] = true;
                         width = width.min(self.blocks[i].material.width);
                     }
-                    Body::Support(s) => bilateral = self.supports[s].connection == Connection::Fixed,
+                    Body::Support(s) => {
+                        bilateral = self.supports[s].connection == Connection::Fixed
+                    }
                 }
             }
             self.joints.push(Joint {
@@ -343,7 +400,11 @@ impl Structure {
                 normal: it.normal,
                 length: geometry::norm(geometry::sub(it.ends[1], it.ends[0])),
                 width,
-                points: it.ends.iter().map(|&x| ContactPoint { x, gap: 0.0 }).collect(),
+                points: it
+                    .ends
+                    .iter()
+                    .map(|&x| ContactPoint { x, gap: 0.0 })
+                    .collect(),
                 bilateral,
             });
         }
@@ -390,7 +451,9 @@ impl Structure {
 
     /// Whether the structure has any live load.
     pub fn has_live_loads(&self) -> bool {
-        self.loads.iter().any(|l| l.live && (l.force[0] != 0.0 || l.force[1] != 0.0))
+        self.loads
+            .iter()
+            .any(|l| l.live && (l.force[0] != 0.0 || l.force[1] != 0.0))
     }
 
     /// A copy with the supports' prescribed motions replaced.
@@ -410,8 +473,14 @@ impl Structure {
     pub fn deformed(&self, d: &[f64], s: f64, openings: &[Vec<f64>], gap_tol: f64) -> Structure {
         let motion = |b: Body| -> RigidMotion {
             match b {
-                Body::Block(i) => RigidMotion::scaled(self.blocks[i].centroid, [d[3 * i], d[3 * i + 1], d[3 * i + 2]], s),
-                Body::Support(k) => RigidMotion::scaled(self.supports[k].centroid, self.supports[k].motion, s),
+                Body::Block(i) => RigidMotion::scaled(
+                    self.blocks[i].centroid,
+                    [d[3 * i], d[3 * i + 1], d[3 * i + 2]],
+                    s,
+                ),
+                Body::Support(k) => {
+                    RigidMotion::scaled(self.supports[k].centroid, self.supports[k].motion, s)
+                }
             }
         };
         let mut out = self.clone();
@@ -437,7 +506,12 @@ impl Structure {
             for (k, p) in joint.points.iter_mut().enumerate() {
                 let (xa, xb) = (ma.apply(p.x), mb.apply(p.x));
                 p.x = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
-                let g = p.gap + s * openings.get(j).and_then(|o| o.get(k)).copied().unwrap_or(0.0);
+                let g = p.gap
+                    + s * openings
+                        .get(j)
+                        .and_then(|o| o.get(k))
+                        .copied()
+                        .unwrap_or(0.0);
                 p.gap = if g > gap_tol { g } else { 0.0 };
             }
         }
@@ -454,7 +528,12 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
     if model.loads.self_weight {
         for (i, b) in st.blocks.iter().enumerate() {
             if b.weight > 0.0 {
-                out.push(AppliedLoad { block: i, at: b.centroid, force: [0.0, -b.weight], live: false });
+                out.push(AppliedLoad {
+                    block: i,
+                    at: b.centroid,
+                    force: [0.0, -b.weight],
+                    live: false,
+                });
             }
         }
     }
@@ -466,7 +545,9 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
                 if b < nb {
                     Ok(())
                 } else {
-                    model_err(format!("{what}: block {b} does not exist (the model has {nb} blocks)"))
+                    model_err(format!(
+                        "{what}: block {b} does not exist (the model has {nb} blocks)"
+                    ))
                 }
             };
             match l {
@@ -475,9 +556,19 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
                     if !finite(&[*at, *force]) {
                         return model_err(format!("{what}: a value is not a finite number"));
                     }
-                    out.push(AppliedLoad { block: *block, at: *at, force: *force, live });
+                    out.push(AppliedLoad {
+                        block: *block,
+                        at: *at,
+                        force: *force,
+                        live,
+                    });
                 }
-                Load::Edge { block, edge, q, per } => {
+                Load::Edge {
+                    block,
+                    edge,
+                    q,
+                    per,
+                } => {
                     check_block(*block)?;
                     let b = &st.blocks[*block];
                     // Edge numbering refers to the block's polygon as given; the polygon was
@@ -502,7 +593,10 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
                         live,
                     });
                 }
-                Load::Body { coefficients, blocks } => {
+                Load::Body {
+                    coefficients,
+                    blocks,
+                } => {
                     if !finite(&[*coefficients]) {
                         return model_err(format!("{what}: a coefficient is not a finite number"));
                     }

@@ -8,7 +8,7 @@ use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
 use crate::programs::ForceProgram;
-use crate::result::{report, Geometry, BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::result::{report, BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
 
@@ -70,9 +70,15 @@ pub struct LimitSolution {
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
-pub fn solve_limit(st: &Structure, map: &KinematicMap, opts: &SolverOptions) -> Result<LimitSolution> {
+pub fn solve_limit(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<LimitSolution> {
     if !st.has_live_loads() {
-        return Err(Error::Request("limit analysis needs live loads (the model has none)".into()));
+        return Err(Error::Request(
+            "limit analysis needs live loads (the model has none)".into(),
+        ));
     }
     let dead = st.load_vector(false);
     let live = st.load_vector(true);
@@ -102,7 +108,11 @@ pub fn solve_limit(st: &Structure, map: &KinematicMap, opts: &SolverOptions) -> 
         vec![0.0; y.len()]
     };
     Ok(LimitSolution {
-        status: if lambda >= 0.0 { LimitStatus::Collapse } else { LimitStatus::NoEquilibrium },
+        status: if lambda >= 0.0 {
+            LimitStatus::Collapse
+        } else {
+            LimitStatus::NoEquilibrium
+        },
         lambda: Some(lambda),
         mechanism,
         pn,
@@ -120,13 +130,20 @@ pub fn limit(st: &Structure, opts: &SolverOptions) -> Result<LimitResult> {
 
 /// Turn raw vectors into the reported result.
 pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> LimitResult {
-    let d = if s.mechanism.is_empty() { vec![0.0; map.num_dofs] } else { s.mechanism.clone() };
+    let d = if s.mechanism.is_empty() {
+        vec![0.0; map.num_dofs]
+    } else {
+        s.mechanism.clone()
+    };
     let rep = report(st, map, &d, 0.0, &s.pn, &s.pt);
     let (wd, wl) = if s.mechanism.is_empty() {
         (None, None)
     } else {
         let dot = |f: Vec<f64>| f.iter().zip(&d).map(|(a, b)| a * b).sum::<f64>();
-        (Some(dot(st.load_vector(false))), Some(dot(st.load_vector(true))))
+        (
+            Some(dot(st.load_vector(false))),
+            Some(dot(st.load_vector(true))),
+        )
     };
     let message = match (s.status, s.lambda) {
         (LimitStatus::Collapse, Some(l)) => format!("collapse load multiplier λ = {l:.6}"),
@@ -142,9 +159,17 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
         load_multiplier: s.lambda,
         work_dead_loads: wd,
         work_live_loads: wl,
-        blocks: if s.mechanism.is_empty() { vec![] } else { rep.blocks },
+        blocks: if s.mechanism.is_empty() {
+            vec![]
+        } else {
+            rep.blocks
+        },
         joints: rep.joints,
-        hinges: if s.mechanism.is_empty() { vec![] } else { rep.hinges },
+        hinges: if s.mechanism.is_empty() {
+            vec![]
+        } else {
+            rep.hinges
+        },
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,

@@ -21,7 +21,7 @@ use crate::discretize::KinematicMap;
 use crate::error::Result;
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
 use crate::programs::{ForceProgram, MotionProgram};
-use crate::result::{report, Geometry, BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::result::{report, BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
 
@@ -100,7 +100,11 @@ pub struct SettlementSolution {
 pub const GAP_TOLERANCE: f64 = 1e-7;
 
 /// Solve both LPs.
-pub fn solve_settlement(st: &Structure, map: &KinematicMap, opts: &SolverOptions) -> Result<SettlementSolution> {
+pub fn solve_settlement(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<SettlementSolution> {
     let dead = st.load_vector(false);
     let mp = MotionProgram::new(map, &dead);
     let primal = lp::solve(&mp.lp, opts)?;
@@ -147,7 +151,11 @@ pub fn settle(st: &Structure, opts: &SolverOptions) -> Result<SettlementResult> 
     Ok(settlement_result(st, &map, &s))
 }
 
-pub fn settlement_result(st: &Structure, map: &KinematicMap, s: &SettlementSolution) -> SettlementResult {
+pub fn settlement_result(
+    st: &Structure,
+    map: &KinematicMap,
+    s: &SettlementSolution,
+) -> SettlementResult {
     if s.status != SettlementStatus::Mechanism {
         return SettlementResult {
             status: s.status,
@@ -182,7 +190,10 @@ pub fn settlement_result(st: &Structure, map: &KinematicMap, s: &SettlementSolut
         .fold(0.0f64, |m, (o, p)| m.max((o * p).abs()));
     let dead = st.load_vector(false);
     let res = map.resultants(&s.pn, &s.pt);
-    let equilibrium_residual = dead.iter().zip(&res).fold(0.0f64, |m, (a, b)| m.max((a + b).abs()));
+    let equilibrium_residual = dead
+        .iter()
+        .zip(&res)
+        .fold(0.0f64, |m, (a, b)| m.max((a + b).abs()));
     let ok = gap <= GAP_TOLERANCE;
     let mut message = s.status.sentence().to_string();
     if !ok {

@@ -1,0 +1,183 @@
+//! Classic limit analysis against closed forms and the literature.
+
+use voussoir::analysis::settlement::SettlementStatus;
+use voussoir::analysis::{limit, settle, LimitStatus};
+use voussoir::generate::{arch, lintel, ArchSpec, LintelSpec, LiveLoad, RadiusAt};
+use voussoir::lp::SolverOptions;
+use voussoir::model::{Block, Load, Loads, Model, Support};
+use voussoir::{BuildOptions, Structure};
+
+fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<[f64; 2]> {
+    vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
+}
+
+/// One block b × h on a base, horizontal live load λ·W at its centroid.
+fn block_on_base(b: f64, h: f64) -> Model {
+    Model {
+        blocks: vec![Block {
+            polygon: rect(0.0, 0.0, b, h),
+            material: None,
+        }],
+        supports: vec![Support {
+            name: "base".into(),
+            polygon: rect(-1.0, -0.5, b + 1.0, 0.0),
+            motion: [0.0; 3],
+            connection: Default::default(),
+        }],
+        loads: Loads {
+            live: vec![Load::Body {
+                coefficients: [1.0, 0.0],
+                blocks: None,
+            }],
+            ..Loads::default()
+        },
+        ..Model::default()
+    }
+}
+
+#[test]
+fn rocking_block_lambda_is_b_over_h() {
+    // Closed form: overturning about the toe when λ W h/2 = W b/2.
+    for (b, h) in [(0.5, 1.0), (1.0, 1.0), (0.3, 2.0), (2.0, 0.5)] {
+        let st = Structure::new(&block_on_base(b, h), BuildOptions::default()).unwrap();
+        let r = limit(&st, &SolverOptions::default()).unwrap();
+        assert_eq!(r.status, LimitStatus::Collapse);
+        let l = r.load_multiplier.unwrap();
+        assert!(
+            (l - b / h).abs() < 1e-9,
+            "b={b} h={h}: λ = {l}, expected {}",
+            b / h
+        );
+        // The mechanism is a rotation about the right toe (b, 0): one hinge there.
+        assert_eq!(r.hinges.len(), 1);
+        assert!((r.hinges[0].x - b).abs() < 1e-12 && r.hinges[0].y.abs() < 1e-12);
+        // Virtual work: dead-load work = −λ when live-load work is 1.
+        assert!((r.work_live_loads.unwrap() - 1.0).abs() < 1e-9);
+        assert!((r.work_dead_loads.unwrap() + l).abs() < 1e-9);
+        // Thrust line at collapse passes through the toe.
+        let t = &r.thrust_line[0];
+        assert!((t.x - b).abs() < 1e-9, "centre of pressure at {}", t.x);
+    }
+}
+
+#[test]
+fn paper_arch_collapse_multipliers() {
+    // Tralli et al. (2020) §6: 0.429 (whole span), 0.215 (half span), ±2 %.
+    for (live, paper) in [(LiveLoad::Full, 0.429), (LiveLoad::Left, 0.215)] {
+        let st = Structure::new(
+            &arch(&ArchSpec {
+                live,
+                ..ArchSpec::default()
+            })
+            .unwrap(),
+            BuildOptions::default(),
+        )
+        .unwrap();
+        let r = limit(&st, &SolverOptions::default()).unwrap();
+        let l = r.load_multiplier.unwrap();
+        assert!(
+            (l - paper).abs() <= 0.02 * paper,
+            "{live:?}: λ = {l}, paper {paper}"
+        );
+        // Openings are non-negative everywhere in the mechanism (admissibility).
+        for j in &r.joints {
+            for p in &j.points {
+                assert!(p.opening >= -1e-9, "joint {} opens by {}", j.id, p.opening);
+                assert!(p.normal_force >= -1e-9);
+            }
+        }
+    }
+}
+
+#[test]
+fn symmetric_full_span_mechanism_has_five_hinges() {
+    let st = Structure::new(
+        &arch(&ArchSpec::default()).unwrap(),
+        BuildOptions::default(),
+    )
+    .unwrap();
+    let r = limit(&st, &SolverOptions::default()).unwrap();
+    let joints: Vec<usize> = r.hinges.iter().map(|h| h.joint).collect();
+    // Springings (joints 1 and 64), 13th joints from each springing, crown (32).
+    assert_eq!(joints, vec![1, 13, 32, 51, 64]);
+}
+
+/// Whether a semicircular arch with centreline radius 1 and thickness t stands under its own
+/// weight: the settlement primal with no settlement is bounded iff it does.
+fn stands(t: f64, voussoirs: usize) -> bool {
+    let m = arch(&ArchSpec {
+        radius: 1.0,
+        radius_at: RadiusAt::Centreline,
+        thickness: t,
+        voussoirs,
+        live: LiveLoad::None,
+        ..ArchSpec::default()
+    })
+    .unwrap();
+    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    settle(&st, &SolverOptions::default()).unwrap().status == SettlementStatus::Mechanism
+}
+
+#[test]
+fn minimum_thickness_of_semicircular_arch() {
+    // Milankovitch / Heyman: t/R = 0.1075 (R at the centreline), approached from below as
+    // the number of voussoirs grows.
+    let mut bracket = [0.05, 0.2];
+    assert!(!stands(bracket[0], 64) && stands(bracket[1], 64));
+    for _ in 0..30 {
+        let mid = 0.5 * (bracket[0] + bracket[1]);
+        if stands(mid, 64) {
+            bracket[1] = mid;
+        } else {
+            bracket[0] = mid;
+        }
+    }
+    let t = bracket[1];
+    eprintln!("minimum t/R with 64 voussoirs: {t:.5}");
+    assert!((t - 0.1075).abs() <= 0.005 * 0.1075, "t/R = {t}");
+    assert!(
+        t <= 0.1075 + 1e-4,
+        "a discrete arch should need slightly less thickness: {t}"
+    );
+}
+
+#[test]
+fn flat_lintel_is_locked() {
+    let st = Structure::new(
+        &lintel(&LintelSpec::default()).unwrap(),
+        BuildOptions::default(),
+    )
+    .unwrap();
+    let r = limit(&st, &SolverOptions::default()).unwrap();
+    assert_eq!(r.status, LimitStatus::Locked);
+    assert!(r.load_multiplier.is_none());
+    assert!(r.message.contains("no finite collapse load"));
+}
+
+#[test]
+fn block_without_base_support_cannot_stand() {
+    // A block leaning on a wall only (touching it with a vertical face): no equilibrium.
+    let m = Model {
+        blocks: vec![Block {
+            polygon: rect(0.0, 0.0, 1.0, 1.0),
+            material: None,
+        }],
+        supports: vec![Support {
+            name: "wall".into(),
+            polygon: rect(1.0, -1.0, 2.0, 2.0),
+            motion: [0.0; 3],
+            connection: Default::default(),
+        }],
+        loads: Loads {
+            live: vec![Load::Body {
+                coefficients: [-1.0, 0.0],
+                blocks: None,
+            }],
+            ..Loads::default()
+        },
+        ..Model::default()
+    };
+    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let r = limit(&st, &SolverOptions::default()).unwrap();
+    assert_eq!(r.status, LimitStatus::NoEquilibrium, "{}", r.message);
+}

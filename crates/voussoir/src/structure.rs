@@ -132,16 +132,16 @@ fn clean_polygon(what: &str, p: &[Point], tol: f64) -> Result<Vec<Point>> {
             ));
         }
     }
+    if let Some((i, j)) = geometry::self_intersection(&q, tol) {
+        return model_err(format!(
+            "{what}: polygon is self-intersecting (edges {i} and {j} cross or touch)"
+        ));
+    }
     let a = geometry::signed_area(&q);
     let b = bbox(&q);
     let scale = (b[2] - b[0]).max(b[3] - b[1]);
     if a.abs() <= tol * scale {
         return model_err(format!("{what}: polygon is degenerate (zero area)"));
-    }
-    if let Some((i, j)) = geometry::self_intersection(&q, tol) {
-        return model_err(format!(
-            "{what}: polygon is self-intersecting (edges {i} and {j} cross or touch)"
-        ));
     }
     if a < 0.0 {
         q.reverse();

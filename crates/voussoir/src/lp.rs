@@ -159,7 +159,7 @@ fn opt<V: highs::HighsOptionValue>(m: &mut highs::Model, k: &str, v: V) -> Resul
         .map_err(|e| Error::Solver(format!("HiGHS option {k}: {e:?}")))
 }
 
-fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
+pub(crate) fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
     m.make_quiet();
     opt(m, "output_flag", false)?;
     opt(m, "presolve", if o.presolve { "on" } else { "off" })?;
@@ -188,7 +188,7 @@ fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
     Ok(())
 }
 
-fn build(lp: &LinearProgram) -> highs::Model {
+pub(crate) fn build(lp: &LinearProgram) -> highs::Model {
     let mut p = ColProblem::default();
     let rows: Vec<highs::Row> = (0..lp.num_rows())
         .map(|i| p.add_row(lp.row_lower[i]..=lp.row_upper[i]))

@@ -5,3 +5,5 @@ pub mod settlement;
 
 pub use limit::{limit, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};
+pub mod capacity;
+pub use capacity::{capacity, CapacityOptions, CapacityResult};

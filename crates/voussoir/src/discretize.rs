@@ -24,6 +24,28 @@ pub struct PointRef {
     pub index: usize,
 }
 
+/// Joint law of a joint: Heyman's (no sliding, infinite strength) unless a material says
+/// otherwise. A joint takes the weaker of the two blocks' values (block–support: the block's).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointLaw {
+    /// Coulomb friction coefficient μ (None: no sliding).
+    pub friction: Option<f64>,
+    /// Cohesive shear capacity per collocation point (kN): c · length · width / points.
+    pub cohesion: f64,
+    /// Compressive strength f_c (kPa), None: infinite.
+    pub strength: Option<f64>,
+    /// Joint depth t (m, its original contact length) and out-of-plane width w (m).
+    pub depth: f64,
+    pub width: f64,
+}
+
+impl JointLaw {
+    /// Largest normal force a joint can carry, f_c · w · t (kN).
+    pub fn max_normal_force(&self) -> Option<f64> {
+        self.strength.map(|f| f * self.width * self.depth)
+    }
+}
+
 /// The assembled kinematic map of a structure.
 #[derive(Clone, Debug)]
 pub struct KinematicMap {
@@ -43,6 +65,12 @@ pub struct KinematicMap {
     pub gap: Vec<f64>,
     /// First global point of each joint (length `joints + 1`).
     pub joint_start: Vec<usize>,
+    /// Joint law of each joint.
+    pub laws: Vec<JointLaw>,
+    /// Coordinate of each point along its joint's tangent, from the joint's midpoint (m).
+    pub along: Vec<f64>,
+    /// Facets of the piecewise-linear crushing domain (finite compressive strength).
+    pub facets: usize,
 }
 
 impl KinematicMap {
@@ -57,10 +85,14 @@ impl KinematicMap {
         let mut bilateral = Vec::with_capacity(npts);
         let mut gap = Vec::with_capacity(npts);
         let mut joint_start = Vec::with_capacity(st.joints.len() + 1);
+        let mut laws = Vec::with_capacity(st.joints.len());
+        let mut along = Vec::with_capacity(npts);
         for (j, joint) in st.joints.iter().enumerate() {
             joint_start.push(points.len());
             let n = joint.normal;
             let t = joint.tangent();
+            laws.push(joint_law(st, joint));
+            let mid = joint.midpoint();
             for (k, p) in joint.points.iter().enumerate() {
                 let row = points.len();
                 let (mut gn, mut gt) = (0.0, 0.0);
@@ -87,6 +119,7 @@ impl KinematicMap {
                 support_tangent.push(gt);
                 bilateral.push(joint.bilateral);
                 gap.push(p.gap);
+                along.push((p.x[0] - mid[0]) * t[0] + (p.x[1] - mid[1]) * t[1]);
             }
         }
         joint_start.push(points.len());
@@ -100,7 +133,17 @@ impl KinematicMap {
             bilateral,
             gap,
             joint_start,
+            laws,
+            along,
+            facets: 16,
         }
+    }
+
+    /// Whether any joint has friction or finite strength.
+    pub fn has_joint_laws(&self) -> bool {
+        self.laws
+            .iter()
+            .any(|l| l.friction.is_some() || l.strength.is_some())
     }
 
     pub fn num_points(&self) -> usize {
@@ -152,4 +195,35 @@ impl KinematicMap {
         }
         f
     }
+}
+
+fn joint_law(st: &Structure, joint: &crate::structure::Joint) -> JointLaw {
+    let mut law = JointLaw {
+        friction: None,
+        cohesion: 0.0,
+        strength: None,
+        depth: joint.length,
+        width: joint.width,
+    };
+    let mut cohesion = f64::INFINITY;
+    let mut any = false;
+    for b in [joint.a, joint.b] {
+        if let Body::Block(i) = b {
+            let m = &st.blocks[i].material;
+            any = true;
+            let min = |a: Option<f64>, b: Option<f64>| match (a, b) {
+                (Some(x), Some(y)) => Some(x.min(y)),
+                (x, None) => x,
+                (None, y) => y,
+            };
+            law.friction = min(law.friction, m.friction);
+            law.strength = min(law.strength, m.compressive_strength);
+            cohesion = cohesion.min(m.cohesion);
+        }
+    }
+    if any && law.friction.is_some() {
+        let npts = joint.points.len().max(1) as f64;
+        law.cohesion = cohesion * joint.length * joint.width / npts;
+    }
+    law
 }

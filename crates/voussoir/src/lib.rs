@@ -33,6 +33,7 @@
 
 pub mod analysis;
 pub mod discretize;
+pub mod duality;
 pub mod error;
 pub mod generate;
 pub mod geometry;

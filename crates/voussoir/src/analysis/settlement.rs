@@ -106,7 +106,7 @@ pub fn solve_settlement(
     opts: &SolverOptions,
 ) -> Result<SettlementSolution> {
     let dead = st.load_vector(false);
-    let mp = MotionProgram::new(map, &dead);
+    let mp = MotionProgram::new(map, &dead)?;
     let primal = lp::solve(&mp.lp, opts)?;
     let status = match primal.status {
         LpStatus::Optimal => SettlementStatus::Mechanism,
@@ -136,10 +136,10 @@ pub fn solve_settlement(
     };
     Ok(SettlementSolution {
         status,
-        mechanism: primal.x,
+        mechanism: mp.motion(&primal.x),
         pn,
         pt,
-        primal: primal.objective,
+        primal: mp.objective_sign * primal.objective,
         dual: dval,
     })
 }

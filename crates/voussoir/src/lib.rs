@@ -32,6 +32,7 @@
 //! [`analysis`] → [`result`].
 
 pub mod analysis;
+pub mod conic;
 pub mod discretize;
 pub mod duality;
 pub mod error;

@@ -145,7 +145,8 @@ fn crushing_rows(
         let t = law.depth;
         let fw = nmax / t;
         let m_of = |n: f64| n * t / 2.0 - n * n / (2.0 * fw);
-        let kf = map.facets.max(1);
+        // `facets == 0`: the chords are left to a conic solver (crate::conic).
+        let kf = map.facets;
         for i in 0..kf {
             let (n0, n1) = (
                 nmax * i as f64 / kf as f64,

@@ -84,30 +84,74 @@ pub fn solve_limit(
     let live = st.load_vector(true);
     let fp = ForceProgram::new(map, &dead, Some(&live), Direction::Maximise, |_| (0.0, 0.0));
     let sol = lp::solve(&fp.lp, opts)?;
+    Ok(finish(
+        map,
+        &fp,
+        &live,
+        sol.status,
+        &sol.x,
+        &sol.row_dual,
+        sol.iterations,
+    ))
+}
+
+/// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
+/// its inscribed polygon. Without finite compressive strength this is the same problem.
+pub fn solve_limit_conic(st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
+    if !st.has_live_loads() {
+        return Err(Error::Request(
+            "limit analysis needs live loads (the model has none)".into(),
+        ));
+    }
+    let dead = st.load_vector(false);
+    let live = st.load_vector(true);
+    let fp = crate::conic::limit_force_program(map, &dead, &live);
+    let sol = crate::conic::solve_force_conic(map, &fp)?;
+    Ok(finish(
+        map,
+        &fp,
+        &live,
+        sol.status,
+        &sol.x,
+        &sol.row_dual,
+        0,
+    ))
+}
+
+/// λ, forces and the mechanism (duals of the equilibrium rows, normalised to unit live-load
+/// work) from a solved force program.
+fn finish(
+    map: &KinematicMap,
+    fp: &ForceProgram,
+    live: &[f64],
+    status: LpStatus,
+    x: &[f64],
+    row_dual: &[f64],
+    iterations: i64,
+) -> LimitSolution {
     let none = |status| LimitSolution {
         status,
         lambda: None,
         mechanism: vec![],
         pn: vec![0.0; map.num_points()],
         pt: vec![0.0; map.num_points()],
-        iterations: sol.iterations,
+        iterations,
     };
-    match sol.status {
-        LpStatus::Unbounded => return Ok(none(LimitStatus::Locked)),
-        LpStatus::Infeasible => return Ok(none(LimitStatus::NoEquilibrium)),
+    match status {
+        LpStatus::Unbounded => return none(LimitStatus::Locked),
+        LpStatus::Infeasible => return none(LimitStatus::NoEquilibrium),
         LpStatus::Optimal => {}
     }
-    let lambda = sol.x[fp.lambda.expect("program has λ")];
-    let (pn, pt) = fp.forces(&sol.x);
-    // Mechanism: duals of the equilibrium rows, normalised to unit live-load work.
-    let y = &sol.row_dual;
+    let lambda = x[fp.lambda.expect("program has λ")];
+    let (pn, pt) = fp.forces(x);
+    let y = &row_dual[..map.num_dofs];
     let wl: f64 = live.iter().zip(y).map(|(a, b)| a * b).sum();
     let mechanism = if wl.abs() > 0.0 {
         y.iter().map(|v| v / wl).collect()
     } else {
         vec![0.0; y.len()]
     };
-    Ok(LimitSolution {
+    LimitSolution {
         status: if lambda >= 0.0 {
             LimitStatus::Collapse
         } else {
@@ -117,8 +161,35 @@ pub fn solve_limit(
         mechanism,
         pn,
         pt,
-        iterations: sol.iterations,
-    })
+        iterations,
+    }
+}
+
+/// How finite compressive strength enters the limit analysis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Crushing {
+    /// Inscribed polygon with `facets` chords: an LP (HiGHS). The default.
+    #[default]
+    Linear,
+    /// The exact parabola as second-order cones (Clarabel).
+    Conic,
+}
+
+/// Limit analysis with a choice of crushing model and number of facets.
+pub fn limit_with(
+    st: &Structure,
+    opts: &SolverOptions,
+    crushing: Crushing,
+    facets: usize,
+) -> Result<LimitResult> {
+    let mut map = KinematicMap::new(st);
+    map.facets = facets.max(1);
+    let s = match crushing {
+        Crushing::Linear => solve_limit(st, &map, opts)?,
+        Crushing::Conic => solve_limit_conic(st, &map)?,
+    };
+    Ok(limit_result(st, &map, &s))
 }
 
 /// Limit analysis of a structure: collapse multiplier, mechanism, forces, thrust line.

@@ -31,7 +31,7 @@ impl From<voussoir_io::IoError> for Fail {
 
 #[derive(Args, Clone, Debug)]
 pub struct ModelArgs {
-    /// The model: a JSON file (see README, "Model format").
+    /// The model: a JSON file (see README, "Model format") or a DXF drawing (`.dxf`).
     pub model: PathBuf,
     /// Geometric tolerance for joint detection, relative to the model's size (default 1e-7).
     #[arg(long)]
@@ -39,6 +39,30 @@ pub struct ModelArgs {
     /// LP method: dual-simplex (default; crisp vertex mechanisms), primal-simplex, ipm, choose.
     #[arg(long, value_enum, default_value = "dual-simplex")]
     pub method: MethodArg,
+    /// Coulomb friction coefficient μ for every joint (overrides the model's materials;
+    /// default: no sliding).
+    #[arg(long)]
+    pub friction: Option<f64>,
+    /// Compressive strength f_c in kPa for every joint (overrides the model's materials;
+    /// default: infinite).
+    #[arg(long, value_name = "KPA")]
+    pub compressive_strength: Option<f64>,
+    /// Finite-strength model: `linear` (inscribed polygon, an LP) or `conic` (exact, SOCP via
+    /// Clarabel; limit analysis only).
+    #[arg(long, value_enum, default_value = "linear")]
+    pub crushing: CrushingArg,
+    /// Facets of the inscribed crushing polygon.
+    #[arg(long, default_value_t = 16)]
+    pub facets: usize,
+    /// How to read a `.dxf` model.
+    #[command(flatten)]
+    pub dxf: crate::import::DxfArgs,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum CrushingArg {
+    Linear,
+    Conic,
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
@@ -107,16 +131,76 @@ impl ModelArgs {
     }
 
     pub fn load(&self) -> Result<Model, Fail> {
-        Ok(voussoir_io::read_model(&self.model)?)
+        let mut m = self.dxf.read(&self.model)?.0;
+        self.override_materials(&mut m)?;
+        Ok(m)
+    }
+
+    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
+    /// `default` one included).
+    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
+        if let Some(mu) = self.friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return Err(Fail(format!(
+                    "--friction {mu}: must be a finite number ≥ 0"
+                )));
+            }
+        }
+        if let Some(f) = self.compressive_strength {
+            if !(f.is_finite() && f > 0.0) {
+                return Err(Fail(format!(
+                    "--compressive-strength {f}: must be a finite number > 0 (kPa)"
+                )));
+            }
+        }
+        if self.friction.is_none() && self.compressive_strength.is_none() {
+            return Ok(());
+        }
+        m.materials.entry("default".to_string()).or_default();
+        for mat in m.materials.values_mut() {
+            if self.friction.is_some() {
+                mat.friction = self.friction;
+            }
+            if self.compressive_strength.is_some() {
+                mat.compressive_strength = self.compressive_strength;
+            }
+        }
+        Ok(())
+    }
+
+    /// Limit analysis with the chosen crushing model.
+    pub fn limit(
+        &self,
+        st: &Structure,
+        opts: &SolverOptions,
+    ) -> Result<voussoir::analysis::LimitResult, Fail> {
+        let crushing = match self.crushing {
+            CrushingArg::Linear => voussoir::analysis::limit::Crushing::Linear,
+            CrushingArg::Conic => voussoir::analysis::limit::Crushing::Conic,
+        };
+        Ok(voussoir::analysis::limit::limit_with(
+            st,
+            opts,
+            crushing,
+            self.facets,
+        )?)
     }
 
     /// Load, apply settlement flags, validate and discretise.
-    pub fn structure(&self, settle: Option<&SettleArgs>) -> Result<(Structure, SolverOptions), Fail> {
+    pub fn structure(
+        &self,
+        settle: Option<&SettleArgs>,
+    ) -> Result<(Structure, SolverOptions), Fail> {
         let mut model = self.load()?;
         if let Some(s) = settle {
             s.apply(&mut model)?;
         }
-        let st = Structure::new(&model, BuildOptions { tolerance: self.tolerance })?;
+        let st = Structure::new(
+            &model,
+            BuildOptions {
+                tolerance: self.tolerance,
+            },
+        )?;
         Ok((st, self.solver()))
     }
 }
@@ -165,7 +249,13 @@ fn hinge_list(st: &Structure, hinges: &[voussoir::result::Hinge]) -> String {
 
 pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "blocks {}, joints {}, supports {}", st.blocks.len(), st.joints.len(), st.supports.len());
+    let _ = writeln!(
+        s,
+        "blocks {}, joints {}, supports {}",
+        st.blocks.len(),
+        st.joints.len(),
+        st.supports.len()
+    );
     let _ = writeln!(s, "{}", r.message);
     if !r.hinges.is_empty() {
         let _ = writeln!(s, "hinges of the collapse mechanism ({}):", r.hinges.len());
@@ -176,21 +266,38 @@ pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
 
 pub fn settle_summary(st: &Structure, r: &SettlementResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "blocks {}, joints {}, supports {}", st.blocks.len(), st.joints.len(), st.supports.len());
+    let _ = writeln!(
+        s,
+        "blocks {}, joints {}, supports {}",
+        st.blocks.len(),
+        st.joints.len(),
+        st.supports.len()
+    );
     let _ = writeln!(s, "{}", r.message);
     if let (Some(p), Some(d), Some(g)) = (r.work_dead_loads, r.work_reactions, r.duality_gap) {
-        let _ = writeln!(s, "work of dead loads {p:.6e} kN·m, work on supports {d:.6e} kN·m, relative gap {g:.2e}");
+        let _ = writeln!(
+            s,
+            "work of dead loads {p:.6e} kN·m, work on supports {d:.6e} kN·m, relative gap {g:.2e}"
+        );
     }
     if !r.hinges.is_empty() {
         let _ = writeln!(s, "hinges ({}):", r.hinges.len());
         s.push_str(&hinge_list(st, &r.hinges));
     }
-    let open = r.joints.iter().filter(|j| j.state == voussoir::result::JointState::Open).count();
+    let open = r
+        .joints
+        .iter()
+        .filter(|j| j.state == voussoir::result::JointState::Open)
+        .count();
     if open > 0 {
         let _ = writeln!(s, "fully open joints: {open}");
     }
     for re in &r.reactions {
-        let _ = writeln!(s, "reaction {:>8}: fx {:>10.4} kN  fy {:>10.4} kN  m {:>10.4} kN·m", re.support, re.fx, re.fy, re.m);
+        let _ = writeln!(
+            s,
+            "reaction {:>8}: fx {:>10.4} kN  fy {:>10.4} kN  m {:>10.4} kN·m",
+            re.support, re.fx, re.fy, re.m
+        );
     }
     s
 }

@@ -80,6 +80,9 @@ pub struct JointResult {
     /// tangent; `null` where the joint carries no compression.
     pub eccentricity: Option<f64>,
     pub state: JointState,
+    /// Depth of the compressed zone N/(f_c w) (m), with finite compressive strength only.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compressed_depth: Option<f64>,
 }
 
 /// A hinge: joint and the point it rotates about.
@@ -290,6 +293,9 @@ pub fn report(
             shear_force: clean(sf, fscale),
             eccentricity,
             state,
+            compressed_depth: map.laws[j]
+                .strength
+                .map(|f| clean(nf, fscale).max(0.0) / (f * map.laws[j].width)),
         });
     }
     let reactions = reactions(st, map, pn, pt);

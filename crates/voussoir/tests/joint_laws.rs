@@ -231,3 +231,43 @@ fn tilt_angle_of_a_block() {
     assert!((r.tilt_angle.unwrap() - 0.3f64.atan().to_degrees()).abs() < 1e-7);
     assert_eq!(r.limit.status, LimitStatus::Collapse);
 }
+
+#[test]
+fn lintel_with_finite_strength_has_the_flat_arch_capacity() {
+    use voussoir::generate::{lintel, LintelSpec};
+    // A flat lintel is a three-hinge flat arch: thrust H with lever arm t − H/(f_c w), largest
+    // moment capacity f_c w t²/4 at H = f_c w t/2, equal to the midspan moment (g + λq)L²/8.
+    let spec = LintelSpec {
+        compressive_strength: Some(2400.0),
+        ..LintelSpec::default()
+    };
+    let st = Structure::new(&lintel(&spec).unwrap(), BuildOptions::default()).unwrap();
+    let (t, l, fc) = (spec.thickness, spec.span, 2400.0);
+    let g = spec.unit_weight * t;
+    let exact = (fc * t * t / 4.0 - g * l * l / 8.0) / (spec.live_load * l * l / 8.0);
+    for crushing in [Crushing::Conic, Crushing::Linear] {
+        let r = limit_with(&st, &SolverOptions::default(), crushing, 16).unwrap();
+        let lam = r.load_multiplier.unwrap();
+        assert!(
+            (lam - exact).abs() < 1e-5 * exact,
+            "{crushing:?}: λ = {lam}, flat arch {exact}"
+        );
+        // The crown joint is crushed over half the depth: a = H/(f_c w) = t/2.
+        let crown = r
+            .joints
+            .iter()
+            .find(|j| j.state == JointState::Hinge && j.points[0].x.abs() < 1e-9)
+            .unwrap();
+        assert!((crown.compressed_depth.unwrap() - t / 2.0).abs() < 1e-5);
+    }
+    // Without finite strength the lintel is locked.
+    let st = Structure::new(
+        &lintel(&LintelSpec::default()).unwrap(),
+        BuildOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(
+        limit(&st, &SolverOptions::default()).unwrap().status,
+        LimitStatus::Locked
+    );
+}

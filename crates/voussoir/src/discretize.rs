@@ -71,6 +71,9 @@ pub struct KinematicMap {
     pub along: Vec<f64>,
     /// Facets of the piecewise-linear crushing domain (finite compressive strength).
     pub facets: usize,
+    /// Fixed shear capacities per point, replacing `μ p_n + c` on frictional joints (used by the
+    /// non-associative friction iteration: sliding without dilatancy).
+    pub shear_limits: Option<Vec<f64>>,
 }
 
 impl KinematicMap {
@@ -136,6 +139,7 @@ impl KinematicMap {
             laws,
             along,
             facets: 16,
+            shear_limits: None,
         }
     }
 

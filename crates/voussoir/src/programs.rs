@@ -113,10 +113,15 @@ fn friction_rows(
         if map.bilateral[k] {
             continue;
         }
+        // Associative: |p_t| ≤ μ p_n + c. With fixed capacities: |p_t| ≤ limit (no dilatancy).
+        let (bound, slope) = match &map.shear_limits {
+            Some(lim) => (lim[k].max(0.0), 0.0),
+            None => (law.cohesion, mu),
+        };
         for sign in [1.0, -1.0] {
-            let r = lp.add_row(-INF, law.cohesion);
+            let r = lp.add_row(-INF, bound);
             c.entry(ct, r, sign);
-            c.entry(cn, r, -mu);
+            c.entry(cn, r, -slope);
         }
     }
 }

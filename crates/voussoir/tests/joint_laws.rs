@@ -271,3 +271,47 @@ fn lintel_with_finite_strength_has_the_flat_arch_capacity() {
         LimitStatus::Locked
     );
 }
+
+#[test]
+fn non_associative_friction() {
+    use voussoir::analysis::nonassociative::{limit_nonassociative, NonAssociativeOptions};
+    let o = NonAssociativeOptions::default();
+    // A sliding block: no dilatancy is involved, both laws give λ = μ.
+    let st = block(
+        1.0,
+        2.0,
+        Material {
+            friction: Some(0.3),
+            ..Material::default()
+        },
+    );
+    let r = limit_nonassociative(&st, &SolverOptions::default(), &o).unwrap();
+    assert!(r.converged);
+    assert!((r.limit.load_multiplier.unwrap() - 0.3).abs() < 1e-7);
+    // The paper arch under a half-span load with μ = 0.4: the dilatancy-free multiplier is not
+    // above the associative one, and the converged forces satisfy Coulomb with their own
+    // normal forces.
+    let st = paper_arch(
+        Material {
+            friction: Some(0.4),
+            ..Material::default()
+        },
+        LiveLoad::Left,
+    );
+    let r = limit_nonassociative(&st, &SolverOptions::default(), &o).unwrap();
+    let (na, a) = (
+        r.limit.load_multiplier.unwrap(),
+        r.associative_multiplier.unwrap(),
+    );
+    assert!(r.converged, "history {:?}", r.history);
+    assert!(na <= a + 1e-9, "non-associative {na} > associative {a}");
+    for j in &r.limit.joints {
+        for p in &j.points {
+            assert!(
+                p.shear_force.abs() <= 0.4 * p.normal_force + 1e-6 * (1.0 + p.normal_force),
+                "joint {}",
+                j.id
+            );
+        }
+    }
+}

@@ -2,6 +2,8 @@
 
 pub mod limit;
 pub mod settlement;
+pub mod tilt;
+pub mod nonassociative;
 
 pub use limit::{limit, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};

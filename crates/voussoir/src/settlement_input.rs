@@ -181,3 +181,50 @@ pub fn fix_support(model: &mut Model, name: &str) -> Result<()> {
         None => Err(Error::Request(format!("no support named '{name}'"))),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::generate::{wall, WallSpec};
+
+    #[test]
+    fn profiles_parse_and_apply_by_centroid() {
+        assert_eq!(
+            Profile::parse("uniform:1,2,-0.2").unwrap(),
+            Profile::Uniform {
+                x0: 1.0,
+                x1: 2.0,
+                v: -0.2
+            }
+        );
+        assert!(Profile::parse("uniform:2,1,-0.2").is_err());
+        assert!(Profile::parse("linear:0,0,0,1").is_err());
+        assert!(Profile::parse("table:0,0;1").is_err());
+        assert!(Profile::parse("wavy:1").is_err());
+        // A wall of 5 units of 0.4 m: foundation centroids at 0.2, 0.6, 1.0, 1.4, 1.8.
+        let mut m = wall(&WallSpec {
+            courses: 2,
+            units: 5,
+            ..WallSpec::default()
+        })
+        .unwrap();
+        apply_profile(&mut m, &Profile::parse("linear:0.4,0,2.0,-0.04").unwrap()).unwrap();
+        let v: Vec<f64> = m.supports.iter().map(|s| s.motion[1]).collect();
+        let th: Vec<f64> = m.supports.iter().map(|s| s.motion[2]).collect();
+        let expect = [0.0, -0.005, -0.015, -0.025, -0.035];
+        for (a, b) in v.iter().zip(expect) {
+            assert!((a - b).abs() < 1e-15, "{v:?}");
+        }
+        // Each segment inside the range also rotates with the profile's slope.
+        assert!(th[0] == 0.0 && th[1..].iter().all(|t| (t + 0.025).abs() < 1e-15));
+        let mut m = wall(&WallSpec {
+            courses: 2,
+            units: 5,
+            ..WallSpec::default()
+        })
+        .unwrap();
+        apply_profile(&mut m, &Profile::parse("table:0,0;1,-0.1;2,-0.1").unwrap()).unwrap();
+        assert!((m.supports[1].motion[1] + 0.06).abs() < 1e-15);
+        assert!((m.supports[4].motion[1] + 0.1).abs() < 1e-15);
+    }
+}

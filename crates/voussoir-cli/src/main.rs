@@ -1,7 +1,9 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
 mod common;
+mod draw_args;
 mod gen;
+mod plot;
 
 use clap::{Parser, Subcommand};
 use common::{Fail, ModelArgs, OutArgs, SettleArgs};
@@ -32,6 +34,8 @@ enum Command {
         model: ModelArgs,
         #[command(flatten)]
         out: OutArgs,
+        #[command(flatten)]
+        draw: draw_args::DrawArgs,
     },
     /// Settlement analysis: mechanism (crack pattern) and contact forces for prescribed support
     /// motions, by the paper's primal and dual LPs, with the duality gap as a certificate.
@@ -42,22 +46,30 @@ enum Command {
         settle: SettleArgs,
         #[command(flatten)]
         out: OutArgs,
+        #[command(flatten)]
+        draw: draw_args::DrawArgs,
     },
+    /// Draw a saved result (limit, settlement) or a model: `-o fig.svg`, `fig.png` or
+    /// `report.html`.
+    Plot(plot::PlotArgs),
 }
 
 fn run(cli: Cli) -> Result<(), Fail> {
     match cli.command {
         Command::Gen(g) => gen::run(g),
-        Command::Limit { model, out } => {
+        Command::Limit { model, out, draw } => {
             let (st, opts) = model.structure(None)?;
             let r = limit(&st, &opts)?;
+            draw.emit_limit(&r, &model.model)?;
             out.emit(&r, || common::limit_summary(&st, &r))
         }
-        Command::Settle { model, settle: s, out } => {
+        Command::Settle { model, settle: s, out, draw } => {
             let (st, opts) = model.structure(Some(&s))?;
             let r = settle(&st, &opts)?;
+            draw.emit_settlement(&r, &model.model)?;
             out.emit(&r, || common::settle_summary(&st, &r))
         }
+        Command::Plot(a) => plot::run(a),
     }
 }
 

@@ -2,6 +2,7 @@
 //! (DXF import, SVG/PNG drawings and HTML reports live in their own modules.)
 
 pub mod dxf;
+pub mod draw;
 pub mod files;
 
 pub use files::{read_model, write_atomic, IoError};

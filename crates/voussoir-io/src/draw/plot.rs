@@ -1,0 +1,599 @@
+//! Generic x–y line plots: axes with units, grid, several series, labelled points.
+//!
+//! Used for the λ–settlement capacity curves and the λ–displacement incremental curves (the
+//! paper's Figs 7, 10, 12, 14–17):
+//! ```
+//! use voussoir_io::draw::{plot_curves, Mark, PlotSpec, Series};
+//! let svg = plot_curves(
+//!     &[Series::new("horizontal settlement", vec![[0.0, 0.429], [1.0, 0.12], [1.4, 0.0]])],
+//!     &PlotSpec {
+//!         title: "Capacity after settlement".into(),
+//!         x_label: "settlement s (cm)".into(),
+//!         y_label: "load multiplier λ".into(),
+//!         marks: vec![Mark::new(1.4, 0.0, "λ = 0 at s = 1.4 cm")],
+//!         ..PlotSpec::default()
+//!     },
+//! );
+//! assert!(svg.starts_with("<svg"));
+//! ```
+//! A point with a non-finite coordinate breaks a series' line (a gap); a repeated `x` with a
+//! new `y` draws a vertical jump.
+
+use super::svg::{esc, fmt_fixed, nice, num, polyline_path, text_width, FONT};
+use std::fmt::Write as _;
+
+/// One curve.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Series {
+    pub label: String,
+    pub points: Vec<[f64; 2]>,
+    /// Draw a marker at every point.
+    pub markers: bool,
+    pub dashed: bool,
+    /// Colour (`#rrggbb`); `None`: the next colour of the palette.
+    pub colour: Option<String>,
+}
+
+impl Series {
+    pub fn new(label: impl Into<String>, points: Vec<[f64; 2]>) -> Self {
+        Series {
+            label: label.into(),
+            points,
+            ..Series::default()
+        }
+    }
+    pub fn with_markers(mut self) -> Self {
+        self.markers = true;
+        self
+    }
+    pub fn dashed(mut self) -> Self {
+        self.dashed = true;
+        self
+    }
+}
+
+/// A labelled point (e.g. where λ reaches zero).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mark {
+    pub x: f64,
+    pub y: f64,
+    pub label: String,
+}
+
+impl Mark {
+    pub fn new(x: f64, y: f64, label: impl Into<String>) -> Self {
+        Mark {
+            x,
+            y,
+            label: label.into(),
+        }
+    }
+}
+
+/// Titles, axis labels (with units) and layout of a plot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlotSpec {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub marks: Vec<Mark>,
+    /// Figure size in pixels.
+    pub width: f64,
+    pub height: f64,
+    /// Fixed axis ranges; `None`: fitted to the data (and marks) on nice tick values.
+    pub x_range: Option<(f64, f64)>,
+    pub y_range: Option<(f64, f64)>,
+    /// Extend the fitted ranges to include zero.
+    pub include_zero: bool,
+    /// Prefix for element ids, unique per figure in one HTML page.
+    pub id: String,
+}
+
+impl Default for PlotSpec {
+    fn default() -> Self {
+        PlotSpec {
+            title: String::new(),
+            x_label: String::new(),
+            y_label: String::new(),
+            marks: Vec::new(),
+            width: 820.0,
+            height: 520.0,
+            x_range: None,
+            y_range: None,
+            include_zero: true,
+            id: "p".to_string(),
+        }
+    }
+}
+
+/// Line colours, distinguishable in print (and with dashes for more than six).
+pub const SERIES_COLOURS: [&str; 6] = [
+    "#1f5fbf", "#d7301f", "#1a9850", "#e08214", "#7b2d8e", "#4d4d4d",
+];
+
+/// An axis: range and ticks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    pub min: f64,
+    pub max: f64,
+    pub step: f64,
+}
+
+impl Axis {
+    /// Fit `[lo, hi]` on nice ticks (about six).
+    pub fn fit(lo: f64, hi: f64, fixed: bool) -> Axis {
+        let (mut lo, mut hi) = if lo.is_finite() && hi.is_finite() && lo <= hi {
+            (lo, hi)
+        } else {
+            (0.0, 1.0)
+        };
+        if hi - lo <= 1e-12 * lo.abs().max(hi.abs()).max(1e-300) {
+            let d = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+            lo -= d;
+            hi += d;
+        }
+        let step = nice((hi - lo) / 6.0, false);
+        if fixed {
+            return Axis {
+                min: lo,
+                max: hi,
+                step,
+            };
+        }
+        let min = (lo / step + 1e-9).floor() * step;
+        let max = (hi / step - 1e-9).ceil() * step;
+        Axis { min, max, step }
+    }
+
+    pub fn ticks(&self) -> Vec<f64> {
+        let first = (self.min / self.step - 1e-9).ceil();
+        let last = (self.max / self.step + 1e-9).floor();
+        if !(first.is_finite() && last.is_finite()) || last - first > 100.0 {
+            return vec![self.min, self.max];
+        }
+        (first as i64..=last as i64)
+            .map(|i| i as f64 * self.step)
+            .collect()
+    }
+
+    /// Decimals needed to show the ticks.
+    pub fn decimals(&self) -> usize {
+        (-(self.step.log10() - 1e-9).floor()).max(0.0) as usize
+    }
+}
+
+fn tick_label(v: f64, decimals: usize) -> String {
+    let s = fmt_fixed(v, decimals);
+    // A typographic minus reads better on axes.
+    if let Some(rest) = s.strip_prefix('-') {
+        format!("−{rest}")
+    } else {
+        s
+    }
+}
+
+/// A finished plot: the SVG and where data points land.
+#[derive(Clone, Debug)]
+pub struct Plot {
+    pub svg: String,
+    pub x_axis: Axis,
+    pub y_axis: Axis,
+    /// Plot area in pixels: left, top, right, bottom.
+    pub area: [f64; 4],
+}
+
+impl Plot {
+    /// Pixel position of a data point.
+    pub fn px(&self, x: f64, y: f64) -> [f64; 2] {
+        let [l, t, r, b] = self.area;
+        [
+            l + (x - self.x_axis.min) / (self.x_axis.max - self.x_axis.min) * (r - l),
+            b - (y - self.y_axis.min) / (self.y_axis.max - self.y_axis.min) * (b - t),
+        ]
+    }
+}
+
+/// Draw the series as one SVG plot.
+pub fn plot_curves(series: &[Series], spec: &PlotSpec) -> String {
+    plot(series, spec).svg
+}
+
+/// Draw the series as one SVG plot, keeping the axes.
+pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
+    let w = if spec.width.is_finite() && spec.width >= 200.0 {
+        spec.width
+    } else {
+        820.0
+    };
+    let h = if spec.height.is_finite() && spec.height >= 150.0 {
+        spec.height
+    } else {
+        520.0
+    };
+    let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
+    let mut xs: Vec<f64> = series
+        .iter()
+        .flat_map(|s| s.points.iter().filter(|p| finite(p)).map(|p| p[0]))
+        .collect();
+    let mut ys: Vec<f64> = series
+        .iter()
+        .flat_map(|s| s.points.iter().filter(|p| finite(p)).map(|p| p[1]))
+        .collect();
+    for m in spec
+        .marks
+        .iter()
+        .filter(|m| m.x.is_finite() && m.y.is_finite())
+    {
+        xs.push(m.x);
+        ys.push(m.y);
+    }
+    if spec.include_zero && !xs.is_empty() {
+        xs.push(0.0);
+        ys.push(0.0);
+    }
+    let range = |v: &[f64]| {
+        v.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                (a.min(x), b.max(x))
+            })
+    };
+    let xa = match spec.x_range {
+        Some((a, b)) => Axis::fit(a, b, true),
+        None => {
+            let (a, b) = range(&xs);
+            Axis::fit(a, b, false)
+        }
+    };
+    let ya = match spec.y_range {
+        Some((a, b)) => Axis::fit(a, b, true),
+        None => {
+            let (a, b) = range(&ys);
+            Axis::fit(a, b, false)
+        }
+    };
+    let (xdec, ydec) = (xa.decimals(), ya.decimals());
+    let ytick_w = ya
+        .ticks()
+        .iter()
+        .map(|t| text_width(&tick_label(*t, ydec), 12.0))
+        .fold(0.0f64, f64::max);
+    let left = 40.0 + ytick_w + 16.0;
+    let right = w - 24.0;
+    let top = if spec.title.is_empty() { 24.0 } else { 52.0 };
+    let bottom = h - 58.0;
+    let px = |x: f64| left + (x - xa.min) / (xa.max - xa.min) * (right - left);
+    let py = |y: f64| bottom - (y - ya.min) / (ya.max - ya.min) * (bottom - top);
+    let id = esc(&spec.id);
+
+    let mut o = String::with_capacity(8192);
+    let _ = writeln!(
+        o,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\">",
+        w = num(w),
+        h = num(h)
+    );
+    let _ = writeln!(
+        o,
+        "<title>{}</title>",
+        esc(if spec.title.is_empty() {
+            "plot"
+        } else {
+            &spec.title
+        })
+    );
+    let _ = writeln!(
+        o,
+        "<defs><clipPath id=\"{id}-area\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath></defs>",
+        num(left),
+        num(top - 4.0),
+        num(right - left),
+        num(bottom - top + 8.0)
+    );
+    let _ = writeln!(
+        o,
+        "<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
+        num(w),
+        num(h)
+    );
+    if !spec.title.is_empty() {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"30\" font-size=\"17\" fill=\"#111111\">{}</text>",
+            num(left),
+            esc(&spec.title)
+        );
+    }
+    // Grid and ticks.
+    let mut grid = String::new();
+    let mut labels = String::new();
+    for t in xa.ticks() {
+        let x = px(t);
+        let _ = write!(grid, "M{} {}L{} {}", num(x), num(top), num(x), num(bottom));
+        let _ = writeln!(
+            labels,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+            num(x),
+            num(bottom + 18.0),
+            tick_label(t, xdec)
+        );
+    }
+    for t in ya.ticks() {
+        let y = py(t);
+        let _ = write!(grid, "M{} {}L{} {}", num(left), num(y), num(right), num(y));
+        let _ = writeln!(
+            labels,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
+            num(left - 7.0),
+            num(y + 4.0),
+            tick_label(t, ydec)
+        );
+    }
+    let _ = writeln!(
+        o,
+        "<path class=\"grid\" d=\"{grid}\" stroke=\"#e4e4e4\" stroke-width=\"1\" fill=\"none\"/>"
+    );
+    // Zero lines, a little darker, when inside the range.
+    let mut zero = String::new();
+    if xa.min < 0.0 && xa.max > 0.0 {
+        let _ = write!(
+            zero,
+            "M{} {}L{} {}",
+            num(px(0.0)),
+            num(top),
+            num(px(0.0)),
+            num(bottom)
+        );
+    }
+    if ya.min < 0.0 && ya.max > 0.0 {
+        let _ = write!(
+            zero,
+            "M{} {}L{} {}",
+            num(left),
+            num(py(0.0)),
+            num(right),
+            num(py(0.0))
+        );
+    }
+    if !zero.is_empty() {
+        let _ = writeln!(
+            o,
+            "<path d=\"{zero}\" stroke=\"#9a9a9a\" stroke-width=\"1\" fill=\"none\"/>"
+        );
+    }
+    let _ = writeln!(
+        o,
+        "<rect class=\"frame\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>",
+        num(left),
+        num(top),
+        num(right - left),
+        num(bottom - top)
+    );
+    let _ = writeln!(
+        o,
+        "<g class=\"ticks\" font-size=\"12\" fill=\"#333333\">\n{labels}</g>"
+    );
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"{}\" font-size=\"13.5\" fill=\"#111111\" text-anchor=\"middle\">{}</text>",
+        num((left + right) / 2.0),
+        num(h - 14.0),
+        esc(&spec.x_label)
+    );
+    let _ = writeln!(
+        o,
+        "<text transform=\"translate(20 {}) rotate(-90)\" font-size=\"13.5\" fill=\"#111111\" text-anchor=\"middle\">{}</text>",
+        num((top + bottom) / 2.0),
+        esc(&spec.y_label)
+    );
+
+    // Series.
+    let mut legend_rows: Vec<(String, &str, bool, bool)> = Vec::new();
+    for (i, s) in series.iter().enumerate() {
+        let colour = s
+            .colour
+            .as_deref()
+            .unwrap_or(SERIES_COLOURS[i % SERIES_COLOURS.len()]);
+        let dashed = s.dashed || (i >= SERIES_COLOURS.len() && s.colour.is_none());
+        let mut d = String::new();
+        let mut run: Vec<[f64; 2]> = Vec::new();
+        let flush = |d: &mut String, run: &mut Vec<[f64; 2]>| {
+            if run.len() >= 2 {
+                polyline_path(d, run.drain(..));
+            }
+            run.clear();
+        };
+        for p in &s.points {
+            if finite(p) {
+                run.push([px(p[0]), py(p[1])]);
+            } else {
+                flush(&mut d, &mut run);
+            }
+        }
+        flush(&mut d, &mut run);
+        let _ = write!(o, "<g class=\"series\" clip-path=\"url(#{id}-area)\">");
+        if !d.is_empty() {
+            let _ = write!(
+                o,
+                "<path d=\"{d}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2.2\" stroke-linejoin=\"round\" stroke-linecap=\"round\"{}/>",
+                esc(colour),
+                if dashed { " stroke-dasharray=\"7 4\"" } else { "" }
+            );
+        }
+        let lone = s.points.iter().filter(|p| finite(p)).count() == 1;
+        if s.markers || lone {
+            for p in s.points.iter().filter(|p| finite(p)) {
+                let _ = write!(
+                    o,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"3.2\" fill=\"{}\" stroke=\"#ffffff\" stroke-width=\"0.8\"/>",
+                    num(px(p[0])),
+                    num(py(p[1])),
+                    esc(colour)
+                );
+            }
+        }
+        o.push_str("</g>\n");
+        if !s.label.is_empty() {
+            legend_rows.push((s.label.clone(), colour, dashed, s.markers));
+        }
+    }
+
+    // Marks: a ring and a label beside it.
+    for m in spec
+        .marks
+        .iter()
+        .filter(|m| m.x.is_finite() && m.y.is_finite())
+    {
+        let (x, y) = (px(m.x), py(m.y));
+        if x < left - 1.0 || x > right + 1.0 || y < top - 1.0 || y > bottom + 1.0 {
+            continue;
+        }
+        let tw = text_width(&m.label, 12.5);
+        let (tx, anchor) = if x + 10.0 + tw > right - 4.0 {
+            (x - 9.0, "end")
+        } else {
+            (x + 9.0, "start")
+        };
+        let ty = if y - 10.0 < top + 14.0 {
+            y + 20.0
+        } else {
+            y - 10.0
+        };
+        let _ = writeln!(
+            o,
+            "<g class=\"mark\"><circle cx=\"{}\" cy=\"{}\" r=\"5\" fill=\"#ffffff\" stroke=\"#111111\" stroke-width=\"1.6\"/><text x=\"{}\" y=\"{}\" font-size=\"12.5\" fill=\"#111111\" text-anchor=\"{anchor}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">{}</text></g>",
+            num(x),
+            num(y),
+            num(tx),
+            num(ty),
+            esc(&m.label)
+        );
+    }
+
+    // Legend in the emptiest corner.
+    if !legend_rows.is_empty() {
+        let fs = 12.5;
+        let lw = 44.0
+            + legend_rows
+                .iter()
+                .map(|r| text_width(&r.0, fs))
+                .fold(0.0f64, f64::max)
+            + 12.0;
+        let lh = 10.0 + 20.0 * legend_rows.len() as f64;
+        let corners = [
+            (right - lw - 10.0, top + 10.0),
+            (left + 10.0, top + 10.0),
+            (right - lw - 10.0, bottom - lh - 10.0),
+            (left + 10.0, bottom - lh - 10.0),
+        ];
+        let count = |(cx, cy): (f64, f64)| -> usize {
+            let mut n = 0;
+            for s in series {
+                // Sample along the segments so that lines, not only vertices, count.
+                for w2 in s.points.windows(2) {
+                    if !(finite(&w2[0]) && finite(&w2[1])) {
+                        continue;
+                    }
+                    for k in 0..=8 {
+                        let t = k as f64 / 8.0;
+                        let x = px(w2[0][0] + t * (w2[1][0] - w2[0][0]));
+                        let y = py(w2[0][1] + t * (w2[1][1] - w2[0][1]));
+                        if x >= cx - 6.0
+                            && x <= cx + lw + 6.0
+                            && y >= cy - 6.0
+                            && y <= cy + lh + 6.0
+                        {
+                            n += 1;
+                        }
+                    }
+                }
+            }
+            for m in &spec.marks {
+                let (x, y) = (px(m.x), py(m.y));
+                if x >= cx - 20.0 && x <= cx + lw + 20.0 && y >= cy - 20.0 && y <= cy + lh + 20.0 {
+                    n += 50;
+                }
+            }
+            n
+        };
+        let mut best = corners[0];
+        let mut best_n = usize::MAX;
+        for c in corners {
+            let n = count(c);
+            if n < best_n {
+                best_n = n;
+                best = c;
+            }
+        }
+        let (lx, ly) = best;
+        let _ = writeln!(
+            o,
+            "<g class=\"legend\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#ffffff\" fill-opacity=\"0.92\" stroke=\"#bbbbbb\" stroke-width=\"1\" rx=\"3\"/>",
+            num(lx),
+            num(ly),
+            num(lw),
+            num(lh)
+        );
+        for (i, (label, colour, dashed, markers)) in legend_rows.iter().enumerate() {
+            let y = ly + 15.0 + 20.0 * i as f64;
+            let _ = write!(
+                o,
+                "<path d=\"M{} {}L{} {}\" stroke=\"{}\" stroke-width=\"2.2\"{}/>",
+                num(lx + 8.0),
+                num(y),
+                num(lx + 36.0),
+                num(y),
+                esc(colour),
+                if *dashed {
+                    " stroke-dasharray=\"7 4\""
+                } else {
+                    ""
+                }
+            );
+            if *markers {
+                let _ = write!(
+                    o,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"3.2\" fill=\"{}\"/>",
+                    num(lx + 22.0),
+                    num(y),
+                    esc(colour)
+                );
+            }
+            let _ = writeln!(
+                o,
+                "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#222222\">{}</text>",
+                num(lx + 44.0),
+                num(y + 4.5),
+                esc(label)
+            );
+        }
+        o.push_str("</g>\n");
+    }
+    o.push_str("</svg>\n");
+    Plot {
+        svg: o,
+        x_axis: xa,
+        y_axis: ya,
+        area: [left, top, right, bottom],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axis_fits_on_nice_ticks() {
+        let a = Axis::fit(0.0, 0.434, false);
+        assert_eq!(a.step, 0.05);
+        assert!(
+            (a.min - 0.0).abs() < 1e-12 && (a.max - 0.45).abs() < 1e-12,
+            "{a:?}"
+        );
+        assert_eq!(a.ticks().len(), 10);
+        assert_eq!(a.decimals(), 2);
+        let b = Axis::fit(-3.2, 7.9, false);
+        assert_eq!(b.step, 2.0);
+        assert_eq!((b.min, b.max), (-4.0, 8.0));
+        assert_eq!(tick_label(-4.0, b.decimals()), "−4");
+    }
+}

@@ -1,0 +1,1321 @@
+//! Drawings of structures and mechanisms: blocks, hatched supports, load arrows, the deformed
+//! configuration over the faint undeformed outline, hinges, crack wedges, the thrust line and
+//! contact-force arrows.
+//!
+//! Blocks are moved by exact finite rigid motions ([`RigidMotion::scaled`]). Blocks whose small
+//! motions are the same rigid field (a macro-block of the mechanism) share one reference point,
+//! so each macro-block moves as one rigid piece and is drawn in one colour; a block at rest is
+//! drawn in stone grey.
+
+use super::svg::{
+    arrow, esc, fmt_fixed, human, nice, num, points_attr, polygon_path, text_width, FONT,
+};
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
+use voussoir::geometry::{area_centroid, RigidMotion};
+use voussoir::result::{
+    BlockMotion, BodyName, Geometry, Hinge, JointResult, JointState, ThrustPoint,
+};
+
+/// What the block motions of a scene mean.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MotionUnits {
+    /// A collapse mechanism normalised so that the live loads do unit work: the amplitude is
+    /// arbitrary and only the shape matters.
+    Normalised,
+    /// Displacements in metres (settlement analyses): supports move by their prescribed motion.
+    Metres,
+}
+
+/// Everything a structure drawing can show. Build it from a result with [`Scene::limit`],
+/// [`Scene::settlement`] or [`Scene::geometry`], then adjust the title or info lines.
+#[derive(Clone, Debug)]
+pub struct Scene<'a> {
+    pub title: String,
+    /// Lines printed under the title (key numbers).
+    pub info: Vec<String>,
+    pub geometry: &'a Geometry,
+    /// Block motions (u, v, θ) at the block centroids; empty: nothing moves.
+    pub blocks: &'a [BlockMotion],
+    pub joints: &'a [JointResult],
+    pub hinges: &'a [Hinge],
+    pub thrust_line: &'a [ThrustPoint],
+    pub units: MotionUnits,
+}
+
+impl<'a> Scene<'a> {
+    /// The structure alone: blocks, supports, loads.
+    pub fn geometry(geometry: &'a Geometry, title: &str) -> Self {
+        let nl = geometry.loads.iter().filter(|l| l.live).count();
+        let mut info = vec![format!(
+            "{} blocks, {} supports, {} load{} ({} live)",
+            geometry.blocks.len(),
+            geometry.supports.len(),
+            geometry.loads.len(),
+            if geometry.loads.len() == 1 { "" } else { "s" },
+            nl
+        )];
+        if let Some(m) = support_motion_text(geometry) {
+            info.push(m);
+        }
+        Scene {
+            title: title.to_string(),
+            info,
+            geometry,
+            blocks: &[],
+            joints: &[],
+            hinges: &[],
+            thrust_line: &[],
+            units: MotionUnits::Metres,
+        }
+    }
+
+    /// A limit analysis: the collapse mechanism, hinges and thrust line at collapse.
+    pub fn limit(r: &'a LimitResult) -> Self {
+        let title = match r.status {
+            LimitStatus::Collapse => "Collapse mechanism".to_string(),
+            LimitStatus::Locked => "No collapse: locked".to_string(),
+            LimitStatus::NoEquilibrium => "No equilibrium under the dead loads".to_string(),
+        };
+        let mut info = Vec::new();
+        match r.load_multiplier {
+            Some(l) if r.status == LimitStatus::Collapse => info.push(format!(
+                "collapse load multiplier λ = {l:.4}   ·   {}",
+                plural(r.hinges.len(), "hinge")
+            )),
+            _ => info.push(r.message.clone()),
+        }
+        Scene {
+            title,
+            info,
+            geometry: &r.geometry,
+            blocks: &r.blocks,
+            joints: &r.joints,
+            hinges: &r.hinges,
+            thrust_line: &r.thrust_line,
+            units: MotionUnits::Normalised,
+        }
+    }
+
+    /// A settlement analysis: the mechanism that accommodates the prescribed support motions.
+    pub fn settlement(r: &'a SettlementResult) -> Self {
+        let mut info = Vec::new();
+        if let Some(m) = support_motion_text(&r.geometry) {
+            info.push(m);
+        }
+        let open = r
+            .joints
+            .iter()
+            .filter(|j| j.state == JointState::Open)
+            .count();
+        let mut line = plural(r.hinges.len(), "hinge");
+        if open > 0 {
+            let _ = write!(line, ", {}", plural(open, "open joint"));
+        }
+        if let Some(c) = &r.certificate {
+            let _ = write!(
+                line,
+                "   ·   duality gap {} ({})",
+                human(c.relative_gap, 2),
+                if c.ok { "certified" } else { "NOT certified" }
+            );
+        } else {
+            line = r.message.clone();
+        }
+        info.push(line);
+        Scene {
+            title: "Settlement mechanism".to_string(),
+            info,
+            geometry: &r.geometry,
+            blocks: &r.blocks,
+            joints: &r.joints,
+            hinges: &r.hinges,
+            thrust_line: &r.thrust_line,
+            units: MotionUnits::Metres,
+        }
+    }
+}
+
+fn plural(n: usize, what: &str) -> String {
+    format!("{n} {what}{}", if n == 1 { "" } else { "s" })
+}
+
+/// "prescribed: right u = +10 mm, v = 0 mm" for the supports that move.
+pub fn support_motion_text(g: &Geometry) -> Option<String> {
+    let parts: Vec<String> = g
+        .supports
+        .iter()
+        .filter(|s| s.motion.iter().any(|&x| x != 0.0 && x.is_finite()))
+        .map(|s| {
+            let mut t = format!(
+                "{} u = {} mm, v = {} mm",
+                s.name,
+                human(s.motion[0] * 1000.0, 3),
+                human(s.motion[1] * 1000.0, 3)
+            );
+            if s.motion[2] != 0.0 {
+                let _ = write!(t, ", θ = {}°", human(s.motion[2].to_degrees(), 3));
+            }
+            if s.fixed {
+                t.push_str(" (fixed)");
+            }
+            t
+        })
+        .collect();
+    if parts.is_empty() {
+        None
+    } else {
+        Some(format!("prescribed support motion: {}", parts.join("; ")))
+    }
+}
+
+/// How to draw a scene.
+#[derive(Clone, Debug)]
+pub struct DrawOptions {
+    /// Displacement scale factor; `None`: automatic (the largest displacement drawn is about 7 %
+    /// of the structure's size, rounded to 1, 2 or 5 × 10ⁿ).
+    pub scale: Option<f64>,
+    /// Width of the figure in pixels.
+    pub width: f64,
+    /// Largest height of the drawing area in pixels (tall structures are narrowed to fit).
+    pub max_height: f64,
+    /// Draw the deformed configuration (when the scene has motions).
+    pub deformed: bool,
+    /// Draw the undeformed outline, faint, behind the deformed configuration.
+    pub undeformed: bool,
+    pub hinges: bool,
+    pub cracks: bool,
+    pub thrust_line: bool,
+    /// Contact-force resultants as arrows (scaled by magnitude) at the centres of pressure.
+    pub forces: bool,
+    pub live_loads: bool,
+    pub dead_loads: bool,
+    pub legend: bool,
+    /// Write the data the HTML report's displacement-scale slider needs.
+    pub interactive: bool,
+    /// Prefix for element ids (pattern, markers), unique per figure in one HTML page.
+    pub id: String,
+}
+
+impl Default for DrawOptions {
+    fn default() -> Self {
+        DrawOptions {
+            scale: None,
+            width: 1000.0,
+            max_height: 760.0,
+            deformed: true,
+            undeformed: true,
+            hinges: true,
+            cracks: true,
+            thrust_line: true,
+            forces: false,
+            live_loads: true,
+            dead_loads: false,
+            legend: true,
+            interactive: false,
+            id: "v".to_string(),
+        }
+    }
+}
+
+/// The world → pixel map of a drawing: `px = (ox + k·x, oy − k·y)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    /// Pixels per metre.
+    pub k: f64,
+    pub ox: f64,
+    pub oy: f64,
+}
+
+impl Frame {
+    pub fn px(&self, p: [f64; 2]) -> [f64; 2] {
+        [self.ox + self.k * p[0], self.oy - self.k * p[1]]
+    }
+}
+
+/// A finished drawing.
+#[derive(Clone, Debug)]
+pub struct Drawing {
+    pub svg: String,
+    pub width: f64,
+    pub height: f64,
+    /// The displacement scale factor used (0 when nothing moves).
+    pub scale: f64,
+    /// Where world points land.
+    pub frame: Frame,
+    /// Whether a deformed configuration was drawn.
+    pub deformed: bool,
+}
+
+// Colours: calm, print-friendly, distinguishable in grey scale by shape as well as hue.
+const STONE: &str = "#e3dccb";
+const STILL: &str = "#d9d6cf";
+const EDGE: &str = "#3a3a3a";
+const FAINT: &str = "#a8a8a8";
+const CRACK: &str = "#d7301f";
+const THRUST: &str = "#1f5fbf";
+const LOAD: &str = "#7b2d8e";
+const FORCE: &str = "#1a9850";
+const HINGE: &str = "#111111";
+const PALETTE: [&str; 8] = [
+    "#f6c97f", "#9ecae1", "#b5dba0", "#f4a582", "#c9b8e0", "#f2e394", "#8fd3c8", "#e7b3cf",
+];
+
+/// One body (block or support).
+struct Body {
+    poly: Vec<[f64; 2]>,
+    /// Index into `groups`.
+    group: usize,
+}
+
+/// A set of bodies drawn with one rigid motion: each moving body is its own group (moved by
+/// [`RigidMotion::scaled`] about its own centroid, as the library's `deform` does); the blocks at
+/// rest share one group.
+struct Group {
+    /// Reference point (the body's centroid) and small motion (u, v, θ) there.
+    center: [f64; 2],
+    d: [f64; 3],
+    moving: bool,
+    support: bool,
+    /// Colour class: moving blocks of one macro-block (the same small rigid field) share one.
+    colour: usize,
+    /// The bodies of the group.
+    members: Vec<usize>,
+}
+
+fn finite3(d: [f64; 3]) -> [f64; 3] {
+    if d.iter().all(|x| x.is_finite()) {
+        d
+    } else {
+        [0.0; 3]
+    }
+}
+
+fn centroid(p: &[[f64; 2]]) -> [f64; 2] {
+    if p.is_empty() {
+        return [0.0, 0.0];
+    }
+    let (a, c) = area_centroid(p);
+    if a > 0.0 && c.iter().all(|x| x.is_finite()) {
+        c
+    } else {
+        let n = p.len() as f64;
+        [
+            p.iter().map(|q| q[0]).sum::<f64>() / n,
+            p.iter().map(|q| q[1]).sum::<f64>() / n,
+        ]
+    }
+}
+
+fn clean_poly(p: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    p.iter()
+        .copied()
+        .filter(|q| q[0].is_finite() && q[1].is_finite())
+        .collect()
+}
+
+struct Bbox([f64; 4]);
+impl Bbox {
+    fn new() -> Self {
+        Bbox([
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ])
+    }
+    fn add(&mut self, p: [f64; 2]) {
+        if p[0].is_finite() && p[1].is_finite() {
+            self.0[0] = self.0[0].min(p[0]);
+            self.0[1] = self.0[1].min(p[1]);
+            self.0[2] = self.0[2].max(p[0]);
+            self.0[3] = self.0[3].max(p[1]);
+        }
+    }
+    fn valid(&self) -> bool {
+        self.0[0] <= self.0[2] && self.0[1] <= self.0[3]
+    }
+}
+
+/// Everything computed about the bodies before layout.
+struct Bodies {
+    bodies: Vec<Body>,
+    groups: Vec<Group>,
+    nb: usize,
+    support_index: BTreeMap<String, usize>,
+    /// Largest small displacement of any vertex (m, or normalised units) and rotation (rad).
+    dmax: f64,
+    tmax: f64,
+    size: f64,
+    mean_block: f64,
+}
+
+fn build_bodies(scene: &Scene) -> Bodies {
+    let g = scene.geometry;
+    let nb = g.blocks.len();
+    let mut motions = vec![[0.0; 3]; nb];
+    for m in scene.blocks {
+        if m.id < nb {
+            motions[m.id] = finite3([m.u, m.v, m.theta]);
+        }
+    }
+    let mut bbox = Bbox::new();
+    let mut polys: Vec<Vec<[f64; 2]>> = Vec::with_capacity(nb + g.supports.len());
+    let mut area_sum = 0.0;
+    for p in &g.blocks {
+        let q = clean_poly(p);
+        for v in &q {
+            bbox.add(*v);
+        }
+        if q.len() >= 3 {
+            area_sum += area_centroid(&q).0;
+        }
+        polys.push(q);
+    }
+    for s in &g.supports {
+        let q = clean_poly(&s.polygon);
+        for v in &q {
+            bbox.add(*v);
+        }
+        polys.push(q);
+    }
+    let size = if bbox.valid() {
+        (bbox.0[2] - bbox.0[0]).max(bbox.0[3] - bbox.0[1]).max(1e-9)
+    } else {
+        1.0
+    };
+    let origin = if bbox.valid() {
+        [(bbox.0[0] + bbox.0[2]) / 2.0, (bbox.0[1] + bbox.0[3]) / 2.0]
+    } else {
+        [0.0, 0.0]
+    };
+    let mean_block = if nb > 0 && area_sum > 0.0 {
+        (area_sum / nb as f64).sqrt()
+    } else {
+        size / 10.0
+    };
+
+    // Small displacements: the largest vertex displacement.
+    let mut dmax = 0.0f64;
+    let mut centers = Vec::with_capacity(polys.len());
+    let mut all_d = Vec::with_capacity(polys.len());
+    for (i, p) in polys.iter().enumerate() {
+        let c = centroid(p);
+        // Supports move by their prescribed motion only in a settlement mechanism (not in a
+        // drawing of the model, nor when the analysis found no mechanism).
+        let d = if i < nb {
+            motions[i]
+        } else if scene.units == MotionUnits::Metres && !scene.blocks.is_empty() {
+            finite3(g.supports[i - nb].motion)
+        } else {
+            [0.0; 3]
+        };
+        for v in p {
+            let w = voussoir::geometry::small_displacement(c, d, *v);
+            dmax = dmax.max(w[0].hypot(w[1]));
+        }
+        centers.push(c);
+        all_d.push(d);
+    }
+    // Group the blocks by their rigid field: θ and the displacement of a common point.
+    let tmax = all_d
+        .iter()
+        .fold(0.0f64, |m, d| m.max(d[2].abs()))
+        .max(1e-300);
+    let umax = dmax.max(1e-300);
+    let key = |c: [f64; 2], d: [f64; 3]| -> (i64, i64, i64) {
+        let w = voussoir::geometry::small_displacement(c, d, origin);
+        let q = |x: f64, r: f64| ((x / r) * 1e7).round() as i64;
+        (q(w[0], umax), q(w[1], umax), q(d[2], tmax))
+    };
+    let mut groups: Vec<Group> = Vec::new();
+    let mut colours: BTreeMap<(i64, i64, i64), usize> = BTreeMap::new();
+    let mut still: Option<usize> = None;
+    let mut bodies = Vec::with_capacity(polys.len());
+    let still_tol = 1e-9 * umax;
+    let mut tmax_moving = 0.0f64;
+    for (i, p) in polys.into_iter().enumerate() {
+        let (c, d) = (centers[i], all_d[i]);
+        let moving = p.iter().any(|v| {
+            let w = voussoir::geometry::small_displacement(c, d, *v);
+            w[0].hypot(w[1]) > still_tol
+        }) && dmax > 0.0;
+        let support = i >= nb;
+        let group = if moving || support {
+            if moving {
+                tmax_moving = tmax_moving.max(d[2].abs());
+            }
+            let n = colours.len();
+            let colour = if moving && !support {
+                *colours.entry(key(c, d)).or_insert(n)
+            } else {
+                0
+            };
+            groups.push(Group {
+                center: c,
+                d: if moving { d } else { [0.0; 3] },
+                moving,
+                support,
+                colour,
+                members: vec![i],
+            });
+            groups.len() - 1
+        } else {
+            let gi = *still.get_or_insert_with(|| {
+                groups.push(Group {
+                    center: c,
+                    d: [0.0; 3],
+                    moving: false,
+                    support: false,
+                    colour: 0,
+                    members: vec![],
+                });
+                groups.len() - 1
+            });
+            groups[gi].members.push(i);
+            gi
+        };
+        bodies.push(Body { poly: p, group });
+    }
+    let support_index = g
+        .supports
+        .iter()
+        .enumerate()
+        .map(|(s, sp)| (sp.name.clone(), nb + s))
+        .collect();
+    Bodies {
+        bodies,
+        groups,
+        nb,
+        support_index,
+        dmax,
+        tmax: tmax_moving,
+        size,
+        mean_block,
+    }
+}
+
+impl Bodies {
+    fn body_of(&self, b: &BodyName) -> Option<usize> {
+        match b {
+            BodyName::Block(i) if *i < self.nb => Some(*i),
+            BodyName::Block(_) => None,
+            BodyName::Support(s) => self.support_index.get(s).copied(),
+        }
+    }
+}
+
+/// Pixel-frame motion of a group, unscaled: `[cx, cy, u, v, φ]` with φ the pixel-frame angle.
+fn px_motion(fr: &Frame, g: &Group) -> [f64; 5] {
+    let c = fr.px(g.center);
+    [c[0], c[1], fr.k * g.d[0], -fr.k * g.d[1], -g.d[2]]
+}
+
+/// Apply a pixel-frame motion at scale `s` to a pixel point (same formula as the report's JS).
+fn px_apply(m: &[f64; 5], s: f64, p: [f64; 2]) -> [f64; 2] {
+    let (sn, cs) = (s * m[4]).sin_cos();
+    let (dx, dy) = (p[0] - m[0], p[1] - m[1]);
+    [
+        m[0] + s * m[2] + cs * dx - sn * dy,
+        m[1] + s * m[3] + sn * dx + cs * dy,
+    ]
+}
+
+fn px_matrix(m: &[f64; 5], s: f64) -> String {
+    let (sn, cs) = (s * m[4]).sin_cos();
+    let e = m[0] + s * m[2] - (cs * m[0] - sn * m[1]);
+    let f = m[1] + s * m[3] - (sn * m[0] + cs * m[1]);
+    format!(
+        "matrix({} {} {} {} {} {})",
+        fmt_fixed(cs, 7),
+        fmt_fixed(sn, 7),
+        fmt_fixed(-sn, 7),
+        fmt_fixed(cs, 7),
+        num(e),
+        num(f)
+    )
+}
+
+/// World-frame finite motion of a group at scale `s`.
+fn world_motion(g: &Group, s: f64) -> RigidMotion {
+    if g.moving {
+        RigidMotion::scaled(g.center, g.d, s)
+    } else {
+        RigidMotion::scaled(g.center, [0.0; 3], 0.0)
+    }
+}
+
+/// The automatic displacement scale: the largest displacement drawn is about 7 % of the size
+/// `size`, and no block turns by much more than 0.15 rad (so that the second-order separation of
+/// blocks moved about their own centroids stays below a pixel or so), rounded to 1, 2 or 5 × 10ⁿ.
+/// `dmax` is the largest small displacement, `tmax` the largest rotation of the mechanism.
+pub fn auto_scale(dmax: f64, tmax: f64, size: f64) -> f64 {
+    if !(dmax > 0.0 && dmax.is_finite() && size > 0.0) {
+        return 1.0;
+    }
+    let by_size = 0.07 * size / dmax;
+    let by_rotation = if tmax > 0.0 && tmax.is_finite() {
+        0.15 / tmax
+    } else {
+        f64::INFINITY
+    };
+    let s = nice(by_size.min(by_rotation), false);
+    if s > 1.3 * by_rotation {
+        nice(by_rotation, true)
+    } else {
+        s
+    }
+}
+
+/// Draw a scene as SVG.
+pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
+    let b = build_bodies(scene);
+    let has_motion = opts.deformed && b.dmax > 0.0 && b.groups.iter().any(|g| g.moving);
+    let scale = if has_motion {
+        match opts.scale {
+            Some(s) if s.is_finite() && s >= 0.0 => s,
+            _ => auto_scale(b.dmax, b.tmax, b.size),
+        }
+    } else {
+        0.0
+    };
+    let motions: Vec<RigidMotion> = b
+        .groups
+        .iter()
+        .map(|g| world_motion(g, if has_motion { scale } else { 0.0 }))
+        .collect();
+    let moved = |body: usize, p: [f64; 2]| -> [f64; 2] { motions[b.bodies[body].group].apply(p) };
+
+    // Loads to draw: (body, tip, direction, relative length, live).
+    let live_max = scene
+        .geometry
+        .loads
+        .iter()
+        .filter(|l| l.live)
+        .fold(0.0f64, |m, l| m.max(l.fx.hypot(l.fy)));
+    let dead_max = scene
+        .geometry
+        .loads
+        .iter()
+        .filter(|l| !l.live)
+        .fold(0.0f64, |m, l| m.max(l.fx.hypot(l.fy)));
+    let arrow_len = 0.09 * b.size;
+    let mut loads: Vec<(usize, [f64; 2], [f64; 2], bool)> = Vec::new();
+    for l in &scene.geometry.loads {
+        let (show, fmax) = if l.live {
+            (opts.live_loads, live_max)
+        } else {
+            (opts.dead_loads, dead_max)
+        };
+        let f = l.fx.hypot(l.fy);
+        if !show
+            || !(f > 0.0)
+            || !(fmax > 0.0)
+            || l.block >= b.nb
+            || !l.x.is_finite()
+            || !l.y.is_finite()
+        {
+            continue;
+        }
+        let len = arrow_len * (f / fmax).max(0.25);
+        loads.push((
+            l.block,
+            [l.x, l.y],
+            [l.fx / f * len, l.fy / f * len],
+            l.live,
+        ));
+    }
+    // Contact-force arrows: (body a, centre of pressure, force vector in m of drawing).
+    let mut forces: Vec<(usize, [f64; 2], [f64; 2])> = Vec::new();
+    let joint_by_id: BTreeMap<usize, &JointResult> =
+        scene.joints.iter().map(|j| (j.id, j)).collect();
+    if opts.forces {
+        let fmax = scene
+            .thrust_line
+            .iter()
+            .filter_map(|t| joint_by_id.get(&t.joint))
+            .fold(0.0f64, |m, j| m.max(j.normal_force.hypot(j.shear_force)));
+        for t in scene.thrust_line {
+            let Some(j) = joint_by_id.get(&t.joint) else {
+                continue;
+            };
+            let Some(a) = b.body_of(&j.a) else { continue };
+            let n = j.normal;
+            let tg = [-n[1], n[0]];
+            let f = [
+                j.normal_force * n[0] + j.shear_force * tg[0],
+                j.normal_force * n[1] + j.shear_force * tg[1],
+            ];
+            let mag = f[0].hypot(f[1]);
+            if !(mag > 0.0) || !(fmax > 0.0) || !t.x.is_finite() || !t.y.is_finite() {
+                continue;
+            }
+            let len = 0.12 * b.size * mag / fmax;
+            forces.push((a, [t.x, t.y], [f[0] / mag * len, f[1] / mag * len]));
+        }
+    }
+
+    // Bounding box of everything drawn, in world units.
+    let mut bb = Bbox::new();
+    for (i, body) in b.bodies.iter().enumerate() {
+        for v in &body.poly {
+            if !has_motion || opts.undeformed {
+                bb.add(*v);
+            }
+            bb.add(moved(i, *v));
+        }
+    }
+    for (blk, tip, d, _) in &loads {
+        let t = moved(*blk, *tip);
+        bb.add([t[0] - d[0], t[1] - d[1]]);
+        bb.add(t);
+    }
+    for (a, p, d) in &forces {
+        let c = moved(*a, *p);
+        bb.add([c[0] - d[0] / 2.0, c[1] - d[1] / 2.0]);
+        bb.add([c[0] + d[0] / 2.0, c[1] + d[1] / 2.0]);
+    }
+    if !bb.valid() {
+        bb = Bbox([0.0, 0.0, 1.0, 1.0]);
+    }
+    let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
+
+    // Layout.
+    let width = if opts.width.is_finite() && opts.width >= 200.0 {
+        opts.width
+    } else {
+        1000.0
+    };
+    let max_h = if opts.max_height.is_finite() && opts.max_height >= 100.0 {
+        opts.max_height
+    } else {
+        760.0
+    };
+    let margin = 28.0;
+    let title_h = 16.0 + 24.0 + 19.0 * scene.info.len() as f64;
+    let legend_h = if opts.legend { 58.0 } else { 8.0 };
+    let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
+    let draw_w = bw * k;
+    let draw_h = bh * k;
+    let height = (title_h + margin + draw_h + margin + legend_h).ceil();
+    let fr = Frame {
+        k,
+        ox: (width - draw_w) / 2.0 - k * bb.0[0],
+        oy: title_h + margin + k * bb.0[3],
+    };
+
+    let pxm: Vec<[f64; 5]> = b.groups.iter().map(|g| px_motion(&fr, g)).collect();
+    let s_eff = if has_motion { scale } else { 0.0 };
+    let stroke = (0.03 * b.mean_block * k).clamp(0.25, 1.1);
+    let hinge_r = (0.22 * b.mean_block * k).clamp(2.0, 5.5);
+    let id = esc(&opts.id);
+    let interactive = opts.interactive && has_motion;
+
+    let mut o = String::with_capacity(4096 + 120 * b.bodies.len());
+    let _ = write!(
+        o,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\"",
+        w = num(width),
+        h = num(height)
+    );
+    if interactive {
+        let mut m = String::new();
+        for (i, g) in pxm.iter().enumerate() {
+            if i > 0 {
+                m.push(';');
+            }
+            let _ = write!(
+                m,
+                "{},{},{},{},{}",
+                num(g[0]),
+                num(g[1]),
+                fmt_fixed(g[2], 5),
+                fmt_fixed(g[3], 5),
+                fmt_fixed(g[4], 9)
+            );
+        }
+        let _ = write!(
+            o,
+            " data-scale=\"{}\" data-motions=\"{}\"",
+            fmt_fixed(scale, 9),
+            m
+        );
+    }
+    o.push_str(">\n");
+    let _ = writeln!(o, "<title>{}</title>", esc(&scene.title));
+    let _ = writeln!(
+        o,
+        "<defs><pattern id=\"{id}-hatch\" patternUnits=\"userSpaceOnUse\" width=\"7\" height=\"7\" patternTransform=\"rotate(45)\"><rect width=\"7\" height=\"7\" fill=\"#ffffff\"/><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"7\" stroke=\"#444444\" stroke-width=\"1.6\"/></pattern></defs>"
+    );
+    let _ = writeln!(
+        o,
+        "<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
+        num(width),
+        num(height)
+    );
+    // Title and info.
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"30\" font-size=\"19\" fill=\"#111111\">{}</text>",
+        num(margin),
+        esc(&scene.title)
+    );
+    for (i, line) in scene.info.iter().enumerate() {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"13\" fill=\"#444444\">{}</text>",
+            num(margin),
+            num(52.0 + 19.0 * i as f64),
+            esc(line)
+        );
+    }
+
+    // Undeformed outline, faint.
+    if has_motion && opts.undeformed {
+        let mut d = String::new();
+        for body in &b.bodies {
+            polygon_path(&mut d, body.poly.iter().map(|p| fr.px(*p)));
+        }
+        let _ = writeln!(
+            o,
+            "<path class=\"undeformed\" d=\"{d}\" fill=\"none\" stroke=\"{FAINT}\" stroke-width=\"{}\" stroke-dasharray=\"4 3\"/>",
+            num((stroke * 0.9).max(0.4))
+        );
+    }
+
+    // Bodies by group: supports hatched, blocks filled.
+    for (gi, g) in b.groups.iter().enumerate() {
+        let mut d = String::new();
+        for &m in &g.members {
+            polygon_path(&mut d, b.bodies[m].poly.iter().map(|p| fr.px(*p)));
+        }
+        if d.is_empty() {
+            continue;
+        }
+        let fill = if g.support {
+            format!("url(#{id}-hatch)")
+        } else if !has_motion {
+            STONE.to_string()
+        } else if !g.moving {
+            STILL.to_string()
+        } else {
+            PALETTE[g.colour % PALETTE.len()].to_string()
+        };
+        let _ = write!(
+            o,
+            "<path class=\"{}\" d=\"{d}\" fill=\"{fill}\" stroke=\"{EDGE}\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
+            if g.support { "support" } else { "blocks" },
+            num(if g.support { stroke.max(0.8) } else { stroke })
+        );
+        if g.moving && has_motion {
+            let _ = write!(o, " transform=\"{}\"", px_matrix(&pxm[gi], s_eff));
+            if interactive {
+                let _ = write!(o, " data-g=\"{gi}\"");
+            }
+        }
+        o.push_str("/>\n");
+    }
+
+    // A point that moves with body `body`: its static pixel position and, for the slider, the
+    // data `g,x,y` (group and undeformed pixel position).
+    let at = |body: usize, p: [f64; 2]| -> ([f64; 2], String) {
+        let gi = b.bodies[body].group;
+        let p0 = fr.px(p);
+        let p1 = if b.groups[gi].moving && has_motion {
+            px_apply(&pxm[gi], s_eff, p0)
+        } else {
+            p0
+        };
+        (p1, format!("{},{},{}", gi, num(p0[0]), num(p0[1])))
+    };
+
+    // Cracks: the wedge between the two faces of every open joint.
+    let mut n_cracks = 0;
+    if has_motion && opts.cracks {
+        let mut static_d = String::new();
+        let mut items = String::new();
+        for j in scene.joints {
+            if !matches!(
+                j.state,
+                JointState::Open | JointState::Hinge | JointState::Sliding
+            ) || j.points.len() < 2
+            {
+                continue;
+            }
+            let (Some(a), Some(bb_)) = (b.body_of(&j.a), b.body_of(&j.b)) else {
+                continue;
+            };
+            let t = [-j.normal[1], j.normal[0]];
+            let along = |p: &voussoir::result::PointResult| p.x * t[0] + p.y * t[1];
+            let (Some(p0), Some(p1)) = (
+                j.points
+                    .iter()
+                    .filter(|p| p.x.is_finite() && p.y.is_finite())
+                    .min_by(|x, y| along(x).total_cmp(&along(y))),
+                j.points
+                    .iter()
+                    .filter(|p| p.x.is_finite() && p.y.is_finite())
+                    .max_by(|x, y| along(x).total_cmp(&along(y))),
+            ) else {
+                continue;
+            };
+            let (q0, q1) = ([p0.x, p0.y], [p1.x, p1.y]);
+            let corners = [at(a, q0), at(a, q1), at(bb_, q1), at(bb_, q0)];
+            n_cracks += 1;
+            let pts: Vec<[f64; 2]> = corners.iter().map(|c| c.0).collect();
+            if interactive {
+                let data: Vec<&str> = corners.iter().map(|c| c.1.as_str()).collect();
+                let _ = writeln!(
+                    items,
+                    "<polygon points=\"{}\" data-pts=\"{}\"/>",
+                    points_attr(&pts),
+                    data.join(" ")
+                );
+            } else {
+                polygon_path(&mut static_d, pts);
+            }
+        }
+        if !static_d.is_empty() {
+            let _ = writeln!(o, "<path class=\"cracks\" d=\"{static_d}\" fill=\"{CRACK}\" fill-opacity=\"0.85\" stroke=\"{CRACK}\" stroke-width=\"0.6\" stroke-linejoin=\"round\"/>");
+        }
+        if !items.is_empty() {
+            let _ = writeln!(o, "<g class=\"cracks\" fill=\"{CRACK}\" fill-opacity=\"0.85\" stroke=\"{CRACK}\" stroke-width=\"0.6\" stroke-linejoin=\"round\">\n{items}</g>");
+        }
+    }
+
+    // Load arrows (kept in their direction, carried by their block).
+    let head = (0.018 * width).clamp(6.0, 11.0);
+    let draw_arrows = |o: &mut String,
+                       class: &str,
+                       colour: &str,
+                       list: &[(usize, [f64; 2], [f64; 2], bool)]| {
+        if list.is_empty() {
+            return;
+        }
+        let sw = (stroke * 1.6).clamp(1.0, 1.8);
+        let _ = writeln!(
+            o,
+            "<g class=\"{class}\" stroke=\"{colour}\" fill=\"{colour}\" stroke-width=\"{}\">",
+            num(sw)
+        );
+        if interactive && list.len() <= 2000 {
+            for (body, tip, d, _) in list {
+                let (p1, data) = at(*body, *tip);
+                let p0 = fr.px(*tip);
+                let tail = fr.px([tip[0] - d[0], tip[1] - d[1]]);
+                let (mut sh, mut hd) = (String::new(), String::new());
+                arrow(&mut sh, &mut hd, tail, p0, head);
+                let _ = writeln!(
+                    o,
+                    "<g transform=\"translate({} {})\" data-at=\"{}\" data-ref=\"{},{}\"><path d=\"{sh}\" fill=\"none\"/><path d=\"{hd}\" stroke=\"none\"/></g>",
+                    num(p1[0] - p0[0]),
+                    num(p1[1] - p0[1]),
+                    data,
+                    num(p0[0]),
+                    num(p0[1])
+                );
+            }
+        } else {
+            let (mut sh, mut hd) = (String::new(), String::new());
+            for (body, tip, d, _) in list {
+                let t = moved(*body, *tip);
+                arrow(
+                    &mut sh,
+                    &mut hd,
+                    fr.px([t[0] - d[0], t[1] - d[1]]),
+                    fr.px(t),
+                    head,
+                );
+            }
+            let _ = writeln!(
+                o,
+                "<path d=\"{sh}\" fill=\"none\"/>\n<path d=\"{hd}\" stroke=\"none\"/>"
+            );
+        }
+        o.push_str("</g>\n");
+    };
+    let live: Vec<_> = loads.iter().copied().filter(|l| l.3).collect();
+    let dead: Vec<_> = loads.iter().copied().filter(|l| !l.3).collect();
+    draw_arrows(&mut o, "dead-loads", "#555555", &dead);
+    draw_arrows(&mut o, "live-loads", LOAD, &live);
+    // Contact forces: arrows centred on the centre of pressure.
+    if !forces.is_empty() {
+        let centred: Vec<(usize, [f64; 2], [f64; 2], bool)> = forces
+            .iter()
+            .map(|(a, p, d)| (*a, [p[0] + d[0] / 2.0, p[1] + d[1] / 2.0], *d, true))
+            .collect();
+        draw_arrows(&mut o, "contact-forces", FORCE, &centred);
+    }
+
+    // Thrust line: centres of pressure, joined along chains of bodies.
+    let mut drew_thrust = false;
+    if opts.thrust_line && !scene.thrust_line.is_empty() {
+        let chains = thrust_chains(scene, &b, &joint_by_id);
+        let mut lines = String::new();
+        let mut dots = String::new();
+        let dot_r = (hinge_r * 0.45).max(1.2);
+        for chain in &chains {
+            let pts: Vec<([f64; 2], String)> =
+                chain.iter().map(|(body, p)| at(*body, *p)).collect();
+            if pts.len() >= 2 {
+                let xy: Vec<[f64; 2]> = pts.iter().map(|p| p.0).collect();
+                let _ = write!(lines, "<polyline points=\"{}\"", points_attr(&xy));
+                if interactive {
+                    let data: Vec<&str> = pts.iter().map(|p| p.1.as_str()).collect();
+                    let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
+                }
+                lines.push_str("/>\n");
+            }
+            if chain.len() <= 400 {
+                for p in &pts {
+                    let _ = write!(
+                        dots,
+                        "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
+                        num(p.0[0]),
+                        num(p.0[1]),
+                        num(dot_r)
+                    );
+                    if interactive {
+                        let _ = write!(dots, " data-at=\"{}\"", p.1);
+                    }
+                    dots.push_str("/>\n");
+                }
+            }
+        }
+        if !lines.is_empty() || !dots.is_empty() {
+            drew_thrust = true;
+            let _ = writeln!(
+                o,
+                "<g class=\"thrust-line\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"{}\" stroke-linejoin=\"round\">\n{lines}</g>",
+                num((stroke * 2.2).clamp(1.2, 2.2))
+            );
+            let _ = writeln!(
+                o,
+                "<g class=\"pressure-centres\" fill=\"{THRUST}\">\n{dots}</g>"
+            );
+        }
+    }
+
+    // Hinges on top.
+    let mut n_hinges = 0;
+    if opts.hinges && !scene.hinges.is_empty() {
+        let _ = writeln!(
+            o,
+            "<g class=\"hinges\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"{}\">",
+            num((hinge_r * 0.3).clamp(0.8, 1.5))
+        );
+        for h in scene.hinges {
+            let Some(j) = joint_by_id.get(&h.joint) else {
+                continue;
+            };
+            let Some(a) = b.body_of(&j.a) else { continue };
+            if !h.x.is_finite() || !h.y.is_finite() {
+                continue;
+            }
+            let (p, data) = at(a, [h.x, h.y]);
+            n_hinges += 1;
+            let _ = write!(
+                o,
+                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
+                num(p[0]),
+                num(p[1]),
+                num(hinge_r)
+            );
+            if interactive {
+                let _ = write!(o, " data-at=\"{data}\"");
+            }
+            o.push_str("/>\n");
+        }
+        o.push_str("</g>\n");
+    }
+
+    if b.bodies.is_empty() {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"14\" fill=\"#888888\" text-anchor=\"middle\">(no blocks to draw)</text>",
+            num(width / 2.0),
+            num(title_h + margin + draw_h / 2.0)
+        );
+    }
+
+    if opts.legend {
+        let items = LegendItems {
+            undeformed: has_motion && opts.undeformed,
+            hinges: n_hinges > 0,
+            cracks: n_cracks > 0,
+            thrust: drew_thrust,
+            live: !live.is_empty(),
+            dead: !dead.is_empty(),
+            forces: !forces.is_empty(),
+            supports: b.nb < b.bodies.len(),
+        };
+        legend(
+            &mut o,
+            &id,
+            &items,
+            width,
+            height - legend_h,
+            margin,
+            k,
+            b.size,
+            has_motion,
+            scale,
+            scene.units,
+            interactive,
+        );
+    }
+    o.push_str("</svg>\n");
+    Drawing {
+        svg: o,
+        width,
+        height,
+        scale: if has_motion { scale } else { 0.0 },
+        frame: fr,
+        deformed: has_motion,
+    }
+}
+
+/// Chains of (body a, centre of pressure) ordered along the structure. A body touched by more
+/// than two loaded joints (walls) gives no line: each centre of pressure is its own chain.
+fn thrust_chains(
+    scene: &Scene,
+    b: &Bodies,
+    joints: &BTreeMap<usize, &JointResult>,
+) -> Vec<Vec<(usize, [f64; 2])>> {
+    // Edges: (body a, body b, point, body to move it with).
+    let mut edges: Vec<(usize, usize, [f64; 2])> = Vec::new();
+    let mut carrier: Vec<usize> = Vec::new();
+    for t in scene.thrust_line {
+        let Some(j) = joints.get(&t.joint) else {
+            continue;
+        };
+        let (Some(a), Some(c)) = (b.body_of(&j.a), b.body_of(&j.b)) else {
+            continue;
+        };
+        if !t.x.is_finite() || !t.y.is_finite() {
+            continue;
+        }
+        edges.push((a, c, [t.x, t.y]));
+        carrier.push(a);
+    }
+    let n = b.bodies.len();
+    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for (e, (a, c, _)) in edges.iter().enumerate() {
+        adj[*a].push(e);
+        adj[*c].push(e);
+    }
+    if adj.iter().any(|v| v.len() > 2) {
+        return edges
+            .iter()
+            .zip(&carrier)
+            .map(|(e, c)| vec![(*c, e.2)])
+            .collect();
+    }
+    let mut used = vec![false; edges.len()];
+    let mut chains = Vec::new();
+    // Start at chain ends (degree 1), then whatever is left (cycles).
+    let starts: Vec<usize> = (0..n).filter(|&v| adj[v].len() == 1).chain(0..n).collect();
+    for s in starts {
+        let mut v = s;
+        let mut chain = Vec::new();
+        while let Some(&e) = adj[v].iter().find(|&&e| !used[e]) {
+            used[e] = true;
+            chain.push((carrier[e], edges[e].2));
+            v = if edges[e].0 == v {
+                edges[e].1
+            } else {
+                edges[e].0
+            };
+        }
+        if !chain.is_empty() {
+            chains.push(chain);
+        }
+    }
+    chains
+}
+
+struct LegendItems {
+    undeformed: bool,
+    hinges: bool,
+    cracks: bool,
+    thrust: bool,
+    live: bool,
+    dead: bool,
+    forces: bool,
+    supports: bool,
+}
+
+#[allow(clippy::too_many_arguments)]
+fn legend(
+    o: &mut String,
+    id: &str,
+    it: &LegendItems,
+    width: f64,
+    top: f64,
+    margin: f64,
+    k: f64,
+    size: f64,
+    has_motion: bool,
+    scale: f64,
+    units: MotionUnits,
+    interactive: bool,
+) {
+    let fs = 12.5;
+    let y = top + 16.0;
+    let _ = writeln!(
+        o,
+        "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#dddddd\" stroke-width=\"1\"/>",
+        num(margin),
+        num(top),
+        num(width - margin),
+        num(top)
+    );
+    let mut x = margin;
+    let mut put = |o: &mut String, symbol: &str, label: &str| {
+        let _ = writeln!(
+            o,
+            "<g transform=\"translate({} {})\">{symbol}</g>",
+            num(x),
+            num(y)
+        );
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
+            num(x + 28.0),
+            num(y + 4.5),
+            esc(label)
+        );
+        x += 28.0 + text_width(label, fs) + 22.0;
+    };
+    if it.undeformed {
+        put(o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed");
+    }
+    if it.supports {
+        put(o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support");
+    }
+    if it.hinges {
+        put(o, &format!("<circle cx=\"11\" cy=\"0\" r=\"5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge");
+    }
+    if it.cracks {
+        put(
+            o,
+            &format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.85\"/>"),
+            "crack (opening)",
+        );
+    }
+    if it.thrust {
+        put(
+            o,
+            &format!("<path d=\"M0 3L11 -3L22 2\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"2\"/><circle cx=\"11\" cy=\"-3\" r=\"2\" fill=\"{THRUST}\"/>"),
+            "thrust line",
+        );
+    }
+    let arrow_sym = |c: &str| {
+        format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
+    };
+    if it.live {
+        put(o, &arrow_sym(LOAD), "live load (× λ)");
+    }
+    if it.dead {
+        put(o, &arrow_sym("#555555"), "dead load");
+    }
+    if it.forces {
+        put(o, &arrow_sym(FORCE), "contact force");
+    }
+    // Second row: scale bar and displacement scale.
+    let y2 = y + 24.0;
+    let bar_m = nice(0.18 * size, true);
+    let bar_px = bar_m * k;
+    let bx = margin;
+    let _ = writeln!(
+        o,
+        "<g stroke=\"#333333\" stroke-width=\"1.2\"><path d=\"M{x0} {ya}L{x0} {yb}M{x0} {y2}L{x1} {y2}M{x1} {ya}L{x1} {yb}\" fill=\"none\"/></g>",
+        x0 = num(bx),
+        x1 = num(bx + bar_px),
+        y2 = num(y2),
+        ya = num(y2 - 4.0),
+        yb = num(y2 + 4.0)
+    );
+    let bar_label = if bar_m >= 1.0 {
+        format!("{} m", human(bar_m, 3))
+    } else {
+        format!("{} cm", human(bar_m * 100.0, 3))
+    };
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
+        num(bx + bar_px + 8.0),
+        num(y2 + 4.5),
+        esc(&bar_label)
+    );
+    if has_motion {
+        let (lead, tail) = match units {
+            MotionUnits::Metres => ("displacements drawn × ", String::new()),
+            MotionUnits::Normalised => (
+                "mechanism drawn × ",
+                " (normalised: live loads do unit work)".to_string(),
+            ),
+        };
+        let tx = bx + bar_px + 8.0 + text_width(&bar_label, fs) + 30.0;
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}<tspan class=\"scale-value\"{}>{}</tspan>{}</text>",
+            num(tx),
+            num(y2 + 4.5),
+            lead,
+            if interactive { " data-scale-label=\"1\"" } else { "" },
+            esc(&human(scale, 4)),
+            esc(&tail)
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pixel_matrix_matches_the_world_rigid_motion() {
+        let fr = Frame {
+            k: 37.0,
+            ox: 120.0,
+            oy: 400.0,
+        };
+        let g = Group {
+            center: [1.2, 0.7],
+            d: [0.03, -0.02, 0.05],
+            moving: true,
+            support: false,
+            colour: 0,
+            members: vec![],
+        };
+        let pm = px_motion(&fr, &g);
+        let s = 4.0;
+        let wm = world_motion(&g, s);
+        for p in [[0.0, 0.0], [2.0, 1.0], [-1.5, 3.0]] {
+            let want = fr.px(wm.apply(p));
+            let got = px_apply(&pm, s, fr.px(p));
+            assert!(
+                (want[0] - got[0]).abs() < 1e-9 && (want[1] - got[1]).abs() < 1e-9,
+                "{want:?} {got:?}"
+            );
+            // The SVG matrix gives the same point.
+            let (sn, cs) = (s * pm[4]).sin_cos();
+            let e = pm[0] + s * pm[2] - (cs * pm[0] - sn * pm[1]);
+            let f = pm[1] + s * pm[3] - (sn * pm[0] + cs * pm[1]);
+            let q = fr.px(p);
+            let m = [cs * q[0] - sn * q[1] + e, sn * q[0] + cs * q[1] + f];
+            assert!((want[0] - m[0]).abs() < 1e-9 && (want[1] - m[1]).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn auto_scale_is_a_round_number() {
+        // 7 % of 6.38 m over a 1 cm settlement: 44.66 → 50.
+        assert_eq!(auto_scale(0.01, 0.001, 6.38), 50.0);
+        // ... unless the rotations get large: 0.15 rad / 0.01 = 15 → 10.
+        assert_eq!(auto_scale(0.01, 0.01, 6.38), 10.0);
+        assert_eq!(auto_scale(0.0, 0.0, 6.38), 1.0);
+    }
+}

@@ -68,6 +68,11 @@ pub struct CapacityOptions {
     pub hot_start: bool,
     /// Keep the collapse mechanism (block motions) of every step in the result.
     pub mechanisms: bool,
+    /// After the settlement, treat `fixed` supports as ordinary contact joints (no tension, no
+    /// sliding). `fixed` is how the paper prescribes a settlement (an essential boundary
+    /// condition); the analyses that follow it use unilateral contact at every support. Default
+    /// true; false keeps the blocks tied to their fixed supports.
+    pub release_fixed: bool,
     pub solver: SolverOptions,
 }
 
@@ -78,6 +83,7 @@ impl Default for CapacityOptions {
             root_tolerance: 1e-6,
             hot_start: true,
             mechanisms: true,
+            release_fixed: true,
             solver: SolverOptions::default(),
         }
     }
@@ -172,16 +178,27 @@ pub fn settlement_magnitude(st: &Structure) -> f64 {
     if t > 0.0 {
         t
     } else {
-        st.supports.iter().fold(0.0f64, |m, s| m.max(s.motion[2].abs()))
+        st.supports
+            .iter()
+            .fold(0.0f64, |m, s| m.max(s.motion[2].abs()))
     }
 }
 
 /// Openings of every point per joint for mechanism `d` (with the supports' prescribed motions),
 /// in the layout [`Structure::deformed`] takes, and the closed/open threshold.
-pub fn joint_openings(st: &Structure, map: &KinematicMap, d: &[f64], support_scale: f64) -> (Vec<Vec<f64>>, f64) {
+pub fn joint_openings(
+    st: &Structure,
+    map: &KinematicMap,
+    d: &[f64],
+    support_scale: f64,
+) -> (Vec<Vec<f64>>, f64) {
     let (open, _) = map.jumps(d, support_scale);
     let scale = open.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-    let mut out: Vec<Vec<f64>> = st.joints.iter().map(|j| vec![0.0; j.points.len()]).collect();
+    let mut out: Vec<Vec<f64>> = st
+        .joints
+        .iter()
+        .map(|j| vec![0.0; j.points.len()])
+        .collect();
     for (k, p) in map.points.iter().enumerate() {
         out[p.joint][p.index] = open[k];
     }
@@ -201,7 +218,9 @@ pub fn deform(st: &Structure, d: &[f64], s: f64) -> Result<Structure> {
         )));
     }
     if !s.is_finite() || d.iter().any(|x| !x.is_finite()) {
-        return Err(Error::Request("deformation: the mechanism and its scale must be finite".into()));
+        return Err(Error::Request(
+            "deformation: the mechanism and its scale must be finite".into(),
+        ));
     }
     let map = KinematicMap::new(st);
     let (openings, tol) = joint_openings(st, &map, d, 1.0);
@@ -229,7 +248,11 @@ impl SettlementPath {
                 "capacity analysis needs a settlement: no support has a prescribed motion".into(),
             ));
         }
-        let motions: Vec<[f64; 3]> = st.supports.iter().map(|s| s.motion.map(|x| x / mag)).collect();
+        let motions: Vec<[f64; 3]> = st
+            .supports
+            .iter()
+            .map(|s| s.motion.map(|x| x / mag))
+            .collect();
         let unit = st.with_support_motions(&motions);
         let map = KinematicMap::new(&unit);
         let sol = solve_settlement(&unit, &map, solver)?;
@@ -257,11 +280,35 @@ impl SettlementPath {
             }
             return st;
         }
-        let mut st = self.unit.deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol);
+        let mut st =
+            self.unit
+                .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol);
         for sp in st.supports.iter_mut() {
             sp.motion = [0.0; 3];
         }
         st
+    }
+}
+
+/// Turn every `fixed` support into a contact one: its joints become unilateral (no tension).
+pub fn release_fixed(st: &mut Structure) {
+    use crate::model::Connection;
+    use crate::structure::Body;
+    let fixed: Vec<bool> = st
+        .supports
+        .iter()
+        .map(|s| s.connection == Connection::Fixed)
+        .collect();
+    for j in st.joints.iter_mut() {
+        if [j.a, j.b]
+            .iter()
+            .any(|b| matches!(b, Body::Support(k) if fixed[*k]))
+        {
+            j.bilateral = false;
+        }
+    }
+    for sp in st.supports.iter_mut() {
+        sp.connection = Connection::Contact;
     }
 }
 
@@ -302,26 +349,43 @@ pub struct WarmLimit {
 impl WarmLimit {
     /// `hot = false` solves every LP from scratch with [`solve_limit`].
     pub fn new(solver: &SolverOptions, hot: bool) -> WarmLimit {
-        WarmLimit { solver: *solver, hot, basis: None, shape: (0, 0), solves: 0, iterations: 0 }
+        WarmLimit {
+            solver: *solver,
+            hot,
+            basis: None,
+            shape: (0, 0),
+            solves: 0,
+            iterations: 0,
+        }
     }
 
     /// Limit analysis of `st` (same meaning as [`solve_limit`]).
     pub fn solve(&mut self, st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
         self.solves += 1;
-        let sol = if self.hot { self.solve_hot(st, map)? } else { solve_limit(st, map, &self.solver)? };
+        // Joint laws (friction, crushing) give gapped points roles of their own in the force
+        // program: those structures are solved from scratch.
+        let sol = if self.hot && !map.has_joint_laws() {
+            self.solve_hot(st, map)?
+        } else {
+            solve_limit(st, map, &self.solver)?
+        };
         self.iterations += sol.iterations;
         Ok(sol)
     }
 
     fn solve_hot(&mut self, st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
         if !st.has_live_loads() {
-            return Err(Error::Request("limit analysis needs live loads (the model has none)".into()));
+            return Err(Error::Request(
+                "limit analysis needs live loads (the model has none)".into(),
+            ));
         }
         let dead = st.load_vector(false);
         let live = st.load_vector(true);
         let mut all = map.clone();
         all.gap.iter_mut().for_each(|g| *g = 0.0);
-        let mut fp = ForceProgram::new(&all, &dead, Some(&live), Direction::Maximise, |_| (0.0, 0.0));
+        let mut fp = ForceProgram::new(&all, &dead, Some(&live), Direction::Maximise, |_| {
+            (0.0, 0.0)
+        });
         for k in 0..map.num_points() {
             if map.gap[k] > 0.0 {
                 for c in [fp.pn[k], fp.pt[k]].into_iter().flatten() {
@@ -344,7 +408,8 @@ impl WarmLimit {
             let rs = sanitize(rs, &fp.lp.row_lower, &fp.lp.row_upper);
             // SAFETY: the pointer is the live HiGHS instance owned by `model`; the arrays have
             // exactly num_col and num_row entries (checked by `shape`).
-            let ok = unsafe { highs_sys::Highs_setBasis(model.as_mut_ptr(), cs.as_ptr(), rs.as_ptr()) };
+            let ok =
+                unsafe { highs_sys::Highs_setBasis(model.as_mut_ptr(), cs.as_ptr(), rs.as_ptr()) };
             if ok == highs_sys::kHighsStatusError {
                 self.basis = None;
             }
@@ -378,7 +443,7 @@ impl WarmLimit {
         }
         let s = solved.get_solution();
         let x = s.columns().to_vec();
-        let y = s.dual_rows().to_vec();
+        let y = s.dual_rows()[..map.num_dofs].to_vec();
         let mut cs = vec![0i32; shape.0];
         let mut rs = vec![0i32; shape.1];
         // SAFETY: as above; HiGHS fills exactly num_col and num_row entries.
@@ -386,13 +451,25 @@ impl WarmLimit {
             let mut m: highs::Model = solved.into();
             highs_sys::Highs_getBasis(m.as_mut_ptr(), cs.as_mut_ptr(), rs.as_mut_ptr())
         };
-        self.basis = if got == highs_sys::kHighsStatusError { None } else { Some((cs, rs)) };
+        self.basis = if got == highs_sys::kHighsStatusError {
+            None
+        } else {
+            Some((cs, rs))
+        };
         let lambda = x[fp.lambda.expect("program has λ")];
         let (pn, pt) = fp.forces(&x);
         let wl: f64 = live.iter().zip(&y).map(|(a, b)| a * b).sum();
-        let mechanism = if wl.abs() > 0.0 { y.iter().map(|v| v / wl).collect() } else { vec![0.0; y.len()] };
+        let mechanism = if wl.abs() > 0.0 {
+            y.iter().map(|v| v / wl).collect()
+        } else {
+            vec![0.0; y.len()]
+        };
         Ok(LimitSolution {
-            status: if lambda >= 0.0 { LimitStatus::Collapse } else { LimitStatus::NoEquilibrium },
+            status: if lambda >= 0.0 {
+                LimitStatus::Collapse
+            } else {
+                LimitStatus::NoEquilibrium
+            },
             lambda: Some(lambda),
             mechanism,
             pn,
@@ -404,7 +481,10 @@ impl WarmLimit {
 
 /// Make nonbasic statuses consistent with (possibly changed) bounds.
 fn sanitize(status: &[i32], lo: &[f64], hi: &[f64]) -> Vec<i32> {
-    use highs_sys::{kHighsBasisStatusBasic as B, kHighsBasisStatusLower as L, kHighsBasisStatusUpper as U, kHighsBasisStatusZero as Z};
+    use highs_sys::{
+        kHighsBasisStatusBasic as B, kHighsBasisStatusLower as L, kHighsBasisStatusUpper as U,
+        kHighsBasisStatusZero as Z,
+    };
     status
         .iter()
         .zip(lo.iter().zip(hi))
@@ -434,13 +514,17 @@ fn signed_lambda(s: &LimitSolution) -> f64 {
 /// Capacity curve λ(s) after the settlement prescribed by the supports' motions.
 pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult> {
     if opts.steps == 0 {
-        return Err(Error::Request("a capacity curve needs at least one step".into()));
+        return Err(Error::Request(
+            "a capacity curve needs at least one step".into(),
+        ));
     }
     if !(opts.root_tolerance > 0.0) {
         return Err(Error::Request("the root tolerance must be positive".into()));
     }
     if !st.has_live_loads() {
-        return Err(Error::Request("capacity analysis needs live loads (the model has none)".into()));
+        return Err(Error::Request(
+            "capacity analysis needs live loads (the model has none)".into(),
+        ));
     }
     let path = SettlementPath::new(st, &opts.solver)?;
     let smax = path.max_settlement;
@@ -449,7 +533,10 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
         .supports
         .iter()
         .filter(|s| s.motion.iter().any(|&x| x != 0.0))
-        .map(|s| SupportDirection { support: s.name.clone(), motion: s.motion })
+        .map(|s| SupportDirection {
+            support: s.name.clone(),
+            motion: s.motion,
+        })
         .collect();
     if path.status != SettlementStatus::Mechanism {
         return Ok(CapacityResult {
@@ -479,7 +566,10 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
     let (mut solves, mut iterations) = (0usize, 0i64);
     for i in 0..=opts.steps {
         let s = smax * i as f64 / opts.steps as f64;
-        let dst = path.deformed(s);
+        let mut dst = path.deformed(s);
+        if opts.release_fixed {
+            release_fixed(&mut dst);
+        }
         let map = KinematicMap::new(&dst);
         let sol = if i == 0 {
             // The plain limit analysis, exactly.
@@ -499,7 +589,10 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
         };
         if opts.mechanisms && !sol.mechanism.is_empty() {
             let rep = report(&dst, &map, &sol.mechanism, 0.0, &sol.pn, &sol.pt);
-            mechanisms.push(CapacityMechanism { settlement: s, blocks: rep.blocks });
+            mechanisms.push(CapacityMechanism {
+                settlement: s,
+                blocks: rep.blocks,
+            });
         }
         curve.push(CapacityPoint {
             settlement: s,
@@ -522,7 +615,10 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
                     zero = Some(curve[i].settlement);
                 } else {
                     let lam = |s: f64, w: &mut WarmLimit| -> Result<f64> {
-                        let dst = path.deformed(s);
+                        let mut dst = path.deformed(s);
+                        if opts.release_fixed {
+                            release_fixed(&mut dst);
+                        }
                         let map = KinematicMap::new(&dst);
                         Ok(signed_lambda(&w.solve(&dst, &map)?))
                     };
@@ -644,6 +740,12 @@ fn fit(curve: &[CapacityPoint]) -> Option<LinearFit> {
     let slope = sxy / sxx;
     let intercept = my - slope * mx;
     let l0 = curve[0].load_multiplier.unwrap_or(my).abs().max(1e-300);
-    let dev = pts.iter().fold(0.0f64, |m, p| m.max((p.1 - intercept - slope * p.0).abs()));
-    Some(LinearFit { intercept, slope, max_relative_deviation: dev / l0 })
+    let dev = pts
+        .iter()
+        .fold(0.0f64, |m, p| m.max((p.1 - intercept - slope * p.0).abs()));
+    Some(LinearFit {
+        intercept,
+        slope,
+        max_relative_deviation: dev / l0,
+    })
 }

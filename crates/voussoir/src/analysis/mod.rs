@@ -9,3 +9,5 @@ pub use limit::{limit, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};
 pub mod capacity;
 pub use capacity::{capacity, CapacityOptions, CapacityResult};
+pub mod incremental;
+pub use incremental::{incremental, IncrementalOptions, IncrementalResult};

@@ -167,6 +167,14 @@ pub struct IncrementalPoint {
     pub load_multiplier: f64,
     /// λ by virtual work (negative: the dead loads alone drive the mechanism).
     pub equilibrium_multiplier: f64,
+    /// Evaluated at the end of a step in which a point closed, with the point still open: the
+    /// value just before the jump (the next point, at the same displacement, is just after).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub before_closure: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -324,6 +332,7 @@ pub fn incremental(
                 displacement: disp,
                 load_multiplier: lam.max(0.0),
                 equilibrium_multiplier: lam,
+                before_closure: false,
             });
             if lam > peak.0 {
                 peak = (lam, disp);
@@ -438,10 +447,11 @@ pub fn incremental(
             let bs = warm.solve(&before, &bmap)?;
             if let Some(l) = bs.lambda {
                 curve.push(IncrementalPoint {
-                    step: step + 1,
+                    step,
                     displacement: new_disp,
                     load_multiplier: l.max(0.0),
                     equilibrium_multiplier: l,
+                    before_closure: true,
                 });
             }
         }

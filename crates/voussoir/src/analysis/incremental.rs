@@ -272,6 +272,16 @@ pub fn incremental(
     control: &Control,
     opts: &IncrementalOptions,
 ) -> Result<IncrementalResult> {
+    incremental_with(start, control, opts, &mut |_| {})
+}
+
+/// [`incremental`], calling `progress` with every new point of the curve (for a progress bar).
+pub fn incremental_with(
+    start: &Structure,
+    control: &Control,
+    opts: &IncrementalOptions,
+    progress: &mut dyn FnMut(&IncrementalPoint),
+) -> Result<IncrementalResult> {
     if !(opts.step > 0.0 && opts.step.is_finite()) {
         return Err(Error::Request("the step must be a positive number".into()));
     }
@@ -334,6 +344,9 @@ pub fn incremental(
                 equilibrium_multiplier: lam,
                 before_closure: false,
             });
+            if let Some(p) = curve.last() {
+                progress(p);
+            }
             if lam > peak.0 {
                 peak = (lam, disp);
             }

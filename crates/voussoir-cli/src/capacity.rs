@@ -1,0 +1,128 @@
+//! `voussoir capacity`: load capacity after a settlement (limit analysis on the deformed
+//! geometry), λ–settlement curve and the settlement at which λ reaches zero.
+
+use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
+use clap::Args;
+use std::fmt::Write as _;
+use voussoir::analysis::capacity::{capacity, CapacityOptions, CapacityResult};
+
+#[derive(Args)]
+pub struct CapacityArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// The settlement: `--move NAME=u,v[,θ]` gives its direction and its largest value (m;
+    /// θ in degrees), `--fixed NAME` ties the blocks to that support for the settlement
+    /// analysis, `--profile` as for `settle`.
+    #[command(flatten)]
+    pub settle: SettleArgs,
+    /// Number of intervals of the curve (it has STEPS + 1 points from 0 to the largest
+    /// settlement).
+    #[arg(long, default_value_t = 40)]
+    pub steps: usize,
+    /// Keep `fixed` supports tied to their blocks after the settlement (default: they act as
+    /// contact joints in the limit analyses that follow).
+    #[arg(long)]
+    pub keep_fixed: bool,
+    /// Leave the collapse mechanism of each step out of the JSON.
+    #[arg(long)]
+    pub no_mechanisms: bool,
+    /// Solve every step from scratch (no HiGHS hot start).
+    #[arg(long)]
+    pub cold: bool,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+pub fn run(a: CapacityArgs) -> Result<(), Fail> {
+    if a.settle.moves.is_empty() && a.settle.profile.is_none() {
+        return Err(Fail(
+            "capacity needs a settlement: give --move NAME=u,v (or --profile)".into(),
+        ));
+    }
+    let (st, solver) = a.model.structure(Some(&a.settle))?;
+    let opts = CapacityOptions {
+        steps: a.steps,
+        hot_start: !a.cold,
+        mechanisms: !a.no_mechanisms,
+        release_fixed: !a.keep_fixed,
+        solver,
+        ..CapacityOptions::default()
+    };
+    let r = capacity(&st, &opts)?;
+    a.out.emit(&r, || summary(&st, &r))
+}
+
+fn summary(st: &voussoir::Structure, r: &CapacityResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "blocks {}, joints {}, supports {}",
+        st.blocks.len(),
+        st.joints.len(),
+        st.supports.len()
+    );
+    let _ = writeln!(s, "{}", r.message);
+    if r.curve.is_empty() {
+        return s;
+    }
+    let moving: Vec<String> = r
+        .direction
+        .iter()
+        .map(|d| format!("{} ({:.3}, {:.3})", d.support, d.motion[0], d.motion[1]))
+        .collect();
+    let _ = writeln!(
+        s,
+        "settlement direction: {}; largest settlement {:.4} cm",
+        moving.join(", "),
+        r.max_settlement * 100.0
+    );
+    let hinges: Vec<String> = r
+        .settlement_hinges
+        .iter()
+        .map(|h| h.joint.to_string())
+        .collect();
+    let _ = writeln!(
+        s,
+        "hinges opened by the settlement: joints {}",
+        hinges.join(", ")
+    );
+    if let Some(z) = r.zero_capacity_settlement {
+        let _ = writeln!(
+            s,
+            "zero-capacity settlement: {:.5} m ({:.3} cm)",
+            z,
+            z * 100.0
+        );
+    }
+    if let Some(f) = &r.linear_fit {
+        let _ = writeln!(
+            s,
+            "linear fit: λ ≈ {:.5} {:+.4}·s (s in m), largest deviation {:.2} % of λ(0)",
+            f.intercept,
+            f.slope,
+            f.max_relative_deviation * 100.0
+        );
+    }
+    let _ = writeln!(s, "{:>12}  {:>12}  {}", "s (cm)", "λ", "valid");
+    let every = (r.curve.len() / 20).max(1);
+    for (i, p) in r.curve.iter().enumerate() {
+        if i % every != 0 && i + 1 != r.curve.len() {
+            continue;
+        }
+        let l = p
+            .load_multiplier
+            .map_or("—".to_string(), |l| format!("{l:.6}"));
+        let v = if p.valid {
+            "yes".to_string()
+        } else {
+            format!("no (closes joints {:?})", p.closing_joints)
+        };
+        let _ = writeln!(s, "{:>12.5}  {:>12}  {}", p.settlement * 100.0, l, v);
+    }
+    let _ = writeln!(
+        s,
+        "{} LP solves, {} simplex iterations",
+        r.solves, r.iterations
+    );
+    s
+}

@@ -1,0 +1,183 @@
+//! `voussoir incremental`: nonlinear kinematic analysis (evolving mechanism, hinges that close),
+//! λ against the displacement of a control point.
+
+use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
+use clap::Args;
+use std::fmt::Write as _;
+use std::io::IsTerminal;
+use voussoir::analysis::incremental::{
+    incremental_with, settled, Control, EventKind, IncrementalOptions, IncrementalResult,
+};
+
+#[derive(Args)]
+pub struct IncrementalArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// Control point x,y (m): the block containing it, or the nearest one, carries it.
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    pub control: String,
+    /// Direction along which the control displacement is measured.
+    #[arg(
+        long,
+        value_name = "DX,DY",
+        default_value = "1,0",
+        allow_hyphen_values = true
+    )]
+    pub direction: String,
+    /// Largest control displacement (m).
+    #[arg(long, default_value_t = 0.05)]
+    pub max: f64,
+    /// Control displacement per step (m).
+    #[arg(long, default_value_t = 0.0005)]
+    pub step: f64,
+    /// Settle first: NAME=u,v[,θ] (m, θ in degrees), repeatable; the analysis starts from the
+    /// settled geometry with the settlement's cracks open.
+    #[arg(
+        long = "settle",
+        value_name = "NAME=U,V[,THETA]",
+        allow_hyphen_values = true
+    )]
+    pub settle: Vec<String>,
+    /// Tie the blocks to this support for the settlement analysis. Repeatable.
+    #[arg(long = "fixed", value_name = "NAME")]
+    pub fixed: Vec<String>,
+    /// Keep `fixed` supports tied after the settlement (default: contact joints).
+    #[arg(long)]
+    pub keep_fixed: bool,
+    /// Keep the mechanism every N steps in the JSON (besides the first step and events).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub snapshot_every: usize,
+    /// Go on after λ has fallen to zero (up to --max).
+    #[arg(long)]
+    pub no_stop: bool,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+fn pair(flag: &str, s: &str) -> Result<[f64; 2], Fail> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| Fail(format!("--{flag} {s}: expected two numbers X,Y")))?;
+    match v.as_slice() {
+        [x, y] if x.is_finite() && y.is_finite() => Ok([*x, *y]),
+        _ => Err(Fail(format!(
+            "--{flag} {s}: expected two finite numbers X,Y"
+        ))),
+    }
+}
+
+pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
+    let x = pair("control", &a.control)?;
+    let dir = pair("direction", &a.direction)?;
+    if a.settle.is_empty() && !a.fixed.is_empty() {
+        return Err(Fail("--fixed only applies with --settle".into()));
+    }
+    let settle_args = SettleArgs {
+        moves: a.settle.clone(),
+        fixed: a.fixed.clone(),
+        profile: None,
+    };
+    let (st, solver) = a.model.structure(Some(&settle_args))?;
+    let start = if a.settle.is_empty() {
+        st.clone()
+    } else {
+        settled(&st, &solver, !a.keep_fixed)?
+    };
+    let control = Control::nearest(&start, x, dir)?;
+    let opts = IncrementalOptions {
+        step: a.step,
+        max_displacement: a.max,
+        stop_after_peak: !a.no_stop,
+        snapshot_every: a.snapshot_every,
+        solver,
+        ..IncrementalOptions::default()
+    };
+    let r = if std::io::stderr().is_terminal() {
+        let scale = 1e6; // µm
+        let bar = indicatif::ProgressBar::new((a.max * scale).ceil().max(1.0) as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let r = incremental_with(&start, &control, &opts, &mut |p| {
+            bar.set_position((p.displacement.abs() * scale) as u64);
+            bar.set_message(format!(
+                "{:.3} mm  λ = {:.5}",
+                p.displacement * 1e3,
+                p.load_multiplier
+            ));
+        });
+        bar.finish_and_clear();
+        r?
+    } else {
+        incremental_with(&start, &control, &opts, &mut |_| {})?
+    };
+    a.out.emit(&r, || summary(&start, &r))
+}
+
+fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "blocks {}, joints {}, supports {}",
+        st.blocks.len(),
+        st.joints.len(),
+        st.supports.len()
+    );
+    let _ = writeln!(
+        s,
+        "control: block {} at ({:.4}, {:.4}), direction ({:.3}, {:.3})",
+        r.control.block,
+        r.control.point[0],
+        r.control.point[1],
+        r.control.direction[0],
+        r.control.direction[1]
+    );
+    if !r.initial_open_joints.is_empty() {
+        let _ = writeln!(s, "joints open at the start: {:?}", r.initial_open_joints);
+    }
+    let _ = writeln!(s, "{}", r.message);
+    if let Some(p) = r.curve.first() {
+        let _ = writeln!(
+            s,
+            "λ at the start {:.6} (by virtual work {:.6})",
+            p.load_multiplier, p.equilibrium_multiplier
+        );
+    }
+    for e in &r.events {
+        let kind = match e.kind {
+            EventKind::Opened => "opened",
+            EventKind::Closed => "closed",
+        };
+        let _ = writeln!(
+            s,
+            "  step {:>5}  {:>9.4} mm  joint {:>4} point {} {kind} at ({:.4}, {:.4})",
+            e.step,
+            e.displacement * 1e3,
+            e.joint,
+            e.point,
+            e.x,
+            e.y
+        );
+    }
+    let _ = writeln!(s, "{:>12}  {:>10}", "dx (mm)", "λ");
+    let every = (r.curve.len() / 25).max(1);
+    for (i, p) in r.curve.iter().enumerate() {
+        if i % every == 0 || i + 1 == r.curve.len() || p.before_closure {
+            let _ = writeln!(
+                s,
+                "{:>12.4}  {:>10.6}",
+                p.displacement * 1e3,
+                p.load_multiplier
+            );
+        }
+    }
+    let _ = writeln!(
+        s,
+        "{} LP solves, {} simplex iterations",
+        r.solves, r.iterations
+    );
+    s
+}

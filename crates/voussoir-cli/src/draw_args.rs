@@ -4,7 +4,7 @@
 use crate::common::Fail;
 use clap::Args;
 use std::path::{Path, PathBuf};
-use voussoir::analysis::{LimitResult, SettlementResult};
+use voussoir::analysis::{CapacityResult, IncrementalResult, LimitResult, SettlementResult};
 use voussoir_io::draw::{self, DrawOptions, Report, ReportOptions, Scene};
 
 #[derive(Args, Clone, Debug, Default)]
@@ -81,6 +81,50 @@ impl DrawArgs {
         self.emit_scene(Scene::limit(r), || {
             draw::limit_report(r, &self.report_options(source))
         })
+    }
+
+    /// Capacity analysis: the figure is the λ–settlement curve; the report adds the settlement
+    /// mechanism and the table of steps.
+    #[allow(dead_code)] // for the `capacity` command
+    pub fn emit_capacity(&self, r: &CapacityResult, source: &Path) -> Result<(), Fail> {
+        if !self.any() {
+            return Ok(());
+        }
+        if self.svg.is_some() || self.png.is_some() {
+            let title = self
+                .title
+                .as_deref()
+                .unwrap_or("Collapse load multiplier after settlement");
+            let p = draw::capacity_plot(&[("λ(s)", r)], title);
+            write_drawing(&p.svg, self.svg.as_deref(), self.png.as_deref())?;
+        }
+        if let Some(path) = &self.report {
+            let html = draw::capacity_report(r, &self.report_options(source)).to_html();
+            voussoir_io::write_atomic(path, html.as_bytes())?;
+        }
+        Ok(())
+    }
+
+    /// Incremental analysis: the figure is the λ–control-displacement curve; the report adds
+    /// the mechanisms and the events.
+    #[allow(dead_code)] // for the `incremental` command
+    pub fn emit_incremental(&self, r: &IncrementalResult, source: &Path) -> Result<(), Fail> {
+        if !self.any() {
+            return Ok(());
+        }
+        if self.svg.is_some() || self.png.is_some() {
+            let title = self
+                .title
+                .as_deref()
+                .unwrap_or("Load multiplier against control displacement");
+            let p = draw::incremental_plot(&[("λ(dx)", r)], title);
+            write_drawing(&p.svg, self.svg.as_deref(), self.png.as_deref())?;
+        }
+        if let Some(path) = &self.report {
+            let html = draw::incremental_report(r, &self.report_options(source)).to_html();
+            voussoir_io::write_atomic(path, html.as_bytes())?;
+        }
+        Ok(())
     }
 
     pub fn emit_settlement(&self, r: &SettlementResult, source: &Path) -> Result<(), Fail> {

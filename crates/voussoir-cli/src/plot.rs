@@ -66,27 +66,7 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
                 width: a.width,
                 ..DrawOptions::default()
             };
-            let mut d = draw::draw_saved(&saved, &opts);
-            if let Some(t) = &a.title {
-                // Re-draw with the title (cheap; keeps draw_saved simple).
-                d = match &saved {
-                    draw::Saved::Limit(r) => draw::draw(
-                        &draw::Scene {
-                            title: t.clone(),
-                            ..draw::Scene::limit(r)
-                        },
-                        &opts,
-                    ),
-                    draw::Saved::Settlement(r) => draw::draw(
-                        &draw::Scene {
-                            title: t.clone(),
-                            ..draw::Scene::settlement(r)
-                        },
-                        &opts,
-                    ),
-                    draw::Saved::Model(g) => draw::draw(&draw::Scene::geometry(g, t), &opts),
-                };
-            }
+            let d = draw::draw_saved(&saved, &opts, a.title.as_deref());
             if ext == "svg" {
                 write_drawing(&d.svg, Some(&a.output), None)?;
             } else {
@@ -97,11 +77,9 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
                 saved.kind(),
                 a.input.display(),
                 a.output.display(),
-                if d.deformed {
-                    format!(" (displacements × {})", d.scale)
-                } else {
-                    String::new()
-                }
+                d.scale
+                    .map(|s| format!(" (displacements × {s})"))
+                    .unwrap_or_default()
             );
         }
         "html" | "htm" => {

@@ -527,3 +527,66 @@ fn a_ten_thousand_block_wall_gives_a_file_of_reasonable_size() {
     assert!(d.svg.len() < 1_000_000, "{} bytes", d.svg.len());
     roxmltree::Document::parse(&d.svg).expect("valid XML");
 }
+
+#[test]
+fn paper_arch_capacity_curve_png() {
+    use voussoir::analysis::{capacity, CapacityOptions};
+    // Outward horizontal settlement of the right springing up to 2 cm, live load on the span.
+    let mut m = arch(&ArchSpec {
+        live: LiveLoad::Full,
+        ..ArchSpec::default()
+    })
+    .unwrap();
+    move_support(&mut m, "right", [0.02, 0.0, 0.0]).unwrap();
+    let r = capacity(
+        &structure(&m),
+        &CapacityOptions {
+            steps: 8,
+            ..CapacityOptions::default()
+        },
+    )
+    .unwrap();
+    let s0 = r
+        .zero_capacity_settlement
+        .expect("λ reaches zero below 2 cm");
+    // The paper: λ = 0 at 1.4 cm (±5 %).
+    assert!((s0 - 0.014).abs() < 0.05 * 0.014, "s0 = {s0}");
+    let p = draw::capacity_plot(
+        &[("horizontal settlement", &r)],
+        "Capacity after settlement",
+    );
+    roxmltree::Document::parse(&p.svg).expect("valid XML");
+    assert!(p.svg.contains(&format!(
+        "λ = 0 at s = {} cm",
+        voussoir_io::draw::svg::fmt_fixed(s0 * 100.0, 3)
+    )));
+    let img = Pixmap::decode_png(&draw::svg_to_png(&p.svg, 1.0).unwrap()).unwrap();
+    assert_eq!((img.width(), img.height()), (820, 520));
+    // The curve passes through every computed point (blue line or marker), and the zero mark
+    // is a dark ring on the s axis at s0.
+    let blue = |c: [u8; 3]| c[2] > 150 && c[0] < 120;
+    for q in r.curve.iter().filter(|q| q.valid) {
+        let l = q.load_multiplier.unwrap();
+        let xy = p.px(q.settlement * 100.0, l);
+        assert!(
+            near(&img, xy[0], xy[1], 2, blue),
+            "curve missing at s = {}",
+            q.settlement
+        );
+    }
+    let z = p.px(s0 * 100.0, 0.0);
+    assert!(
+        near(&img, z[0] + 6.0, z[1], 1, dark) && near(&img, z[0] - 6.0, z[1], 1, dark),
+        "no mark at λ = 0"
+    );
+    let html = draw::capacity_report(&r, &ReportOptions::default()).to_html();
+    assert!(html.contains(&format!(
+        "{} cm",
+        voussoir_io::draw::svg::fmt_fixed(s0 * 100.0, 4)
+    )));
+    assert_eq!(
+        html.matches("<svg ").count(),
+        2,
+        "curve and settlement mechanism"
+    );
+}

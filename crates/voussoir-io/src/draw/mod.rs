@@ -7,19 +7,23 @@
 //!
 //! All output is deterministic: the same input gives the same bytes.
 
+pub mod capacity;
+pub mod incremental;
 pub mod plot;
 pub mod png;
 pub mod report;
 pub mod scene;
 pub mod svg;
 
+pub use capacity::{capacity_plot, capacity_report, capacity_series};
+pub use incremental::{incremental_plot, incremental_report, incremental_series};
 pub use plot::{plot, plot_curves, Mark, Plot, PlotSpec, Series};
 pub use png::svg_to_png;
 pub use report::{limit_report, settlement_report, Report, ReportOptions, Section};
 pub use scene::{draw, DrawOptions, Drawing, Frame, MotionUnits, Scene};
 
 use crate::IoError;
-use voussoir::analysis::{LimitResult, SettlementResult};
+use voussoir::analysis::{CapacityResult, IncrementalResult, LimitResult, SettlementResult};
 use voussoir::result::Geometry;
 use voussoir::{BuildOptions, Model, Structure};
 
@@ -33,6 +37,10 @@ pub enum Saved {
     Limit(Box<LimitResult>),
     /// A settlement result (has `work_reactions` / `certificate`).
     Settlement(Box<SettlementResult>),
+    /// A capacity result (has `curve` and `zero_capacity_settlement`): drawn as its λ–s curve.
+    Capacity(Box<CapacityResult>),
+    /// An incremental result (has `curve` and `peak_load_multiplier`): drawn as its λ–dx curve.
+    Incremental(Box<IncrementalResult>),
     /// A model (has `blocks` of polygons and `supports`, no `status`): drawn with its loads.
     Model(Box<Geometry>),
 }
@@ -43,6 +51,8 @@ impl Saved {
         match self {
             Saved::Limit(_) => "limit result",
             Saved::Settlement(_) => "settlement result",
+            Saved::Capacity(_) => "capacity result",
+            Saved::Incremental(_) => "incremental result",
             Saved::Model(_) => "model",
         }
     }
@@ -66,6 +76,16 @@ pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
             .map_err(|e| IoError(format!("invalid settlement result: {e}")))?;
         return Ok(Saved::Settlement(Box::new(r)));
     }
+    if has("status") && has("geometry") && has("curve") && has("zero_capacity_settlement") {
+        let r: CapacityResult = serde_json::from_value(v)
+            .map_err(|e| IoError(format!("invalid capacity result: {e}")))?;
+        return Ok(Saved::Capacity(Box::new(r)));
+    }
+    if has("status") && has("curve") && has("peak_load_multiplier") {
+        let r: IncrementalResult = serde_json::from_value(v)
+            .map_err(|e| IoError(format!("invalid incremental result: {e}")))?;
+        return Ok(Saved::Incremental(Box::new(r)));
+    }
     if has("blocks") && has("supports") && !has("status") {
         let m: Model =
             serde_json::from_value(v).map_err(|e| IoError(format!("invalid model JSON: {e}")))?;
@@ -74,18 +94,50 @@ pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
     }
     if has("status") && has("geometry") {
         return Err(IoError(
-            "this result kind cannot be drawn yet (voussoir plot draws limit and settlement results and models)".into(),
+            "this result kind cannot be drawn yet (voussoir plot draws limit, settlement, capacity and incremental results and models)"
+                .into(),
         ));
     }
     Err(IoError("not a voussoir result or model (expected `geometry` and `status`, or `blocks` and `supports`)".into()))
 }
 
-/// Draw a saved file with the default title.
-pub fn draw_saved(saved: &Saved, opts: &DrawOptions) -> Drawing {
+/// A drawing of a saved file: the SVG and, for deformed drawings, the displacement scale used.
+#[derive(Clone, Debug)]
+pub struct SavedFigure {
+    pub svg: String,
+    pub scale: Option<f64>,
+}
+
+/// Draw a saved file (a capacity result as its λ–s curve), with an optional title.
+pub fn draw_saved(saved: &Saved, opts: &DrawOptions, title: Option<&str>) -> SavedFigure {
+    let with = |mut scene: Scene, t: Option<&str>| {
+        if let Some(t) = t {
+            scene.title = t.to_string();
+        }
+        let d = draw(&scene, opts);
+        SavedFigure {
+            svg: d.svg,
+            scale: d.deformed.then_some(d.scale),
+        }
+    };
     match saved {
-        Saved::Limit(r) => draw(&Scene::limit(r), opts),
-        Saved::Settlement(r) => draw(&Scene::settlement(r), opts),
-        Saved::Model(g) => draw(&Scene::geometry(g, "Model and loads"), opts),
+        Saved::Limit(r) => with(Scene::limit(r), title),
+        Saved::Settlement(r) => with(Scene::settlement(r), title),
+        Saved::Model(g) => with(Scene::geometry(g, "Model and loads"), title),
+        Saved::Capacity(r) => {
+            let t = title.unwrap_or("Collapse load multiplier after settlement");
+            SavedFigure {
+                svg: capacity_plot(&[("λ(s)", r)], t).svg,
+                scale: None,
+            }
+        }
+        Saved::Incremental(r) => {
+            let t = title.unwrap_or("Load multiplier against control displacement");
+            SavedFigure {
+                svg: incremental_plot(&[("λ(dx)", r)], t).svg,
+                scale: None,
+            }
+        }
     }
 }
 
@@ -94,6 +146,8 @@ pub fn report_saved(saved: &Saved, opts: &ReportOptions) -> Report {
     match saved {
         Saved::Limit(r) => limit_report(r, opts),
         Saved::Settlement(r) => settlement_report(r, opts),
+        Saved::Capacity(r) => capacity_report(r, opts),
+        Saved::Incremental(r) => incremental_report(r, opts),
         Saved::Model(g) => {
             let mut rep = Report::new(opts.title.clone().unwrap_or_else(|| "Model".to_string()));
             rep.section("Model")

@@ -460,7 +460,7 @@ pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
         };
         let _ = writeln!(
             o,
-            "<g class=\"mark\"><circle cx=\"{}\" cy=\"{}\" r=\"5\" fill=\"#ffffff\" stroke=\"#111111\" stroke-width=\"1.6\"/><text x=\"{}\" y=\"{}\" font-size=\"12.5\" fill=\"#111111\" text-anchor=\"{anchor}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">{}</text></g>",
+            "<g class=\"mark\"><circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"none\" stroke=\"#111111\" stroke-width=\"1.6\"/><text x=\"{}\" y=\"{}\" font-size=\"12.5\" fill=\"#111111\" text-anchor=\"{anchor}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">{}</text></g>",
             num(x),
             num(y),
             num(tx),

@@ -496,6 +496,24 @@ fn build_bodies(scene: &Scene) -> Bodies {
     }
 }
 
+/// The block whose outline passes nearest to `p`.
+fn nearest_block(b: &Bodies, p: [f64; 2]) -> Option<usize> {
+    let mut best = None;
+    let mut best_d = f64::INFINITY;
+    for (i, body) in b.bodies.iter().enumerate().take(b.nb) {
+        let n = body.poly.len();
+        for k in 0..n {
+            let d =
+                voussoir::geometry::point_segment_distance(p, body.poly[k], body.poly[(k + 1) % n]);
+            if d < best_d {
+                best_d = d;
+                best = Some(i);
+            }
+        }
+    }
+    best
+}
+
 impl Bodies {
     fn body_of(&self, b: &BodyName) -> Option<usize> {
         match b {
@@ -628,6 +646,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     }
     // Contact-force arrows: (body a, centre of pressure, force vector in m of drawing).
     let mut forces: Vec<(usize, [f64; 2], [f64; 2])> = Vec::new();
+    let mut force_max = 0.0f64;
     let joint_by_id: BTreeMap<usize, &JointResult> =
         scene.joints.iter().map(|j| (j.id, j)).collect();
     if opts.forces {
@@ -636,6 +655,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             .iter()
             .filter_map(|t| joint_by_id.get(&t.joint))
             .fold(0.0f64, |m, j| m.max(j.normal_force.hypot(j.shear_force)));
+        force_max = fmax;
         for t in scene.thrust_line {
             let Some(j) = joint_by_id.get(&t.joint) else {
                 continue;
@@ -1006,13 +1026,18 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             num((hinge_r * 0.3).clamp(0.8, 1.5))
         );
         for h in scene.hinges {
-            let Some(j) = joint_by_id.get(&h.joint) else {
-                continue;
-            };
-            let Some(a) = b.body_of(&j.a) else { continue };
             if !h.x.is_finite() || !h.y.is_finite() {
                 continue;
             }
+            // The hinge moves with body a of its joint; results without joints (capacity
+            // curves) use the block nearest to the hinge.
+            let a = match joint_by_id.get(&h.joint).and_then(|j| b.body_of(&j.a)) {
+                Some(a) => a,
+                None => match nearest_block(&b, [h.x, h.y]) {
+                    Some(a) => a,
+                    None => continue,
+                },
+            };
             let (p, data) = at(a, [h.x, h.y]);
             n_hinges += 1;
             let _ = write!(
@@ -1045,9 +1070,9 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             hinges: n_hinges > 0,
             cracks: n_cracks > 0,
             thrust: drew_thrust,
-            live: !live.is_empty(),
-            dead: !dead.is_empty(),
-            forces: !forces.is_empty(),
+            live: (!live.is_empty()).then_some(live_max),
+            dead: (!dead.is_empty()).then_some(dead_max),
+            forces: (!forces.is_empty()).then_some(force_max),
             supports: b.nb < b.bodies.len(),
         };
         legend(
@@ -1140,9 +1165,10 @@ struct LegendItems {
     hinges: bool,
     cracks: bool,
     thrust: bool,
-    live: bool,
-    dead: bool,
-    forces: bool,
+    /// Largest arrow of each kind (kN), when drawn.
+    live: Option<f64>,
+    dead: Option<f64>,
+    forces: Option<f64>,
     supports: bool,
 }
 
@@ -1214,14 +1240,26 @@ fn legend(
     let arrow_sym = |c: &str| {
         format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
     };
-    if it.live {
-        put(o, &arrow_sym(LOAD), "live load (× λ)");
+    if let Some(m) = it.live {
+        put(
+            o,
+            &arrow_sym(LOAD),
+            &format!("live load × λ (largest {} kN)", human(m, 3)),
+        );
     }
-    if it.dead {
-        put(o, &arrow_sym("#555555"), "dead load");
+    if let Some(m) = it.dead {
+        put(
+            o,
+            &arrow_sym("#555555"),
+            &format!("dead load (largest {} kN)", human(m, 3)),
+        );
     }
-    if it.forces {
-        put(o, &arrow_sym(FORCE), "contact force");
+    if let Some(m) = it.forces {
+        put(
+            o,
+            &arrow_sym(FORCE),
+            &format!("contact force (largest {} kN)", human(m, 3)),
+        );
     }
     // Second row: scale bar and displacement scale.
     let y2 = y + 24.0;

@@ -1,0 +1,175 @@
+//! Pictures of the incremental (nonlinear kinematic) analysis: the λ–control-displacement
+//! curve (the paper's Figs 14–17) with jumps where open hinges close, and its mechanisms.
+
+use super::plot::{plot, Mark, Plot, PlotSpec, Series, SERIES_COLOURS};
+use super::report::{model_summary, Report, ReportOptions};
+use super::scene::{draw, DrawOptions, MotionUnits, Scene};
+use super::svg::{fmt_fixed, human};
+use voussoir::analysis::incremental::{EventKind, IncrementalResult};
+
+/// The curve of one result: control displacement in cm against λ = max(λ, 0). Two points at
+/// the same displacement (just before and just after a closure) draw the jump.
+pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> Series {
+    Series {
+        label: label.to_string(),
+        points: r
+            .curve
+            .iter()
+            .map(|p| {
+                if p.displacement.is_finite() && p.load_multiplier.is_finite() {
+                    [p.displacement * 100.0, p.load_multiplier]
+                } else {
+                    [f64::NAN, f64::NAN]
+                }
+            })
+            .collect(),
+        markers: false,
+        dashed: false,
+        colour: Some(colour.to_string()),
+    }
+}
+
+/// λ–displacement curves of one or more incremental results on one plot (the paper's Fig 17),
+/// each peak marked.
+pub fn incremental_plot(curves: &[(&str, &IncrementalResult)], title: &str) -> Plot {
+    let mut series = Vec::new();
+    let mut marks = Vec::new();
+    for (i, (label, r)) in curves.iter().enumerate() {
+        series.push(incremental_series(
+            r,
+            label,
+            SERIES_COLOURS[i % SERIES_COLOURS.len()],
+        ));
+        if r.peak_load_multiplier.is_finite()
+            && r.peak_displacement.is_finite()
+            && r.peak_load_multiplier > 0.0
+        {
+            marks.push(Mark::new(
+                r.peak_displacement * 100.0,
+                r.peak_load_multiplier,
+                format!("peak λ = {}", fmt_fixed(r.peak_load_multiplier, 3)),
+            ));
+        }
+    }
+    plot(
+        &series,
+        &PlotSpec {
+            title: title.to_string(),
+            x_label: "control displacement dx (cm)".into(),
+            y_label: "load multiplier λ".into(),
+            marks,
+            id: "inc".into(),
+            ..PlotSpec::default()
+        },
+    )
+}
+
+/// Report of an incremental analysis: key numbers, the curve, the mechanisms at the first and
+/// last snapshots, and the events.
+pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report {
+    let mut rep = Report::new(
+        opts.title
+            .clone()
+            .unwrap_or_else(|| "Incremental analysis".to_string()),
+    );
+    rep.subtitle = r.message.clone();
+    let c = &r.control;
+    let kv = vec![
+        (
+            "outcome".to_string(),
+            format!("{:?}", r.status).to_lowercase().replace('_', " "),
+        ),
+        (
+            "control".into(),
+            format!(
+                "block {} at ({}, {}) m, direction ({}, {})",
+                c.block,
+                fmt_fixed(c.point[0], 4),
+                fmt_fixed(c.point[1], 4),
+                human(c.direction[0], 3),
+                human(c.direction[1], 3)
+            ),
+        ),
+        (
+            "peak load multiplier".into(),
+            fmt_fixed(r.peak_load_multiplier, 6),
+        ),
+        (
+            "at control displacement".into(),
+            format!("{} cm", human(r.peak_displacement * 100.0, 4)),
+        ),
+        (
+            "joints open at the start".into(),
+            r.initial_open_joints.len().to_string(),
+        ),
+        (
+            "steps / snaps / events".into(),
+            format!("{} / {} / {}", r.steps, r.snaps, r.events.len()),
+        ),
+        (
+            "LP solves / simplex iterations".into(),
+            format!("{} / {}", r.solves, r.iterations),
+        ),
+    ];
+    rep.section("Key numbers").key_values(kv);
+    rep.section("Model")
+        .key_values(model_summary(&r.initial_geometry, 0, &opts.source));
+    let sec = rep.section("Figures");
+    let p = incremental_plot(
+        &[("λ(dx)", r)],
+        "Load multiplier against control displacement",
+    );
+    sec.figure(p.svg, "Load multiplier λ against the control displacement; vertical jumps where open hinges close.");
+    let picks: Vec<_> = match (r.snapshots.first(), r.snapshots.last()) {
+        (Some(a), Some(b)) if r.snapshots.len() > 1 => vec![a, b],
+        (Some(a), _) => vec![a],
+        _ => vec![],
+    };
+    for (k, s) in picks.into_iter().enumerate() {
+        let title = format!(
+            "Mechanism at dx = {} cm (λ = {})",
+            human(s.displacement * 100.0, 4),
+            fmt_fixed(s.load_multiplier, 4)
+        );
+        let mut scene = Scene::geometry(&s.geometry, &title);
+        scene.blocks = &s.blocks;
+        scene.hinges = &s.hinges;
+        scene.units = MotionUnits::Normalised;
+        let d = draw(
+            &scene,
+            &DrawOptions {
+                interactive: true,
+                thrust_line: false,
+                id: format!("fig-inc-{k}"),
+                ..DrawOptions::default()
+            },
+        );
+        sec.figure(d.svg, format!("{title}: mechanism rate per unit control displacement, drawn × {}; current geometry.", human(d.scale, 4)));
+    }
+    let rows = r
+        .events
+        .iter()
+        .map(|e| {
+            vec![
+                e.step.to_string(),
+                fmt_fixed(e.displacement * 100.0, 4),
+                match e.kind {
+                    EventKind::Opened => "opened".to_string(),
+                    EventKind::Closed => "closed".to_string(),
+                },
+                e.joint.to_string(),
+                fmt_fixed(e.x, 4),
+                fmt_fixed(e.y, 4),
+            ]
+        })
+        .collect();
+    rep.section("Events").collapsed_table(
+        "Contact changes",
+        ["step", "dx (cm)", "event", "joint", "x (m)", "y (m)"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        rows,
+    );
+    rep
+}

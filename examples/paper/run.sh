@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Regenerate voussoir's versions of the figures of the paper (Tralli, Chiozzi, Grillanda, Milani
+# 2020, Section 6) into one folder: SVG + PNG of every figure, the JSON results behind them and
+# an HTML report per analysis.
+#
+#   examples/paper/run.sh [OUT_DIR]        (default: examples/paper/out)
+#
+# VOUSSOIR=/path/to/voussoir uses that binary instead of building target/release/voussoir.
+# The arch is the paper's: intrados radius 2.86 m, thickness 0.33 m, 64 voussoirs, γ = 18 kN/m³,
+# live load 1 kN/m² per unit horizontal projection. Settlements are computed for 1 cm and drawn
+# with the displacement scale that shows them as large as the paper's figures (Fig 9: 50 cm,
+# Fig 11: 20 cm); every analysis is linear in the settlement, so this is the same picture.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/../.." && pwd)
+if [[ -n "${VOUSSOIR:-}" && "$VOUSSOIR" != /* ]]; then VOUSSOIR=$PWD/$VOUSSOIR; fi
+out=${1:-$root/examples/paper/out}
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+cd "$root"
+if [[ -z "${VOUSSOIR:-}" ]]; then
+  cargo build --release -q -p voussoir-cli
+  VOUSSOIR=$root/target/release/voussoir
+fi
+v() { "$VOUSSOIR" "$@"; }
+say() { printf '%-44s %s\n' "$1" "$2"; }
+cd "$out"
+
+# ── Models ────────────────────────────────────────────────────────────────────────────────
+v gen arch --live full -o arch-full.json     >/dev/null 2>&1   # live load on the whole span
+v gen arch --live left -o arch-left.json     >/dev/null 2>&1   # live load on the left half
+v gen arch --live none -o arch-dead.json     >/dev/null 2>&1   # self-weight only (settlements)
+v gen lintel -o lintel.json                  >/dev/null 2>&1
+
+# ── Fig 8a / 13a: load conditions ─────────────────────────────────────────────────────────
+v plot arch-full.json -o fig08a-load-full-span.png --title "Fig 8a — semicircular arch, live load on the whole span" >/dev/null
+v plot arch-left.json -o fig13a-load-half-span.png --title "Fig 13a — live load on one half of the span" >/dev/null
+say "Fig 8a, 13a (load conditions)" "fig08a-load-full-span.png fig13a-load-half-span.png"
+
+# ── Fig 8b: collapse mechanism, live load on the whole span (paper λ = 0.429) ─────────────
+v limit arch-full.json -o fig08b.json --svg fig08b-collapse-full-span.svg --png fig08b-collapse-full-span.png \
+  --report fig08b-report.html --title "Fig 8b — collapse mechanism, live load on the whole span" | sed -n 2p |
+  { read -r line; say "Fig 8b (paper: lambda = 0.429)" "$line"; }
+
+# ── Fig 9: horizontal settlement of one springing (three hinges) ──────────────────────────
+v settle arch-dead.json --move right=0.01,0 -o fig09.json --scale 50 \
+  --svg fig09-spreading.svg --png fig09-spreading.png --report fig09-report.html \
+  --title "Fig 9 — horizontal settlement of the right springing (1 cm, drawn × 50)" >/dev/null
+say "Fig 9 (paper: crown + 13th joints)" "fig09-spreading.png"
+
+# ── Fig 11: vertical settlement of one springing, that support fixed ──────────────────────
+v settle arch-dead.json --move right=0,-0.01 --fixed right -o fig11.json --scale 20 \
+  --svg fig11-vertical-settlement.svg --png fig11-vertical-settlement.png --report fig11-report.html \
+  --title "Fig 11 — vertical settlement of the right springing (1 cm, drawn × 20)" >/dev/null
+say "Fig 11" "fig11-vertical-settlement.png"
+
+# ── Fig 13b: collapse mechanism, live load on one half (paper λ = 0.215) ──────────────────
+v limit arch-left.json -o fig13b.json --svg fig13b-collapse-half-span.svg --png fig13b-collapse-half-span.png \
+  --report fig13b-report.html --title "Fig 13b — collapse mechanism, live load on one half" | sed -n 2p |
+  { read -r line; say "Fig 13b (paper: lambda = 0.215)" "$line"; }
+
+# ── Fig 6b: lintel, horizontal settlement of 2 cm at one end ──────────────────────────────
+v settle lintel.json --move right=0.02,0 -o fig06b.json --scale 2 \
+  --svg fig06b-lintel-settlement.svg --png fig06b-lintel-settlement.png --report fig06b-report.html \
+  --title "Fig 6b — lintel, horizontal settlement of 2 cm (drawn × 2)" >/dev/null
+say "Fig 6b (lintel)" "fig06b-lintel-settlement.png"
+
+# ── HOOK(capacity): Figs 10 and 12, λ against the settlement ──────────────────────────────
+# ── HOOK(incremental): Figs 14b, 15, 16, 17, λ against the crown's displacement ───────────
+# Drawn from the library by the example `paper_curves` until the CLI has `capacity` and
+# `incremental` commands; then replace this block by, e.g.
+#   v capacity arch-full.json --move right=0.02,0 --svg fig10.svg --png fig10.png --report fig10.html
+#   v plot fig10.json -o fig10.png          (capacity and incremental results are recognised)
+if [[ "${SKIP_CURVES:-0}" != 1 ]]; then
+  (cd "$root" && cargo run --release -q -p voussoir-io --example paper_curves -- "$out") | sed 's|^wrote '"$out"'/|  |' |
+    { curves=$(tr '\n' ' '); say "Figs 10, 12, 14b, 15, 16, 17 (curves)" "$curves"; }
+fi
+
+# ── HOOK(lintel-capacity): Fig 7, lintel λ against the imposed displacement with f_c = 2.4 MPa
+#   (needs capacity with finite compressive strength: `gen lintel --compressive-strength 2400`).
+# ── HOOK(facade): Fig 18, church façade under a 20 cm settlement along half its length
+#   (needs the façade generator; draw with `v settle facade.json --profile … --png fig18b.png`).
+
+echo "figures in $out"

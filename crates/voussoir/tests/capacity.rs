@@ -313,3 +313,21 @@ fn requests_that_do_not_fit_are_one_line_errors() {
     assert!(capacity(&no_live, &CapacityOptions::default()).is_err());
     assert!(deform(&st, &[0.0; 3], 1.0).is_err());
 }
+
+#[test]
+fn lintel_with_finite_strength_loses_capacity_at_half_its_thickness() {
+    // Paper, Fig. 7: a 1.5 m lintel, 0.24 m thick, f_c = 2.4 MPa, horizontal displacement of one
+    // end: λ falls and vanishes when the displacement is about half the thickness (0.12 m).
+    // The paper does not give the number of bricks (6 here), hence the 10 % tolerance.
+    use voussoir::generate::{lintel, LintelSpec};
+    let mut m = lintel(&LintelSpec { compressive_strength: Some(2400.0), ..Default::default() }).unwrap();
+    let right = m.support_index("right").unwrap();
+    m.supports[right].motion = [0.15, 0.0, 0.0];
+    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let r = capacity(&st, &CapacityOptions { steps: 15, ..Default::default() }).unwrap();
+    let z = r.zero_capacity_settlement.expect("λ vanishes within 15 cm");
+    assert!(within(z, 0.12, 0.10), "zero-capacity displacement {z} m");
+    for w in r.curve.windows(2).filter(|w| w[1].settlement <= z) {
+        assert!(w[1].load_multiplier.unwrap() < w[0].load_multiplier.unwrap());
+    }
+}

@@ -82,8 +82,8 @@ fn incremental_of(settlement: f64) -> IncrementalResult {
         &st,
         &c,
         &IncrementalOptions {
+            step: 1e-4,
             max_displacement: 0.05,
-            snapshots: false,
             ..Default::default()
         },
     )
@@ -142,6 +142,32 @@ fn main() {
     for (r, (_, label, name, title)) in results.iter().zip(&runs) {
         write(&out, name, &draw::incremental_plot(&[(label, r)], title));
     }
+    let report = |name: &str, html: String| {
+        let path = out.join(name);
+        voussoir_io::write_atomic(&path, html.as_bytes()).unwrap_or_else(|e| fail(e.0));
+        println!("wrote {}", path.display());
+    };
+    let opts = |t: &str| draw::ReportOptions {
+        title: Some(t.to_string()),
+        ..Default::default()
+    };
+    report(
+        "fig10-report.html",
+        draw::capacity_report(&h, &opts("Fig 10 — capacity after a horizontal settlement"))
+            .to_html(),
+    );
+    report(
+        "fig12-report.html",
+        draw::capacity_report(&v, &opts("Fig 12 — capacity after a vertical settlement")).to_html(),
+    );
+    report(
+        "fig15-report.html",
+        draw::incremental_report(
+            &results[1],
+            &opts("Fig 15 — incremental analysis after a 0.25 cm settlement"),
+        )
+        .to_html(),
+    );
     let all: Vec<(&str, &IncrementalResult)> = runs.iter().map(|r| r.1).zip(&results).collect();
     write(
         &out,

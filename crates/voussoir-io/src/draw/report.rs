@@ -321,7 +321,7 @@ fn body(b: &BodyName) -> String {
     }
 }
 
-/// Model summary: sizes, loads and supports of a result's geometry.
+/// Model summary: sizes, loads and supports of a result's geometry (`joints` 0: not shown).
 pub fn model_summary(g: &Geometry, joints: usize, source: &str) -> Vec<(String, String)> {
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
@@ -349,7 +349,9 @@ pub fn model_summary(g: &Geometry, joints: usize, source: &str) -> Vec<(String, 
         kv.push(("model".to_string(), source.to_string()));
     }
     kv.push(("blocks".into(), g.blocks.len().to_string()));
-    kv.push(("joints".into(), joints.to_string()));
+    if joints > 0 {
+        kv.push(("joints".into(), joints.to_string()));
+    }
     let sup: Vec<String> = g
         .supports
         .iter()

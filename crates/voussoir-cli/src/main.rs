@@ -1,10 +1,9 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
-mod capacity;
 mod common;
 mod draw_args;
 mod gen;
-mod incremental;
+mod import;
 mod plot;
 
 use clap::{Parser, Subcommand};
@@ -30,6 +29,8 @@ enum Command {
     /// Generate a model (arch, lintel, wall) as JSON.
     #[command(subcommand)]
     Gen(gen::Gen),
+    /// Import a DXF drawing (closed polylines = blocks) as a JSON model.
+    Import(import::ImportArgs),
     /// Classic limit analysis: collapse load multiplier λ of the live loads and the mechanism.
     Limit {
         #[command(flatten)]
@@ -51,12 +52,6 @@ enum Command {
         #[command(flatten)]
         draw: draw_args::DrawArgs,
     },
-    /// Load capacity after a settlement: λ against the settlement (limit analysis on the
-    /// deformed geometry), the settlement at which λ reaches zero, validity of each step.
-    Capacity(capacity::CapacityArgs),
-    /// Incremental (nonlinear kinematic) analysis: λ against the displacement of a control
-    /// point as the mechanism evolves and cracks close.
-    Incremental(incremental::IncrementalArgs),
     /// Draw a saved result (limit, settlement) or a model: `-o fig.svg`, `fig.png` or
     /// `report.html`.
     Plot(plot::PlotArgs),
@@ -65,6 +60,7 @@ enum Command {
 fn run(cli: Cli) -> Result<(), Fail> {
     match cli.command {
         Command::Gen(g) => gen::run(g),
+        Command::Import(a) => import::run(a),
         Command::Limit { model, out, draw } => {
             let (st, opts) = model.structure(None)?;
             let r = limit(&st, &opts)?;
@@ -77,8 +73,6 @@ fn run(cli: Cli) -> Result<(), Fail> {
             draw.emit_settlement(&r, &model.model)?;
             out.emit(&r, || common::settle_summary(&st, &r))
         }
-        Command::Capacity(a) => capacity::run(a),
-        Command::Incremental(a) => incremental::run(a),
         Command::Plot(a) => plot::run(a),
     }
 }

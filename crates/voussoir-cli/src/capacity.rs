@@ -31,6 +31,9 @@ pub struct CapacityArgs {
     pub cold: bool,
     #[command(flatten)]
     pub out: OutArgs,
+    /// `--svg`/`--png`: the curve; `--report`: an HTML report with the mechanisms.
+    #[command(flatten)]
+    pub draw: crate::draw_args::DrawArgs,
 }
 
 pub fn run(a: CapacityArgs) -> Result<(), Fail> {
@@ -49,6 +52,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         ..CapacityOptions::default()
     };
     let r = capacity(&st, &opts)?;
+    a.draw.emit_capacity(&r, &a.model.model)?;
     a.out.emit(&r, || summary(&st, &r))
 }
 

@@ -52,6 +52,9 @@ pub struct IncrementalArgs {
     pub no_stop: bool,
     #[command(flatten)]
     pub out: OutArgs,
+    /// `--svg`/`--png`: the curve; `--report`: an HTML report with the mechanisms.
+    #[command(flatten)]
+    pub draw: crate::draw_args::DrawArgs,
 }
 
 fn pair(flag: &str, s: &str) -> Result<[f64; 2], Fail> {
@@ -114,6 +117,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     } else {
         incremental_with(&start, &control, &opts, &mut |_| {})?
     };
+    a.draw.emit_incremental(&r, &a.model.model)?;
     a.out.emit(&r, || summary(&start, &r))
 }
 

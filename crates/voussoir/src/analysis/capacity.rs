@@ -400,7 +400,8 @@ impl WarmLimit {
             self.shape = shape;
         }
         let mut opts = self.solver;
-        opts.presolve = false;
+        // Presolve would discard the starting basis; without one it is worth its cost.
+        opts.presolve = self.solver.presolve && self.basis.is_none();
         let mut model = lp::build(&fp.lp);
         lp::configure(&mut model, &opts)?;
         if let Some((cs, rs)) = &self.basis {

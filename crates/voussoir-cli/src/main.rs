@@ -1,9 +1,11 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
+mod capacity;
 mod common;
 mod draw_args;
 mod gen;
 mod import;
+mod incremental;
 mod plot;
 
 use clap::{Parser, Subcommand};
@@ -52,6 +54,12 @@ enum Command {
         #[command(flatten)]
         draw: draw_args::DrawArgs,
     },
+    /// Load capacity after a settlement: λ against the settlement (limit analysis on the
+    /// deformed geometry), the settlement at which λ reaches zero, validity of each step.
+    Capacity(capacity::CapacityArgs),
+    /// Incremental (nonlinear kinematic) analysis: λ against the displacement of a control
+    /// point as the mechanism evolves and cracks close.
+    Incremental(incremental::IncrementalArgs),
     /// Draw a saved result (limit, settlement) or a model: `-o fig.svg`, `fig.png` or
     /// `report.html`.
     Plot(plot::PlotArgs),
@@ -73,6 +81,8 @@ fn run(cli: Cli) -> Result<(), Fail> {
             draw.emit_settlement(&r, &model.model)?;
             out.emit(&r, || common::settle_summary(&st, &r))
         }
+        Command::Capacity(a) => capacity::run(a),
+        Command::Incremental(a) => incremental::run(a),
         Command::Plot(a) => plot::run(a),
     }
 }

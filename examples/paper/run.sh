@@ -65,19 +65,43 @@ v settle lintel.json --move right=0.02,0 -o fig06b.json --scale 2 \
   --title "Fig 6b — lintel, horizontal settlement of 2 cm (drawn × 2)" >/dev/null
 say "Fig 6b (lintel)" "fig06b-lintel-settlement.png"
 
-# ── HOOK(capacity): Figs 10 and 12, λ against the settlement ──────────────────────────────
-# ── HOOK(incremental): Figs 14b, 15, 16, 17, λ against the crown's displacement ───────────
-# Drawn from the library by the example `paper_curves` until the CLI has `capacity` and
-# `incremental` commands; then replace this block by, e.g.
-#   v capacity arch-full.json --move right=0.02,0 --svg fig10.svg --png fig10.png --report fig10.html
-#   v plot fig10.json -o fig10.png          (capacity and incremental results are recognised)
-if [[ "${SKIP_CURVES:-0}" != 1 ]]; then
-  (cd "$root" && cargo run --release -q -p voussoir-io --example paper_curves -- "$out") | sed 's|^wrote '"$out"'/|  |' |
-    { curves=$(tr '\n' ' '); say "Figs 10, 12, 14b, 15, 16, 17 (curves)" "$curves"; }
-fi
+# ── Fig 10: λ against a horizontal settlement of one springing (paper: λ = 0 at 1.4 cm) ──
+v capacity arch-full.json --move right=0.02,0 --steps 40 -o fig10.json \
+  --svg fig10-capacity-horizontal.svg --png fig10-capacity-horizontal.png --report fig10-report.html \
+  --title "Fig 10 — λ against a horizontal settlement of one springing" >/dev/null
+say "Fig 10 (paper: zero at 1.4 cm)" "fig10-capacity-horizontal.png"
 
-# ── HOOK(lintel-capacity): Fig 7, lintel λ against the imposed displacement with f_c = 2.4 MPa
-#   (needs capacity with finite compressive strength: `gen lintel --compressive-strength 2400`).
+# ── Fig 12: λ against a vertical settlement of one springing (paper: λ = 0 at 0.42 cm) ─────
+v capacity arch-full.json --move right=0,-0.006 --fixed right --steps 40 -o fig12.json \
+  --svg fig12-capacity-vertical.svg --png fig12-capacity-vertical.png --report fig12-report.html \
+  --title "Fig 12 — λ against a vertical settlement of one springing" >/dev/null
+say "Fig 12 (paper: zero at 0.42 cm)" "fig12-capacity-vertical.png"
+
+# ── Figs 14b, 15, 16: incremental analysis, half-span load, crown control point ───────────
+inc() { # NAME SETTLEMENT(m) TITLE
+  local settle=()
+  [[ "$2" != 0 ]] && settle=(--settle "right=0,-$2" --fixed right)
+  v incremental arch-left.json --control 0,3.19 --direction 1,0 --step 0.0001 --max 0.05 "${settle[@]}" \
+    -o "$1.json" --svg "$1.svg" --png "$1.png" --report "$1-report.html" --title "$3" >/dev/null
+}
+inc fig14b-incremental-perfect 0 "Fig 14b — incremental analysis of the perfect arch"
+inc fig15-incremental-0.25cm 0.0025 "Fig 15 — after a 0.25 cm settlement of the right springing"
+inc fig16-incremental-0.5cm 0.005 "Fig 16 — after a 0.5 cm settlement of the right springing"
+say "Figs 14b, 15, 16 (incremental)" "fig14b-incremental-perfect.png fig15-incremental-0.25cm.png fig16-incremental-0.5cm.png"
+
+# ── Fig 17: the three force–displacement curves together ──────────────────────────────────
+v plot fig14b-incremental-perfect.json fig15-incremental-0.25cm.json fig16-incremental-0.5cm.json \
+  --label "perfect arch" --label "settlement 0.25 cm" --label "settlement 0.5 cm" \
+  -o fig17-incremental-comparison.png --title "Fig 17 — force–displacement curves compared" >/dev/null
+v plot fig14b-incremental-perfect.json fig15-incremental-0.25cm.json fig16-incremental-0.5cm.json \
+  --label "perfect arch" --label "settlement 0.25 cm" --label "settlement 0.5 cm" \
+  -o fig17-incremental-comparison.svg --title "Fig 17 — force–displacement curves compared" >/dev/null
+say "Fig 17 (comparison)" "fig17-incremental-comparison.png"
+
+# ── HOOK(lintel-capacity): Fig 7, lintel λ against the imposed displacement, f_c = 2.4 MPa.
+#   To add once `capacity` honours finite compressive strength from the CLI, e.g.
+#   v gen lintel --compressive-strength 2400 -o lintel-fc.json
+#   v capacity lintel-fc.json --move right=0.14,0 --png fig07-lintel-capacity.png
 # ── HOOK(facade): Fig 18, church façade under a 20 cm settlement along half its length
 #   (needs the façade generator; draw with `v settle facade.json --profile … --png fig18b.png`).
 

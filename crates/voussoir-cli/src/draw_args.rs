@@ -85,7 +85,6 @@ impl DrawArgs {
 
     /// Capacity analysis: the figure is the λ–settlement curve; the report adds the settlement
     /// mechanism and the table of steps.
-    #[allow(dead_code)] // for the `capacity` command
     pub fn emit_capacity(&self, r: &CapacityResult, source: &Path) -> Result<(), Fail> {
         if !self.any() {
             return Ok(());
@@ -107,7 +106,6 @@ impl DrawArgs {
 
     /// Incremental analysis: the figure is the λ–control-displacement curve; the report adds
     /// the mechanisms and the events.
-    #[allow(dead_code)] // for the `incremental` command
     pub fn emit_incremental(&self, r: &IncrementalResult, source: &Path) -> Result<(), Fail> {
         if !self.any() {
             return Ok(());

@@ -7,7 +7,9 @@
 # machines do not have it. Checks, in order:
 #   1. Chromium loads the file with no network (all background networking disabled) and the
 #      console shows no uncaught error;
-#   2. the report's script ran (it sets data-ready="1" on <body>, read back from the DOM);
+#   2. the report's script ran (it sets data-ready="1" on <body>, read back from the DOM), and
+#      the slider's JavaScript, run at the figure's own scale, puts every block, hinge, crack and
+#      thrust-line point where the Rust-written SVG has it (to 0.02 px; needs python3);
 #   3. a screenshot is written (default: REPORT.png beside the report).
 # Without a second argument the screenshot is 1200×900; pass e.g. 1200x3000 for a long page.
 set -euo pipefail
@@ -41,6 +43,35 @@ if ! grep -q 'data-ready="1"' <<<"$dom"; then
   exit 1
 fi
 figures=$(grep -o '<figure' <<<"$dom" | wc -l)
+if command -v python3 >/dev/null; then
+  printf '%s' "$dom" >"$log.dom"
+  python3 - "$report" "$log.dom" <<'PY' || { rm -f "$log.dom"; exit 1; }
+import re, sys
+orig, dom = open(sys.argv[1], encoding="utf-8").read(), open(sys.argv[2], encoding="utf-8").read()
+def figs(t):
+    out, i = [], 0
+    while (i := t.find('data-motions="', i)) >= 0:
+        j = t.index("</svg>", i); out.append(t[i:j]); i = j
+    return out
+def values(s, attr):
+    res = []
+    for m in re.finditer(r"<\w+([^>]*?)>", s):
+        a = m.group(1)
+        if any(k in a for k in ("data-g=", "data-pts=", "data-at=")):
+            v = re.search(r'\s' + attr + r'="([^"]*)"', a)
+            if v: res.append([float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", v.group(1))])
+    return res
+worst = 0.0
+for a, b in zip(figs(orig), figs(dom)):
+    for attr in ("transform", "points", "cx", "cy"):
+        x, y = values(a, attr), values(b, attr)
+        if len(x) != len(y): sys.exit(f"error: slider figure: {attr} count {len(x)} vs {len(y)}")
+        for u, v in zip(x, y):
+            worst = max([worst] + [abs(p - q) for p, q in zip(u, v)])
+if worst > 0.02: sys.exit(f"error: the slider script moves elements by {worst:.3f} px at the figure's own scale")
+PY
+  rm -f "$log.dom"
+fi
 
 # 3: screenshot.
 rm -f "$out"

@@ -290,7 +290,7 @@ const JS: &str = r#"(function () {
 "#;
 
 /// What the ready-made reports show.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct ReportOptions {
     /// Report title (default: by analysis).
     pub title: Option<String>,
@@ -300,15 +300,6 @@ pub struct ReportOptions {
     pub scale: Option<f64>,
 }
 
-impl Default for ReportOptions {
-    fn default() -> Self {
-        ReportOptions {
-            title: None,
-            source: String::new(),
-            scale: None,
-        }
-    }
-}
 
 fn f4(x: f64) -> String {
     fmt_fixed(x, 4)

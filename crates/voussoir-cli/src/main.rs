@@ -60,8 +60,8 @@ enum Command {
     /// Incremental (nonlinear kinematic) analysis: λ against the displacement of a control
     /// point as the mechanism evolves and cracks close.
     Incremental(incremental::IncrementalArgs),
-    /// Draw a saved result (limit, settlement) or a model: `-o fig.svg`, `fig.png` or
-    /// `report.html`.
+    /// Draw a saved result (limit, settlement, capacity, incremental; several curves on one
+    /// plot) or a model: `-o fig.svg`, `fig.png` or `report.html`.
     Plot(plot::PlotArgs),
 }
 

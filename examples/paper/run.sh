@@ -98,10 +98,13 @@ v plot fig14b-incremental-perfect.json fig15-incremental-0.25cm.json fig16-incre
   -o fig17-incremental-comparison.svg --title "Fig 17 — force–displacement curves compared" >/dev/null
 say "Fig 17 (comparison)" "fig17-incremental-comparison.png"
 
-# ── HOOK(lintel-capacity): Fig 7, lintel λ against the imposed displacement, f_c = 2.4 MPa.
-#   To add once `capacity` honours finite compressive strength from the CLI, e.g.
-#   v gen lintel --compressive-strength 2400 -o lintel-fc.json
-#   v capacity lintel-fc.json --move right=0.14,0 --png fig07-lintel-capacity.png
+# ── Fig 7: lintel λ against the imposed displacement, f_c = 2.4 MPa (λ = 0 near t/2) ──────
+v gen lintel --compressive-strength 2400 -o lintel-fc.json >/dev/null 2>&1
+v capacity lintel-fc.json --move right=0.14,0 --steps 28 -o fig07.json \
+  --svg fig07-lintel-capacity.svg --png fig07-lintel-capacity.png --report fig07-report.html \
+  --title "Fig 7 — lintel: λ against the imposed horizontal displacement (f_c = 2.4 MPa)" >/dev/null
+say "Fig 7 (paper: zero at t/2 = 12 cm)" "fig07-lintel-capacity.png"
+
 # ── HOOK(facade): Fig 18, church façade under a 20 cm settlement along half its length
 #   (needs the façade generator; draw with `v settle facade.json --profile … --png fig18b.png`).
 

@@ -75,13 +75,7 @@ pub fn solve_limit(
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
-    if !st.has_live_loads() {
-        return Err(Error::Request(
-            "limit analysis needs live loads (the model has none)".into(),
-        ));
-    }
-    let dead = st.load_vector(false);
-    let live = st.load_vector(true);
+    let (dead, live) = load_vectors(st)?;
     let fp = ForceProgram::new(map, &dead, Some(&live), Direction::Maximise, |_| (0.0, 0.0));
     let sol = lp::solve(&fp.lp, opts)?;
     Ok(finish(
@@ -95,16 +89,20 @@ pub fn solve_limit(
     ))
 }
 
-/// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
-/// its inscribed polygon. Without finite compressive strength this is the same problem.
-pub fn solve_limit_conic(st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
+/// Dead and live load vectors; an error if there is no live load.
+fn load_vectors(st: &Structure) -> Result<(Vec<f64>, Vec<f64>)> {
     if !st.has_live_loads() {
         return Err(Error::Request(
             "limit analysis needs live loads (the model has none)".into(),
         ));
     }
-    let dead = st.load_vector(false);
-    let live = st.load_vector(true);
+    Ok((st.load_vector(false), st.load_vector(true)))
+}
+
+/// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
+/// its inscribed polygon. Without finite compressive strength this is the same problem.
+pub fn solve_limit_conic(st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
+    let (dead, live) = load_vectors(st)?;
     let fp = crate::conic::limit_force_program(map, &dead, &live);
     let sol = crate::conic::solve_force_conic(map, &fp)?;
     Ok(finish(

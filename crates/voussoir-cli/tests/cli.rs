@@ -115,3 +115,32 @@ fn bad_input_fails_in_one_line_without_output() {
     expect_failure(&["settle", &arch, "--move", "middle=0.01,0"], "no support named 'middle'", None);
     expect_failure(&["settle", &arch, "--move", "right=a,b"], "must be numbers", None);
 }
+
+#[test]
+fn drawings_from_the_command_line() {
+    let d = tmpdir("draw");
+    let arch = paper_arch(&d, "full");
+    let (png, svg, html, res) = (d.join("m.png"), d.join("m.svg"), d.join("m.html"), d.join("r.json"));
+    let o = run(&[
+        "settle", &arch, "--move", "right=0.01,0", "--png", png.to_str().unwrap(), "--svg", svg.to_str().unwrap(),
+        "--report", html.to_str().unwrap(), "-o", res.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[1..4], b"PNG");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg") || text.starts_with("<?xml"));
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert!(page.contains("<svg"), "the report inlines its figures");
+    assert!(!page.contains("<script src") && !page.contains("<link "), "no external resources");
+    // A saved result draws alone, identically to the direct drawing.
+    let png2 = d.join("m2.svg");
+    let o = run(&["plot", res.to_str().unwrap(), "-o", png2.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::metadata(&png2).unwrap().len() > 1000);
+    // Bad input: no drawing is left behind.
+    let bad = d.join("bad.json");
+    std::fs::write(&bad, r#"{"blocks": [], "supports": []}"#).unwrap();
+    let none = d.join("none.png");
+    expect_failure(&["limit", bad.to_str().unwrap(), "--png", none.to_str().unwrap()], "no blocks", Some(&none));
+}

@@ -234,9 +234,10 @@ fn hot_start_gives_the_same_curve_with_fewer_iterations() {
         let (a, b) = (a.load_multiplier.unwrap(), b.load_multiplier.unwrap());
         assert!((a - b).abs() <= 1e-9 * (1.0 + b.abs()), "{a} vs {b}");
     }
+    // Both roots are within the root tolerance (1e-6 m) of the true one.
     assert!(
         (hot.zero_capacity_settlement.unwrap() - cold.zero_capacity_settlement.unwrap()).abs()
-            < 1e-8
+            <= 2e-6
     );
     assert!(
         hot.iterations * 5 < cold.iterations,
@@ -320,11 +321,22 @@ fn lintel_with_finite_strength_loses_capacity_at_half_its_thickness() {
     // end: λ falls and vanishes when the displacement is about half the thickness (0.12 m).
     // The paper does not give the number of bricks (6 here), hence the 10 % tolerance.
     use voussoir::generate::{lintel, LintelSpec};
-    let mut m = lintel(&LintelSpec { compressive_strength: Some(2400.0), ..Default::default() }).unwrap();
+    let mut m = lintel(&LintelSpec {
+        compressive_strength: Some(2400.0),
+        ..Default::default()
+    })
+    .unwrap();
     let right = m.support_index("right").unwrap();
     m.supports[right].motion = [0.15, 0.0, 0.0];
     let st = Structure::new(&m, BuildOptions::default()).unwrap();
-    let r = capacity(&st, &CapacityOptions { steps: 15, ..Default::default() }).unwrap();
+    let r = capacity(
+        &st,
+        &CapacityOptions {
+            steps: 15,
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let z = r.zero_capacity_settlement.expect("λ vanishes within 15 cm");
     assert!(within(z, 0.12, 0.10), "zero-capacity displacement {z} m");
     for w in r.curve.windows(2).filter(|w| w[1].settlement <= z) {

@@ -684,11 +684,17 @@ fn illinois(
     mut f: impl FnMut(f64) -> Result<f64>,
 ) -> Result<f64> {
     let mut side = 0i8;
+    let mut width = f64::INFINITY;
     for _ in 0..200 {
-        if (b.0 - a.0).abs() <= tol {
+        let w = (b.0 - a.0).abs();
+        if w <= tol {
             break;
         }
-        let x = if a.1.is_finite() && b.1.is_finite() && a.1 != b.1 {
+        // Bisect whenever the last step did not halve the bracket (λ may jump, e.g. where a
+        // hinge opens): at most twice the iterations of plain bisection.
+        let bisect = w > 0.5 * width;
+        width = w;
+        let x = if !bisect && a.1.is_finite() && b.1.is_finite() && a.1 != b.1 {
             let x = (a.0 * b.1 - b.0 * a.1) / (b.1 - a.1);
             // Stay strictly inside and away from the ends by a fraction of the tolerance.
             x.clamp(a.0.min(b.0) + 0.25 * tol, a.0.max(b.0) - 0.25 * tol)

@@ -15,6 +15,9 @@ pub enum Gen {
     Lintel(LintelArgs),
     /// A running-bond wall on foundation segments f0, f1, … (one per base unit).
     Wall(WallArgs),
+    /// A façade with pointed doors, rose and rectangular windows (default: the paper's Fig 18
+    /// church façade, 22 m × 19 m), meshed as a grid or a running bond on segments f0, f1, ….
+    Facade(FacadeArgs),
 }
 
 #[derive(Args)]
@@ -207,6 +210,10 @@ pub fn run(g: Gen) -> Result<(), Fail> {
             })?;
             write(&m, &l.out)
         }
+        Gen::Facade(f) => {
+            let m = voussoir::generate_facade::facade(&f.spec()?)?;
+            write(&m, &f.out)
+        }
         Gen::Wall(w) => {
             let unit: Vec<f64> = w
                 .unit
@@ -231,5 +238,92 @@ pub fn run(g: Gen) -> Result<(), Fail> {
             })?;
             write(&m, &w.out)
         }
+    }
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum FacadeMeshArg {
+    Grid,
+    RunningBond,
+}
+
+#[derive(Args)]
+pub struct FacadeArgs {
+    /// Element size in m: LENGTH[,HEIGHT] (height default: half the length).
+    #[arg(long, default_value = "0.5")]
+    pub element: String,
+    /// Mesh of the wall.
+    #[arg(long, value_enum, default_value = "grid")]
+    pub mesh: FacadeMeshArg,
+    /// Wall width, eaves height and gable height in m (default: the paper's façade).
+    #[arg(long, default_value_t = 22.0)]
+    pub width: f64,
+    #[arg(long, default_value_t = 14.0)]
+    pub height: f64,
+    #[arg(long, default_value_t = 5.0)]
+    pub gable: f64,
+    /// Openings replacing the default ones (repeatable): door:X,WIDTH,SPRINGING[,OFFSET,RING] |
+    /// rose:X,Y,RADIUS[,RING] | rect:X0,Y0,X1,Y1 (metres).
+    #[arg(long = "opening", value_name = "SPEC")]
+    pub openings: Vec<String>,
+    /// Number of foundation segments.
+    #[arg(long, default_value_t = 44)]
+    pub segments: usize,
+    /// Unit weight γ in kN/m³ and out-of-plane thickness in m.
+    #[arg(long, default_value_t = 18.0)]
+    pub unit_weight: f64,
+    #[arg(long, default_value_t = 1.0)]
+    pub thickness: f64,
+    /// Live load: none or horizontal (tilting table).
+    #[arg(long, value_enum, default_value = "none")]
+    pub live: LiveArg,
+    #[command(flatten)]
+    pub out: Output,
+}
+
+impl FacadeArgs {
+    pub fn spec(&self) -> Result<voussoir::generate_facade::FacadeSpec, Fail> {
+        use voussoir::generate_facade::{bondeno, FacadeMesh, Opening};
+        let nums = |what: &str, t: &str| -> Result<Vec<f64>, Fail> {
+            t.split(',')
+                .map(|x| x.trim().parse::<f64>())
+                .collect::<Result<_, _>>()
+                .map_err(|_| Fail(format!("{what} {t}: expected numbers separated by commas")))
+        };
+        let e = nums("--element", &self.element)?;
+        let element = match e[..] {
+            [l] => [l, l / 2.0],
+            [l, h] => [l, h],
+            _ => return Err(Fail(format!("--element {}: expected LENGTH[,HEIGHT]", self.element))),
+        };
+        let mesh = match self.mesh {
+            FacadeMeshArg::Grid => FacadeMesh::Grid,
+            FacadeMeshArg::RunningBond => FacadeMesh::RunningBond,
+        };
+        let mut s = bondeno(element[0], mesh);
+        s.element = element;
+        s.width = self.width;
+        s.height = self.height;
+        s.gable = self.gable;
+        s.segments = self.segments;
+        s.unit_weight = self.unit_weight;
+        s.thickness = self.thickness;
+        s.live = self.live.into();
+        if !self.openings.is_empty() {
+            s.openings.clear();
+            for o in &self.openings {
+                let (kind, rest) = o.split_once(':').ok_or_else(|| Fail(format!("--opening {o}: expected KIND:NUMBERS")))?;
+                let v = nums("--opening", rest)?;
+                s.openings.push(match (kind, &v[..]) {
+                    ("door", [x, w, sp]) => Opening::PointedDoor { x: *x, width: *w, springing: *sp, offset: 0.5, ring: 0.4 },
+                    ("door", [x, w, sp, off, ring]) => Opening::PointedDoor { x: *x, width: *w, springing: *sp, offset: *off, ring: *ring },
+                    ("rose", [x, y, r]) => Opening::Round { x: *x, y: *y, radius: *r, ring: 0.35 },
+                    ("rose", [x, y, r, ring]) => Opening::Round { x: *x, y: *y, radius: *r, ring: *ring },
+                    ("rect", [x0, y0, x1, y1]) => Opening::Rect { x0: *x0, y0: *y0, x1: *x1, y1: *y1 },
+                    _ => return Err(Fail(format!("--opening {o}: expected door:X,WIDTH,SPRINGING[,OFFSET,RING], rose:X,Y,RADIUS[,RING] or rect:X0,Y0,X1,Y1"))),
+                });
+            }
+        }
+        Ok(s)
     }
 }

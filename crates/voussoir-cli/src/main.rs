@@ -1,6 +1,7 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
 mod capacity;
+mod bench;
 mod common;
 mod draw_args;
 mod gen;
@@ -31,6 +32,9 @@ enum Command {
     /// Generate a model (arch, lintel, wall) as JSON.
     #[command(subcommand)]
     Gen(gen::Gen),
+    /// Time the pipeline (generation, detection, assembly, solve, output) on running-bond
+    /// walls of growing size.
+    Bench(bench::BenchArgs),
     /// Import a DXF drawing (closed polylines = blocks) as a JSON model.
     Import(import::ImportArgs),
     /// Classic limit analysis: collapse load multiplier λ of the live loads and the mechanism.
@@ -69,6 +73,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
     match cli.command {
         Command::Gen(g) => gen::run(g),
         Command::Import(a) => import::run(a),
+        Command::Bench(a) => bench::run(a),
         Command::Limit { model, out, draw } => {
             let (st, opts) = model.structure(None)?;
             let r = limit(&st, &opts)?;

@@ -37,6 +37,7 @@ pub mod discretize;
 pub mod duality;
 pub mod error;
 pub mod generate;
+pub mod generate_facade;
 pub mod geometry;
 pub mod lp;
 pub mod model;

@@ -117,6 +117,11 @@ pub enum Method {
     Ipm,
     /// Let HiGHS choose.
     Choose,
+    /// Interior point without crossover: an optimal, generally non-vertex, solution (faster on
+    /// large models; the duality gap still certifies it).
+    IpmNoCrossover,
+    /// First-order primal-dual hybrid gradient (PDLP): low accuracy, for very large models.
+    Pdlp,
 }
 
 /// Solver settings.
@@ -177,6 +182,11 @@ pub(crate) fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
             opt(m, "run_crossover", "on")?;
         }
         Method::Choose => opt(m, "solver", "choose")?,
+        Method::IpmNoCrossover => {
+            opt(m, "solver", "ipm")?;
+            opt(m, "run_crossover", "off")?;
+        }
+        Method::Pdlp => opt(m, "solver", "pdlp")?,
     }
     opt(m, "primal_feasibility_tolerance", o.feasibility_tolerance)?;
     opt(m, "dual_feasibility_tolerance", o.feasibility_tolerance)?;
@@ -184,6 +194,11 @@ pub(crate) fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
     opt(m, "random_seed", 0)?;
     if let Some(t) = o.time_limit {
         opt(m, "time_limit", t)?;
+    }
+    // Diagnostics: VOUSSOIR_HIGHS_LOG=1 prints HiGHS's own log on stdout.
+    if std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1") {
+        opt(m, "output_flag", true)?;
+        opt(m, "log_to_console", true)?;
     }
     Ok(())
 }

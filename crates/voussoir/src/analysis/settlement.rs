@@ -223,3 +223,132 @@ pub fn settlement_result(
         geometry: Geometry::of(st),
     }
 }
+
+// --- Solving one LP only (large models) ----------------------------------------------------
+
+/// Which of the two LPs a settlement analysis hands to the solver.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SettlementForm {
+    /// Solve the motion LP and the force LP separately (the default; small models).
+    #[default]
+    Both,
+    /// Solve only the force LP (3 rows per block instead of 2 per collocation point) and read
+    /// the mechanism from its equilibrium duals. The certificate is still computed from both
+    /// sides: the work of the dead loads on that mechanism, the work of the forces on the
+    /// supports, the mechanism's admissibility and the forces' equilibrium. Falls back to
+    /// [`SettlementForm::Both`] when joint laws (friction, finite strength) are present.
+    ForceOnly,
+}
+
+/// The force LP of a settlement analysis: `min g·p` over forces in equilibrium with the dead
+/// loads (the paper's (69)–(71)).
+pub fn settlement_force_program(st: &Structure, map: &KinematicMap) -> ForceProgram {
+    let dead = st.load_vector(false);
+    ForceProgram::new(map, &dead, None, Direction::Minimise, |k| {
+        (map.support_normal[k], map.support_tangent[k])
+    })
+}
+
+/// Largest violation of kinematic admissibility of block motions `d` (with the prescribed
+/// support motions): interpenetration `max(0, −(N d + g_n))` at contact points, `|N d + g_n|`
+/// at bilateral points, and sliding `|T d + g_t|`, over points that carry force.
+pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
+    let (open, slide) = map.jumps(d, 1.0);
+    let mut v = 0.0f64;
+    for k in 0..map.num_points() {
+        if map.gap[k] > 0.0 {
+            continue;
+        }
+        let o = if map.bilateral[k] { open[k].abs() } else { (-open[k]).max(0.0) };
+        v = v.max(o).max(slide[k].abs());
+    }
+    v
+}
+
+/// Turn a solved settlement force LP into a settlement solution: forces from its primal, the
+/// mechanism from its row duals (`d = −y`: HiGHS's duals of `min cᵀx, A x = b` satisfy
+/// `c − Aᵀy ≥ 0`, which for `d = −y` reads `N d + g_n ≥ 0`, `T d + g_t = 0`). The primal value is
+/// recomputed as the dead loads' work on that mechanism, not copied from the solver.
+pub fn settlement_from_force_solution(
+    st: &Structure,
+    map: &KinematicMap,
+    fp: &ForceProgram,
+    sol: &lp::LpSolution,
+) -> SettlementSolution {
+    let n = map.num_points();
+    let status = match sol.status {
+        LpStatus::Optimal => SettlementStatus::Mechanism,
+        // No equilibrium under the dead loads: the primal is unbounded.
+        LpStatus::Infeasible => SettlementStatus::CannotStand,
+        // The work on the supports can be made arbitrarily negative: the primal is infeasible.
+        LpStatus::Unbounded => SettlementStatus::Incompatible,
+    };
+    if status != SettlementStatus::Mechanism {
+        return SettlementSolution {
+            status,
+            mechanism: vec![],
+            pn: vec![0.0; n],
+            pt: vec![0.0; n],
+            primal: f64::NAN,
+            dual: f64::NAN,
+        };
+    }
+    let dead = st.load_vector(false);
+    let d: Vec<f64> = sol.row_dual[..map.num_dofs].iter().map(|y| -y).collect();
+    let primal: f64 = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
+    let (pn, pt) = fp.forces(&sol.x);
+    let dual: f64 = (0..n)
+        .map(|k| map.support_normal[k] * pn[k] + map.support_tangent[k] * pt[k])
+        .sum();
+    SettlementSolution { status, mechanism: d, pn, pt, primal, dual }
+}
+
+/// Whether the map has joint laws (friction, finite strength) that the force-only form does not
+/// handle.
+fn has_joint_laws(map: &KinematicMap) -> bool {
+    map.laws.iter().any(|l| l.friction.is_some() || l.strength.is_some()) || map.shear_limits.is_some()
+}
+
+/// Settlement analysis in the chosen form.
+pub fn solve_settlement_with(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+    form: SettlementForm,
+) -> Result<SettlementSolution> {
+    if form == SettlementForm::Both || has_joint_laws(map) {
+        return solve_settlement(st, map, opts);
+    }
+    let fp = settlement_force_program(st, map);
+    let sol = lp::solve(&fp.lp, opts)?;
+    Ok(settlement_from_force_solution(st, map, &fp, &sol))
+}
+
+/// The reported result of a solution, with the mechanism's admissibility checked: a mechanism
+/// read from duals that violates the joint constraints by more than 1e-6 of the largest
+/// prescribed motion fails the certificate.
+pub fn settlement_result_checked(st: &Structure, map: &KinematicMap, s: &SettlementSolution) -> SettlementResult {
+    let mut r = settlement_result(st, map, s);
+    if s.status == SettlementStatus::Mechanism {
+        let umax = st.supports.iter().flat_map(|sp| sp.motion.iter()).fold(0.0f64, |m, x| m.max(x.abs()));
+        let v = kinematic_violation(map, &s.mechanism);
+        if v > 1e-6 * umax.max(1e-300) {
+            if let Some(c) = r.certificate.as_mut() {
+                c.ok = false;
+            }
+            r.message = format!(
+                "WARNING: the mechanism violates the joint constraints by {v:.3e} m: the result is not certified; {}",
+                r.message
+            );
+        }
+    }
+    r
+}
+
+/// [`settle`] in the chosen form.
+pub fn settle_with(st: &Structure, opts: &SolverOptions, form: SettlementForm) -> Result<SettlementResult> {
+    let map = KinematicMap::new(st);
+    let s = solve_settlement_with(st, &map, opts, form)?;
+    Ok(settlement_result_checked(st, &map, &s))
+}

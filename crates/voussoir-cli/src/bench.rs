@@ -38,6 +38,8 @@ pub enum BenchMethod {
     IpmNoCrossover,
     Pdlp,
     Choose,
+    /// Clarabel's interior point (direct sparse LDLᵀ factorisation), on the same force LP.
+    Clarabel,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
@@ -107,6 +109,7 @@ fn method_for(m: BenchMethod, blocks: usize) -> Method {
         BenchMethod::IpmNoCrossover => Method::IpmNoCrossover,
         BenchMethod::Pdlp => Method::Pdlp,
         BenchMethod::Choose => Method::Choose,
+        BenchMethod::Clarabel => Method::Choose,
     }
 }
 
@@ -151,6 +154,27 @@ impl Row {
 
 fn secs(t: Instant) -> f64 {
     t.elapsed().as_secs_f64()
+}
+
+/// Solve a force program with the chosen method: HiGHS, or Clarabel's interior point.
+fn solve_force(
+    map: &KinematicMap,
+    fp: &ForceProgram,
+    m: BenchMethod,
+    opts: &SolverOptions,
+) -> Result<lp::LpSolution, Fail> {
+    if m != BenchMethod::Clarabel {
+        return Ok(lp::solve(&fp.lp, opts)?);
+    }
+    let c = voussoir::conic::solve_force_conic(map, fp)?;
+    Ok(lp::LpSolution {
+        status: c.status,
+        objective: c.objective,
+        x: c.x,
+        row_dual: c.row_dual,
+        col_dual: vec![],
+        iterations: 0,
+    })
 }
 
 fn time_detection(st: &Structure) -> f64 {
@@ -257,7 +281,11 @@ pub fn bench_settle(n: usize, a: &BenchArgs) -> Result<Row, Fail> {
         rows: lp_size.0,
         cols: lp_size.1,
         nnz: lp_size.2,
-        method: method_name(method).to_string(),
+        method: if a.method == BenchMethod::Clarabel {
+            "Clarabel IPM".to_string()
+        } else {
+            method_name(method).to_string()
+        },
         t_gen,
         t_build: t_build - t_detect.min(t_build),
         t_detect,
@@ -300,7 +328,7 @@ pub fn bench_limit(n: usize, a: &BenchArgs) -> Result<Row, Fail> {
     let fp = ForceProgram::new(&map, &dead, Some(&live), Direction::Maximise, |_| (0.0, 0.0));
     let t_assemble = secs(t);
     let t = Instant::now();
-    let sol = lp::solve(&fp.lp, &opts)?;
+    let sol = solve_force(&map, &fp, a.method, &opts)?;
     let t_solve = secs(t);
     let t = Instant::now();
     let (status, lambda, mechanism, pn, pt) = match sol.status {
@@ -361,7 +389,11 @@ pub fn bench_limit(n: usize, a: &BenchArgs) -> Result<Row, Fail> {
         rows: fp.lp.num_rows(),
         cols: fp.lp.num_cols(),
         nnz: fp.lp.num_nonzeros(),
-        method: method_name(method).to_string(),
+        method: if a.method == BenchMethod::Clarabel {
+            "Clarabel IPM".to_string()
+        } else {
+            method_name(method).to_string()
+        },
         t_gen,
         t_build: t_build - t_detect.min(t_build),
         t_detect,

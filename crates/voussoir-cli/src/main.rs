@@ -8,6 +8,7 @@ mod gen;
 mod import;
 mod incremental;
 mod plot;
+mod sweep;
 
 use clap::{Parser, Subcommand};
 use common::{Fail, ModelArgs, OutArgs, SettleArgs};
@@ -35,6 +36,11 @@ enum Command {
     /// Time the pipeline (generation, detection, assembly, solve, output) on running-bond
     /// walls of growing size.
     Bench(bench::BenchArgs),
+    /// Many settlement analyses in parallel: magnitudes, directions or Monte Carlo samples of
+    /// the support motions; JSON lines and CSV; --shard I/N for array jobs.
+    Sweep(sweep::SweepArgs),
+    /// Merge the JSON-lines results of sweep shards.
+    Merge(sweep::MergeArgs),
     /// Import a DXF drawing (closed polylines = blocks) as a JSON model.
     Import(import::ImportArgs),
     /// Classic limit analysis: collapse load multiplier λ of the live loads and the mechanism.
@@ -73,6 +79,8 @@ fn run(cli: Cli) -> Result<(), Fail> {
     match cli.command {
         Command::Gen(g) => gen::run(g),
         Command::Import(a) => import::run(a),
+        Command::Sweep(a) => sweep::run(a),
+        Command::Merge(a) => sweep::merge(a),
         Command::Bench(a) => bench::run(a),
         Command::Limit { model, out, draw } => {
             let (st, opts) = model.structure(None)?;

@@ -483,7 +483,7 @@ fn course_lines(top: f64, h: f64, levels: &[f64]) -> Vec<f64> {
             continue;
         }
         if let Some(k) = (1..n).min_by(|&a, &b| (ys[a] - l).abs().total_cmp(&(ys[b] - l).abs())) {
-            if (ys[k] - l).abs() < 0.5 * h {
+            if (ys[k] - l).abs() <= 0.5 * h + 1e-9 {
                 ys[k] = l;
             }
         }

@@ -296,6 +296,62 @@ pub fn solve(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
 /// duals are returned with HiGHS's convention (`c − Aᵀy` are the reduced costs of a
 /// minimisation; negated for a maximisation).
 fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
+    // Identical columns (same entries, cost and bounds, each free or non-negative) are one
+    // variable for the solver: in the force LP the two shear forces of a straight joint have
+    // the same column. The merged value goes to the first of them.
+    let (reduced, map) = merge_duplicate_columns(lp);
+    let mut sol = solve_clarabel_reduced(&reduced, o)?;
+    if sol.status == LpStatus::Optimal {
+        let mut x = vec![0.0; lp.num_cols()];
+        let mut col_dual = vec![0.0; lp.num_cols()];
+        let mut first = vec![true; reduced.num_cols()];
+        for (j, &r) in map.iter().enumerate() {
+            if first[r] {
+                x[j] = sol.x[r];
+                first[r] = false;
+            }
+            col_dual[j] = sol.col_dual[r];
+        }
+        sol.x = x;
+        sol.col_dual = col_dual;
+    }
+    Ok(sol)
+}
+
+/// The LP with duplicate columns merged, and the reduced column of every original column.
+fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
+    use std::collections::HashMap;
+    let mergeable = |j: usize| {
+        lp.col_upper[j] == f64::INFINITY && (lp.col_lower[j] == 0.0 || lp.col_lower[j] == f64::NEG_INFINITY)
+    };
+    let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
+    let mut out = LinearProgram { maximise: lp.maximise, col_start: vec![0], ..Default::default() };
+    out.row_lower = lp.row_lower.clone();
+    out.row_upper = lp.row_upper.clone();
+    let mut map = Vec::with_capacity(lp.num_cols());
+    for j in 0..lp.num_cols() {
+        let key: Option<Vec<u64>> = mergeable(j).then(|| {
+            let mut k = vec![lp.cost[j].to_bits(), lp.col_lower[j].to_bits()];
+            for (i, v) in lp.column(j) {
+                k.push(i as u64);
+                k.push(v.to_bits());
+            }
+            k
+        });
+        if let Some(&r) = key.as_ref().and_then(|k| seen.get(k)) {
+            map.push(r);
+            continue;
+        }
+        let r = out.add_column(lp.cost[j], lp.col_lower[j], lp.col_upper[j], lp.column(j));
+        if let Some(k) = key {
+            seen.insert(k, r);
+        }
+        map.push(r);
+    }
+    (out, map)
+}
+
+fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
     use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
     let sign = if lp.maximise { -1.0 } else { 1.0 };
@@ -364,6 +420,7 @@ fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
         tol_feas: tol,
         time_limit: o.time_limit.unwrap_or(f64::INFINITY),
         max_iter: 500,
+        direct_solve_method: "qdldl".to_string(),
         ..DefaultSettings::default()
     };
     let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, settings)

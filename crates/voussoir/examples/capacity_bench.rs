@@ -67,8 +67,8 @@ fn main() {
     }
     if all || args.iter().any(|a| a == "wall") {
         // A running-bond wall of 100 courses × 100 units (10,050 blocks with the half units),
-        // horizontal live load proportional to the weight, the foundation under its right half
-        // settling linearly from 0 at mid-length to 2 cm at the right end: 40 points.
+        // 40 m long, horizontal live load proportional to the weight (tilting table), the last
+        // 2 m of its foundation (5 segments) settling by up to 2 cm: 40 points.
         let mut m = wall(&WallSpec {
             courses: 100,
             units: 100,
@@ -79,11 +79,10 @@ fn main() {
         let len = 100.0 * 0.4;
         apply_profile(
             &mut m,
-            &Profile::Linear {
-                x0: len / 2.0,
-                v0: 0.0,
+            &Profile::Uniform {
+                x0: len - 2.0,
                 x1: len,
-                v1: -0.02,
+                v: -0.02,
             },
         )
         .unwrap();

@@ -415,9 +415,14 @@ impl WarmLimit {
                 self.basis = None;
             }
         }
-        let solved = model
-            .try_solve()
-            .map_err(|e| Error::Solver(format!("HiGHS run failed: {e:?}")))?;
+        let solved = match model.try_solve() {
+            Ok(s) => s,
+            Err(_) => {
+                // A failed run: forget the basis and solve from scratch.
+                self.basis = None;
+                return solve_limit(st, map, &self.solver);
+            }
+        };
         let iterations = solved.simplex_iteration_count();
         let status = solved.status();
         use highs::HighsModelStatus as H;

@@ -71,6 +71,12 @@ pub enum MethodArg {
     PrimalSimplex,
     Ipm,
     Choose,
+    /// Interior point without crossover (HiGHS).
+    IpmNoCrossover,
+    /// First-order PDLP (HiGHS; low accuracy).
+    Pdlp,
+    /// Clarabel's interior point: fastest on large models (see docs/performance.md).
+    Clarabel,
 }
 
 #[derive(Args, Clone, Debug, Default)]
@@ -125,6 +131,9 @@ impl ModelArgs {
                 MethodArg::PrimalSimplex => Method::PrimalSimplex,
                 MethodArg::Ipm => Method::Ipm,
                 MethodArg::Choose => Method::Choose,
+                MethodArg::IpmNoCrossover => Method::IpmNoCrossover,
+                MethodArg::Pdlp => Method::Pdlp,
+                MethodArg::Clarabel => Method::Clarabel,
             },
             ..SolverOptions::default()
         }

@@ -30,7 +30,7 @@ use voussoir::{BuildOptions, Structure};
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
 pub enum BenchMethod {
-    /// Per size: dual simplex up to 2,000 blocks, interior point without crossover above.
+    /// Per size: dual simplex up to 2,000 blocks (vertex mechanisms), Clarabel above.
     Auto,
     DualSimplex,
     PrimalSimplex,
@@ -103,7 +103,7 @@ fn method_for(m: BenchMethod, blocks: usize) -> Method {
             if blocks <= 2000 {
                 Method::DualSimplex
             } else {
-                Method::IpmNoCrossover
+                Method::Clarabel
             }
         }
         BenchMethod::DualSimplex => Method::DualSimplex,

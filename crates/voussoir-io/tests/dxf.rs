@@ -13,6 +13,7 @@
 //!   fails by hinges alone, so its λ must match tan 17.10° (± the 0.01° the angle is given to);
 //!   Portal and wall fail with sliding there, so with Heyman's no-sliding joints λ must lie above
 //!   tan θ and below the overturning of the whole structure about its right-most base contact.
+//!   With Mohr–Coulomb joints of the same φ all three match LACT3's angles (last test).
 
 use std::path::PathBuf;
 use voussoir::analysis::{limit, LimitStatus};
@@ -289,4 +290,28 @@ fn old_style_polyline_with_an_arc_is_read() {
         (area - exact).abs() < 1e-12 && c[1] > 0.4 && c[1] < 0.43,
         "{area} {c:?}"
     );
+}
+
+#[test]
+fn lact3_with_mohr_coulomb_joints_matches_lact3_tilt_angles() {
+    // LACT3's solver test: cohesionless joints with friction angle φ collapse at tilt θ. A tilt
+    // θ rotates gravity, W(sin θ, −cos θ) = cos θ · W(tan θ, −1): with no cohesion and no
+    // crushing the collapse state is scale-free, so λ = tan θ. LACT3 steps the tilt to 0.01°;
+    // we allow 0.02°.
+    for (file, phi, theta) in [
+        ("Portal.dxf", 30.0f64, 27.30f64),
+        ("wall.dxf", 26.0, 16.73),
+        ("arch_1.dxf", 30.0, 17.10),
+    ] {
+        let Some(p) = lact3(file) else { return };
+        let (mut m, _) = read_dxf(&p, &mm()).unwrap();
+        m.materials.get_mut("default").unwrap().friction = Some(phi.to_radians().tan());
+        let st = Structure::new(&m, BuildOptions::default()).unwrap();
+        let r = limit(&st, &SolverOptions::default()).unwrap();
+        let got = r.load_multiplier.unwrap().atan().to_degrees();
+        assert!(
+            (got - theta).abs() <= 0.02,
+            "{file}: collapse tilt {got}°, LACT3 {theta}°"
+        );
+    }
 }

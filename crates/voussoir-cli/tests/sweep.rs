@@ -59,6 +59,9 @@ fn hundred_magnitudes_match_hundred_single_runs() {
     ]);
     let msg = String::from_utf8_lossy(&o.stderr);
     assert!(msg.contains("100 analyses") && msg.contains("100 certified"), "{msg}");
+    // One task per core: on this 2-core machine the sweep runs on both.
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    assert!(msg.contains(&format!("on {cores} threads")), "{msg}");
     let recs = lines(&jl);
     assert_eq!(recs.len(), 100);
     assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 101);

@@ -20,7 +20,7 @@
 //!    collapse multiplier `λ(s)` and its mechanism.
 //!
 //! `λ(s)` is computed at `steps + 1` equally spaced settlements from 0 to the largest; `s = 0` is
-//! the plain limit analysis of the undeformed structure (the same call, bit for bit). The
+//! the plain limit analysis of the undeformed structure (the same LP with the same options, equal bit for bit). The
 //! settlement at which `λ` reaches zero (the structure can no longer carry its own weight) is
 //! bracketed from the curve (λ is allowed to go negative: the live load, reversed, that would be
 //! needed) and refined by the Illinois variant of regula falsi to `root_tolerance` (1e-6 m).
@@ -577,15 +577,10 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
             release_fixed(&mut dst);
         }
         let map = KinematicMap::new(&dst);
-        let sol = if i == 0 {
-            // The plain limit analysis, exactly.
-            solves += 1;
-            let r = solve_limit(&dst, &map, &opts.solver)?;
-            iterations += r.iterations;
-            r
-        } else {
-            warm.solve(&dst, &map)?
-        };
+        // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
+        // columns, same options, no starting basis), so λ(0) is the plain limit analysis
+        // exactly, and its basis starts the next step.
+        let sol = warm.solve(&dst, &map)?;
         values.push(signed_lambda(&sol));
         let closing = closing_joints(&dst, &map, &sol.mechanism);
         let hinges = if sol.mechanism.is_empty() {

@@ -20,8 +20,8 @@
 //!    collapse multiplier `λ(s)` and its mechanism.
 //!
 //! `λ(s)` is computed at `steps + 1` equally spaced settlements from 0 to the largest; `s = 0` is
-//! the plain limit analysis of the undeformed structure (the same LP with the same options, equal bit for bit). The
-//! settlement at which `λ` reaches zero (the structure can no longer carry its own weight) is
+//! the plain limit analysis of the undeformed structure (the same LP with the same options,
+//! equal bit for bit). The settlement at which `λ` reaches zero (the structure can no longer carry its own weight) is
 //! bracketed from the curve (λ is allowed to go negative: the live load, reversed, that would be
 //! needed) and refined by the Illinois variant of regula falsi to `root_tolerance` (1e-6 m).
 //!

@@ -107,7 +107,7 @@ fn summary(st: &voussoir::Structure, r: &CapacityResult) -> String {
             f.max_relative_deviation * 100.0
         );
     }
-    let _ = writeln!(s, "{:>12}  {:>12}  {}", "s (cm)", "λ", "valid");
+    let _ = writeln!(s, "{:>12}  {:>12}  valid", "s (cm)", "λ");
     let every = (r.curve.len() / 20).max(1);
     for (i, p) in r.curve.iter().enumerate() {
         if i % every != 0 && i + 1 != r.curve.len() {

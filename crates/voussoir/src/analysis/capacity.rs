@@ -243,7 +243,7 @@ pub struct SettlementPath {
 impl SettlementPath {
     pub fn new(st: &Structure, solver: &SolverOptions) -> Result<SettlementPath> {
         let mag = settlement_magnitude(st);
-        if !(mag > 0.0) || !mag.is_finite() {
+        if !(mag.is_finite() && mag > 0.0) {
             return Err(Error::Request(
                 "capacity analysis needs a settlement: no support has a prescribed motion".into(),
             ));
@@ -524,7 +524,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
             "a capacity curve needs at least one step".into(),
         ));
     }
-    if !(opts.root_tolerance > 0.0) {
+    if opts.root_tolerance.is_nan() || opts.root_tolerance <= 0.0 {
         return Err(Error::Request("the root tolerance must be positive".into()));
     }
     if !st.has_live_loads() {

@@ -71,7 +71,7 @@ impl Control {
             return Err(Error::Request("the control point must be finite".into()));
         }
         let n = geometry::norm(direction);
-        if !(n > 0.0) || !n.is_finite() {
+        if !n.is_finite() || n <= 0.0 {
             return Err(Error::Request(
                 "the control direction must be a non-zero vector".into(),
             ));

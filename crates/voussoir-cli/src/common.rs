@@ -231,12 +231,19 @@ impl OutArgs {
             voussoir_io::write_atomic(path, json.as_bytes())?;
         }
         if self.json && self.output.is_none() {
-            print!("{json}");
+            out(&json);
         } else {
-            print!("{}", summary());
+            out(&summary());
         }
         Ok(())
     }
+}
+
+/// Write to stdout; a closed pipe (`voussoir … | head`) ends the output quietly.
+pub fn out(text: &str) {
+    use std::io::Write;
+    let mut o = std::io::stdout().lock();
+    let _ = o.write_all(text.as_bytes()).and_then(|_| o.flush());
 }
 
 fn hinge_list(st: &Structure, hinges: &[voussoir::result::Hinge]) -> String {

@@ -168,7 +168,7 @@ fn write(model: &Model, out: &Output) -> Result<(), Fail> {
             voussoir_io::write_atomic(p, json.as_bytes())?;
             eprintln!("wrote {} ({} blocks, {} supports)", p.display(), model.blocks.len(), model.supports.len());
         }
-        None => print!("{json}"),
+        None => crate::common::out(&json),
     }
     Ok(())
 }

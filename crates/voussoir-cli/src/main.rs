@@ -7,12 +7,13 @@ mod draw_args;
 mod gen;
 mod import;
 mod incremental;
+mod tilt;
 mod plot;
 mod sweep;
 
 use clap::{Parser, Subcommand};
 use common::{Fail, ModelArgs, OutArgs, SettleArgs};
-use voussoir::analysis::{limit, settle};
+use voussoir::analysis::settle;
 
 #[derive(Parser)]
 #[command(
@@ -64,6 +65,9 @@ enum Command {
         #[command(flatten)]
         draw: draw_args::DrawArgs,
     },
+    /// Tilting-table analysis: the critical tilt angle (degrees) at which the structure
+    /// collapses when its base is tilted (gravity rotated).
+    Tilt(tilt::TiltArgs),
     /// Load capacity after a settlement: λ against the settlement (limit analysis on the
     /// deformed geometry), the settlement at which λ reaches zero, validity of each step.
     Capacity(capacity::CapacityArgs),
@@ -84,7 +88,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Bench(a) => bench::run(a),
         Command::Limit { model, out, draw } => {
             let (st, opts) = model.structure(None)?;
-            let r = limit(&st, &opts)?;
+            let r = model.limit(&st, &opts)?;
             draw.emit_limit(&r, &model.model)?;
             out.emit(&r, || common::limit_summary(&st, &r))
         }
@@ -97,6 +101,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Capacity(a) => capacity::run(a),
         Command::Incremental(a) => incremental::run(a),
         Command::Plot(a) => plot::run(a),
+        Command::Tilt(a) => tilt::run(a),
     }
 }
 

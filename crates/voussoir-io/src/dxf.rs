@@ -277,7 +277,12 @@ fn collect(drawing: &Drawing, ignored: &mut BTreeMap<String, usize>) -> Result<V
             }
             other => {
                 let name = format!("{other:?}");
-                let name = name.split(['(', ' ', '{']).next().unwrap_or("entity").to_string();
+                let name = match name.split(['(', ' ', '{']).next().unwrap_or("entity") {
+                    "ModelPoint" => "POINT".to_string(),
+                    "Face3D" => "3DFACE".to_string(),
+                    "Solid3D" => "3DSOLID".to_string(),
+                    other => other.to_ascii_uppercase(),
+                };
                 *ignored.entry(name).or_default() += 1;
             }
         }

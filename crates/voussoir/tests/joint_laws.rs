@@ -315,3 +315,44 @@ fn non_associative_friction() {
         }
     }
 }
+
+#[test]
+fn two_voussoir_arch_slides_below_the_hand_threshold() {
+    // Two chord-sided voussoirs (intrados radius 1, extrados 1.5): each half is the triangle
+    // (O, (−Re, 0), (0, Re)) minus (O, (−Ri, 0), (0, Ri)), centroid at x̄ = (Re³ − Ri³)/(3(Re² − Ri²))
+    // from the axis. The only joints are the horizontal springings and the vertical crown joint
+    // (no shear there, by symmetry). Moment equilibrium of a half about the inner springing
+    // corner with the crown thrust at the extrados gives the least thrust
+    // H = (W/2)(Ri − x̄)/Re, so the arch stands iff μ ≥ (Ri − x̄)/Re.
+    let (ri, re) = (1.0f64, 1.5f64);
+    let xbar = (re.powi(3) - ri.powi(3)) / (3.0 * (re * re - ri * ri));
+    let mu_star = (ri - xbar) / re;
+    let stands = |mu: f64| {
+        let mut m = arch(&ArchSpec {
+            radius: ri,
+            thickness: re - ri,
+            voussoirs: 2,
+            live: LiveLoad::None,
+            ..ArchSpec::default()
+        })
+        .unwrap();
+        m.materials.insert(
+            "default".into(),
+            Material {
+                friction: Some(mu),
+                ..Material::default()
+            },
+        );
+        let st = Structure::new(&m, BuildOptions::default()).unwrap();
+        settle(&st, &SolverOptions::default()).unwrap().status == SettlementStatus::Mechanism
+    };
+    assert!((mu_star - 0.244444).abs() < 1e-6);
+    assert!(
+        stands(mu_star * (1.0 + 1e-6)),
+        "should stand just above μ* = {mu_star}"
+    );
+    assert!(
+        !stands(mu_star * (1.0 - 1e-6)),
+        "should slide just below μ* = {mu_star}"
+    );
+}

@@ -57,12 +57,25 @@ pub struct ModelArgs {
     /// How to read a `.dxf` model.
     #[command(flatten)]
     pub dxf: crate::import::DxfArgs,
+    /// Settlement analyses: solve both LPs (default), or only the force LP (`force-only`: 3 rows
+    /// per block, the mechanism from its duals, the certificate from both sides; for large
+    /// models, with --method clarabel).
+    #[arg(long, value_enum, default_value = "both")]
+    pub settlement_form: FormArg,
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
 pub enum CrushingArg {
     Linear,
     Conic,
+}
+
+/// Which LPs a settlement analysis solves.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
+pub enum FormArg {
+    #[default]
+    Both,
+    ForceOnly,
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
@@ -124,6 +137,14 @@ impl SettleArgs {
 }
 
 impl ModelArgs {
+    /// The settlement form chosen by `--settlement-form`.
+    pub fn settlement_form(&self) -> voussoir::analysis::settlement::SettlementForm {
+        match self.settlement_form {
+            FormArg::Both => voussoir::analysis::settlement::SettlementForm::Both,
+            FormArg::ForceOnly => voussoir::analysis::settlement::SettlementForm::ForceOnly,
+        }
+    }
+
     pub fn solver(&self) -> SolverOptions {
         SolverOptions {
             method: match self.method {

@@ -94,7 +94,10 @@ fn run(cli: Cli) -> Result<(), Fail> {
         }
         Command::Settle { model, settle: s, out, draw } => {
             let (st, opts) = model.structure(Some(&s))?;
-            let r = settle(&st, &opts)?;
+            let r = match model.settlement_form() {
+                voussoir::analysis::settlement::SettlementForm::Both => settle(&st, &opts)?,
+                form => voussoir::analysis::settlement::settle_with(&st, &opts, form)?,
+            };
             draw.emit_settlement(&r, &model.model)?;
             out.emit(&r, || common::settle_summary(&st, &r))
         }

@@ -18,7 +18,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::io::IsTerminal;
 use std::path::PathBuf;
-use voussoir::analysis::settlement::{settle_with, SettlementForm};
+use voussoir::analysis::settlement::settle_with;
 use voussoir::result::JointState;
 use voussoir::{BuildOptions, Model, Structure};
 
@@ -178,7 +178,7 @@ fn analyse(model: &Model, a: &SweepArgs, kind: &Kind, k: usize, base: &[[f64; 3]
         },
     )?;
     let opts = a.model.solver();
-    let r = settle_with(&st, &opts, SettlementForm::Both)?;
+    let r = settle_with(&st, &opts, a.model.settlement_form())?;
     let max_displacement = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.u.hypot(b.v)));
     let max_rotation = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.theta.abs()));
     Ok(SweepRecord {

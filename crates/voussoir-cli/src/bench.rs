@@ -18,8 +18,8 @@ use std::fmt::Write as _;
 use std::time::Instant;
 use voussoir::analysis::limit::{limit_result, LimitSolution, LimitStatus};
 use voussoir::analysis::settlement::{
-    kinematic_violation, settlement_force_program, settlement_from_force_solution, settlement_result_checked,
-    SettlementStatus,
+    kinematic_violation, settlement_force_program, settlement_from_force_solution,
+    settlement_result_checked, SettlementStatus,
 };
 use voussoir::discretize::KinematicMap;
 use voussoir::generate::{self, LiveLoad, WallSpec};
@@ -326,7 +326,9 @@ pub fn bench_limit(n: usize, a: &BenchArgs) -> Result<Row, Fail> {
     let map = KinematicMap::new(&st);
     let dead = st.load_vector(false);
     let live = st.load_vector(true);
-    let fp = ForceProgram::new(&map, &dead, Some(&live), Direction::Maximise, |_| (0.0, 0.0));
+    let fp = ForceProgram::new(&map, &dead, Some(&live), Direction::Maximise, |_| {
+        (0.0, 0.0)
+    });
     let t_assemble = secs(t);
     let t = Instant::now();
     let sol = solve_force(&map, &fp, a.method, &opts)?;

@@ -3,7 +3,9 @@
 use crate::common::Fail;
 use clap::{Args, Subcommand, ValueEnum};
 use std::path::PathBuf;
-use voussoir::generate::{self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec};
+use voussoir::generate::{
+    self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec,
+};
 use voussoir::Model;
 
 #[derive(Subcommand)]
@@ -166,7 +168,12 @@ fn write(model: &Model, out: &Output) -> Result<(), Fail> {
     match &out.output {
         Some(p) => {
             voussoir_io::write_atomic(p, json.as_bytes())?;
-            eprintln!("wrote {} ({} blocks, {} supports)", p.display(), model.blocks.len(), model.supports.len());
+            eprintln!(
+                "wrote {} ({} blocks, {} supports)",
+                p.display(),
+                model.blocks.len(),
+                model.supports.len()
+            );
         }
         None => crate::common::out(&json),
     }
@@ -178,7 +185,9 @@ pub fn run(g: Gen) -> Result<(), Fail> {
         Gen::Arch(a) => {
             let shape = match a.shape {
                 ShapeArg::Semicircular => ArchShape::Semicircular,
-                ShapeArg::Segmental => ArchShape::Segmental { half_angle: a.half_angle.to_radians() },
+                ShapeArg::Segmental => ArchShape::Segmental {
+                    half_angle: a.half_angle.to_radians(),
+                },
                 ShapeArg::Pointed => ArchShape::Pointed { offset: a.offset },
             };
             let m = generate::arch(&ArchSpec {
@@ -220,9 +229,17 @@ pub fn run(g: Gen) -> Result<(), Fail> {
                 .split(',')
                 .map(|x| x.trim().parse::<f64>())
                 .collect::<Result<_, _>>()
-                .map_err(|_| Fail(format!("--unit {}: expected LENGTH,HEIGHT in metres", w.unit)))?;
+                .map_err(|_| {
+                    Fail(format!(
+                        "--unit {}: expected LENGTH,HEIGHT in metres",
+                        w.unit
+                    ))
+                })?;
             let [ul, uh] = unit[..] else {
-                return Err(Fail(format!("--unit {}: expected LENGTH,HEIGHT in metres", w.unit)));
+                return Err(Fail(format!(
+                    "--unit {}: expected LENGTH,HEIGHT in metres",
+                    w.unit
+                )));
             };
             let m = generate::wall(&WallSpec {
                 courses: w.courses,
@@ -294,7 +311,12 @@ impl FacadeArgs {
         let element = match e[..] {
             [l] => [l, l / 2.0],
             [l, h] => [l, h],
-            _ => return Err(Fail(format!("--element {}: expected LENGTH[,HEIGHT]", self.element))),
+            _ => {
+                return Err(Fail(format!(
+                    "--element {}: expected LENGTH[,HEIGHT]",
+                    self.element
+                )))
+            }
         };
         let mesh = match self.mesh {
             FacadeMeshArg::Grid => FacadeMesh::Grid,
@@ -312,7 +334,9 @@ impl FacadeArgs {
         if !self.openings.is_empty() {
             s.openings.clear();
             for o in &self.openings {
-                let (kind, rest) = o.split_once(':').ok_or_else(|| Fail(format!("--opening {o}: expected KIND:NUMBERS")))?;
+                let (kind, rest) = o
+                    .split_once(':')
+                    .ok_or_else(|| Fail(format!("--opening {o}: expected KIND:NUMBERS")))?;
                 let v = nums("--opening", rest)?;
                 s.openings.push(match (kind, &v[..]) {
                     ("door", [x, w, sp]) => Opening::PointedDoor { x: *x, width: *w, springing: *sp, offset: 0.5, ring: 0.4 },

@@ -82,7 +82,11 @@ impl DxfArgs {
 }
 
 /// Build a structure, naming the DXF entity of any block an error mentions.
-pub fn structure_of(model: &Model, opts: BuildOptions, report: Option<&ImportReport>) -> Result<Structure, Fail> {
+pub fn structure_of(
+    model: &Model,
+    opts: BuildOptions,
+    report: Option<&ImportReport>,
+) -> Result<Structure, Fail> {
     Structure::new(model, opts).map_err(|e| {
         let msg = e.to_string();
         Fail(report.map_or(msg.clone(), |r| r.annotate(&msg)))
@@ -106,7 +110,13 @@ pub struct ImportArgs {
 pub fn run(a: ImportArgs) -> Result<(), Fail> {
     let (model, rep) = read_dxf(&a.drawing, &a.dxf.options())?;
     // Validate now (overlaps, isolated blocks), so that a bad drawing fails at import.
-    let st = structure_of(&model, BuildOptions { tolerance: a.tolerance }, Some(&rep))?;
+    let st = structure_of(
+        &model,
+        BuildOptions {
+            tolerance: a.tolerance,
+        },
+        Some(&rep),
+    )?;
     let json = voussoir_io::files::to_json(&model)?;
     match &a.output {
         Some(p) => voussoir_io::write_atomic(p, json.as_bytes())?,

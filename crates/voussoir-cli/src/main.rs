@@ -1,15 +1,15 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
-mod capacity;
 mod bench;
+mod capacity;
 mod common;
 mod draw_args;
 mod gen;
 mod import;
 mod incremental;
-mod tilt;
 mod plot;
 mod sweep;
+mod tilt;
 
 use clap::{Parser, Subcommand};
 use common::{Fail, ModelArgs, OutArgs, SettleArgs};
@@ -92,7 +92,12 @@ fn run(cli: Cli) -> Result<(), Fail> {
             draw.emit_limit(&r, &model.model)?;
             out.emit(&r, || common::limit_summary(&st, &r))
         }
-        Command::Settle { model, settle: s, out, draw } => {
+        Command::Settle {
+            model,
+            settle: s,
+            out,
+            draw,
+        } => {
             let (st, opts) = model.structure(Some(&s))?;
             let r = match model.settlement_form() {
                 voussoir::analysis::settlement::SettlementForm::Both => settle(&st, &opts)?,

@@ -134,11 +134,22 @@ fn parse_shard(s: &str) -> Result<(usize, usize), Fail> {
 }
 
 /// The motions of task `k` from the base motions.
-fn motions_of(kind: &Kind, k: usize, base: &[[f64; 3]], cov: f64, seed: u64) -> (f64, Vec<[f64; 3]>) {
+fn motions_of(
+    kind: &Kind,
+    k: usize,
+    base: &[[f64; 3]],
+    cov: f64,
+    seed: u64,
+) -> (f64, Vec<[f64; 3]>) {
     match *kind {
         Kind::Scale(n) => {
             let s = (k + 1) as f64 / n as f64;
-            (s, base.iter().map(|m| [m[0] * s, m[1] * s, m[2] * s]).collect())
+            (
+                s,
+                base.iter()
+                    .map(|m| [m[0] * s, m[1] * s, m[2] * s])
+                    .collect(),
+            )
         }
         Kind::Direction(n) => {
             let a = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
@@ -165,7 +176,13 @@ fn motions_of(kind: &Kind, k: usize, base: &[[f64; 3]], cov: f64, seed: u64) -> 
     }
 }
 
-fn analyse(model: &Model, a: &SweepArgs, kind: &Kind, k: usize, base: &[[f64; 3]]) -> Result<SweepRecord, Fail> {
+fn analyse(
+    model: &Model,
+    a: &SweepArgs,
+    kind: &Kind,
+    k: usize,
+    base: &[[f64; 3]],
+) -> Result<SweepRecord, Fail> {
     let (parameter, motions) = motions_of(kind, k, base, a.cov, a.seed);
     let mut m = model.clone();
     for (s, mo) in m.supports.iter_mut().zip(&motions) {
@@ -200,7 +217,11 @@ fn analyse(model: &Model, a: &SweepArgs, kind: &Kind, k: usize, base: &[[f64; 3]
         certified: r.certificate.as_ref().is_some_and(|c| c.ok),
         hinges: r.hinges.len(),
         hinge_joints: r.hinges.iter().map(|h| h.joint).collect(),
-        open_joints: r.joints.iter().filter(|j| j.state == JointState::Open).count(),
+        open_joints: r
+            .joints
+            .iter()
+            .filter(|j| j.state == JointState::Open)
+            .count(),
         max_displacement,
         max_rotation,
         motions: m
@@ -255,7 +276,11 @@ fn jsonl(records: &[SweepRecord]) -> Result<String, Fail> {
     Ok(s)
 }
 
-fn write_outputs(records: &[SweepRecord], jl: &Option<PathBuf>, cv: &Option<PathBuf>) -> Result<(), Fail> {
+fn write_outputs(
+    records: &[SweepRecord],
+    jl: &Option<PathBuf>,
+    cv: &Option<PathBuf>,
+) -> Result<(), Fail> {
     if let Some(p) = jl {
         voussoir_io::write_atomic(p, jsonl(records)?.as_bytes())?;
     }
@@ -268,12 +293,18 @@ fn write_outputs(records: &[SweepRecord], jl: &Option<PathBuf>, cv: &Option<Path
 }
 
 pub fn run(a: SweepArgs) -> Result<(), Fail> {
-    let modes = [a.steps.is_some(), a.directions.is_some(), a.samples.is_some()]
-        .iter()
-        .filter(|x| **x)
-        .count();
+    let modes = [
+        a.steps.is_some(),
+        a.directions.is_some(),
+        a.samples.is_some(),
+    ]
+    .iter()
+    .filter(|x| **x)
+    .count();
     if modes != 1 {
-        return Err(Fail("give exactly one of --steps, --directions, --samples".into()));
+        return Err(Fail(
+            "give exactly one of --steps, --directions, --samples".into(),
+        ));
     }
     let kind = match (a.steps, a.directions, a.samples) {
         (Some(n), _, _) => Kind::Scale(n),
@@ -288,7 +319,10 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         return Err(Fail("the number of analyses must be at least 1".into()));
     }
     if !(a.cov.is_finite() && a.cov >= 0.0) {
-        return Err(Fail(format!("--cov {}: must be a finite number ≥ 0", a.cov)));
+        return Err(Fail(format!(
+            "--cov {}: must be a finite number ≥ 0",
+            a.cov
+        )));
     }
     let (mut model, _) = a.model.dxf.read(&a.model.model)?;
     a.model.override_materials(&mut model)?;
@@ -317,9 +351,9 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         .map_err(|e| Fail(format!("cannot start worker threads: {e}")))?;
     let bar = if std::io::stderr().is_terminal() {
         let b = indicatif::ProgressBar::new(tasks.len() as u64);
-        if let Ok(style) =
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} analyses, {elapsed} elapsed, ETA {eta}")
-        {
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{bar:40} {pos}/{len} analyses, {elapsed} elapsed, ETA {eta}",
+        ) {
             b.set_style(style);
         }
         Some(b)
@@ -361,24 +395,44 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
 pub fn merge(a: MergeArgs) -> Result<(), Fail> {
     let mut records: Vec<SweepRecord> = Vec::new();
     for p in &a.inputs {
-        let text = std::fs::read_to_string(p).map_err(|e| Fail(format!("cannot read {}: {e}", p.display())))?;
-        for (i, line) in text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty()) {
-            let r: SweepRecord = serde_json::from_str(line)
-                .map_err(|e| Fail(format!("{}:{}: not a sweep record: {e}", p.display(), i + 1)))?;
+        let text = std::fs::read_to_string(p)
+            .map_err(|e| Fail(format!("cannot read {}: {e}", p.display())))?;
+        for (i, line) in text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty())
+        {
+            let r: SweepRecord = serde_json::from_str(line).map_err(|e| {
+                Fail(format!(
+                    "{}:{}: not a sweep record: {e}",
+                    p.display(),
+                    i + 1
+                ))
+            })?;
             records.push(r);
         }
     }
     records.sort_by_key(|r| r.index);
     if let Some(w) = records.windows(2).find(|w| w[0].index == w[1].index) {
-        return Err(Fail(format!("task {} appears in more than one shard", w[0].index)));
+        return Err(Fail(format!(
+            "task {} appears in more than one shard",
+            w[0].index
+        )));
     }
     if let Some(last) = records.last() {
         let missing = last.index + 1 - records.len();
         if missing > 0 {
-            eprintln!("warning: {missing} task(s) below index {} are missing", last.index);
+            eprintln!(
+                "warning: {missing} task(s) below index {} are missing",
+                last.index
+            );
         }
     }
     write_outputs(&records, &a.jsonl, &a.csv)?;
-    eprintln!("merged {} records from {} file(s)", records.len(), a.inputs.len());
+    eprintln!(
+        "merged {} records from {} file(s)",
+        records.len(),
+        a.inputs.len()
+    );
     Ok(())
 }

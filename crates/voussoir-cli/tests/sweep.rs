@@ -58,7 +58,10 @@ fn hundred_magnitudes_match_hundred_single_runs() {
         csv.to_str().unwrap(),
     ]);
     let msg = String::from_utf8_lossy(&o.stderr);
-    assert!(msg.contains("100 analyses") && msg.contains("100 certified"), "{msg}");
+    assert!(
+        msg.contains("100 analyses") && msg.contains("100 certified"),
+        "{msg}"
+    );
     // One task per core: on this 2-core machine the sweep runs on both.
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     assert!(msg.contains(&format!("on {cores} threads")), "{msg}");
@@ -76,7 +79,10 @@ fn hundred_magnitudes_match_hundred_single_runs() {
             r["work_dead_loads"].as_f64().unwrap(),
             v["work_dead_loads"].as_f64().unwrap(),
         );
-        assert!((a - b).abs() <= 1e-9 * b.abs(), "step {k}: sweep {a}, single {b}");
+        assert!(
+            (a - b).abs() <= 1e-9 * b.abs(),
+            "step {k}: sweep {a}, single {b}"
+        );
         let hinges: Vec<u64> = v["hinges"]
             .as_array()
             .unwrap()
@@ -180,11 +186,20 @@ fn shards_merge_into_the_whole_sweep_and_samples_repeat_with_their_seed() {
         std::fs::read(p("mc2.jsonl")).unwrap()
     );
     let mc = lines(Path::new(&p("mc1.jsonl")));
-    let u: Vec<f64> = mc.iter().map(|r| r["motions"]["right"][0].as_f64().unwrap()).collect();
+    let u: Vec<f64> = mc
+        .iter()
+        .map(|r| r["motions"]["right"][0].as_f64().unwrap())
+        .collect();
     assert!(u.windows(2).any(|w| w[0] != w[1]), "samples differ: {u:?}");
     // Duplicate shards are refused in one line.
-    let o = bin().args(["merge", &p("s0.jsonl"), &p("s0.jsonl")]).output().unwrap();
+    let o = bin()
+        .args(["merge", &p("s0.jsonl"), &p("s0.jsonl")])
+        .output()
+        .unwrap();
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
-    assert!(e.contains("more than one shard") && e.lines().count() == 1, "{e}");
+    assert!(
+        e.contains("more than one shard") && e.lines().count() == 1,
+        "{e}"
+    );
 }

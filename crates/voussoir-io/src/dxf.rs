@@ -59,7 +59,9 @@ impl std::str::FromStr for Units {
             "mm" | "millimetres" | "millimeters" => Ok(Units::Mm),
             "cm" | "centimetres" | "centimeters" => Ok(Units::Cm),
             "m" | "metres" | "meters" => Ok(Units::M),
-            _ => Err(IoError(format!("unknown drawing unit '{s}': expected mm, cm or m"))),
+            _ => Err(IoError(format!(
+                "unknown drawing unit '{s}': expected mm, cm or m"
+            ))),
         }
     }
 }
@@ -136,7 +138,11 @@ impl ImportReport {
             let digits: String = tail.chars().take_while(|c| c.is_ascii_digit()).collect();
             rest = &tail[digits.len()..];
             out.push_str(&digits);
-            if let Some(e) = digits.parse::<usize>().ok().and_then(|i| self.block_entities.get(i)) {
+            if let Some(e) = digits
+                .parse::<usize>()
+                .ok()
+                .and_then(|i| self.block_entities.get(i))
+            {
                 out.push_str(&format!(" ({e})"));
             }
         }
@@ -157,7 +163,11 @@ impl ImportReport {
             self.merge_tolerance
         );
         if !self.ignored.is_empty() {
-            let list: Vec<String> = self.ignored.iter().map(|(k, n)| format!("{n} {k}")).collect();
+            let list: Vec<String> = self
+                .ignored
+                .iter()
+                .map(|(k, n)| format!("{n} {k}"))
+                .collect();
             s.push_str(&format!("; ignored: {}", list.join(", ")));
         }
         s
@@ -219,7 +229,10 @@ fn expand_bulges(v: &[(Point, f64)], closed: bool) -> Vec<Point> {
     out
 }
 
-fn collect(drawing: &Drawing, ignored: &mut BTreeMap<String, usize>) -> Result<Vec<RawPolygon>, IoError> {
+fn collect(
+    drawing: &Drawing,
+    ignored: &mut BTreeMap<String, usize>,
+) -> Result<Vec<RawPolygon>, IoError> {
     let mut out = Vec::new();
     for e in drawing.entities() {
         if e.common.is_in_paper_space {
@@ -347,7 +360,11 @@ fn units_of(drawing: &Drawing, over: Option<Units>) -> Result<Units, IoError> {
 }
 
 /// Turn a loaded drawing into a model.
-pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Result<(Model, ImportReport), IoError> {
+pub fn drawing_to_model(
+    drawing: &Drawing,
+    opts: &DxfOptions,
+    name: &str,
+) -> Result<(Model, ImportReport), IoError> {
     if !(opts.unit_weight.is_finite() && opts.unit_weight >= 0.0) {
         return Err(IoError(format!(
             "unit weight {} must be a finite number ≥ 0",
@@ -355,11 +372,16 @@ pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Res
         )));
     }
     if !(opts.width.is_finite() && opts.width > 0.0) {
-        return Err(IoError(format!("width {} must be a positive number", opts.width)));
+        return Err(IoError(format!(
+            "width {} must be a positive number",
+            opts.width
+        )));
     }
     if let Some(t) = opts.merge_tolerance {
         if !(t.is_finite() && t >= 0.0) {
-            return Err(IoError(format!("merge tolerance {t} must be a finite number ≥ 0")));
+            return Err(IoError(format!(
+                "merge tolerance {t} must be a finite number ≥ 0"
+            )));
         }
     }
     let units = units_of(drawing, opts.units)?;
@@ -394,11 +416,21 @@ pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Res
             *p = [p[0] * scale, p[1] * scale];
         }
     }
-    let mut all = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    let mut all = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
     for r in &raw {
         if !r.points.is_empty() {
             let b = bbox(&r.points);
-            all = [all[0].min(b[0]), all[1].min(b[1]), all[2].max(b[2]), all[3].max(b[3])];
+            all = [
+                all[0].min(b[0]),
+                all[1].min(b[1]),
+                all[2].max(b[2]),
+                all[3].max(b[3]),
+            ];
         }
     }
     let diag = (all[2] - all[0]).hypot(all[3] - all[1]);
@@ -455,7 +487,10 @@ pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Res
         let b = bbox(&p);
         let size = (b[2] - b[0]).max(b[3] - b[1]);
         if signed_area(&p).abs() <= check_tol * size {
-            return Err(IoError(format!("DXF entity {}: the polyline encloses no area", r.what)));
+            return Err(IoError(format!(
+                "DXF entity {}: the polyline encloses no area",
+                r.what
+            )));
         }
         if signed_area(&p) < 0.0 {
             p.reverse();
@@ -487,7 +522,11 @@ pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Res
         let h = h.trim().trim_start_matches("0x").to_ascii_uppercase();
         match raw.iter().position(|r| r.handle == h) {
             Some(k) => is_support[k] = true,
-            None => return Err(IoError(format!("no polyline with handle {h} in the drawing"))),
+            None => {
+                return Err(IoError(format!(
+                    "no polyline with handle {h} in the drawing"
+                )))
+            }
         }
     }
     let chose_default = opts.support_layers.is_empty() && opts.support_handles.is_empty();
@@ -533,7 +572,11 @@ pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Res
         let many = list.len() > 1;
         for (n, k) in list.into_iter().enumerate() {
             supports.push(Support {
-                name: if many { format!("{name}-{n}") } else { name.clone() },
+                name: if many {
+                    format!("{name}-{n}")
+                } else {
+                    name.clone()
+                },
                 polygon: cleaned[k].clone(),
                 motion: [0.0; 3],
                 connection: Default::default(),
@@ -600,23 +643,30 @@ pub fn drawing_to_model(drawing: &Drawing, opts: &DxfOptions, name: &str) -> Res
 
 /// Read a DXF file (ASCII or binary) into a model.
 pub fn read_dxf(path: &Path, opts: &DxfOptions) -> Result<(Model, ImportReport), IoError> {
-    let drawing =
-        Drawing::load_file(path).map_err(|e| IoError(format!("cannot read {} as DXF: {e}", path.display())))?;
+    let drawing = Drawing::load_file(path)
+        .map_err(|e| IoError(format!("cannot read {} as DXF: {e}", path.display())))?;
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().to_string())
         .unwrap_or_default();
-    drawing_to_model(&drawing, opts, &name).map_err(|e| IoError(format!("{}: {}", path.display(), e.0)))
+    drawing_to_model(&drawing, opts, &name)
+        .map_err(|e| IoError(format!("{}: {}", path.display(), e.0)))
 }
 
 /// Read DXF text or bytes already in memory.
-pub fn parse_dxf(bytes: &[u8], opts: &DxfOptions, name: &str) -> Result<(Model, ImportReport), IoError> {
+pub fn parse_dxf(
+    bytes: &[u8],
+    opts: &DxfOptions,
+    name: &str,
+) -> Result<(Model, ImportReport), IoError> {
     let mut cursor = std::io::Cursor::new(bytes);
-    let drawing = Drawing::load(&mut cursor).map_err(|e| IoError(format!("cannot read {name} as DXF: {e}")))?;
+    let drawing = Drawing::load(&mut cursor)
+        .map_err(|e| IoError(format!("cannot read {name} as DXF: {e}")))?;
     drawing_to_model(&drawing, opts, name)
 }
 
 /// Whether a path names a DXF file (by its extension).
 pub fn is_dxf(path: &Path) -> bool {
-    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("dxf"))
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("dxf"))
 }

@@ -35,10 +35,20 @@ pub fn parse_model(text: &str) -> Result<Model, IoError> {
 
 /// Write `bytes` to `path` atomically (temporary file + rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().ok_or_else(|| IoError(format!("{} is not a file path", path.display())))?;
-    let tmp = dir.join(format!(".{}.tmp{}", name.to_string_lossy(), std::process::id()));
-    std::fs::write(&tmp, bytes).map_err(|e| IoError(format!("cannot write {}: {e}", path.display())))?;
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .ok_or_else(|| IoError(format!("{} is not a file path", path.display())))?;
+    let tmp = dir.join(format!(
+        ".{}.tmp{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    std::fs::write(&tmp, bytes)
+        .map_err(|e| IoError(format!("cannot write {}: {e}", path.display())))?;
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         IoError(format!("cannot write {}: {e}", path.display()))
@@ -47,7 +57,8 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
 
 /// Pretty JSON with a trailing newline (deterministic for the same value).
 pub fn to_json<T: serde::Serialize>(value: &T) -> Result<String, IoError> {
-    let mut s = serde_json::to_string_pretty(value).map_err(|e| IoError(format!("cannot serialise: {e}")))?;
+    let mut s = serde_json::to_string_pretty(value)
+        .map_err(|e| IoError(format!("cannot serialise: {e}")))?;
     s.push('\n');
     Ok(s)
 }

@@ -1,8 +1,8 @@
 //! File formats and drawings for voussoir: JSON models and results, atomic output files.
 //! (DXF import, SVG/PNG drawings and HTML reports live in their own modules.)
 
-pub mod dxf;
 pub mod draw;
+pub mod dxf;
 pub mod files;
 
 pub use files::{read_model, write_atomic, IoError};

@@ -45,7 +45,10 @@ fn mm() -> DxfOptions {
 /// blocks rest on the support (an admissible mechanism, so an upper bound).
 fn whole_overturning(st: &Structure) -> f64 {
     let sp = &st.supports[0];
-    let top = sp.polygon.iter().fold(f64::NEG_INFINITY, |m, p| m.max(p[1]));
+    let top = sp
+        .polygon
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, p| m.max(p[1]));
     let mut toe = [f64::NEG_INFINITY, top];
     for j in &st.joints {
         for p in &j.points {
@@ -65,7 +68,11 @@ fn whole_overturning(st: &Structure) -> f64 {
 fn check(file: &str, blocks: usize, joints: usize) -> Option<(Model, Structure, f64)> {
     let p = lact3(file)?;
     let (m, rep) = read_dxf(&p, &mm()).unwrap();
-    assert_eq!(m.blocks.len() + m.supports.len(), blocks, "{file}: polygons incl. base");
+    assert_eq!(
+        m.blocks.len() + m.supports.len(),
+        blocks,
+        "{file}: polygons incl. base"
+    );
     assert_eq!(m.supports.len(), 1, "{file}: one base");
     assert_eq!(m.supports[0].name, "base");
     assert_eq!(rep.block_entities.len(), m.blocks.len());
@@ -74,7 +81,11 @@ fn check(file: &str, blocks: usize, joints: usize) -> Option<(Model, Structure, 
     let r = limit(&st, &SolverOptions::default()).unwrap();
     assert_eq!(r.status, LimitStatus::Collapse, "{file}");
     let l = r.load_multiplier.unwrap();
-    println!("{file}: {}; joints {}; λ = {l:.6}", rep.summary(), st.joints.len());
+    println!(
+        "{file}: {}; joints {}; λ = {l:.6}",
+        rep.summary(),
+        st.joints.len()
+    );
     Some((m, st, l))
 }
 
@@ -86,7 +97,10 @@ fn lact3_arch_matches_lact3_collapse_angle() {
     assert_eq!(m.blocks.len(), 25);
     // LACT3 gives the angle to 0.01°.
     let theta = l.atan().to_degrees();
-    assert!((theta - 17.10).abs() <= 0.01, "λ = {l}: tilt {theta}°, LACT3: 17.10°");
+    assert!(
+        (theta - 17.10).abs() <= 0.01,
+        "λ = {l}: tilt {theta}°, LACT3: 17.10°"
+    );
 }
 
 #[test]
@@ -154,7 +168,9 @@ fn lw(handle: &str, layer: &str, closed: bool, pts: &[[f64; 2]]) -> String {
 }
 
 fn drawing(insunits: i32, entities: &[String]) -> Vec<u8> {
-    let mut s = format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n{insunits}\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n");
+    let mut s = format!(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n{insunits}\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n"
+    );
     for e in entities {
         s.push_str(e);
     }
@@ -204,10 +220,17 @@ fn open_and_self_intersecting_polylines_are_named_in_one_line() {
         6,
         &[
             base.clone(),
-            lw("2AF", "0", false, &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]),
+            lw(
+                "2AF",
+                "0",
+                false,
+                &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+            ),
         ],
     );
-    let e = parse_dxf(&open, &DxfOptions::default(), "t.dxf").unwrap_err().0;
+    let e = parse_dxf(&open, &DxfOptions::default(), "t.dxf")
+        .unwrap_err()
+        .0;
     assert!(
         e.contains("LWPOLYLINE handle 2AF") && e.contains("open") && !e.contains('\n'),
         "{e}"
@@ -216,16 +239,25 @@ fn open_and_self_intersecting_polylines_are_named_in_one_line() {
         6,
         &[
             base,
-            lw("2B0", "0", true, &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]]),
+            lw(
+                "2B0",
+                "0",
+                true,
+                &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]],
+            ),
         ],
     );
-    let e = parse_dxf(&bow, &DxfOptions::default(), "t.dxf").unwrap_err().0;
+    let e = parse_dxf(&bow, &DxfOptions::default(), "t.dxf")
+        .unwrap_err()
+        .0;
     assert!(
         e.contains("LWPOLYLINE handle 2B0") && e.contains("self-intersecting") && !e.contains('\n'),
         "{e}"
     );
     let none = drawing(6, &[]);
-    let e = parse_dxf(&none, &DxfOptions::default(), "t.dxf").unwrap_err().0;
+    let e = parse_dxf(&none, &DxfOptions::default(), "t.dxf")
+        .unwrap_err()
+        .0;
     assert!(e.contains("no LWPOLYLINE"), "{e}");
     let layer = drawing(6, &[lw("1", "0", true, &rect(0.0, 0.0, 1.0, 1.0))]);
     let opts = DxfOptions {
@@ -261,7 +293,10 @@ fn nearby_vertices_are_merged_and_an_unclosed_but_returning_polyline_is_closed()
     assert_eq!(m.blocks[1].polygon[0], [0.0, 1.0]);
     assert_eq!(m.blocks[1].polygon.len(), 4);
     assert!(m.loads.live.is_empty());
-    assert_eq!(rep.support_entities, vec!["LWPOLYLINE handle C (layer 0)".to_string()]);
+    assert_eq!(
+        rep.support_entities,
+        vec!["LWPOLYLINE handle C (layer 0)".to_string()]
+    );
     let st = Structure::new(&m, BuildOptions::default()).unwrap();
     assert_eq!(st.joints.len(), 2);
     assert_eq!(

@@ -7,10 +7,19 @@ use voussoir::generate::{wall, WallSpec};
 use voussoir::{BuildOptions, Structure};
 
 fn main() {
-    println!("{:>9} {:>9} {:>9} {:>10} {:>12} {:>10}", "bricks", "joints", "points", "generate", "validate+detect", "assemble");
+    println!(
+        "{:>9} {:>9} {:>9} {:>10} {:>12} {:>10}",
+        "bricks", "joints", "points", "generate", "validate+detect", "assemble"
+    );
     for (courses, units) in [(22, 45), (71, 141), (224, 447)] {
         let t0 = Instant::now();
-        let m = wall(&WallSpec { courses, units, unit: [0.25, 0.055], ..WallSpec::default() }).unwrap();
+        let m = wall(&WallSpec {
+            courses,
+            units,
+            unit: [0.25, 0.055],
+            ..WallSpec::default()
+        })
+        .unwrap();
         let t1 = Instant::now();
         let st = Structure::new(&m, BuildOptions::default()).unwrap();
         let t2 = Instant::now();

@@ -39,7 +39,12 @@ pub enum Opening {
         ring: f64,
     },
     /// A round (rose) window of clear `radius` centred at (x, y), ring `ring` thick.
-    Round { x: f64, y: f64, radius: f64, ring: f64 },
+    Round {
+        x: f64,
+        y: f64,
+        radius: f64,
+        ring: f64,
+    },
     /// A rectangular window.
     Rect { x0: f64, y0: f64, x1: f64, y1: f64 },
 }
@@ -198,7 +203,9 @@ fn clip(poly: &[Point], h: Half) -> Vec<Point> {
 
 fn convex_halves(poly: &[Point]) -> Vec<Half> {
     let n = poly.len();
-    (0..n).map(|i| Half::left_of(poly[i], poly[(i + 1) % n])).collect()
+    (0..n)
+        .map(|i| Half::left_of(poly[i], poly[(i + 1) % n]))
+        .collect()
 }
 
 /// `piece ∖ hole` (both convex, counter-clockwise) as disjoint convex pieces.
@@ -439,7 +446,11 @@ fn cut_of(o: &Opening, element: f64) -> Result<Cut> {
                 ..ArchSpec::default()
             })?;
             let shift = |p: &Point| [p[0] + x, p[1] + springing];
-            let voussoirs: Vec<Vec<Point>> = m.blocks.iter().map(|b| b.polygon.iter().map(shift).collect()).collect();
+            let voussoirs: Vec<Vec<Point>> = m
+                .blocks
+                .iter()
+                .map(|b| b.polygon.iter().map(shift).collect())
+                .collect();
             // The lens above the springing: the extrados joint points exactly as the arch
             // generator places them (radial joints at angles stepped to the intrados crown
             // angle), left springing → crown → right springing, closed along the springing line.
@@ -529,7 +540,9 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
     }
     let count = (s.width / ex) * ((s.height + s.gable) / ey);
     if count > 2.0e6 {
-        return Err(bad(format!("about {count:.0} elements: choose a larger element size")));
+        return Err(bad(format!(
+            "about {count:.0} elements: choose a larger element size"
+        )));
     }
     let eps = 1e-9 * (s.width + s.height + s.gable);
     // The model's relative tolerance and, above it, the length under which vertices merge.
@@ -543,7 +556,10 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
             let b = bbox(h);
             if b[0] < 0.0
                 || b[2] > s.width
-                || b[3] > s.height + s.gable * (1.0 - 2.0 * ((b[0] + b[2]) / 2.0 - s.width / 2.0).abs() / s.width)
+                || b[3]
+                    > s.height
+                        + s.gable
+                            * (1.0 - 2.0 * ((b[0] + b[2]) / 2.0 - s.width / 2.0).abs() / s.width)
             {
                 return Err(bad(format!(
                     "opening {o:?} (with its ring) does not fit inside the wall"
@@ -559,7 +575,9 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
                 for b in &cuts[j].holes {
                     let (ba, bb) = (bbox(a), bbox(b));
                     if ba[0] < bb[2] && bb[0] < ba[2] && ba[1] < bb[3] && bb[1] < ba[3] {
-                        return Err(bad(format!("openings {i} and {j} overlap (with their rings)")));
+                        return Err(bad(format!(
+                            "openings {i} and {j} overlap (with their rings)"
+                        )));
                     }
                 }
             }
@@ -568,7 +586,11 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
     let levels: Vec<f64> = cuts.iter().flat_map(|c| c.levels.iter().copied()).collect();
     let top = s.height + s.gable;
     let ys = course_lines(top, ey, &levels);
-    let holes: Vec<(&Vec<Point>, [f64; 4])> = cuts.iter().flat_map(|c| c.holes.iter()).map(|h| (h, bbox(h))).collect();
+    let holes: Vec<(&Vec<Point>, [f64; 4])> = cuts
+        .iter()
+        .flat_map(|c| c.holes.iter())
+        .map(|h| (h, bbox(h)))
+        .collect();
     // The gable: two half-planes through the eaves corners and the ridge.
     let ridge = [s.width / 2.0, top];
     let roof = if s.gable > 0.0 {
@@ -612,7 +634,10 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
                 if !(cb[0] < hb[2] && hb[0] < cb[2] && cb[1] < hb[3] && hb[1] < cb[3]) {
                     continue;
                 }
-                pieces = pieces.into_iter().flat_map(|p| subtract(&p, hole, eps)).collect();
+                pieces = pieces
+                    .into_iter()
+                    .flat_map(|p| subtract(&p, hole, eps))
+                    .collect();
             }
             for p in merge(&pieces, eps) {
                 // Vertices closer than the joint-detection tolerance would be one vertex.

@@ -322,10 +322,15 @@ fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
 fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
     use std::collections::HashMap;
     let mergeable = |j: usize| {
-        lp.col_upper[j] == f64::INFINITY && (lp.col_lower[j] == 0.0 || lp.col_lower[j] == f64::NEG_INFINITY)
+        lp.col_upper[j] == f64::INFINITY
+            && (lp.col_lower[j] == 0.0 || lp.col_lower[j] == f64::NEG_INFINITY)
     };
     let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
-    let mut out = LinearProgram { maximise: lp.maximise, col_start: vec![0], ..Default::default() };
+    let mut out = LinearProgram {
+        maximise: lp.maximise,
+        col_start: vec![0],
+        ..Default::default()
+    };
     out.row_lower = lp.row_lower.clone();
     out.row_upper = lp.row_upper.clone();
     let mut map = Vec::with_capacity(lp.num_cols());
@@ -353,7 +358,9 @@ fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
 
 fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
-    use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
+    use clarabel::solver::{
+        DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
+    };
     let sign = if lp.maximise { -1.0 } else { 1.0 };
     let n = lp.num_cols();
     let mut rows: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_rows()];
@@ -392,7 +399,11 @@ fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSol
         }
     }
     let (mut ii, mut jj, mut vv, mut b) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for (r, rhs) in zero.iter().map(|z| (&z.0, z.1)).chain(nonneg.iter().map(|z| (&z.0, z.1))) {
+    for (r, rhs) in zero
+        .iter()
+        .map(|z| (&z.0, z.1))
+        .chain(nonneg.iter().map(|z| (&z.0, z.1)))
+    {
         let k = b.len();
         for &(j, v) in r {
             ii.push(k);
@@ -429,13 +440,22 @@ fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSol
     let sol = &solver.solution;
     let status = match sol.status {
         SolverStatus::Solved | SolverStatus::AlmostSolved => LpStatus::Optimal,
-        SolverStatus::PrimalInfeasible | SolverStatus::AlmostPrimalInfeasible => LpStatus::Infeasible,
+        SolverStatus::PrimalInfeasible | SolverStatus::AlmostPrimalInfeasible => {
+            LpStatus::Infeasible
+        }
         SolverStatus::DualInfeasible | SolverStatus::AlmostDualInfeasible => LpStatus::Unbounded,
         other => return Err(Error::Solver(format!("Clarabel stopped: {other:?}"))),
     };
     let iterations = sol.iterations as i64;
     if status != LpStatus::Optimal {
-        return Ok(LpSolution { status, objective: f64::NAN, x: vec![], row_dual: vec![], col_dual: vec![], iterations });
+        return Ok(LpSolution {
+            status,
+            objective: f64::NAN,
+            x: vec![],
+            row_dual: vec![],
+            col_dual: vec![],
+            iterations,
+        });
     }
     // Clarabel's z ≥ 0 multiplies `A x + s = b` in `min qᵀx`: q + Aᵀz = 0 in its convention, so the
     // multiplier of LP row i (HiGHS: c − Aᵀy = reduced costs) is y = −z (rows as written) or +z
@@ -459,7 +479,14 @@ fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSol
         }
     }
     let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
-    Ok(LpSolution { status, objective, x, row_dual, col_dual, iterations })
+    Ok(LpSolution {
+        status,
+        objective,
+        x,
+        row_dual,
+        col_dual,
+        iterations,
+    })
 }
 
 #[cfg(test)]
@@ -514,11 +541,23 @@ mod clarabel_tests {
         lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
         lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
         let h = solve(&lp, &SolverOptions::default()).unwrap();
-        let c = solve(&lp, &SolverOptions { method: Method::Clarabel, ..SolverOptions::default() }).unwrap();
+        let c = solve(
+            &lp,
+            &SolverOptions {
+                method: Method::Clarabel,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
         assert_eq!(c.status, LpStatus::Optimal);
         assert!((c.objective - 2.8).abs() < 1e-7);
         for i in 0..2 {
-            assert!((c.row_dual[i] - h.row_dual[i]).abs() < 1e-6, "{:?} {:?}", c.row_dual, h.row_dual);
+            assert!(
+                (c.row_dual[i] - h.row_dual[i]).abs() < 1e-6,
+                "{:?} {:?}",
+                c.row_dual,
+                h.row_dual
+            );
         }
         // An equality-constrained minimisation: min 2a + b, a + b = 1, a, b ≥ 0 → b = 1, y = 1.
         let mut lp = LinearProgram::new(Direction::Minimise);
@@ -526,7 +565,19 @@ mod clarabel_tests {
         lp.add_column(2.0, 0.0, f64::INFINITY, [(r, 1.0)]);
         lp.add_column(1.0, 0.0, f64::INFINITY, [(r, 1.0)]);
         let h = solve(&lp, &SolverOptions::default()).unwrap();
-        let c = solve(&lp, &SolverOptions { method: Method::Clarabel, ..SolverOptions::default() }).unwrap();
-        assert!((c.objective - 1.0).abs() < 1e-7 && (c.row_dual[0] - h.row_dual[0]).abs() < 1e-6, "{:?} {:?}", c.row_dual, h.row_dual);
+        let c = solve(
+            &lp,
+            &SolverOptions {
+                method: Method::Clarabel,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        assert!(
+            (c.objective - 1.0).abs() < 1e-7 && (c.row_dual[0] - h.row_dual[0]).abs() < 1e-6,
+            "{:?} {:?}",
+            c.row_dual,
+            h.row_dual
+        );
     }
 }

@@ -20,7 +20,9 @@ fn net_area(s: &FacadeSpec) -> f64 {
     let mut a = s.width * s.height + 0.5 * s.width * s.gable;
     for o in &s.openings {
         a -= match *o {
-            Opening::PointedDoor { width, springing, .. } => {
+            Opening::PointedDoor {
+                width, springing, ..
+            } => {
                 width * springing + width * width * (std::f64::consts::PI / 3.0 - 3f64.sqrt() / 4.0)
             }
             Opening::Round { radius, .. } => std::f64::consts::PI * radius * radius,

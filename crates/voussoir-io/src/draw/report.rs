@@ -300,7 +300,6 @@ pub struct ReportOptions {
     pub scale: Option<f64>,
 }
 
-
 fn f4(x: f64) -> String {
     fmt_fixed(x, 4)
 }

@@ -1,9 +1,9 @@
 //! Analyses: each is a composition of the structure, the kinematic map and the two LP forms.
 
 pub mod limit;
+pub mod nonassociative;
 pub mod settlement;
 pub mod tilt;
-pub mod nonassociative;
 
 pub use limit::{limit, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};

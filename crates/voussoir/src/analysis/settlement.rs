@@ -260,7 +260,11 @@ pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
         if map.gap[k] > 0.0 {
             continue;
         }
-        let o = if map.bilateral[k] { open[k].abs() } else { (-open[k]).max(0.0) };
+        let o = if map.bilateral[k] {
+            open[k].abs()
+        } else {
+            (-open[k]).max(0.0)
+        };
         v = v.max(o).max(slide[k].abs());
     }
     v
@@ -301,13 +305,23 @@ pub fn settlement_from_force_solution(
     let dual: f64 = (0..n)
         .map(|k| map.support_normal[k] * pn[k] + map.support_tangent[k] * pt[k])
         .sum();
-    SettlementSolution { status, mechanism: d, pn, pt, primal, dual }
+    SettlementSolution {
+        status,
+        mechanism: d,
+        pn,
+        pt,
+        primal,
+        dual,
+    }
 }
 
 /// Whether the map has joint laws (friction, finite strength) that the force-only form does not
 /// handle.
 fn has_joint_laws(map: &KinematicMap) -> bool {
-    map.laws.iter().any(|l| l.friction.is_some() || l.strength.is_some()) || map.shear_limits.is_some()
+    map.laws
+        .iter()
+        .any(|l| l.friction.is_some() || l.strength.is_some())
+        || map.shear_limits.is_some()
 }
 
 /// Settlement analysis in the chosen form.
@@ -328,10 +342,18 @@ pub fn solve_settlement_with(
 /// The reported result of a solution, with the mechanism's admissibility checked: a mechanism
 /// read from duals that violates the joint constraints by more than 1e-6 of the largest
 /// prescribed motion fails the certificate.
-pub fn settlement_result_checked(st: &Structure, map: &KinematicMap, s: &SettlementSolution) -> SettlementResult {
+pub fn settlement_result_checked(
+    st: &Structure,
+    map: &KinematicMap,
+    s: &SettlementSolution,
+) -> SettlementResult {
     let mut r = settlement_result(st, map, s);
     if s.status == SettlementStatus::Mechanism {
-        let umax = st.supports.iter().flat_map(|sp| sp.motion.iter()).fold(0.0f64, |m, x| m.max(x.abs()));
+        let umax = st
+            .supports
+            .iter()
+            .flat_map(|sp| sp.motion.iter())
+            .fold(0.0f64, |m, x| m.max(x.abs()));
         let v = kinematic_violation(map, &s.mechanism);
         if v > 1e-6 * umax.max(1e-300) {
             if let Some(c) = r.certificate.as_mut() {
@@ -347,7 +369,11 @@ pub fn settlement_result_checked(st: &Structure, map: &KinematicMap, s: &Settlem
 }
 
 /// [`settle`] in the chosen form.
-pub fn settle_with(st: &Structure, opts: &SolverOptions, form: SettlementForm) -> Result<SettlementResult> {
+pub fn settle_with(
+    st: &Structure,
+    opts: &SolverOptions,
+    form: SettlementForm,
+) -> Result<SettlementResult> {
     let map = KinematicMap::new(st);
     let s = solve_settlement_with(st, &map, opts, form)?;
     Ok(settlement_result_checked(st, &map, &s))

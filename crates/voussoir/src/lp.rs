@@ -300,7 +300,7 @@ fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
     // variable for the solver: in the force LP the two shear forces of a straight joint have
     // the same column. The merged value goes to the first of them.
     let (reduced, map) = merge_duplicate_columns(lp);
-    let mut sol = solve_clarabel_reduced(&reduced, o)?;
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &[])?;
     if sol.status == LpStatus::Optimal {
         let mut x = vec![0.0; lp.num_cols()];
         let mut col_dual = vec![0.0; lp.num_cols()];
@@ -356,7 +356,15 @@ fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
     (out, map)
 }
 
-fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
+/// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.
+pub type Cone3 = [(Vec<(usize, f64)>, f64); 3];
+
+/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP).
+pub(crate) fn solve_clarabel_with_cones(
+    lp: &LinearProgram,
+    o: &SolverOptions,
+    socs: &[Cone3],
+) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
     use clarabel::solver::{
         DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
@@ -403,6 +411,7 @@ fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSol
         .iter()
         .map(|z| (&z.0, z.1))
         .chain(nonneg.iter().map(|z| (&z.0, z.1)))
+        .chain(socs.iter().flat_map(|c| c.iter().map(|(r, b)| (r, *b))))
     {
         let k = b.len();
         for &(j, v) in r {
@@ -423,6 +432,7 @@ fn solve_clarabel_reduced(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSol
     if !nonneg.is_empty() {
         cones.push(SupportedConeT::NonnegativeConeT(nonneg.len()));
     }
+    cones.extend(socs.iter().map(|_| SupportedConeT::SecondOrderConeT(3)));
     let tol = o.feasibility_tolerance.clamp(1e-12, 1e-4);
     let settings = DefaultSettings {
         verbose: std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1"),

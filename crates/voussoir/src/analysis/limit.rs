@@ -101,10 +101,14 @@ fn load_vectors(st: &Structure) -> Result<(Vec<f64>, Vec<f64>)> {
 
 /// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
 /// its inscribed polygon. Without finite compressive strength this is the same problem.
-pub fn solve_limit_conic(st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
+pub fn solve_limit_conic(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<LimitSolution> {
     let (dead, live) = load_vectors(st)?;
     let fp = crate::conic::limit_force_program(map, &dead, &live);
-    let sol = crate::conic::solve_force_conic(map, &fp)?;
+    let sol = crate::conic::solve_force_conic(map, &fp, opts)?;
     Ok(finish(
         map,
         &fp,
@@ -112,7 +116,7 @@ pub fn solve_limit_conic(st: &Structure, map: &KinematicMap) -> Result<LimitSolu
         sol.status,
         &sol.x,
         &sol.row_dual,
-        0,
+        sol.iterations,
     ))
 }
 
@@ -185,7 +189,7 @@ pub fn limit_with(
     map.facets = facets.max(1);
     let s = match crushing {
         Crushing::Linear => solve_limit(st, &map, opts)?,
-        Crushing::Conic => solve_limit_conic(st, &map)?,
+        Crushing::Conic => solve_limit_conic(st, &map, opts)?,
     };
     Ok(limit_result(st, &map, &s))
 }

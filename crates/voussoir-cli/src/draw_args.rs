@@ -86,41 +86,36 @@ impl DrawArgs {
     /// Capacity analysis: the figure is the λ–settlement curve; the report adds the settlement
     /// mechanism and the table of steps.
     pub fn emit_capacity(&self, r: &CapacityResult, source: &Path) -> Result<(), Fail> {
-        if !self.any() {
-            return Ok(());
-        }
-        if self.svg.is_some() || self.png.is_some() {
-            let title = self
-                .title
-                .as_deref()
-                .unwrap_or("Collapse load multiplier after settlement");
-            let p = draw::capacity_plot(&[("λ(s)", r)], title);
-            write_drawing(&p.svg, self.svg.as_deref(), self.png.as_deref())?;
-        }
-        if let Some(path) = &self.report {
-            let html = draw::capacity_report(r, &self.report_options(source)).to_html();
-            voussoir_io::write_atomic(path, html.as_bytes())?;
-        }
-        Ok(())
+        self.emit_curve(
+            "Collapse load multiplier after settlement",
+            |title| draw::capacity_plot(&[("λ(s)", r)], title).svg,
+            || draw::capacity_report(r, &self.report_options(source)).to_html(),
+        )
     }
 
     /// Incremental analysis: the figure is the λ–control-displacement curve; the report adds
     /// the mechanisms and the events.
     pub fn emit_incremental(&self, r: &IncrementalResult, source: &Path) -> Result<(), Fail> {
-        if !self.any() {
-            return Ok(());
-        }
+        self.emit_curve(
+            "Load multiplier against control displacement",
+            |title| draw::incremental_plot(&[("λ(dx)", r)], title).svg,
+            || draw::incremental_report(r, &self.report_options(source)).to_html(),
+        )
+    }
+
+    /// A curve figure (SVG/PNG) and a report, each only when asked for.
+    fn emit_curve(
+        &self,
+        default_title: &str,
+        svg: impl FnOnce(&str) -> String,
+        html: impl FnOnce() -> String,
+    ) -> Result<(), Fail> {
         if self.svg.is_some() || self.png.is_some() {
-            let title = self
-                .title
-                .as_deref()
-                .unwrap_or("Load multiplier against control displacement");
-            let p = draw::incremental_plot(&[("λ(dx)", r)], title);
-            write_drawing(&p.svg, self.svg.as_deref(), self.png.as_deref())?;
+            let title = self.title.as_deref().unwrap_or(default_title);
+            write_drawing(&svg(title), self.svg.as_deref(), self.png.as_deref())?;
         }
         if let Some(path) = &self.report {
-            let html = draw::incremental_report(r, &self.report_options(source)).to_html();
-            voussoir_io::write_atomic(path, html.as_bytes())?;
+            voussoir_io::write_atomic(path, html().as_bytes())?;
         }
         Ok(())
     }

@@ -499,18 +499,24 @@ pub(crate) fn solve_clarabel_with_cones(
     })
 }
 
+/// max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x, y ≥ 0  → x = 1.6, y = 1.2, obj 2.8 (by hand).
+#[cfg(test)]
+fn tiny_lp() -> LinearProgram {
+    let mut lp = LinearProgram::new(Direction::Maximise);
+    let r0 = lp.add_row(f64::NEG_INFINITY, 4.0);
+    let r1 = lp.add_row(f64::NEG_INFINITY, 6.0);
+    lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
+    lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
+    lp
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn tiny_lp_and_duals() {
-        // max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x, y ≥ 0  → x = 1.6, y = 1.2, obj 2.8
-        let mut lp = LinearProgram::new(Direction::Maximise);
-        let r0 = lp.add_row(f64::NEG_INFINITY, 4.0);
-        let r1 = lp.add_row(f64::NEG_INFINITY, 6.0);
-        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
-        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
+        let lp = tiny_lp();
         let s = solve(&lp, &SolverOptions::default()).unwrap();
         assert_eq!(s.status, LpStatus::Optimal);
         assert!((s.objective - 2.8).abs() < 1e-9);
@@ -544,12 +550,7 @@ mod clarabel_tests {
 
     #[test]
     fn clarabel_matches_highs_on_a_tiny_lp_with_duals() {
-        // max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x, y ≥ 0  → x = 1.6, y = 1.2, obj 2.8
-        let mut lp = LinearProgram::new(Direction::Maximise);
-        let r0 = lp.add_row(f64::NEG_INFINITY, 4.0);
-        let r1 = lp.add_row(f64::NEG_INFINITY, 6.0);
-        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
-        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
+        let lp = tiny_lp();
         let h = solve(&lp, &SolverOptions::default()).unwrap();
         let c = solve(
             &lp,

@@ -453,6 +453,38 @@ fn strings(v: &[&str]) -> Vec<String> {
     v.iter().map(|s| s.to_string()).collect()
 }
 
+/// Hinge, reaction and joint tables of a mechanism; `titles`: hinge table, reaction table,
+/// opening column.
+fn joint_sections(
+    sec: &mut Section,
+    (hinges, joints, reactions): (
+        &[voussoir::result::Hinge],
+        &[JointResult],
+        &[voussoir::result::Reaction],
+    ),
+    titles: [&str; 3],
+) {
+    if !hinges.is_empty() {
+        sec.table(
+            titles[0],
+            strings(&["joint", "body a", "body b", "x (m)", "y (m)", "N (kN)"]),
+            hinge_rows(hinges, joints),
+        );
+    }
+    sec.table(
+        titles[1],
+        strings(&["support", "Fx (kN)", "Fy (kN)", "M (kN·m)"]),
+        reaction_rows(reactions),
+    );
+    sec.collapsed_table(
+        "All joints",
+        strings(&[
+            "joint", "body a", "body b", "state", "N (kN)", "V (kN)", "e (m)", titles[2],
+        ]),
+        joint_rows(joints),
+    );
+}
+
 fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f64>, what: &str) {
     let model = Scene::geometry(geometry, "Model and loads");
     let d0 = draw(
@@ -544,32 +576,14 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
         opts.scale,
         "Collapse mechanism",
     );
-    let sec = rep.section("Hinges, reactions and joints");
-    if !r.hinges.is_empty() {
-        sec.table(
+    joint_sections(
+        rep.section("Hinges, reactions and joints"),
+        (&r.hinges, &r.joints, &r.reactions),
+        [
             "Hinges of the collapse mechanism",
-            strings(&["joint", "body a", "body b", "x (m)", "y (m)", "N (kN)"]),
-            hinge_rows(&r.hinges, &r.joints),
-        );
-    }
-    sec.table(
-        "Support reactions at collapse",
-        strings(&["support", "Fx (kN)", "Fy (kN)", "M (kN·m)"]),
-        reaction_rows(&r.reactions),
-    );
-    sec.collapsed_table(
-        "All joints",
-        strings(&[
-            "joint",
-            "body a",
-            "body b",
-            "state",
-            "N (kN)",
-            "V (kN)",
-            "e (m)",
+            "Support reactions at collapse",
             "max opening",
-        ]),
-        joint_rows(&r.joints),
+        ],
     );
     rep
 }
@@ -648,32 +662,10 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
         opts.scale,
         "Settlement mechanism",
     );
-    let sec = rep.section("Hinges, reactions and joints");
-    if !r.hinges.is_empty() {
-        sec.table(
-            "Hinges",
-            strings(&["joint", "body a", "body b", "x (m)", "y (m)", "N (kN)"]),
-            hinge_rows(&r.hinges, &r.joints),
-        );
-    }
-    sec.table(
-        "Support reactions",
-        strings(&["support", "Fx (kN)", "Fy (kN)", "M (kN·m)"]),
-        reaction_rows(&r.reactions),
-    );
-    sec.collapsed_table(
-        "All joints",
-        strings(&[
-            "joint",
-            "body a",
-            "body b",
-            "state",
-            "N (kN)",
-            "V (kN)",
-            "e (m)",
-            "max opening (m)",
-        ]),
-        joint_rows(&r.joints),
+    joint_sections(
+        rep.section("Hinges, reactions and joints"),
+        (&r.hinges, &r.joints, &r.reactions),
+        ["Hinges", "Support reactions", "max opening (m)"],
     );
     rep
 }

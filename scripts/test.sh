@@ -5,3 +5,4 @@ cd "$(dirname "$0")/.."
 ./scripts/deps.sh
 export PATH="$HOME/.cargo/bin:$PATH"
 cargo test --workspace --no-fail-fast "$@"
+./scripts/test-python.sh

@@ -121,7 +121,11 @@ fn model_from_dxf(
         let live = match dxf_live.as_str() {
             "none" => ImportLive::None,
             "horizontal" => ImportLive::Horizontal,
-            l => return Err(Fail::Model(format!("dxf_live={l}: expected none or horizontal"))),
+            l => {
+                return Err(Fail::Model(format!(
+                    "dxf_live={l}: expected none or horizontal"
+                )))
+            }
         };
         let opts = DxfOptions {
             units,
@@ -143,7 +147,11 @@ fn model_from_dxf(
 /// Validate a model: (blocks, joints, supports) of its structure.
 #[pyfunction]
 #[pyo3(signature = (model, tolerance=None))]
-fn model_check(py: Python<'_>, model: String, tolerance: Option<f64>) -> PyResult<(usize, usize, usize)> {
+fn model_check(
+    py: Python<'_>,
+    model: String,
+    tolerance: Option<f64>,
+) -> PyResult<(usize, usize, usize)> {
     detached(py, || {
         let m = parse_model(&model)?;
         let st = Structure::new(&m, BuildOptions { tolerance })?;
@@ -291,11 +299,38 @@ fn opening_of(o: &str) -> Result<Opening, Fail> {
         .collect::<Result<_, _>>()
         .map_err(|_| bad())?;
     Ok(match (kind, &v[..]) {
-        ("door", [x, w, sp]) => Opening::PointedDoor { x: *x, width: *w, springing: *sp, offset: 0.5, ring: 0.4 },
-        ("door", [x, w, sp, off, ring]) => Opening::PointedDoor { x: *x, width: *w, springing: *sp, offset: *off, ring: *ring },
-        ("rose", [x, y, r]) => Opening::Round { x: *x, y: *y, radius: *r, ring: 0.35 },
-        ("rose", [x, y, r, ring]) => Opening::Round { x: *x, y: *y, radius: *r, ring: *ring },
-        ("rect", [x0, y0, x1, y1]) => Opening::Rect { x0: *x0, y0: *y0, x1: *x1, y1: *y1 },
+        ("door", [x, w, sp]) => Opening::PointedDoor {
+            x: *x,
+            width: *w,
+            springing: *sp,
+            offset: 0.5,
+            ring: 0.4,
+        },
+        ("door", [x, w, sp, off, ring]) => Opening::PointedDoor {
+            x: *x,
+            width: *w,
+            springing: *sp,
+            offset: *off,
+            ring: *ring,
+        },
+        ("rose", [x, y, r]) => Opening::Round {
+            x: *x,
+            y: *y,
+            radius: *r,
+            ring: 0.35,
+        },
+        ("rose", [x, y, r, ring]) => Opening::Round {
+            x: *x,
+            y: *y,
+            radius: *r,
+            ring: *ring,
+        },
+        ("rect", [x0, y0, x1, y1]) => Opening::Rect {
+            x0: *x0,
+            y0: *y0,
+            x1: *x1,
+            y1: *y1,
+        },
         _ => return Err(bad()),
     })
 }
@@ -470,7 +505,9 @@ fn draw_svg(
     detached(py, || {
         if let Some(s) = scale {
             if !(s.is_finite() && s >= 0.0) {
-                return Err(Fail::Model(format!("scale={s}: expected a finite number ≥ 0")));
+                return Err(Fail::Model(format!(
+                    "scale={s}: expected a finite number ≥ 0"
+                )));
             }
         }
         let saved = draw::parse_saved(&result)?;
@@ -495,7 +532,15 @@ fn report_html(
 ) -> PyResult<String> {
     detached(py, || {
         let saved = draw::parse_saved(&result)?;
-        Ok(draw::report_saved(&saved, &ReportOptions { title, source, scale }).to_html())
+        Ok(draw::report_saved(
+            &saved,
+            &ReportOptions {
+                title,
+                source,
+                scale,
+            },
+        )
+        .to_html())
     })
 }
 

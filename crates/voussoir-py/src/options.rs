@@ -178,7 +178,11 @@ impl Common {
         let crushing = match self.crushing.as_str() {
             "linear" => Crushing::Linear,
             "conic" => Crushing::Conic,
-            c => return Err(Fail::Model(format!("crushing={c}: expected linear or conic"))),
+            c => {
+                return Err(Fail::Model(format!(
+                    "crushing={c}: expected linear or conic"
+                )))
+            }
         };
         Ok(voussoir::analysis::limit::limit_with(
             st,

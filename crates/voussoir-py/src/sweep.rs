@@ -7,8 +7,8 @@
 //! CLI's binary crate and cannot be called from here, hence this copy; moving it into the
 //! library would let both front ends share it (see the report of issue 15).
 
-use crate::options::{Common, Fail, Settle};
 use crate::detached;
+use crate::options::{Common, Fail, Settle};
 use pyo3::prelude::*;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -60,28 +60,41 @@ impl SplitMix {
 enum Kind {
     Scale(usize),
     Direction(usize),
-    Sample(usize),
+    Sample,
 }
 
 fn kind_of(kind: &str, n: usize) -> Result<Kind, Fail> {
     if n == 0 {
-        return Err(Fail::Model("the number of analyses must be at least 1".into()));
+        return Err(Fail::Model(
+            "the number of analyses must be at least 1".into(),
+        ));
     }
     match kind {
         "steps" => Ok(Kind::Scale(n)),
         "directions" => Ok(Kind::Direction(n)),
-        "samples" => Ok(Kind::Sample(n)),
+        "samples" => Ok(Kind::Sample),
         k => Err(Fail::Model(format!(
             "sweep kind {k}: expected steps, directions or samples"
         ))),
     }
 }
 
-fn motions_of(kind: Kind, k: usize, base: &[[f64; 3]], cov: f64, seed: u64) -> (f64, Vec<[f64; 3]>) {
+fn motions_of(
+    kind: Kind,
+    k: usize,
+    base: &[[f64; 3]],
+    cov: f64,
+    seed: u64,
+) -> (f64, Vec<[f64; 3]>) {
     match kind {
         Kind::Scale(n) => {
             let s = (k + 1) as f64 / n as f64;
-            (s, base.iter().map(|m| [m[0] * s, m[1] * s, m[2] * s]).collect())
+            (
+                s,
+                base.iter()
+                    .map(|m| [m[0] * s, m[1] * s, m[2] * s])
+                    .collect(),
+            )
         }
         Kind::Direction(n) => {
             let a = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
@@ -93,7 +106,7 @@ fn motions_of(kind: Kind, k: usize, base: &[[f64; 3]], cov: f64, seed: u64) -> (
                     .collect(),
             )
         }
-        Kind::Sample(_) => {
+        Kind::Sample => {
             let mut rng = SplitMix(seed ^ (k as u64).wrapping_mul(0xD1B5_4A32_D192_ED03));
             let m = base
                 .iter()
@@ -107,14 +120,26 @@ fn motions_of(kind: Kind, k: usize, base: &[[f64; 3]], cov: f64, seed: u64) -> (
     }
 }
 
-fn analyse(model: &Model, common: &Common, kind: Kind, k: usize, cov: f64, seed: u64) -> Result<SweepRecord, Fail> {
+fn analyse(
+    model: &Model,
+    common: &Common,
+    kind: Kind,
+    k: usize,
+    cov: f64,
+    seed: u64,
+) -> Result<SweepRecord, Fail> {
     let base: Vec<[f64; 3]> = model.supports.iter().map(|s| s.motion).collect();
     let (parameter, motions) = motions_of(kind, k, &base, cov, seed);
     let mut m = model.clone();
     for (s, mo) in m.supports.iter_mut().zip(&motions) {
         s.motion = *mo;
     }
-    let st = Structure::new(&m, BuildOptions { tolerance: common.tolerance })?;
+    let st = Structure::new(
+        &m,
+        BuildOptions {
+            tolerance: common.tolerance,
+        },
+    )?;
     let r = settle_with(&st, &common.solver()?, common.settlement_form()?)?;
     let max_displacement = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.u.hypot(b.v)));
     let max_rotation = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.theta.abs()));
@@ -123,7 +148,7 @@ fn analyse(model: &Model, common: &Common, kind: Kind, k: usize, cov: f64, seed:
         kind: match kind {
             Kind::Scale(_) => "scale",
             Kind::Direction(_) => "angle_deg",
-            Kind::Sample(_) => "sample",
+            Kind::Sample => "sample",
         }
         .into(),
         parameter,
@@ -137,7 +162,11 @@ fn analyse(model: &Model, common: &Common, kind: Kind, k: usize, cov: f64, seed:
         certified: r.certificate.as_ref().is_some_and(|c| c.ok),
         hinges: r.hinges.len(),
         hinge_joints: r.hinges.iter().map(|h| h.joint).collect(),
-        open_joints: r.joints.iter().filter(|j| j.state == JointState::Open).count(),
+        open_joints: r
+            .joints
+            .iter()
+            .filter(|j| j.state == JointState::Open)
+            .count(),
         max_displacement,
         max_rotation,
         motions: m
@@ -168,16 +197,26 @@ pub fn sweep_base(
     detached(py, || {
         kind_of(&kind, n)?;
         if !(cov.is_finite() && cov >= 0.0) {
-            return Err(Fail::Model(format!("cov={cov}: must be a finite number ≥ 0")));
+            return Err(Fail::Model(format!(
+                "cov={cov}: must be a finite number ≥ 0"
+            )));
         }
         let m = common.model(&model, Some(&settle))?;
-        if m.supports.iter().all(|s| s.motion.iter().all(|x| *x == 0.0)) {
+        if m.supports
+            .iter()
+            .all(|s| s.motion.iter().all(|x| *x == 0.0))
+        {
             return Err(Fail::Model(
                 "the sweep needs a base settlement: give move= or profile=".into(),
             ));
         }
         // Validate once before fanning out, so that a bad model fails with one message.
-        Structure::new(&m, BuildOptions { tolerance: common.tolerance })?;
+        Structure::new(
+            &m,
+            BuildOptions {
+                tolerance: common.tolerance,
+            },
+        )?;
         common.solver()?;
         common.settlement_form()?;
         Ok(voussoir_io::files::to_json(&m)?)
@@ -246,8 +285,8 @@ pub fn sweep_csv(lines: Vec<String>) -> PyResult<String> {
         "index,kind,parameter,status,work_dead_loads,work_reactions,duality_gap,certified,hinges,open_joints,max_displacement,max_rotation,hinge_joints\n",
     );
     for l in &lines {
-        let r: SweepRecord = serde_json::from_str(l)
-            .map_err(|e| Fail::Model(format!("not a sweep record: {e}")))?;
+        let r: SweepRecord =
+            serde_json::from_str(l).map_err(|e| Fail::Model(format!("not a sweep record: {e}")))?;
         s.push_str(&format!(
             "{},{},{},{},{},{},{},{},{},{},{:e},{:e},{}\n",
             r.index,

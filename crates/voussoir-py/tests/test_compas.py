@@ -140,8 +140,9 @@ def test_write_results_forces_and_displacements(arch, assembly, tmp_path):
     interfaces = [i for u in g["edge"].values() for e in u.values() for i in e.get("interfaces", [])]
     assert len(interfaces) == len(joints) == 65
     # Equilibrium through the written data, an independent check of every orientation: the
-    # forces the supports exert on the arch carry its weight, γ·(π/2)(R_e² − R_i²)·1 m.
-    weight = 18.0 * math.pi / 2 * (3.19**2 - 2.86**2)
+    # forces the supports exert on the arch carry its weight, γ·½·64·sin(π/64)·(R_e² − R_i²)·1 m
+    # (straight-sided voussoirs: the ring between two half 64-gons).
+    weight = 18.0 * 0.5 * 64 * math.sin(math.pi / 64) * (3.19**2 - 2.86**2)
     total = np.zeros(3)
     support_keys = {"0", "1"}
     for u, targets in g["edge"].items():

@@ -4,7 +4,7 @@ Two measurements: (1) while an analysis runs in a background thread, the main th
 executing Python bytecode (impossible if the solve held the GIL) — exact, load-independent;
 (2) on a machine with ≥ 2 cores, two analyses in two threads take about the time of one. The
 machine is shared, so (2) allows a generous margin (ratio < 1.6, where a held GIL gives ≈ 2.0),
-takes the best of three attempts and prints its numbers (`pytest -s` shows them).
+takes the best of five attempts and prints its numbers (`pytest -s` shows them).
 """
 
 import os
@@ -43,7 +43,7 @@ def test_main_thread_runs_during_a_solve():
 def test_two_threads_take_about_the_time_of_one():
     expected = work()
     best = None
-    for attempt in range(3):
+    for attempt in range(5):
         t0 = time.perf_counter()
         work()
         one = time.perf_counter() - t0

@@ -143,11 +143,13 @@ impl KinematicMap {
         }
     }
 
-    /// Whether any joint has friction or finite strength.
+    /// Whether any joint has friction or finite strength, or the shear capacities of the
+    /// non-associative iteration are set: the force program then has rows beyond equilibrium.
     pub fn has_joint_laws(&self) -> bool {
         self.laws
             .iter()
             .any(|l| l.friction.is_some() || l.strength.is_some())
+            || self.shear_limits.is_some()
     }
 
     pub fn num_points(&self) -> usize {

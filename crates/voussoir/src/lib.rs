@@ -33,6 +33,7 @@
 
 pub mod analysis;
 pub mod bench;
+pub mod dim;
 pub mod discretize;
 pub mod duality;
 pub mod error;

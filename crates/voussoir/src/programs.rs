@@ -60,14 +60,17 @@ impl Columns {
 
 impl ForceProgram {
     /// Assemble. `dead` and `live` are block load resultants (`live` = None: no λ column).
-    /// `cost(k)` gives the objective coefficients `(c_n, c_t)` of point `k`; λ has cost 1.
+    /// `normal_cost(k)` is the objective coefficient of `p_n` at point `k`, `tangent_cost(r)`
+    /// that of the shear on sliding row `r` (`r = k·tangents_per_point + j`); λ has cost 1.
     pub fn new(
         map: &KinematicMap,
         dead: &[f64],
         live: Option<&[f64]>,
         direction: Direction,
-        cost: impl Fn(usize) -> (f64, f64),
+        normal_cost: impl Fn(usize) -> f64,
+        tangent_cost: impl Fn(usize) -> f64,
     ) -> ForceProgram {
+        let nt = map.tangents_per_point;
         let mut lp = LinearProgram::new(direction);
         for &f in dead {
             lp.add_row(-f, -f);
@@ -75,7 +78,7 @@ impl ForceProgram {
         let mut c = Columns { cols: Vec::new() };
         let lambda = live.map(|l| c.add(1.0, -INF, INF, l.iter().copied().enumerate().collect()));
         let mut pn = Vec::with_capacity(map.num_points());
-        let mut pt = Vec::with_capacity(map.num_points());
+        let mut pt = Vec::with_capacity(map.num_tangent_rows());
         for k in 0..map.num_points() {
             let law = &map.laws[map.points[k].joint];
             // A point with a gap carries nothing, except on a joint of finite strength, where its
@@ -83,17 +86,20 @@ impl ForceProgram {
             let gapped = map.gap[k] > 0.0;
             if gapped && law.strength.is_none() {
                 pn.push(None);
-                pt.push(None);
+                pt.extend((0..nt).map(|_| None));
                 continue;
             }
-            let (cn, ct) = cost(k);
             let lo = if map.bilateral[k] { -INF } else { 0.0 };
-            pn.push(Some(c.add(cn, lo, INF, KinematicMap::row(&map.normal, k))));
-            pt.push(if gapped {
-                None
-            } else {
-                Some(c.add(ct, -INF, INF, KinematicMap::row(&map.tangent, k)))
-            });
+            let row_n = KinematicMap::row(&map.normal, k);
+            pn.push(Some(c.add(normal_cost(k), lo, INF, row_n)));
+            for r in k * nt..(k + 1) * nt {
+                pt.push(if gapped {
+                    None
+                } else {
+                    let row_t = KinematicMap::row(&map.tangent, r);
+                    Some(c.add(tangent_cost(r), -INF, INF, row_t))
+                });
+            }
         }
         friction_rows(map, &mut lp, &mut c, &pn, &pt);
         crushing_rows(map, &mut lp, &mut c, &pn);
@@ -121,7 +127,8 @@ impl ForceProgram {
         }
     }
 
-    /// Point forces `(p_n, p_t)` from a solution vector (0 where a point has no column).
+    /// Point forces `(p_n, p_t)` from a solution vector (0 where a point has no column); `p_t`
+    /// has one value per point and tangent.
     pub fn forces(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
         let get = |c: &Option<usize>| c.map_or(0.0, |j| x[j]);
         (
@@ -131,7 +138,10 @@ impl ForceProgram {
     }
 }
 
-/// Coulomb: `|p_t| ≤ μ p_n + c` at every point of a joint with finite friction.
+/// Coulomb: `|p_t| ≤ μ p_n + c` at every point of a joint with finite friction. In 2D (one
+/// tangent) the two rows `±p_t ≤ μ p_n + c`; in 3D the pyramid of `map.friction_facets` facets
+/// *inscribed* in the cone (conservative): `(cos φ_i, sin φ_i)·p_t ≤ cos(π/K)(μ p_n + c)`,
+/// `φ_i = (2i + 1)π/K`, whose vertices lie on the cone.
 fn friction_rows(
     map: &KinematicMap,
     lp: &mut LinearProgram,
@@ -139,9 +149,26 @@ fn friction_rows(
     pn: &[Option<usize>],
     pt: &[Option<usize>],
 ) {
+    let nt = map.tangents_per_point;
+    let directions: Vec<(Vec<f64>, f64)> = if nt == 1 {
+        vec![(vec![1.0], 1.0), (vec![-1.0], 1.0)]
+    } else {
+        let k = map.friction_facets.max(3);
+        let shrink = (std::f64::consts::PI / k as f64).cos();
+        (0..k)
+            .map(|i| {
+                let phi = (2 * i + 1) as f64 * std::f64::consts::PI / k as f64;
+                (vec![phi.cos(), phi.sin()], shrink)
+            })
+            .collect()
+    };
     for k in 0..map.num_points() {
         let law = &map.laws[map.points[k].joint];
-        let (Some(mu), Some(cn), Some(ct)) = (law.friction, pn[k], pt[k]) else {
+        let (Some(mu), Some(cn)) = (law.friction, pn[k]) else {
+            continue;
+        };
+        let cts: Option<Vec<usize>> = (k * nt..(k + 1) * nt).map(|r| pt[r]).collect();
+        let Some(cts) = cts else {
             continue;
         };
         if map.bilateral[k] {
@@ -152,10 +179,12 @@ fn friction_rows(
             Some(lim) => (lim[k].max(0.0), 0.0),
             None => (law.cohesion, mu),
         };
-        for sign in [1.0, -1.0] {
-            let r = lp.add_row(-INF, bound);
-            c.entry(ct, r, sign);
-            c.entry(cn, r, -slope);
+        for (dir, shrink) in &directions {
+            let r = lp.add_row(-INF, shrink * bound);
+            for (&ct, &e) in cts.iter().zip(dir) {
+                c.entry(ct, r, e);
+            }
+            c.entry(cn, r, -shrink * slope);
         }
     }
 }
@@ -247,9 +276,14 @@ impl MotionProgram {
 /// equilibrium with the dead loads `dead` that minimise the work `g_nᵀp_n + g_tᵀp_t` of the
 /// forces on the moving supports.
 pub fn settlement_force_program(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
-    ForceProgram::new(map, dead, None, Direction::Minimise, |k| {
-        (map.support_normal[k], map.support_tangent[k])
-    })
+    ForceProgram::new(
+        map,
+        dead,
+        None,
+        Direction::Minimise,
+        |k| map.support_normal[k],
+        |r| map.support_tangent[r],
+    )
 }
 
 /// The paper's (62)–(66), the motion form of a settlement analysis: the mechanism that
@@ -266,7 +300,7 @@ pub fn settlement_motion_program(
 /// `F_D + λ F_L + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` and the joint laws. Its row duals are the
 /// collapse mechanism.
 pub fn limit_force_program(map: &KinematicMap, dead: &[f64], live: &[f64]) -> ForceProgram {
-    ForceProgram::new(map, dead, Some(live), Direction::Maximise, |_| (0.0, 0.0))
+    ForceProgram::new(map, dead, Some(live), Direction::Maximise, |_| 0.0, |_| 0.0)
 }
 
 /// [`limit_force_program`] with every point a column, those with a gap fixed at zero by their
@@ -280,9 +314,11 @@ pub fn limit_force_program_fixed_topology(
     let mut all = map.clone();
     all.gap.iter_mut().for_each(|g| *g = 0.0);
     let mut fp = limit_force_program(&all, dead, live);
+    let nt = map.tangents_per_point;
     for k in 0..map.num_points() {
         if map.gap[k] > 0.0 {
-            for c in [fp.pn[k], fp.pt[k]].into_iter().flatten() {
+            let shear = &fp.pt[k * nt..(k + 1) * nt];
+            for &c in std::iter::once(&fp.pn[k]).chain(shear).flatten() {
                 fp.lp.col_lower[c] = 0.0;
                 fp.lp.col_upper[c] = 0.0;
             }
@@ -348,9 +384,12 @@ pub fn dead_load_ray_program(map: &KinematicMap, dead: &[f64], live: &[f64]) -> 
         for (c, v) in KinematicMap::row(&map.normal, k) {
             cols[c].push((r, v));
         }
-        let r = lp.add_row(0.0, 0.0);
-        for (c, v) in KinematicMap::row(&map.tangent, k) {
-            cols[c].push((r, v));
+        let nt = map.tangents_per_point;
+        for row in k * nt..(k + 1) * nt {
+            let r = lp.add_row(0.0, 0.0);
+            for (c, v) in KinematicMap::row(&map.tangent, row) {
+                cols[c].push((r, v));
+            }
         }
     }
     for (c, e) in cols.into_iter().enumerate() {

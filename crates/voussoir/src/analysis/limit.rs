@@ -85,7 +85,7 @@ pub fn limit_solution(
         lambda: None,
         mechanism: vec![],
         pn: vec![0.0; map.num_points()],
-        pt: vec![0.0; map.num_points()],
+        pt: vec![0.0; map.num_tangent_rows()],
         iterations,
         solver: solver.clone(),
     };

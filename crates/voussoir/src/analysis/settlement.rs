@@ -59,7 +59,7 @@ pub fn solve_settlement(
             status,
             mechanism: vec![],
             pn: vec![0.0; n],
-            pt: vec![0.0; n],
+            pt: vec![0.0; map.num_tangent_rows()],
             primal: f64::NAN,
             dual: f64::NAN,
             solver: opts.info(),
@@ -198,7 +198,11 @@ pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
         } else {
             (-open[k]).max(0.0)
         };
-        v = v.max(o).max(slide[k].abs());
+        let nt = map.tangents_per_point;
+        let s = slide[k * nt..(k + 1) * nt]
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        v = v.max(o).max(s);
     }
     v
 }
@@ -227,7 +231,7 @@ pub fn settlement_from_force_solution(
             status,
             mechanism: vec![],
             pn: vec![0.0; n],
-            pt: vec![0.0; n],
+            pt: vec![0.0; map.num_tangent_rows()],
             primal: f64::NAN,
             dual: f64::NAN,
             solver,
@@ -237,9 +241,7 @@ pub fn settlement_from_force_solution(
     let d: Vec<f64> = sol.row_dual[..map.num_dofs].iter().map(|y| -y).collect();
     let primal: f64 = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
     let (pn, pt) = fp.forces(&sol.x);
-    let dual: f64 = (0..n)
-        .map(|k| map.support_normal[k] * pn[k] + map.support_tangent[k] * pt[k])
-        .sum();
+    let dual: f64 = dot(&map.support_normal, &pn) + dot(&map.support_tangent, &pt);
     SettlementSolution {
         status,
         mechanism: d,
@@ -373,4 +375,8 @@ impl SettlementPath {
         }
         st
     }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

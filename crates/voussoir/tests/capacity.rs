@@ -344,3 +344,37 @@ fn lintel_with_finite_strength_loses_capacity_at_half_its_thickness() {
         assert!(w[1].load_multiplier.unwrap() < w[0].load_multiplier.unwrap());
     }
 }
+
+/// `--method clarabel` means Clarabel in every solve of the capacity analysis (settlement path,
+/// curve, root finding): the result says so, and the zero-capacity settlement agrees with dual
+/// simplex to 1e-4 m (the paper's horizontal case, 1.375 cm with dual simplex).
+#[test]
+fn capacity_with_clarabel_runs_clarabel_and_agrees_with_dual_simplex() {
+    use voussoir::lp::Method;
+    let st = paper_arch(LiveLoad::Full, [0.02, 0.0], false);
+    let run = |method| {
+        capacity(
+            &st,
+            &CapacityOptions {
+                steps: 20,
+                solver: SolverOptions {
+                    method,
+                    ..SolverOptions::default()
+                },
+                ..Default::default()
+            },
+        )
+        .unwrap()
+    };
+    let simplex = run(Method::DualSimplex);
+    let ipm = run(Method::Clarabel);
+    assert_eq!(simplex.solver.solver, "highs");
+    assert_eq!(ipm.solver.solver, "clarabel");
+    assert_eq!(ipm.solver.method, Method::Clarabel);
+    let (a, b) = (
+        simplex.zero_capacity_settlement.unwrap(),
+        ipm.zero_capacity_settlement.unwrap(),
+    );
+    assert!(within(a, 0.01375, 0.01), "dual simplex {a}");
+    assert!((a - b).abs() <= 1e-4, "dual simplex {a} vs Clarabel {b}");
+}

@@ -149,6 +149,27 @@ pub fn time_detection(st: &Structure) -> f64 {
     secs(t)
 }
 
+/// Build and validate the structure (timed), time its interface detection alone, and choose
+/// the solver settings for its size.
+fn prepare(
+    model: &crate::Model,
+    a: &BenchConfig,
+) -> Result<(Structure, f64, f64, Method, SolverOptions)> {
+    let t = Instant::now();
+    let st = Structure::new(model, BuildOptions::default())?;
+    let t_build = secs(t);
+    let t_detect = time_detection(&st);
+    let method = method_for(a.method, st.blocks.len());
+    let opts = SolverOptions {
+        method,
+        presolve: a.presolve,
+        feasibility_tolerance: a.tolerance,
+        time_limit: a.time_limit,
+        ..SolverOptions::default()
+    };
+    Ok((st, t_build, t_detect, method, opts))
+}
+
 /// Time one settlement analysis of a wall of about `n` units.
 pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
     let t = Instant::now();
@@ -164,18 +185,7 @@ pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
             v: -0.01,
         },
     )?;
-    let t = Instant::now();
-    let st = Structure::new(&model, BuildOptions::default())?;
-    let t_build = secs(t);
-    let t_detect = time_detection(&st);
-    let method = method_for(a.method, st.blocks.len());
-    let opts = SolverOptions {
-        method,
-        presolve: a.presolve,
-        feasibility_tolerance: a.tolerance,
-        time_limit: a.time_limit,
-        ..SolverOptions::default()
-    };
+    let (st, t_build, t_detect, method, opts) = prepare(&model, a)?;
     let t = Instant::now();
     let map = KinematicMap::new(&st);
     let (s, lp_size, t_assemble, t_solve) = match a.form {
@@ -243,11 +253,7 @@ pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
         rows: lp_size.0,
         cols: lp_size.1,
         nnz: lp_size.2,
-        method: if method == Method::Clarabel {
-            "Clarabel IPM".to_string()
-        } else {
-            method_name(method).to_string()
-        },
+        method: method_name(method).to_string(),
         t_gen,
         t_build: t_build - t_detect.min(t_build),
         t_detect,
@@ -278,18 +284,7 @@ pub fn bench_limit(n: usize, a: &BenchConfig) -> Result<Row> {
     let spec = wall_of(n, LiveLoad::Horizontal);
     let model = generate::wall(&spec)?;
     let t_gen = secs(t);
-    let t = Instant::now();
-    let st = Structure::new(&model, BuildOptions::default())?;
-    let t_build = secs(t);
-    let t_detect = time_detection(&st);
-    let method = method_for(a.method, st.blocks.len());
-    let opts = SolverOptions {
-        method,
-        presolve: a.presolve,
-        feasibility_tolerance: a.tolerance,
-        time_limit: a.time_limit,
-        ..SolverOptions::default()
-    };
+    let (st, t_build, t_detect, method, opts) = prepare(&model, a)?;
     let t = Instant::now();
     let map = KinematicMap::new(&st);
     let dead = st.load_vector(false);
@@ -329,11 +324,7 @@ pub fn bench_limit(n: usize, a: &BenchConfig) -> Result<Row> {
         rows: fp.lp.num_rows(),
         cols: fp.lp.num_cols(),
         nnz: fp.lp.num_nonzeros(),
-        method: if method == Method::Clarabel {
-            "Clarabel IPM".to_string()
-        } else {
-            method_name(method).to_string()
-        },
+        method: method_name(method).to_string(),
         t_gen,
         t_build: t_build - t_detect.min(t_build),
         t_detect,

@@ -189,6 +189,18 @@ fn friction_rows(
     }
 }
 
+/// The joints with a crushing domain: finite strength, not bilateral; with their law, largest
+/// normal force and range of points.
+fn crushing_joints(
+    map: &KinematicMap,
+) -> impl Iterator<Item = (&crate::discretize::JointLaw, f64, std::ops::Range<usize>)> {
+    map.laws.iter().enumerate().filter_map(|(j, law)| {
+        let nmax = law.max_normal_force()?;
+        let range = map.joint_start[j]..map.joint_start[j + 1];
+        (nmax > 0.0 && !range.clone().any(|k| map.bilateral[k])).then_some((law, nmax, range))
+    })
+}
+
 /// Finite compressive strength: `|M| ≤ N (t/2 − N / (2 f_c w))` per joint (rectangular stress
 /// block), inscribed by `map.facets` chords so that strength is never overestimated.
 /// `N = Σ p_n`, `M = Σ s_k p_n,k` with `s_k` the point's position along the joint.
@@ -198,14 +210,7 @@ fn crushing_rows(
     c: &mut Columns,
     pn: &[Option<usize>],
 ) {
-    for (j, law) in map.laws.iter().enumerate() {
-        let Some(nmax) = law.max_normal_force() else {
-            continue;
-        };
-        let range = map.joint_start[j]..map.joint_start[j + 1];
-        if range.clone().any(|k| map.bilateral[k]) || nmax <= 0.0 {
-            continue;
-        }
+    for (law, nmax, range) in crushing_joints(map) {
         let cols: Vec<(usize, f64)> = range
             .clone()
             .filter_map(|k| pn[k].map(|col| (col, map.along[k])))
@@ -338,14 +343,7 @@ pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64])
     m.facets = 0;
     let mut fp = limit_force_program(&m, dead, live);
     let r2 = std::f64::consts::SQRT_2;
-    for (j, law) in map.laws.iter().enumerate() {
-        let Some(nmax) = law.max_normal_force() else {
-            continue;
-        };
-        let range = map.joint_start[j]..map.joint_start[j + 1];
-        if range.clone().any(|k| map.bilateral[k]) || nmax <= 0.0 {
-            continue;
-        }
+    for (law, nmax, range) in crushing_joints(map) {
         let t = law.depth;
         let fw = nmax / t;
         let cols: Vec<(usize, f64)> = range

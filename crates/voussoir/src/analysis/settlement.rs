@@ -39,6 +39,25 @@ pub struct SettlementSolution {
     pub solver: lp::SolverInfo,
 }
 
+impl SettlementSolution {
+    /// A solution whose status is not a mechanism: no motion, no forces.
+    fn without_mechanism(
+        status: SettlementStatus,
+        map: &KinematicMap,
+        solver: lp::SolverInfo,
+    ) -> SettlementSolution {
+        SettlementSolution {
+            status,
+            mechanism: vec![],
+            pn: vec![0.0; map.num_points()],
+            pt: vec![0.0; map.num_tangent_rows()],
+            primal: f64::NAN,
+            dual: f64::NAN,
+            solver,
+        }
+    }
+}
+
 /// Solve both LPs.
 pub fn solve_settlement(
     st: &Structure,
@@ -55,15 +74,11 @@ pub fn solve_settlement(
     };
     let n = map.num_points();
     if status != SettlementStatus::Mechanism {
-        return Ok(SettlementSolution {
+        return Ok(SettlementSolution::without_mechanism(
             status,
-            mechanism: vec![],
-            pn: vec![0.0; n],
-            pt: vec![0.0; map.num_tangent_rows()],
-            primal: f64::NAN,
-            dual: f64::NAN,
-            solver: opts.info(),
-        });
+            map,
+            opts.info(),
+        ));
     }
     let fp = programs::settlement_force_program(map, &dead);
     let dual = fp.solve(opts)?;
@@ -218,7 +233,6 @@ pub fn settlement_from_force_solution(
     sol: &lp::LpSolution,
     solver: lp::SolverInfo,
 ) -> SettlementSolution {
-    let n = map.num_points();
     let status = match sol.status {
         LpStatus::Optimal => SettlementStatus::Mechanism,
         // No equilibrium under the dead loads: the primal is unbounded.
@@ -227,15 +241,7 @@ pub fn settlement_from_force_solution(
         LpStatus::Unbounded => SettlementStatus::Incompatible,
     };
     if status != SettlementStatus::Mechanism {
-        return SettlementSolution {
-            status,
-            mechanism: vec![],
-            pn: vec![0.0; n],
-            pt: vec![0.0; map.num_tangent_rows()],
-            primal: f64::NAN,
-            dual: f64::NAN,
-            solver,
-        };
+        return SettlementSolution::without_mechanism(status, map, solver);
     }
     let dead = st.load_vector(false);
     let d: Vec<f64> = sol.row_dual[..map.num_dofs].iter().map(|y| -y).collect();

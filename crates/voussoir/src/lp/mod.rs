@@ -1,6 +1,6 @@
 //! The solver layer: a solver-neutral sparse program, the [`Backend`] trait, and one file per
 //! backend ([`highs`], [`clarabel`]). Every solve in voussoir goes through this module; nothing
-//! outside the backend files names `highs`, `highs_sys` or `clarabel`.
+//! outside the backend files names a solver crate.
 //!
 //! ```text
 //!   optimise  cᵀx   (minimise or maximise)

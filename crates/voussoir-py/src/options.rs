@@ -46,7 +46,7 @@ pub struct Common {
     pub settlement_form: String,
 }
 
-/// `SettleArgs` of the CLI: moves (θ in degrees), fixed supports, a profile.
+/// `SettleArgs` of the CLI: moves (θ in degrees), fixed supports, a profile (as `Profile` JSON).
 #[derive(FromPyObject, Clone, Debug, Default)]
 #[pyo3(from_item_all)]
 pub struct Settle {
@@ -73,7 +73,12 @@ impl Settle {
             move_support(model, name, motion)?;
         }
         if let Some(p) = &self.profile {
-            apply_profile(model, &Profile::parse(p)?)?;
+            // The profile arrives as the JSON of `Profile` (python/voussoir/_options.py parses
+            // the CLI's string form, as the CLI does in its front end).
+            let profile: Profile = serde_json::from_str(p)
+                .map_err(|e| Fail::Model(format!("invalid settlement profile: {e}")))?;
+            profile.validate()?;
+            apply_profile(model, &profile)?;
         }
         Ok(())
     }

@@ -17,7 +17,7 @@ rotations in results in radians.
 """
 
 from . import _native
-from . import generate
+from . import compas, generate
 from ._analysis import capacity, incremental, limit, settle, sweep, tilt
 from ._model import Model, Support
 from ._native import ModelError, SolverError, VoussoirError
@@ -37,6 +37,7 @@ __all__ = [
     "Model",
     "Support",
     "generate",
+    "compas",
     "limit",
     "settle",
     "capacity",

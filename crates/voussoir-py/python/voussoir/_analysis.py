@@ -276,7 +276,7 @@ def sweep(
     c = o.common(tolerance, method, friction, compressive_strength, "linear", 16, settlement_form)
     s = o.settle(move, fixed, profile)
     m = _model(model)
-    base = _native.sweep_base(m._json, c, s, kind, n, float(cov))
+    base = _native.sweep_base(m._json, c, s, kind, n, float(cov), seed)
     i, shards = _shard(shard)
     tasks = [k for k in range(n) if k % shards == i]
     if executor is None:

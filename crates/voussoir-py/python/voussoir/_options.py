@@ -7,6 +7,7 @@ Names and defaults are those of the CLI flags (``crates/voussoir-cli/src/common.
 
 from __future__ import annotations
 
+import json
 import math
 from typing import Iterable, Mapping, Optional, Sequence, Union
 
@@ -98,12 +99,64 @@ def fixed_list(fixed: Union[str, Iterable[str], None]) -> list:
     return [str(f) for f in fixed]
 
 
-def settle(move: Moves = None, fixed=None, profile: Optional[str] = None) -> dict:
-    if profile is not None and not isinstance(profile, str):
-        raise TypeError(
-            "profile must be a string: uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…"
+def parse_profile(s: str) -> dict:
+    """The CLI's profile syntax (``uniform:X0,X1,V``, ``linear:X0,V0,X1,V1``,
+    ``table:X,V;X,V;…``, metres) as the library's ``Profile`` (its JSON form), with the CLI's
+    message when it cannot be read (crates/voussoir-cli/src/common.rs, ``parse_profile``)."""
+    from ._native import ModelError
+
+    def bad():
+        return ModelError(
+            f"cannot read settlement profile '{s}': expected uniform:X0,X1,V or "
+            "linear:X0,V0,X1,V1 or table:X,V;X,V;…"
         )
-    return {"moves": moves(move), "fixed": fixed_list(fixed), "profile": profile}
+
+    kind, sep, rest = s.partition(":")
+    if not sep:
+        raise bad()
+
+    def nums(t):
+        try:
+            return [float(x.strip()) for x in t.split(",")]
+        except ValueError:
+            raise bad() from None
+
+    if kind == "uniform":
+        v = nums(rest)
+        if len(v) != 3:
+            raise bad()
+        return {"type": "uniform", "x0": v[0], "x1": v[1], "v": v[2]}
+    if kind == "linear":
+        v = nums(rest)
+        if len(v) != 4:
+            raise bad()
+        return {"type": "linear", "x0": v[0], "v0": v[1], "x1": v[2], "v1": v[3]}
+    if kind == "table":
+        points = []
+        for pair in (t for t in rest.split(";") if t.strip()):
+            v = nums(pair)
+            if len(v) != 2:
+                raise bad()
+            points.append(v)
+        return {"type": "table", "points": points}
+    raise bad()
+
+
+def settle(move: Moves = None, fixed=None, profile=None) -> dict:
+    """``profile``: the CLI's string form, or a dict of the library's ``Profile``
+    (``{"type": "uniform", "x0", "x1", "v"}``, ``{"type": "linear", "x0", "v0", "x1", "v1"}``,
+    ``{"type": "table", "points": [[x, v], …]}``)."""
+    if profile is None:
+        p = None
+    elif isinstance(profile, str):
+        p = json.dumps(parse_profile(profile))
+    elif isinstance(profile, Mapping):
+        p = json.dumps(dict(profile))
+    else:
+        raise TypeError(
+            "profile must be a string (uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…) or a dict"
+        )
+    return {"moves": moves(move), "fixed": fixed_list(fixed), "profile": p}
 
 
 def pair(name: str, p) -> tuple:

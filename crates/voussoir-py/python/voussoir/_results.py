@@ -426,7 +426,7 @@ class TiltResult(Result):
 class SweepResult:
     """A sweep of settlement analyses: one record per scenario, in task order, with the fields
     of ``voussoir sweep`` (index, kind, parameter, status, works, duality_gap, certified, hinges,
-    hinge_joints, open_joints, max_displacement, max_rotation, motions)."""
+    hinge_joints, open_joints, max_displacement, max_rotation, motions, solver)."""
 
     __slots__ = ("_lines",)
 
@@ -480,14 +480,17 @@ class SweepResult:
         return text
 
     def to_dataframe(self):
-        """The records as a DataFrame (motions flattened to ``motion.NAME.u/v/theta``)."""
+        """The records as a DataFrame (motions flattened to ``motion.NAME.u/v/theta``, the
+        solver to ``solver.KEY``)."""
         pd = _pandas()
         rows = []
         for r in self.records:
-            row = {k: v for k, v in r.items() if k != "motions"}
+            row = {k: v for k, v in r.items() if k not in ("motions", "solver")}
             for name, m in r["motions"].items():
                 for key, x in zip(("u", "v", "theta"), m):
                     row[f"motion.{name}.{key}"] = x
+            for key, x in (r.get("solver") or {}).items():
+                row[f"solver.{key}"] = x
             rows.append(row)
         return pd.DataFrame(rows)
 

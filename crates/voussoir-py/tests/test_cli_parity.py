@@ -145,3 +145,17 @@ def test_absurd_input_is_an_exception_not_a_crash(cli, paper_arch):
         v.settle(v.Model.from_json(paper_arch), move={"right": (1e300, 0)})
     assert str(e.value) == r.stderr.strip().removeprefix("error: ")
     assert v.limit(v.Model.from_json(paper_arch)).load_multiplier > 0
+
+
+def test_profile_settlement_matches_cli(cli, tmp_path):
+    # The README's wall example: the foundation settles 1 cm under x ∈ [2.8, 4.0].
+    wall = tmp_path / "wall.json"
+    cli("gen", "wall", "-o", wall)
+    out = cli("settle", wall, "--profile", "uniform:2.8,4.0,-0.01", "--json").stdout
+    m = v.Model.from_json(wall)
+    assert v.settle(m, profile="uniform:2.8,4.0,-0.01").to_json() == out
+    assert v.settle(m, profile={"type": "uniform", "x0": 2.8, "x1": 4.0, "v": -0.01}).to_json() == out
+    r = cli("settle", wall, "--profile", "uniform:2.8", check=False)
+    with pytest.raises(v.ModelError) as e:
+        v.settle(m, profile="uniform:2.8")
+    assert str(e.value) == r.stderr.strip().removeprefix("error: ")

@@ -5,6 +5,7 @@ mod capacity;
 mod common;
 mod draw_args;
 mod gen;
+mod identify;
 mod import;
 mod incremental;
 mod plot;
@@ -74,6 +75,9 @@ enum Command {
     /// Incremental (nonlinear kinematic) analysis: λ against the displacement of a control
     /// point as the mechanism evolves and cracks close.
     Incremental(incremental::IncrementalArgs),
+    /// Inverse settlement analysis: the support motions whose settlement mechanism opens the
+    /// observed cracks, with misfits, a forward-analysis certificate and identifiability.
+    Identify(identify::IdentifyArgs),
     /// Draw a saved result (limit, settlement, capacity, incremental; several curves on one
     /// plot) or a model: `-o fig.svg`, `fig.png` or `report.html`.
     Plot(plot::PlotArgs),
@@ -110,6 +114,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Incremental(a) => incremental::run(a),
         Command::Plot(a) => plot::run(a),
         Command::Tilt(a) => tilt::run(a),
+        Command::Identify(a) => identify::run(a),
     }
 }
 

@@ -602,7 +602,8 @@ pub fn identify(
         active_set_fixed = true;
     }
     let Some((ip, sol)) = solved else {
-        return closest(st, &st0, &map, unknowns, &unit, &bounds, &roles, &pobs, opts);
+        let why = "no motion within the bounds makes this pattern a settlement mechanism";
+        return closest(st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, why);
     };
     let a = ip.amplitudes(&sol.x);
     let d = ip.motion(&sol.x);
@@ -610,6 +611,21 @@ pub fn identify(
     let map_id = KinematicMap::new(&st_id);
     let (open, _) = map_id.jumps(&d, 1.0);
     let omax = max_abs(&open);
+    // The pattern is produced only if every crack observed open is predicted open: the LP
+    // forbids force there but cannot ask for a strictly positive opening.
+    let wmax = pobs.iter().fold(0.0f64, |m, o| m.max(o.width));
+    let shut: Vec<String> = pobs
+        .iter()
+        .filter(|o| o.width > 0.0 && open[o.point] <= 1e-7 * wmax)
+        .map(|o| map.points[o.point].joint.to_string())
+        .collect();
+    if !shut.is_empty() {
+        let why = format!(
+            "the best motion with this pattern leaves the cracks at joints {} closed",
+            dedup(shut)
+        );
+        return closest(st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, &why);
+    }
     let forward = settle_with(&st_id, &opts.solver, opts.form)?;
     let (observations, total, maxm) = compare(&st_id, &map_id, &pobs, &open);
     let predicted_cracks = predicted(&st_id, &map_id, &open, &roles, omax);
@@ -894,7 +910,6 @@ fn support_motions(st: &Structure) -> Vec<SupportMotion> {
 #[allow(clippy::too_many_arguments)]
 fn closest(
     st: &Structure,
-    st0: &Structure,
     map: &KinematicMap,
     unknowns: &[Unknown],
     unit: &[(Vec<f64>, Vec<f64>)],
@@ -902,6 +917,7 @@ fn closest(
     roles: &[PointRole],
     pobs: &[PointObs],
     opts: &IdentifyOptions,
+    reason: &str,
 ) -> Result<IdentifyResult> {
     let gtol = pobs.iter().map(|o| o.tolerance).fold(f64::INFINITY, f64::min);
     let gtol = if gtol.is_finite() { gtol } else { DEFAULT_TOLERANCE };
@@ -930,7 +946,6 @@ fn closest(
     }
     let a = cp.amplitudes(&sol.x);
     let st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
-    let _ = st0;
     let map_c = KinematicMap::new(&st_c);
     let forward = settle_with(&st_c, &opts.solver, opts.form)?;
     let mut open = vec![0.0; map_c.num_points()];
@@ -979,7 +994,7 @@ fn closest(
     Ok(IdentifyResult {
         status: IdentifyStatus::Inconsistent,
         message: format!(
-            "no settlement of the unknown support motions produces the observed crack pattern; the closest motion (least misfit over every observed point, the pattern relaxed) is below, with the cracks its own settlement analysis opens (misfit {total:.3} tolerances){why}"
+            "no settlement of the unknown support motions produces the observed crack pattern ({reason}); the closest motion (least misfit over every observed point, the pattern relaxed) is below, with the cracks its own settlement analysis opens (misfit {total:.3} tolerances){why}"
         ),
         unknowns: unknown_results,
         support_motions: support_motions(&st_c),

@@ -32,6 +32,9 @@
 //!   observed closed:                       u_n,k = 0        (p_n,k ≥ 0 free to carry force)
 //!   unobserved:                            nothing beyond z ≥ 0, p_n ≥ 0
 //! ```
+//! except on frictional joints, where an open point may also be a point sliding with dilatancy
+//! (`u_n = μ|u_t| > 0` while carrying force): there `p_n = 0` is not imposed and its
+//! complementarity is left to the check below ([`decided`]).
 //! (On a closed frictional point `u_n = z + μ(s⁺ + s⁻) = 0` with `z, s ≥ 0` also stops sliding,
 //! so the Coulomb rows' complementarity holds there; on an open point `p_n = 0` makes both
 //! Coulomb rows active when the cohesion is zero.) The inverse LP is then
@@ -66,11 +69,25 @@ pub enum PointRole {
     Unobserved,
 }
 
+/// Whether point `k` is taken as open (`p_n = 0`), in contact (`z = 0`: zero reduced cost, which
+/// on a Heyman joint is zero opening) or undecided. An observed-open point of a frictional joint
+/// is undecided: it may be open, or slide with dilatancy (`u_n = μ|u_t| > 0`) while carrying
+/// force.
+pub fn decided(map: &KinematicMap, roles: &[PointRole], activity: &Activity, k: usize) -> Option<bool> {
+    let later = || activity.point_open.get(k).copied().flatten();
+    match roles[k] {
+        PointRole::Open { .. } if map.laws[map.points[k].joint].friction.is_some() => later(),
+        PointRole::Open { .. } => Some(true),
+        PointRole::Closed => Some(false),
+        PointRole::Unobserved => later(),
+    }
+}
+
 /// Active-set decisions taken after a first solve, where the observations left complementarity
 /// open. `None` everywhere: nothing fixed.
 #[derive(Clone, Debug, Default)]
 pub struct Activity {
-    /// Per point: `Some(true)` open (no force), `Some(false)` closed (no opening).
+    /// Per point: `Some(true)` open (no force), `Some(false)` in contact (zero reduced cost).
     pub point_open: Vec<Option<bool>>,
     /// Per row of the force program: `Some(true)` the row is active (equality at its bound),
     /// `Some(false)` inactive (multiplier zero).
@@ -148,13 +165,7 @@ impl IdentifyProgram {
                 col_point[j] = Some((k, false));
             }
         }
-        let open_at = |k: usize| -> Option<bool> {
-            match roles[k] {
-                PointRole::Open { .. } => Some(true),
-                PointRole::Closed => Some(false),
-                PointRole::Unobserved => activity.point_open.get(k).copied().flatten(),
-            }
-        };
+        let open_at = |k: usize| -> Option<bool> { decided(map, roles, activity, k) };
         // x columns: (F)'s forces; an open point carries no normal force.
         for j in 0..nc {
             let (mut lo, mut hi) = (f.col_lower[j], f.col_upper[j]);
@@ -170,7 +181,8 @@ impl IdentifyProgram {
         let zrow0 = lp.num_rows();
         for j in 0..nc {
             let c0 = f.cost[j];
-            if f.col_lower[j] == -INF {
+            let closed = matches!(col_point[j], Some((k, true)) if open_at(k) == Some(false));
+            if f.col_lower[j] == -INF || closed {
                 lp.add_row(-c0, -c0);
             } else {
                 lp.add_row(-c0, INF);
@@ -191,11 +203,7 @@ impl IdentifyProgram {
                     urow[k] = Some(r);
                     misfit_rows.push((k, r, 1.0 / tolerance));
                 }
-                PointRole::Unobserved => {
-                    if activity.point_open.get(k).copied().flatten() == Some(false) {
-                        urow[k] = Some(lp.add_row(-g0, -g0));
-                    }
-                }
+                PointRole::Unobserved => {}
             }
         }
         // y columns.
@@ -367,11 +375,11 @@ impl ClosestProgram {
             }
         }
         for entries in dcols {
-            lp.add_column(0.0, -INF, INF, entries);
+            lp.add_column(0.0, -INF, INF, merged(entries));
         }
         let mut a = Vec::new();
         for (q, entries) in acols.into_iter().enumerate() {
-            a.push(lp.add_column(0.0, bounds[q].0, bounds[q].1, entries));
+            a.push(lp.add_column(0.0, bounds[q].0, bounds[q].1, merged(entries)));
         }
         for (w, r) in extra {
             lp.add_column(w, 0.0, INF, [(r, -1.0)]);
@@ -387,4 +395,18 @@ impl ClosestProgram {
     pub fn amplitudes(&self, x: &[f64]) -> Vec<f64> {
         self.a.iter().map(|&j| x[j]).collect()
     }
+}
+
+/// Sum the entries of a column that fall on the same row (a Coulomb row combines the opening
+/// and sliding rows, which share DOFs): HiGHS refuses repeated entries.
+fn merged(mut e: Vec<(usize, f64)>) -> Vec<(usize, f64)> {
+    e.sort_by_key(|&(r, _)| r);
+    let mut out: Vec<(usize, f64)> = Vec::with_capacity(e.len());
+    for (r, v) in e {
+        match out.last_mut() {
+            Some((lr, lv)) if *lr == r => *lv += v,
+            _ => out.push((r, v)),
+        }
+    }
+    out
 }

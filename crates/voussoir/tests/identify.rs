@@ -7,7 +7,7 @@ use voussoir::analysis::identify::{
     identify, Crack, IdentifyOptions, IdentifyResult, IdentifyStatus, Observations, Unknown, Width,
 };
 use voussoir::analysis::settlement::{settle_with, SettlementForm, SettlementStatus};
-use voussoir::analysis::SettlementResult;
+use voussoir::analysis::{settle, SettlementResult};
 use voussoir::generate::{arch, wall, ArchSpec, LiveLoad, WallSpec};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::SolverOptions;
@@ -37,9 +37,12 @@ fn with_moves(mut m: Model, moves: &[(&str, [f64; 3])], fixed: &[&str]) -> Model
 
 fn forward(m: &Model, form: SettlementForm) -> (Structure, SettlementResult) {
     let st = Structure::new(m, BuildOptions::default()).unwrap();
-    let r = settle_with(&st, &SolverOptions::default(), form).unwrap();
+    let r = match form {
+        SettlementForm::Both => settle(&st, &SolverOptions::default()).unwrap(),
+        _ => settle_with(&st, &SolverOptions::default(), form).unwrap(),
+    };
     assert_eq!(r.status, SettlementStatus::Mechanism);
-    assert!(r.certificate.as_ref().unwrap().ok);
+    assert!(r.certificate.as_ref().unwrap().ok, "{:?} {}", r.certificate, r.message);
     (st, r)
 }
 

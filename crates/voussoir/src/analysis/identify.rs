@@ -21,12 +21,12 @@
 //!   least-misfit admissible mechanism with optimality dropped, see
 //!   [`crate::programs_identify::ClosestProgram`]) with its forward analysis.
 
-use crate::analysis::settlement::{settle_with, SettlementForm, SettlementResult, SettlementStatus};
+use crate::analysis::settlement::{settle, settle_with, SettlementForm, SettlementResult, SettlementStatus};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
 use crate::programs::ForceProgram;
-use crate::programs_identify::{Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole};
+use crate::programs_identify::{decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole};
 use crate::settlement_input::Profile;
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
@@ -537,6 +537,15 @@ fn motions_of(st: &Structure, unknowns: &[Unknown], a: &[f64]) -> Vec<[f64; 3]> 
     m
 }
 
+/// The forward settlement analysis, as `voussoir settle` runs it: [`settle`] for both LPs,
+/// [`settle_with`] for the force-only form.
+fn forward_settle(st: &Structure, opts: &IdentifyOptions) -> Result<SettlementResult> {
+    match opts.form {
+        SettlementForm::Both => settle(st, &opts.solver),
+        form => settle_with(st, &opts.solver, form),
+    }
+}
+
 fn max_abs(v: &[f64]) -> f64 {
     v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
@@ -585,21 +594,22 @@ pub fn identify(
     });
     let mut activity = Activity::default();
     let mut active_set_fixed = false;
-    let mut solved: Option<(IdentifyProgram, lp::LpSolution)> = None;
-    for pass in 0..2 {
-        let ip = IdentifyProgram::new(&map, &fp, &unit, &bounds, &roles, &activity, MisfitMode::Minimise);
-        let sol = lp::solve(&ip.lp, &opts.solver)?;
-        if sol.status != LpStatus::Optimal {
-            break;
+    let ip = IdentifyProgram::new(&map, &fp, &unit, &bounds, &roles, &activity, MisfitMode::Minimise);
+    let sol = lp::solve(&ip.lp, &opts.solver)?;
+    let mut solved = (sol.status == LpStatus::Optimal).then_some((ip, sol));
+    // Complementarity left open by the observations: impose the active set the solution
+    // suggests and solve once more; keep the first solution if that fails (the certificate
+    // then tells whether the forward analysis agrees).
+    if let Some((ip, sol)) = &solved {
+        if let Some(fix) = open_complementarity(&map, &fp, ip, &sol.x, &roles) {
+            let ip2 = IdentifyProgram::new(&map, &fp, &unit, &bounds, &roles, &fix, MisfitMode::Minimise);
+            let sol2 = lp::solve(&ip2.lp, &opts.solver)?;
+            if sol2.status == LpStatus::Optimal {
+                activity = fix;
+                active_set_fixed = true;
+                solved = Some((ip2, sol2));
+            }
         }
-        // Complementarity left open by the observations.
-        let fix = open_complementarity(&map, &fp, &ip, &sol.x, &roles);
-        if fix.is_none() || pass == 1 {
-            solved = Some((ip, sol));
-            break;
-        }
-        activity = fix.unwrap();
-        active_set_fixed = true;
     }
     let Some((ip, sol)) = solved else {
         let why = "no motion within the bounds makes this pattern a settlement mechanism";
@@ -626,7 +636,7 @@ pub fn identify(
         );
         return closest(st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, &why);
     }
-    let forward = settle_with(&st_id, &opts.solver, opts.form)?;
+    let forward = forward_settle(&st_id, opts)?;
     let (observations, total, maxm) = compare(&st_id, &map_id, &pobs, &open);
     let predicted_cracks = predicted(&st_id, &map_id, &open, &roles, omax);
     // Certificate: run the forward analysis and compare.
@@ -749,7 +759,7 @@ fn open_complementarity(
     let mut need = false;
     let mut point_open = vec![None; map.num_points()];
     for k in 0..map.num_points() {
-        if roles[k] != PointRole::Unobserved || map.bilateral[k] {
+        if map.bilateral[k] || decided(map, roles, &Activity::default(), k).is_some() {
             continue;
         }
         let Some(j) = fp.pn[k] else { continue };
@@ -947,7 +957,7 @@ fn closest(
     let a = cp.amplitudes(&sol.x);
     let st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
     let map_c = KinematicMap::new(&st_c);
-    let forward = settle_with(&st_c, &opts.solver, opts.form)?;
+    let forward = forward_settle(&st_c, opts)?;
     let mut open = vec![0.0; map_c.num_points()];
     if forward.status == SettlementStatus::Mechanism {
         for (j, jr) in forward.joints.iter().enumerate() {

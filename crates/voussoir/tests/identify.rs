@@ -339,5 +339,5 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
     let u = r.unknowns[0].value;
     assert!(u > 0.0, "closest u = {u}");
     assert!(r.predicted_cracks.iter().any(|c| c.joint == 13 && c.observed == "closed"));
-    println!("{}\nclosest u = {u}", r.message);
+    println!("{}\nclosest u = {u}\n{:?}\n{:?}", r.message, r.observations, r.predicted_cracks);
 }

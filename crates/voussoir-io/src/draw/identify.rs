@@ -31,7 +31,11 @@ pub fn identify_scene(r: &IdentifyResult) -> Scene<'_> {
         if i > 0 {
             line.push_str("   ·   ");
         }
-        let _ = write!(line, "{} = {}", u.name, human(u.value, 5));
+        if u.name.ends_with(".theta") {
+            let _ = write!(line, "{} = {} rad", u.name, human(u.value, 5));
+        } else {
+            let _ = write!(line, "{} = {} mm", u.name, human(u.value * 1000.0, 5));
+        }
         if !u.identifiable && r.status == IdentifyStatus::Identified {
             line.push_str(" (not identifiable)");
         }
@@ -42,11 +46,20 @@ pub fn identify_scene(r: &IdentifyResult) -> Scene<'_> {
         format!(
             "{} observed points, misfit {} tolerances in total (largest {} mm)",
             r.observations.len(),
-            human(r.total_misfit, 3),
-            human(r.max_misfit * 1000.0, 3)
+            human(tiny(r.total_misfit), 3),
+            human(tiny(r.max_misfit) * 1000.0, 3)
         ),
     );
     scene
+}
+
+/// Round-off misfits (below 1e-9) shown as 0.
+fn tiny(x: f64) -> f64 {
+    if x.abs() < 1e-9 {
+        0.0
+    } else {
+        x
+    }
 }
 
 /// Displacement of a joint point: mean of the two sides' small displacements.

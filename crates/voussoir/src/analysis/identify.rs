@@ -675,7 +675,7 @@ pub fn identify(
                 }
             }
         }
-        let value = a[q];
+        let value = a[q] + 0.0; // no "-0"
         let (identifiable, note) = if !computed {
             (false, "range not computed".to_string())
         } else if !feasible {
@@ -954,7 +954,7 @@ fn closest(
             "identify: the observed pattern cannot be produced by any settlement, and no admissible motion within the bounds exists either (check the bounds and the known support motions)".into(),
         ));
     }
-    let a = cp.amplitudes(&sol.x);
+    let a: Vec<f64> = cp.amplitudes(&sol.x).iter().map(|v| v + 0.0).collect();
     let st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
     let map_c = KinematicMap::new(&st_c);
     let forward = forward_settle(&st_c, opts)?;

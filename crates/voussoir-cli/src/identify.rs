@@ -6,7 +6,9 @@ use crate::draw_args::{write_drawing, DrawArgs};
 use clap::Args;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use voussoir::analysis::identify::{identify, IdentifyOptions, IdentifyResult, Observations, Unknown};
+use voussoir::analysis::identify::{
+    identify, Component, IdentifyOptions, IdentifyResult, Observations, Unknown,
+};
 use voussoir::structure::Structure;
 use voussoir_io::draw::{self, ReportOptions};
 
@@ -44,7 +46,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
         .map_err(|e| Fail(format!("{}: invalid observations: {e}", a.cracks.display())))?;
     let mut unknowns = Vec::new();
     for spec in &a.unknowns {
-        unknowns.extend(Unknown::parse(spec, &st)?);
+        unknowns.extend(parse_unknown(spec, &st)?);
     }
     let r = identify(
         &st,
@@ -143,4 +145,115 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
         );
     }
     s
+}
+
+/// Split `[LO:HI]` bounds (either side may be empty).
+fn parse_bounds(s: &str, spec: &str) -> Result<(Option<f64>, Option<f64>), Fail> {
+    let bad = || Fail(format!("--unknown {spec}: bounds are written [LO:HI] (either side may be empty)"));
+    let inner = s
+        .strip_prefix('[')
+        .and_then(|t| t.strip_suffix(']'))
+        .ok_or_else(bad)?;
+    let (lo, hi) = inner.split_once(':').ok_or_else(bad)?;
+    let num = |t: &str| -> Result<Option<f64>, Fail> {
+        let t = t.trim();
+        if t.is_empty() {
+            return Ok(None);
+        }
+        t.parse::<f64>().map(Some).map_err(|_| bad())
+    };
+    Ok((num(lo)?, num(hi)?))
+}
+
+/// `f22` → ("f", 22).
+fn split_number(name: &str) -> Option<(&str, u64)> {
+    let i = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+    if i == name.len() {
+        return None;
+    }
+    Some((&name[..i], name[i..].parse().ok()?))
+}
+
+/// One `--unknown` specification (see docs/identify.md):
+/// `NAME=COMP[,COMP…]`, `A..B=COMP` (supports A to B sharing one value), or a profile with one
+/// value written `?` (`uniform:X0,X1,?`, `linear:X0,V0,X1,?`, `table:X,V;X,?;…`); each component
+/// or `?` may carry bounds `[LO:HI]`.
+pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
+    let spec = spec.trim();
+    if let Some((kind, _)) = spec.split_once(':') {
+        if matches!(kind, "uniform" | "linear" | "table") {
+            return parse_profile_unknown(spec, st).map(|u| vec![u]);
+        }
+    }
+    let (names, comps) = spec.split_once('=').ok_or_else(|| {
+        Fail(format!("--unknown {spec}: expected NAME=u,v,theta, A..B=v or a profile with a '?' (uniform:X0,X1,?)"))
+    })?;
+    let label = names.trim();
+    let names: Vec<String> = if let Some((a, b)) = label.split_once("..") {
+        let (Some((pa, na)), Some((pb, nb))) = (split_number(a.trim()), split_number(b.trim())) else {
+            return Err(Fail(format!("--unknown {spec}: a range A..B needs numbered names with one prefix, e.g. f22..f43")));
+        };
+        if pa != pb || na > nb {
+            return Err(Fail(format!("--unknown {spec}: a range A..B needs one prefix and A's number ≤ B's")));
+        }
+        (na..=nb).map(|n| format!("{pa}{n}")).collect()
+    } else {
+        vec![label.to_string()]
+    };
+    let mut out = Vec::new();
+    for c in comps.split(',') {
+        let c = c.trim();
+        let (c, lo, hi) = match c.find('[') {
+            Some(i) => {
+                let (lo, hi) = parse_bounds(&c[i..], spec)?;
+                (&c[..i], lo, hi)
+            }
+            None => (c, None, None),
+        };
+        let comp = match c.trim() {
+            "u" => Component::U,
+            "v" => Component::V,
+            "theta" | "θ" => Component::Theta,
+            other => {
+                return Err(Fail(format!("--unknown {spec}: component '{other}' is not u, v or theta")));
+            }
+        };
+        out.push(Unknown::supports(st, label, &names, comp, lo, hi)?);
+    }
+    Ok(out)
+}
+
+fn parse_profile_unknown(spec: &str, st: &Structure) -> Result<Unknown, Fail> {
+    let bad = |m: &str| Fail(format!("--unknown {spec}: {m}"));
+    let q = spec
+        .find('?')
+        .ok_or_else(|| bad("a profile unknown needs one value written '?'"))?;
+    if spec[q + 1..].contains('?') {
+        return Err(bad("only one '?' per profile"));
+    }
+    let rest = &spec[q + 1..];
+    let (tail, lo, hi) = if rest.starts_with('[') {
+        let end = rest.find(']').ok_or_else(|| bad("unclosed bounds"))?;
+        let (lo, hi) = parse_bounds(&rest[..=end], spec)?;
+        (&rest[end + 1..], lo, hi)
+    } else {
+        (rest, None, None)
+    };
+    let head = &spec[..q];
+    // The '?' must be a value, not a position: count the numbers before it.
+    let (kind, nums) = head.split_once(':').unwrap_or((head, ""));
+    let before = nums.split([',', ';']).count() - 1;
+    let is_value = match kind {
+        "uniform" => before == 2,
+        "linear" => before == 1 || before == 3,
+        "table" => before % 2 == 1,
+        _ => false,
+    };
+    if !is_value {
+        return Err(bad("the '?' must stand for a settlement value v, not a position x"));
+    }
+    let p0 = crate::common::parse_profile(&format!("{head}0{tail}"))?;
+    let p1 = crate::common::parse_profile(&format!("{head}1{tail}"))?;
+    let name = format!("{head}?{tail}");
+    Ok(Unknown::profile(st, &name, &p0, &p1, lo, hi)?)
 }

@@ -157,12 +157,15 @@ impl IdentifyProgram {
         }
         // Which point each column of (F) belongs to, and whether it is a p_n column.
         let mut col_point: Vec<Option<(usize, bool)>> = vec![None; nc];
+        let nt = map.tangents_per_point;
         for k in 0..npts {
             if let Some(j) = fp.pn[k] {
                 col_point[j] = Some((k, true));
             }
-            if let Some(j) = fp.pt[k] {
-                col_point[j] = Some((k, false));
+        }
+        for (r, c) in fp.pt.iter().enumerate() {
+            if let Some(j) = c {
+                col_point[*j] = Some((r / nt.max(1), false));
             }
         }
         let open_at = |k: usize| -> Option<bool> { decided(map, roles, activity, k) };
@@ -247,13 +250,17 @@ impl IdentifyProgram {
                 if let Some(j) = fp.pn[k] {
                     entries.push((zrow0 + j, gn[k]));
                 }
-                if let Some(j) = fp.pt[k] {
-                    entries.push((zrow0 + j, gt[k]));
-                }
                 if let Some(r) = urow[k] {
                     entries.push((r, gn[k]));
                 }
             }
+            // Shear columns, one per point and tangent (`g_t` has the same numbering).
+            for (r, c) in fp.pt.iter().enumerate() {
+                if let Some(j) = c {
+                    entries.push((zrow0 + j, gt[r]));
+                }
+            }
+            let entries = merged(entries);
             let cost = match mode {
                 MisfitMode::WithinTolerance { unknown, .. } if unknown == q => 1.0,
                 _ => 0.0,
@@ -330,47 +337,55 @@ impl ClosestProgram {
         let mut dcols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); map.num_dofs];
         let mut acols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); unit.len()];
         let mut extra: Vec<(f64, usize)> = Vec::new(); // misfit columns: (1/τ, row)
-        // Adds a row `coef_n·u_n + coef_t·u_t ∈ [lo, hi]` (bounds without the base motion).
-        let mut add = |lp: &mut LinearProgram, k: usize, cn: f64, ct: f64, lo: f64, hi: f64| {
-            let g0 = cn * map.support_normal[k] + ct * map.support_tangent[k];
-            let r = lp.add_row(lo - g0, hi - g0);
-            for (m, c) in [(&map.normal, cn), (&map.tangent, ct)] {
+        // Adds a row `cn·u_n,k + ct·u_t,r ∈ [lo, hi]` (`r`: a sliding row of point k), bounds
+        // without the base motion.
+        let mut add = |lp: &mut LinearProgram, k: usize, cn: f64, r: usize, ct: f64, lo: f64, hi: f64| {
+            let g0 = cn * map.support_normal[k] + ct * map.support_tangent[r];
+            let row = lp.add_row(lo - g0, hi - g0);
+            for (m, i, c) in [(&map.normal, k, cn), (&map.tangent, r, ct)] {
                 if c != 0.0 {
-                    for (dof, v) in KinematicMap::row(m, k) {
-                        dcols[dof].push((r, c * v));
+                    for (dof, v) in KinematicMap::row(m, i) {
+                        dcols[dof].push((row, c * v));
                     }
                 }
             }
             for (q, (gn, gt)) in unit.iter().enumerate() {
-                let v = cn * gn[k] + ct * gt[k];
+                let v = cn * gn[k] + ct * gt[r];
                 if v != 0.0 {
-                    acols[q].push((r, v));
+                    acols[q].push((row, v));
                 }
             }
-            r
+            row
         };
+        let nt = map.tangents_per_point;
         for k in 0..npts {
             if map.gap[k] > 0.0 {
                 continue;
             }
             let law = &map.laws[map.points[k].joint];
+            let r0 = k * nt;
             if map.bilateral[k] {
-                add(&mut lp, k, 1.0, 0.0, 0.0, 0.0);
-                add(&mut lp, k, 0.0, 1.0, 0.0, 0.0);
+                add(&mut lp, k, 1.0, r0, 0.0, 0.0, 0.0);
+                for r in r0..r0 + nt {
+                    add(&mut lp, k, 0.0, r, 1.0, 0.0, 0.0);
+                }
             } else {
-                add(&mut lp, k, 1.0, 0.0, 0.0, INF);
-                match law.friction {
-                    Some(mu) => {
-                        add(&mut lp, k, 1.0, mu, 0.0, INF);
-                        add(&mut lp, k, 1.0, -mu, 0.0, INF);
-                    }
-                    None => {
-                        add(&mut lp, k, 0.0, 1.0, 0.0, 0.0);
+                add(&mut lp, k, 1.0, r0, 0.0, 0.0, INF);
+                for r in r0..r0 + nt {
+                    match law.friction {
+                        // Associative Coulomb, per tangent (in 3D an inscribed box of the cone).
+                        Some(mu) => {
+                            add(&mut lp, k, 1.0, r, mu, 0.0, INF);
+                            add(&mut lp, k, 1.0, r, -mu, 0.0, INF);
+                        }
+                        None => {
+                            add(&mut lp, k, 0.0, r, 1.0, 0.0, 0.0);
+                        }
                     }
                 }
             }
             if let Some((w, tau)) = targets[k] {
-                let r = add(&mut lp, k, 1.0, 0.0, w, w);
+                let r = add(&mut lp, k, 1.0, r0, 0.0, w, w);
                 extra.push((1.0 / tau, r));
             }
         }

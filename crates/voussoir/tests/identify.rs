@@ -4,7 +4,8 @@
 //! motions (which no crack depends on).
 
 use voussoir::analysis::identify::{
-    identify, Crack, IdentifyOptions, IdentifyResult, IdentifyStatus, Observations, Unknown, Width,
+    identify, Component, Crack, IdentifyOptions, IdentifyResult, IdentifyStatus, Observations,
+    Unknown, Width,
 };
 use voussoir::analysis::settlement::{settle_with, SettlementForm, SettlementStatus};
 use voussoir::analysis::{settle, SettlementResult};
@@ -108,11 +109,26 @@ fn exact(r: &SettlementResult, by_coordinates: bool) -> Observations {
     pattern(r, by_coordinates, &mut || 1.0, None)
 }
 
-fn run(st: &Structure, obs: &Observations, unknowns: &[&str], form: SettlementForm) -> IdentifyResult {
+/// What `--unknown` specifications make: one component shared by supports `names`.
+enum U<'a> {
+    Sup(&'a [&'a str], Component, Option<f64>),
+    Uniform(f64, f64),
+}
+
+fn run(st: &Structure, obs: &Observations, unknowns: &[U], form: SettlementForm) -> IdentifyResult {
     let rest = at_rest(st);
     let us: Vec<Unknown> = unknowns
         .iter()
-        .flat_map(|s| Unknown::parse(s, &rest).unwrap())
+        .map(|u| match u {
+            U::Sup(names, c, lo) => {
+                let names: Vec<String> = names.iter().map(|s| s.to_string()).collect();
+                Unknown::supports(&rest, &names.join("+"), &names, *c, *lo, None).unwrap()
+            }
+            U::Uniform(x0, x1) => {
+                let at = |v| Profile::Uniform { x0: *x0, x1: *x1, v };
+                Unknown::profile(&rest, "uniform", &at(0.0), &at(1.0), None, None).unwrap()
+            }
+        })
         .collect();
     identify(
         &rest,
@@ -151,7 +167,7 @@ fn arch_spreading_round_trip_by_coordinates() {
     let obs = exact(&f, true);
     // Three hinges, one open point each.
     assert_eq!(obs.cracks.len(), 3);
-    let r = run(&st, &obs, &["right=u"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&["right"], Component::U, None)], SettlementForm::Both);
     assert_recovers(&r, 0, 0.01);
     // The predicted cracks are the observed ones, at joints 13, 32, 51.
     let joints: Vec<usize> = r.predicted_cracks.iter().map(|c| c.joint).collect();
@@ -167,7 +183,7 @@ fn arch_vertical_settlement_of_a_fixed_support_round_trip() {
     let m = with_moves(paper_arch(), &[("right", [0.0, -0.01, 0.0])], &["right"]);
     let (st, f) = forward(&m, SettlementForm::Both);
     let obs = exact(&f, false);
-    let r = run(&st, &obs, &["right=v"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&["right"], Component::V, None)], SettlementForm::Both);
     assert_recovers(&r, 0, -0.01);
     let joints: Vec<usize> = r.predicted_cracks.iter().map(|c| c.joint).collect();
     let mut hinge_joints: Vec<usize> = f.hinges.iter().map(|h| h.joint).collect();
@@ -177,6 +193,9 @@ fn arch_vertical_settlement_of_a_fixed_support_round_trip() {
     jj.dedup();
     assert_eq!(jj, hinge_joints);
 }
+
+const F5_7: [&str; 3] = ["f5", "f6", "f7"];
+const F0_7: [&str; 8] = ["f0", "f1", "f2", "f3", "f4", "f5", "f6", "f7"];
 
 fn friction_wall() -> Model {
     let mut m = wall(&WallSpec {
@@ -203,7 +222,7 @@ fn running_bond_wall_with_friction_round_trip() {
     let (st, f) = forward(&m, SettlementForm::Both);
     let obs = exact(&f, false);
     assert!(!obs.cracks.is_empty());
-    let r = run(&st, &obs, &["f5..f7=v"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&F5_7, Component::V, None)], SettlementForm::Both);
     assert_recovers(&r, 0, -0.01);
 }
 
@@ -227,11 +246,12 @@ fn facade_half_settlement_with_one_shared_unknown() {
     assert_eq!(moving.len(), b - a + 1, "the settling segments are contiguous");
     let (st, f) = forward(&m, SettlementForm::ForceOnly);
     let obs = exact(&f, false);
-    let spec = format!("f{a}..f{b}=v");
-    let r = run(&st, &obs, &[&spec], SettlementForm::ForceOnly);
+    let names: Vec<String> = (a..=b).map(|k| format!("f{k}")).collect();
+    let names: Vec<&str> = names.iter().map(|s| s.as_str()).collect();
+    let r = run(&st, &obs, &[U::Sup(&names, Component::V, None)], SettlementForm::ForceOnly);
     assert_recovers(&r, 0, -0.2);
     // The same through the profile family `uniform:11,22,?`.
-    let r = run(&st, &obs, &["uniform:11,22,?"], SettlementForm::ForceOnly);
+    let r = run(&st, &obs, &[U::Uniform(11.0, 22.0)], SettlementForm::ForceOnly);
     assert_recovers(&r, 0, -0.2);
 }
 
@@ -256,7 +276,7 @@ fn noisy_widths_still_recover_the_spreading() {
     // Tolerance 25 % of the measured width: |w_obs − w| ≤ 0.2 w ≤ 0.25 w_obs.
     let tol = |w: f64| 0.25 * w;
     let obs = pattern(&f, false, &mut noise(16), Some(&tol));
-    let r = run(&st, &obs, &["right=u"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&["right"], Component::U, None)], SettlementForm::Both);
     assert_eq!(r.status, IdentifyStatus::Identified, "{}", r.message);
     let u = &r.unknowns[0];
     // One unknown, openings proportional to it: the least-absolute fit is a weighted median
@@ -279,7 +299,7 @@ fn noisy_widths_on_the_friction_wall() {
     let (st, f) = forward(&m, SettlementForm::Both);
     let tol = |w: f64| 0.25 * w;
     let obs = pattern(&f, false, &mut noise(7), Some(&tol));
-    let r = run(&st, &obs, &["f5..f7=v"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&F5_7, Component::V, None)], SettlementForm::Both);
     assert_eq!(r.status, IdentifyStatus::Identified, "{}", r.message);
     let u = &r.unknowns[0];
     assert!((u.value + 0.01).abs() <= 0.2 * 0.01, "{}", u.value);
@@ -298,7 +318,7 @@ fn a_rigid_translation_is_not_identifiable() {
     }
     let (st, f) = forward(&m, SettlementForm::Both);
     let obs = exact(&f, false);
-    let r = run(&st, &obs, &["f5..f7=v", "f0..f7=u"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&F5_7, Component::V, None), U::Sup(&F0_7, Component::U, None)], SettlementForm::Both);
     assert_eq!(r.status, IdentifyStatus::Identified, "{}", r.message);
     let v = &r.unknowns[0];
     assert!((v.value + 0.01).abs() <= 1e-6 * 0.01 && v.identifiable, "{v:?}");
@@ -332,7 +352,7 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
         }],
         unobserved: vec![],
     };
-    let r = run(&st, &obs, &["right=u[0:]"], SettlementForm::Both);
+    let r = run(&st, &obs, &[U::Sup(&["right"], Component::U, Some(0.0))], SettlementForm::Both);
     assert_eq!(r.status, IdentifyStatus::Inconsistent);
     assert!(r.message.starts_with("no settlement"), "{}", r.message);
     // The closest motion spreads the arch and opens the haunches too.

@@ -25,7 +25,7 @@ use crate::analysis::settlement::{settle, settle_with, SettlementForm, Settlemen
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
-use crate::programs::ForceProgram;
+use crate::programs::{settlement_force_program, ForceProgram};
 use crate::programs_identify::{decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole};
 use crate::settlement_input::Profile;
 use crate::structure::Structure;
@@ -226,144 +226,76 @@ pub struct Unknown {
     pub upper: Option<f64>,
 }
 
-fn parse_bounds(s: &str, spec: &str) -> Result<(Option<f64>, Option<f64>)> {
-    let bad = || Error::Request(format!("unknown '{spec}': bounds are written [LO:HI] (either side may be empty)"));
-    let inner = s.strip_prefix('[').and_then(|t| t.strip_suffix(']')).ok_or_else(bad)?;
-    let (lo, hi) = inner.split_once(':').ok_or_else(bad)?;
-    let num = |t: &str| -> Result<Option<f64>> {
-        let t = t.trim();
-        if t.is_empty() {
-            return Ok(None);
-        }
-        let v: f64 = t.parse().map_err(|_| bad())?;
-        if !v.is_finite() {
-            return Err(bad());
-        }
-        Ok(Some(v))
-    };
-    let (lo, hi) = (num(lo)?, num(hi)?);
-    if let (Some(a), Some(b)) = (lo, hi) {
-        if a > b {
-            return Err(Error::Request(format!("unknown '{spec}': lower bound {a} > upper bound {b}")));
-        }
-    }
-    Ok((lo, hi))
+/// A support-motion component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Component {
+    /// Horizontal translation (m).
+    U,
+    /// Vertical translation (m, up positive).
+    V,
+    /// Rotation about the support's centroid (rad, counter-clockwise).
+    Theta,
 }
 
-/// Split `name[lo:hi]` into the name and its bounds.
-fn split_bounds<'a>(s: &'a str, spec: &str) -> Result<(&'a str, Option<f64>, Option<f64>)> {
-    match s.find('[') {
-        Some(i) => {
-            let (lo, hi) = parse_bounds(&s[i..], spec)?;
-            Ok((&s[..i], lo, hi))
+impl Component {
+    fn index(self) -> usize {
+        match self {
+            Component::U => 0,
+            Component::V => 1,
+            Component::Theta => 2,
         }
-        None => Ok((s, None, None)),
     }
-}
-
-fn split_number(name: &str) -> Option<(&str, u64)> {
-    let i = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
-    if i == name.len() {
-        return None;
+    pub fn name(self) -> &'static str {
+        ["u", "v", "theta"][self.index()]
     }
-    Some((&name[..i], name[i..].parse().ok()?))
 }
 
 impl Unknown {
-    /// Parse one `--unknown` specification:
-    /// - `NAME=COMP[,COMP…]`: components `u`, `v` (m) or `theta` (rad, about the support's
-    ///   centroid) of support NAME, one unknown each;
-    /// - `A..B=COMP`: supports `A` to `B` (same prefix, numbered, e.g. `f22..f43`) sharing one
-    ///   unknown per component;
-    /// - a profile with one value replaced by `?`: `uniform:X0,X1,?`, `linear:X0,V0,X1,?`,
-    ///   `table:X,V;X,?;…` (the profile is linear in its values, so the motions are affine in
-    ///   the unknown).
-    ///
-    /// Every component or `?` may carry bounds `[LO:HI]`, e.g. `right=u[0:]`.
-    pub fn parse(spec: &str, st: &Structure) -> Result<Vec<Unknown>> {
-        let spec_t = spec.trim();
+    /// One component shared by the supports `names` (one support, or a set of foundation
+    /// segments settling together), named `label.component`.
+    pub fn supports(
+        st: &Structure,
+        label: &str,
+        names: &[String],
+        component: Component,
+        lower: Option<f64>,
+        upper: Option<f64>,
+    ) -> Result<Unknown> {
         let ns = st.supports.len();
-        if let Some((kind, _)) = spec_t.split_once(':') {
-            if matches!(kind, "uniform" | "linear" | "table") {
-                return Self::parse_profile(spec_t, st).map(|u| vec![u]);
-            }
+        let mut unit = vec![[0.0; 3]; ns];
+        if names.is_empty() {
+            return Err(Error::Request(format!("unknown '{label}': no support given")));
         }
-        let (names, comps) = spec_t.split_once('=').ok_or_else(|| {
-            Error::Request(format!("unknown '{spec}': expected NAME=u,v,theta, A..B=v or a profile with a '?' (uniform:X0,X1,?)"))
-        })?;
-        let names = names.trim();
-        let find = |n: &str| -> Result<usize> {
-            st.supports.iter().position(|s| s.name == n).ok_or_else(|| {
+        for n in names {
+            let Some(s) = st.supports.iter().position(|s| &s.name == n) else {
                 let known: Vec<&str> = st.supports.iter().map(|s| s.name.as_str()).take(12).collect();
-                Error::Request(format!("unknown '{spec}': no support named '{n}' (the model has: {}{})", known.join(", "), if ns > 12 { ", …" } else { "" }))
-            })
-        };
-        let supports: Vec<usize> = if let Some((a, b)) = names.split_once("..") {
-            let (Some((pa, na)), Some((pb, nb))) = (split_number(a.trim()), split_number(b.trim())) else {
-                return Err(Error::Request(format!("unknown '{spec}': a range A..B needs numbered names with one prefix, e.g. f22..f43")));
+                return Err(Error::Request(format!(
+                    "unknown '{label}': no support named '{n}' (the model has: {}{})",
+                    known.join(", "),
+                    if ns > 12 { ", …" } else { "" }
+                )));
             };
-            if pa != pb || na > nb {
-                return Err(Error::Request(format!("unknown '{spec}': a range A..B needs one prefix and A's number ≤ B's")));
-            }
-            (na..=nb).map(|n| find(&format!("{pa}{n}"))).collect::<Result<_>>()?
-        } else {
-            vec![find(names)?]
-        };
-        let mut out = Vec::new();
-        for c in comps.split(',') {
-            let (c, lo, hi) = split_bounds(c.trim(), spec)?;
-            let idx = match c.trim() {
-                "u" => 0,
-                "v" => 1,
-                "theta" | "θ" => 2,
-                other => {
-                    return Err(Error::Request(format!("unknown '{spec}': component '{other}' is not u, v or theta")));
-                }
-            };
-            let mut unit = vec![[0.0; 3]; ns];
-            for &s in &supports {
-                unit[s][idx] = 1.0;
-            }
-            out.push(Unknown {
-                name: format!("{names}.{}", ["u", "v", "theta"][idx]),
-                unit,
-                base: vec![[0.0; 3]; ns],
-                lower: lo,
-                upper: hi,
-            });
+            unit[s][component.index()] = 1.0;
         }
-        Ok(out)
+        Unknown::new(format!("{label}.{}", component.name()), unit, vec![[0.0; 3]; ns], lower, upper)
     }
 
-    fn parse_profile(spec: &str, st: &Structure) -> Result<Unknown> {
-        let bad = |m: &str| Error::Request(format!("unknown '{spec}': {m}"));
-        let q = spec.find('?').ok_or_else(|| bad("a profile unknown needs one value written '?'"))?;
-        if spec[q + 1..].contains('?') {
-            return Err(bad("only one '?' per profile"));
-        }
-        let rest = &spec[q + 1..];
-        let (tail, lo, hi) = if rest.starts_with('[') {
-            let end = rest.find(']').ok_or_else(|| bad("unclosed bounds"))?;
-            let (lo, hi) = parse_bounds(&rest[..=end], spec)?;
-            (&rest[end + 1..], lo, hi)
-        } else {
-            (rest, None, None)
-        };
-        let head = &spec[..q];
-        // The slot must be a value (not an x): count the numbers before it.
-        let (kind, nums) = head.split_once(':').unwrap_or((head, ""));
-        let before = nums.split([',', ';']).count() - 1;
-        let is_value = match kind {
-            "uniform" => before == 2,
-            "linear" => before == 1 || before == 3,
-            "table" => before % 2 == 1,
-            _ => false,
-        };
-        if !is_value {
-            return Err(bad("the '?' must stand for a settlement value v, not a position x"));
-        }
-        let with = |v: f64| Profile::parse(&format!("{head}{v}{tail}"));
-        let (p0, p1) = (with(0.0)?, with(1.0)?);
+    /// A profile family: `at0` and `at1` are the profile with the unknown value set to 0 and
+    /// to 1; the motions are `at0`'s plus the unknown times the difference (profiles are linear
+    /// in their values, so this is exact when only values differ). Each support takes the
+    /// profile's value and slope at its centroid (as [`crate::settlement_input::apply_profile`]).
+    pub fn profile(
+        st: &Structure,
+        name: &str,
+        at0: &Profile,
+        at1: &Profile,
+        lower: Option<f64>,
+        upper: Option<f64>,
+    ) -> Result<Unknown> {
+        let (p0, p1) = (at0, at1);
+        p0.validate()?;
+        p1.validate()?;
         let motion = |p: &Profile| -> Vec<[f64; 3]> {
             st.supports
                 .iter()
@@ -373,22 +305,38 @@ impl Unknown {
                 })
                 .collect()
         };
-        let (m0, m1) = (motion(&p0), motion(&p1));
-        let unit = m0
+        let (m0, m1) = (motion(p0), motion(p1));
+        let unit: Vec<[f64; 3]> = m0
             .iter()
             .zip(&m1)
             .map(|(a, b)| [b[0] - a[0], b[1] - a[1], b[2] - a[2]])
-            .collect::<Vec<_>>();
+            .collect();
         if unit.iter().all(|u| u.iter().all(|x| *x == 0.0)) {
-            return Err(bad("the profile moves no support (no support centroid inside its range)"));
+            return Err(Error::Request(format!(
+                "unknown '{name}': the profile moves no support with its unknown (no support centroid inside its range)"
+            )));
         }
-        Ok(Unknown {
-            name: format!("{head}?{tail}"),
-            unit,
-            base: m0,
-            lower: lo,
-            upper: hi,
-        })
+        Unknown::new(name.to_string(), unit, m0, lower, upper)
+    }
+
+    fn new(
+        name: String,
+        unit: Vec<[f64; 3]>,
+        base: Vec<[f64; 3]>,
+        lower: Option<f64>,
+        upper: Option<f64>,
+    ) -> Result<Unknown> {
+        for b in [lower, upper].into_iter().flatten() {
+            if !b.is_finite() {
+                return Err(Error::Request(format!("unknown '{name}': bounds must be finite")));
+            }
+        }
+        if let (Some(a), Some(b)) = (lower, upper) {
+            if a > b {
+                return Err(Error::Request(format!("unknown '{name}': lower bound {a} > upper bound {b}")));
+            }
+        }
+        Ok(Unknown { name, unit, base, lower, upper })
     }
 }
 
@@ -589,9 +537,7 @@ pub fn identify(
         .map(|u| (u.lower.unwrap_or(f64::NEG_INFINITY), u.upper.unwrap_or(f64::INFINITY)))
         .collect();
     let dead = st0.load_vector(false);
-    let fp = ForceProgram::new(&map, &dead, None, Direction::Minimise, |k| {
-        (map.support_normal[k], map.support_tangent[k])
-    });
+    let fp = settlement_force_program(&map, &dead);
     let mut activity = Activity::default();
     let mut active_set_fixed = false;
     let ip = IdentifyProgram::new(&map, &fp, &unit, &bounds, &roles, &activity, MisfitMode::Minimise);

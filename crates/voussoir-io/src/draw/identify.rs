@@ -44,8 +44,9 @@ pub fn identify_scene(r: &IdentifyResult) -> Scene<'_> {
     scene.info.insert(
         1,
         format!(
-            "{} observed points, misfit {} tolerances in total (largest {} mm)",
+            "{} observed point{}, misfit {} tolerances in total (largest {} mm)",
             r.observations.len(),
+            if r.observations.len() == 1 { "" } else { "s" },
             human(tiny(r.total_misfit), 3),
             human(tiny(r.max_misfit) * 1000.0, 3)
         ),

@@ -93,7 +93,11 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
             _ if u.range_computed => "range unbounded or empty".to_string(),
             _ => "range not computed".to_string(),
         };
-        let _ = writeln!(s, "  {:<20} = {:>14.6e}  {range}  — {}", u.name, u.value, u.note);
+        let _ = writeln!(
+            s,
+            "  {:<20} = {:>14.6e}  {range}  — {}",
+            u.name, u.value, u.note
+        );
     }
     if !r.support_motions.is_empty() {
         let _ = writeln!(s, "support motions (u, v in m, θ in rad):");
@@ -112,7 +116,11 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
         r.total_misfit,
         r.max_misfit
     );
-    for o in r.observations.iter().filter(|o| o.observed > 0.0 || o.misfit.abs() > o.tolerance) {
+    for o in r
+        .observations
+        .iter()
+        .filter(|o| o.observed > 0.0 || o.misfit.abs() > o.tolerance)
+    {
         let _ = writeln!(
             s,
             "  crack {:>3} joint {:>5} point {} at ({:.4}, {:.4}): observed {:.4e} m, predicted {:.4e} m, misfit {:+.2e} m{}",
@@ -131,7 +139,12 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
         .predicted_cracks
         .iter()
         .filter(|c| c.observed != "open")
-        .map(|c| format!("joint {} point {} ({}, {:.3e} m)", c.joint, c.point, c.observed, c.opening))
+        .map(|c| {
+            format!(
+                "joint {} point {} ({}, {:.3e} m)",
+                c.joint, c.point, c.observed, c.opening
+            )
+        })
         .collect();
     if !odd.is_empty() {
         let _ = writeln!(s, "predicted cracks not observed open: {}", odd.join("; "));
@@ -140,7 +153,11 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
         let _ = writeln!(
             s,
             "certificate: {} — {}",
-            if c.reproduces { "REPRODUCED" } else { "NOT reproduced" },
+            if c.reproduces {
+                "REPRODUCED"
+            } else {
+                "NOT reproduced"
+            },
             c.message
         );
     }
@@ -149,7 +166,11 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
 
 /// Split `[LO:HI]` bounds (either side may be empty).
 fn parse_bounds(s: &str, spec: &str) -> Result<(Option<f64>, Option<f64>), Fail> {
-    let bad = || Fail(format!("--unknown {spec}: bounds are written [LO:HI] (either side may be empty)"));
+    let bad = || {
+        Fail(format!(
+            "--unknown {spec}: bounds are written [LO:HI] (either side may be empty)"
+        ))
+    };
     let inner = s
         .strip_prefix('[')
         .and_then(|t| t.strip_suffix(']'))
@@ -190,11 +211,14 @@ pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
     })?;
     let label = names.trim();
     let names: Vec<String> = if let Some((a, b)) = label.split_once("..") {
-        let (Some((pa, na)), Some((pb, nb))) = (split_number(a.trim()), split_number(b.trim())) else {
+        let (Some((pa, na)), Some((pb, nb))) = (split_number(a.trim()), split_number(b.trim()))
+        else {
             return Err(Fail(format!("--unknown {spec}: a range A..B needs numbered names with one prefix, e.g. f22..f43")));
         };
         if pa != pb || na > nb {
-            return Err(Fail(format!("--unknown {spec}: a range A..B needs one prefix and A's number ≤ B's")));
+            return Err(Fail(format!(
+                "--unknown {spec}: a range A..B needs one prefix and A's number ≤ B's"
+            )));
         }
         (na..=nb).map(|n| format!("{pa}{n}")).collect()
     } else {
@@ -215,7 +239,9 @@ pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
             "v" => Component::V,
             "theta" | "θ" => Component::Theta,
             other => {
-                return Err(Fail(format!("--unknown {spec}: component '{other}' is not u, v or theta")));
+                return Err(Fail(format!(
+                    "--unknown {spec}: component '{other}' is not u, v or theta"
+                )));
             }
         };
         out.push(Unknown::supports(st, label, &names, comp, lo, hi)?);
@@ -250,7 +276,9 @@ fn parse_profile_unknown(spec: &str, st: &Structure) -> Result<Unknown, Fail> {
         _ => false,
     };
     if !is_value {
-        return Err(bad("the '?' must stand for a settlement value v, not a position x"));
+        return Err(bad(
+            "the '?' must stand for a settlement value v, not a position x",
+        ));
     }
     let p0 = crate::common::parse_profile(&format!("{head}0{tail}"))?;
     let p1 = crate::common::parse_profile(&format!("{head}1{tail}"))?;

@@ -20,8 +20,21 @@ fn tmpdir(name: &str) -> PathBuf {
 fn paper_arch(dir: &Path) -> String {
     let p = dir.join("arch.json");
     let o = run(&[
-        "gen", "arch", "--radius", "2.86", "--radius-at", "intrados", "--thickness", "0.33",
-        "--voussoirs", "64", "--unit-weight", "18", "--live", "none", "-o",
+        "gen",
+        "arch",
+        "--radius",
+        "2.86",
+        "--radius-at",
+        "intrados",
+        "--thickness",
+        "0.33",
+        "--voussoirs",
+        "64",
+        "--unit-weight",
+        "18",
+        "--live",
+        "none",
+        "-o",
         p.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -89,8 +102,24 @@ fn identify_recovers_the_spreading_from_the_command_line() {
     let html_text = std::fs::read_to_string(&html).unwrap();
     assert!(html_text.contains("Observed and predicted cracks"));
     // Deterministic: the same input gives byte-identical JSON.
-    let a = run(&["identify", &arch, "--cracks", obs.to_str().unwrap(), "--unknown", "right=u", "--json"]);
-    let b = run(&["identify", &arch, "--cracks", obs.to_str().unwrap(), "--unknown", "right=u", "--json"]);
+    let a = run(&[
+        "identify",
+        &arch,
+        "--cracks",
+        obs.to_str().unwrap(),
+        "--unknown",
+        "right=u",
+        "--json",
+    ]);
+    let b = run(&[
+        "identify",
+        &arch,
+        "--cracks",
+        obs.to_str().unwrap(),
+        "--unknown",
+        "right=u",
+        "--json",
+    ]);
     assert!(a.status.success());
     assert_eq!(a.stdout, b.stdout);
 }
@@ -102,14 +131,37 @@ fn identify_refuses_bad_input_in_one_line() {
     let obs = d.join("obs.json");
     let out = d.join("never.json");
     let cases: [(&str, &[&str], &str); 4] = [
-        (r#"{"cracks": [{"joint": 999, "opening": 0.001}]}"#, &["right=u"], "joint 999"),
-        (r#"{"cracks": [{"joint": 13, "opening": -1}]}"#, &["right=u"], "cracks[0]"),
-        (r#"{"cracks": [], "bogus": 1}"#, &["right=u"], "invalid observations"),
-        (r#"{"cracks": []}"#, &["middle=u"], "no support named 'middle'"),
+        (
+            r#"{"cracks": [{"joint": 999, "opening": 0.001}]}"#,
+            &["right=u"],
+            "joint 999",
+        ),
+        (
+            r#"{"cracks": [{"joint": 13, "opening": -1}]}"#,
+            &["right=u"],
+            "cracks[0]",
+        ),
+        (
+            r#"{"cracks": [], "bogus": 1}"#,
+            &["right=u"],
+            "invalid observations",
+        ),
+        (
+            r#"{"cracks": []}"#,
+            &["middle=u"],
+            "no support named 'middle'",
+        ),
     ];
     for (text, unknowns, needle) in cases {
         std::fs::write(&obs, text).unwrap();
-        let mut args = vec!["identify", &arch, "--cracks", obs.to_str().unwrap(), "-o", out.to_str().unwrap()];
+        let mut args = vec![
+            "identify",
+            &arch,
+            "--cracks",
+            obs.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ];
         for u in unknowns {
             args.push("--unknown");
             args.push(u);

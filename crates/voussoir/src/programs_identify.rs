@@ -73,7 +73,12 @@ pub enum PointRole {
 /// on a Heyman joint is zero opening) or undecided. An observed-open point of a frictional joint
 /// is undecided: it may be open, or slide with dilatancy (`u_n = μ|u_t| > 0`) while carrying
 /// force.
-pub fn decided(map: &KinematicMap, roles: &[PointRole], activity: &Activity, k: usize) -> Option<bool> {
+pub fn decided(
+    map: &KinematicMap,
+    roles: &[PointRole],
+    activity: &Activity,
+    k: usize,
+) -> Option<bool> {
     let later = || activity.point_open.get(k).copied().flatten();
     match roles[k] {
         PointRole::Open { .. } if map.laws[map.points[k].joint].friction.is_some() => later(),
@@ -337,26 +342,27 @@ impl ClosestProgram {
         let mut dcols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); map.num_dofs];
         let mut acols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); unit.len()];
         let mut extra: Vec<(f64, usize)> = Vec::new(); // misfit columns: (1/τ, row)
-        // Adds a row `cn·u_n,k + ct·u_t,r ∈ [lo, hi]` (`r`: a sliding row of point k), bounds
-        // without the base motion.
-        let mut add = |lp: &mut LinearProgram, k: usize, cn: f64, r: usize, ct: f64, lo: f64, hi: f64| {
-            let g0 = cn * map.support_normal[k] + ct * map.support_tangent[r];
-            let row = lp.add_row(lo - g0, hi - g0);
-            for (m, i, c) in [(&map.normal, k, cn), (&map.tangent, r, ct)] {
-                if c != 0.0 {
-                    for (dof, v) in KinematicMap::row(m, i) {
-                        dcols[dof].push((row, c * v));
+                                                       // Adds a row `cn·u_n,k + ct·u_t,r ∈ [lo, hi]` (`r`: a sliding row of point k), bounds
+                                                       // without the base motion.
+        let mut add =
+            |lp: &mut LinearProgram, k: usize, cn: f64, r: usize, ct: f64, lo: f64, hi: f64| {
+                let g0 = cn * map.support_normal[k] + ct * map.support_tangent[r];
+                let row = lp.add_row(lo - g0, hi - g0);
+                for (m, i, c) in [(&map.normal, k, cn), (&map.tangent, r, ct)] {
+                    if c != 0.0 {
+                        for (dof, v) in KinematicMap::row(m, i) {
+                            dcols[dof].push((row, c * v));
+                        }
                     }
                 }
-            }
-            for (q, (gn, gt)) in unit.iter().enumerate() {
-                let v = cn * gn[k] + ct * gt[r];
-                if v != 0.0 {
-                    acols[q].push((row, v));
+                for (q, (gn, gt)) in unit.iter().enumerate() {
+                    let v = cn * gn[k] + ct * gt[r];
+                    if v != 0.0 {
+                        acols[q].push((row, v));
+                    }
                 }
-            }
-            row
-        };
+                row
+            };
         let nt = map.tangents_per_point;
         for k in 0..npts {
             if map.gap[k] > 0.0 {

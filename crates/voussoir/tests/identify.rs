@@ -43,7 +43,12 @@ fn forward(m: &Model, form: SettlementForm) -> (Structure, SettlementResult) {
         _ => settle_with(&st, &SolverOptions::default(), form).unwrap(),
     };
     assert_eq!(r.status, SettlementStatus::Mechanism);
-    assert!(r.certificate.as_ref().unwrap().ok, "{:?} {}", r.certificate, r.message);
+    assert!(
+        r.certificate.as_ref().unwrap().ok,
+        "{:?} {}",
+        r.certificate,
+        r.message
+    );
     (st, r)
 }
 
@@ -75,7 +80,13 @@ fn pattern(
         let ws: Vec<f64> = j
             .points
             .iter()
-            .map(|p| if p.opening > thr { p.opening * noise() } else { 0.0 })
+            .map(|p| {
+                if p.opening > thr {
+                    p.opening * noise()
+                } else {
+                    0.0
+                }
+            })
             .collect();
         if by_coordinates {
             for (p, w) in j.points.iter().zip(&ws) {
@@ -125,7 +136,11 @@ fn run(st: &Structure, obs: &Observations, unknowns: &[U], form: SettlementForm)
                 Unknown::supports(&rest, &names.join("+"), &names, *c, *lo, None).unwrap()
             }
             U::Uniform(x0, x1) => {
-                let at = |v| Profile::Uniform { x0: *x0, x1: *x1, v };
+                let at = |v| Profile::Uniform {
+                    x0: *x0,
+                    x1: *x1,
+                    v,
+                };
                 Unknown::profile(&rest, "uniform", &at(0.0), &at(1.0), None, None).unwrap()
             }
         })
@@ -167,7 +182,12 @@ fn arch_spreading_round_trip_by_coordinates() {
     let obs = exact(&f, true);
     // Three hinges, one open point each.
     assert_eq!(obs.cracks.len(), 3);
-    let r = run(&st, &obs, &[U::Sup(&["right"], Component::U, None)], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&["right"], Component::U, None)],
+        SettlementForm::Both,
+    );
     assert_recovers(&r, 0, 0.01);
     // The predicted cracks are the observed ones, at joints 13, 32, 51.
     let joints: Vec<usize> = r.predicted_cracks.iter().map(|c| c.joint).collect();
@@ -183,7 +203,12 @@ fn arch_vertical_settlement_of_a_fixed_support_round_trip() {
     let m = with_moves(paper_arch(), &[("right", [0.0, -0.01, 0.0])], &["right"]);
     let (st, f) = forward(&m, SettlementForm::Both);
     let obs = exact(&f, false);
-    let r = run(&st, &obs, &[U::Sup(&["right"], Component::V, None)], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&["right"], Component::V, None)],
+        SettlementForm::Both,
+    );
     assert_recovers(&r, 0, -0.01);
     let joints: Vec<usize> = r.predicted_cracks.iter().map(|c| c.joint).collect();
     let mut hinge_joints: Vec<usize> = f.hinges.iter().map(|h| h.joint).collect();
@@ -222,7 +247,12 @@ fn running_bond_wall_with_friction_round_trip() {
     let (st, f) = forward(&m, SettlementForm::Both);
     let obs = exact(&f, false);
     assert!(!obs.cracks.is_empty());
-    let r = run(&st, &obs, &[U::Sup(&F5_7, Component::V, None)], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&F5_7, Component::V, None)],
+        SettlementForm::Both,
+    );
     assert_recovers(&r, 0, -0.01);
 }
 
@@ -243,15 +273,29 @@ fn facade_half_settlement_with_one_shared_unknown() {
         .map(|s| s.name[1..].parse::<usize>().unwrap())
         .collect();
     let (a, b) = (moving[0], *moving.last().unwrap());
-    assert_eq!(moving.len(), b - a + 1, "the settling segments are contiguous");
+    assert_eq!(
+        moving.len(),
+        b - a + 1,
+        "the settling segments are contiguous"
+    );
     let (st, f) = forward(&m, SettlementForm::ForceOnly);
     let obs = exact(&f, false);
     let names: Vec<String> = (a..=b).map(|k| format!("f{k}")).collect();
     let names: Vec<&str> = names.iter().map(|s| s.as_str()).collect();
-    let r = run(&st, &obs, &[U::Sup(&names, Component::V, None)], SettlementForm::ForceOnly);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&names, Component::V, None)],
+        SettlementForm::ForceOnly,
+    );
     assert_recovers(&r, 0, -0.2);
     // The same through the profile family `uniform:11,22,?`.
-    let r = run(&st, &obs, &[U::Uniform(11.0, 22.0)], SettlementForm::ForceOnly);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Uniform(11.0, 22.0)],
+        SettlementForm::ForceOnly,
+    );
     assert_recovers(&r, 0, -0.2);
 }
 
@@ -276,7 +320,12 @@ fn noisy_widths_still_recover_the_spreading() {
     // Tolerance 25 % of the measured width: |w_obs − w| ≤ 0.2 w ≤ 0.25 w_obs.
     let tol = |w: f64| 0.25 * w;
     let obs = pattern(&f, false, &mut noise(16), Some(&tol));
-    let r = run(&st, &obs, &[U::Sup(&["right"], Component::U, None)], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&["right"], Component::U, None)],
+        SettlementForm::Both,
+    );
     assert_eq!(r.status, IdentifyStatus::Identified, "{}", r.message);
     let u = &r.unknowns[0];
     // One unknown, openings proportional to it: the least-absolute fit is a weighted median
@@ -299,12 +348,20 @@ fn noisy_widths_on_the_friction_wall() {
     let (st, f) = forward(&m, SettlementForm::Both);
     let tol = |w: f64| 0.25 * w;
     let obs = pattern(&f, false, &mut noise(7), Some(&tol));
-    let r = run(&st, &obs, &[U::Sup(&F5_7, Component::V, None)], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&F5_7, Component::V, None)],
+        SettlementForm::Both,
+    );
     assert_eq!(r.status, IdentifyStatus::Identified, "{}", r.message);
     let u = &r.unknowns[0];
     assert!((u.value + 0.01).abs() <= 0.2 * 0.01, "{}", u.value);
     let (lo, hi) = (u.range_min.unwrap(), u.range_max.unwrap());
-    assert!(lo <= -0.01 && -0.01 <= hi, "[{lo}, {hi}] must contain -0.01");
+    assert!(
+        lo <= -0.01 && -0.01 <= hi,
+        "[{lo}, {hi}] must contain -0.01"
+    );
 }
 
 #[test]
@@ -318,10 +375,21 @@ fn a_rigid_translation_is_not_identifiable() {
     }
     let (st, f) = forward(&m, SettlementForm::Both);
     let obs = exact(&f, false);
-    let r = run(&st, &obs, &[U::Sup(&F5_7, Component::V, None), U::Sup(&F0_7, Component::U, None)], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[
+            U::Sup(&F5_7, Component::V, None),
+            U::Sup(&F0_7, Component::U, None),
+        ],
+        SettlementForm::Both,
+    );
     assert_eq!(r.status, IdentifyStatus::Identified, "{}", r.message);
     let v = &r.unknowns[0];
-    assert!((v.value + 0.01).abs() <= 1e-6 * 0.01 && v.identifiable, "{v:?}");
+    assert!(
+        (v.value + 0.01).abs() <= 1e-6 * 0.01 && v.identifiable,
+        "{v:?}"
+    );
     let u = &r.unknowns[1];
     assert!(!u.identifiable, "{u:?}");
     assert!(u.range_min.is_none() && u.range_max.is_none(), "{u:?}");
@@ -341,7 +409,10 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
         .enumerate()
         .max_by(|a, b| a.1.opening.total_cmp(&b.1.opening))
         .unwrap();
-    assert!(p.y.hypot(p.x) < 2.87, "the crown opens at the intrados (point {i})");
+    assert!(
+        p.y.hypot(p.x) < 2.87,
+        "the crown opens at the intrados (point {i})"
+    );
     let obs = Observations {
         tolerance: None,
         cracks: vec![Crack {
@@ -352,12 +423,23 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
         }],
         unobserved: vec![],
     };
-    let r = run(&st, &obs, &[U::Sup(&["right"], Component::U, Some(0.0))], SettlementForm::Both);
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&["right"], Component::U, Some(0.0))],
+        SettlementForm::Both,
+    );
     assert_eq!(r.status, IdentifyStatus::Inconsistent);
     assert!(r.message.starts_with("no settlement"), "{}", r.message);
     // The closest motion spreads the arch and opens the haunches too.
     let u = r.unknowns[0].value;
     assert!(u > 0.0, "closest u = {u}");
-    assert!(r.predicted_cracks.iter().any(|c| c.joint == 13 && c.observed == "closed"));
-    println!("{}\nclosest u = {u}\n{:?}\n{:?}", r.message, r.observations, r.predicted_cracks);
+    assert!(r
+        .predicted_cracks
+        .iter()
+        .any(|c| c.joint == 13 && c.observed == "closed"));
+    println!(
+        "{}\nclosest u = {u}\n{:?}\n{:?}",
+        r.message, r.observations, r.predicted_cracks
+    );
 }

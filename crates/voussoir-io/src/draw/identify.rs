@@ -71,7 +71,8 @@ fn point_motion(r: &IdentifyResult, joint: usize, p: [f64; 2]) -> [f64; 2] {
     let side = |b: &BodyName| -> [f64; 2] {
         match b {
             BodyName::Block(i) => {
-                let (Some(m), Some(g)) = (r.forward.blocks.get(*i), r.forward.geometry.blocks.get(*i))
+                let (Some(m), Some(g)) =
+                    (r.forward.blocks.get(*i), r.forward.geometry.blocks.get(*i))
                 else {
                     return [0.0, 0.0];
                 };
@@ -105,10 +106,7 @@ pub fn draw_identify(r: &IdentifyResult, opts: &DrawOptions, title: Option<&str>
     }
     let mut d = draw(&scene, opts);
     let s = if d.deformed { d.scale } else { 0.0 };
-    let wmax = r
-        .observations
-        .iter()
-        .fold(0.0f64, |m, o| m.max(o.observed));
+    let wmax = r.observations.iter().fold(0.0f64, |m, o| m.max(o.observed));
     let mut o = String::new();
     let _ = writeln!(
         o,
@@ -216,7 +214,10 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
             _ if u.range_computed => ", range unbounded or empty".to_string(),
             _ => String::new(),
         };
-        kv.push((u.name.clone(), format!("{}{range} — {}", human(u.value, 6), u.note)));
+        kv.push((
+            u.name.clone(),
+            format!("{}{range} — {}", human(u.value, 6), u.note),
+        ));
     }
     kv.push((
         "misfit".into(),
@@ -265,7 +266,14 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
     rep.section("Observations").table(
         "Observed against predicted widths (mm)",
         [
-            "crack", "joint", "point", "at (m)", "observed", "predicted", "misfit", "tolerance",
+            "crack",
+            "joint",
+            "point",
+            "at (m)",
+            "observed",
+            "predicted",
+            "misfit",
+            "tolerance",
         ]
         .iter()
         .map(|s| s.to_string())

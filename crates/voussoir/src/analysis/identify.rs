@@ -21,12 +21,16 @@
 //!   least-misfit admissible mechanism with optimality dropped, see
 //!   [`crate::programs_identify::ClosestProgram`]) with its forward analysis.
 
-use crate::analysis::settlement::{settle, settle_with, SettlementForm, SettlementResult, SettlementStatus};
+use crate::analysis::settlement::{
+    settle, settle_with, SettlementForm, SettlementResult, SettlementStatus,
+};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LpStatus, SolverOptions};
 use crate::programs::{settlement_force_program, ForceProgram};
-use crate::programs_identify::{decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole};
+use crate::programs_identify::{
+    decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole,
+};
 use crate::settlement_input::Profile;
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
@@ -101,11 +105,17 @@ fn finite_nonneg(x: f64) -> bool {
 
 impl Observations {
     /// Resolve to one role per collocation point, and the list of observed points.
-    fn resolve(&self, st: &Structure, map: &KinematicMap) -> Result<(Vec<PointRole>, Vec<PointObs>)> {
+    fn resolve(
+        &self,
+        st: &Structure,
+        map: &KinematicMap,
+    ) -> Result<(Vec<PointRole>, Vec<PointObs>)> {
         let bad = |m: String| Err(Error::Request(m));
         let tol = self.tolerance.unwrap_or(DEFAULT_TOLERANCE);
         if !(tol.is_finite() && tol > 0.0) {
-            return bad(format!("observations: tolerance {tol} must be a finite number > 0 (m)"));
+            return bad(format!(
+                "observations: tolerance {tol} must be a finite number > 0 (m)"
+            ));
         }
         let npts = map.num_points();
         let xy = |k: usize| st.joints[map.points[k].joint].points[map.points[k].index].x;
@@ -136,7 +146,11 @@ impl Observations {
                         }
                     }
                 }
-                _ => return bad(format!("unobserved[{i}]: give exactly one of \"joint\" and \"region\"")),
+                _ => {
+                    return bad(format!(
+                        "unobserved[{i}]: give exactly one of \"joint\" and \"region\""
+                    ))
+                }
             }
         }
         let mut seen: Vec<Option<usize>> = vec![None; npts];
@@ -144,12 +158,16 @@ impl Observations {
         for (i, c) in self.cracks.iter().enumerate() {
             let tau = c.tolerance.unwrap_or(tol);
             if !(tau.is_finite() && tau > 0.0) {
-                return bad(format!("cracks[{i}]: tolerance {tau} must be a finite number > 0 (m)"));
+                return bad(format!(
+                    "cracks[{i}]: tolerance {tau} must be a finite number > 0 (m)"
+                ));
             }
             let points: Vec<(usize, f64)> = match (c.at, c.joint, &c.opening) {
                 (Some(p), None, Width::One(w)) => {
                     if !(p[0].is_finite() && p[1].is_finite()) {
-                        return bad(format!("cracks[{i}]: \"at\" must be two finite coordinates"));
+                        return bad(format!(
+                            "cracks[{i}]: \"at\" must be two finite coordinates"
+                        ));
                     }
                     // Nearest collocation point; ties go to the lowest point number.
                     let mut best: Option<(f64, usize)> = None;
@@ -166,28 +184,43 @@ impl Observations {
                     }
                 }
                 (Some(_), None, Width::PerPoint(_)) => {
-                    return bad(format!("cracks[{i}]: a crack located by \"at\" takes one width"));
+                    return bad(format!(
+                        "cracks[{i}]: a crack located by \"at\" takes one width"
+                    ));
                 }
                 (None, Some(j), w) => {
                     if j >= st.joints.len() {
-                        return bad(format!("cracks[{i}]: joint {j} does not exist (the structure has {} joints)", st.joints.len()));
+                        return bad(format!(
+                            "cracks[{i}]: joint {j} does not exist (the structure has {} joints)",
+                            st.joints.len()
+                        ));
                     }
                     let range = map.joint_start[j]..map.joint_start[j + 1];
                     match w {
                         Width::One(w) => range.map(|k| (k, *w)).collect(),
                         Width::PerPoint(ws) => {
                             if ws.len() != range.len() {
-                                return bad(format!("cracks[{i}]: joint {j} has {} points, {} widths given", range.len(), ws.len()));
+                                return bad(format!(
+                                    "cracks[{i}]: joint {j} has {} points, {} widths given",
+                                    range.len(),
+                                    ws.len()
+                                ));
                             }
                             range.zip(ws.iter().copied()).collect()
                         }
                     }
                 }
-                _ => return bad(format!("cracks[{i}]: give exactly one of \"at\" and \"joint\"")),
+                _ => {
+                    return bad(format!(
+                        "cracks[{i}]: give exactly one of \"at\" and \"joint\""
+                    ))
+                }
             };
             for (k, w) in points {
                 if !finite_nonneg(w) {
-                    return bad(format!("cracks[{i}]: width {w} must be a finite number ≥ 0 (m)"));
+                    return bad(format!(
+                        "cracks[{i}]: width {w} must be a finite number ≥ 0 (m)"
+                    ));
                 }
                 if let Some(other) = seen[k] {
                     return bad(format!(
@@ -196,15 +229,26 @@ impl Observations {
                     ));
                 }
                 if map.gap[k] > 0.0 {
-                    return bad(format!("cracks[{i}]: joint {} has a gap at that point (not in contact)", map.points[k].joint));
+                    return bad(format!(
+                        "cracks[{i}]: joint {} has a gap at that point (not in contact)",
+                        map.points[k].joint
+                    ));
                 }
                 seen[k] = Some(i);
                 roles[k] = if w > 0.0 {
-                    PointRole::Open { width: w, tolerance: tau }
+                    PointRole::Open {
+                        width: w,
+                        tolerance: tau,
+                    }
                 } else {
                     PointRole::Closed
                 };
-                obs.push(PointObs { crack: i, point: k, width: w, tolerance: tau });
+                obs.push(PointObs {
+                    crack: i,
+                    point: k,
+                    width: w,
+                    tolerance: tau,
+                });
             }
         }
         Ok((roles, obs))
@@ -265,11 +309,18 @@ impl Unknown {
         let ns = st.supports.len();
         let mut unit = vec![[0.0; 3]; ns];
         if names.is_empty() {
-            return Err(Error::Request(format!("unknown '{label}': no support given")));
+            return Err(Error::Request(format!(
+                "unknown '{label}': no support given"
+            )));
         }
         for n in names {
             let Some(s) = st.supports.iter().position(|s| &s.name == n) else {
-                let known: Vec<&str> = st.supports.iter().map(|s| s.name.as_str()).take(12).collect();
+                let known: Vec<&str> = st
+                    .supports
+                    .iter()
+                    .map(|s| s.name.as_str())
+                    .take(12)
+                    .collect();
                 return Err(Error::Request(format!(
                     "unknown '{label}': no support named '{n}' (the model has: {}{})",
                     known.join(", "),
@@ -278,7 +329,13 @@ impl Unknown {
             };
             unit[s][component.index()] = 1.0;
         }
-        Unknown::new(format!("{label}.{}", component.name()), unit, vec![[0.0; 3]; ns], lower, upper)
+        Unknown::new(
+            format!("{label}.{}", component.name()),
+            unit,
+            vec![[0.0; 3]; ns],
+            lower,
+            upper,
+        )
     }
 
     /// A profile family: `at0` and `at1` are the profile with the unknown value set to 0 and
@@ -328,15 +385,25 @@ impl Unknown {
     ) -> Result<Unknown> {
         for b in [lower, upper].into_iter().flatten() {
             if !b.is_finite() {
-                return Err(Error::Request(format!("unknown '{name}': bounds must be finite")));
+                return Err(Error::Request(format!(
+                    "unknown '{name}': bounds must be finite"
+                )));
             }
         }
         if let (Some(a), Some(b)) = (lower, upper) {
             if a > b {
-                return Err(Error::Request(format!("unknown '{name}': lower bound {a} > upper bound {b}")));
+                return Err(Error::Request(format!(
+                    "unknown '{name}': lower bound {a} > upper bound {b}"
+                )));
             }
         }
-        Ok(Unknown { name, unit, base, lower, upper })
+        Ok(Unknown {
+            name,
+            unit,
+            base,
+            lower,
+            upper,
+        })
     }
 }
 
@@ -506,11 +573,16 @@ pub fn identify(
     opts: &IdentifyOptions,
 ) -> Result<IdentifyResult> {
     if unknowns.is_empty() {
-        return Err(Error::Request("identify: give at least one unknown support motion".into()));
+        return Err(Error::Request(
+            "identify: give at least one unknown support motion".into(),
+        ));
     }
     for u in unknowns {
         if u.unit.len() != st.supports.len() || u.base.len() != st.supports.len() {
-            return Err(Error::Request(format!("unknown '{}': one motion per support expected", u.name)));
+            return Err(Error::Request(format!(
+                "unknown '{}': one motion per support expected",
+                u.name
+            )));
         }
     }
     let map_base = KinematicMap::new(st);
@@ -534,13 +606,26 @@ pub fn identify(
         .collect();
     let bounds: Vec<(f64, f64)> = unknowns
         .iter()
-        .map(|u| (u.lower.unwrap_or(f64::NEG_INFINITY), u.upper.unwrap_or(f64::INFINITY)))
+        .map(|u| {
+            (
+                u.lower.unwrap_or(f64::NEG_INFINITY),
+                u.upper.unwrap_or(f64::INFINITY),
+            )
+        })
         .collect();
     let dead = st0.load_vector(false);
     let fp = settlement_force_program(&map, &dead);
     let mut activity = Activity::default();
     let mut active_set_fixed = false;
-    let ip = IdentifyProgram::new(&map, &fp, &unit, &bounds, &roles, &activity, MisfitMode::Minimise);
+    let ip = IdentifyProgram::new(
+        &map,
+        &fp,
+        &unit,
+        &bounds,
+        &roles,
+        &activity,
+        MisfitMode::Minimise,
+    );
     let sol = lp::solve(&ip.lp, &opts.solver)?;
     let mut solved = (sol.status == LpStatus::Optimal).then_some((ip, sol));
     // Complementarity left open by the observations: impose the active set the solution
@@ -548,7 +633,15 @@ pub fn identify(
     // then tells whether the forward analysis agrees).
     if let Some((ip, sol)) = &solved {
         if let Some(fix) = open_complementarity(&map, &fp, ip, &sol.x, &roles) {
-            let ip2 = IdentifyProgram::new(&map, &fp, &unit, &bounds, &roles, &fix, MisfitMode::Minimise);
+            let ip2 = IdentifyProgram::new(
+                &map,
+                &fp,
+                &unit,
+                &bounds,
+                &roles,
+                &fix,
+                MisfitMode::Minimise,
+            );
             let sol2 = lp::solve(&ip2.lp, &opts.solver)?;
             if sol2.status == LpStatus::Optimal {
                 activity = fix;
@@ -580,14 +673,22 @@ pub fn identify(
             "the best motion with this pattern leaves the cracks at joints {} closed",
             dedup(shut)
         );
-        return closest(st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, &why);
+        return closest(
+            st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, &why,
+        );
     }
     let forward = forward_settle(&st_id, opts)?;
     let (observations, total, maxm) = compare(&st_id, &map_id, &pobs, &open);
     let predicted_cracks = predicted(&st_id, &map_id, &open, &roles, omax);
     // Certificate: run the forward analysis and compare.
     let predicted_work: f64 = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
-    let certificate = Some(reproduction(&st_id, &map_id, &forward, &open, predicted_work));
+    let certificate = Some(reproduction(
+        &st_id,
+        &map_id,
+        &forward,
+        &open,
+        predicted_work,
+    ));
     // Identifiability.
     let mut unknown_results = Vec::new();
     for (q, u) in unknowns.iter().enumerate() {
@@ -728,7 +829,10 @@ fn open_complementarity(
         }
         row_active[i] = Some(active);
     }
-    need.then_some(Activity { point_open, row_active })
+    need.then_some(Activity {
+        point_open,
+        row_active,
+    })
 }
 
 fn compare(
@@ -821,14 +925,19 @@ fn reproduction(
         .filter(|&k| map.gap[k] <= 0.0)
         .all(|k| (fopen[k] > thr) == (open[k] > thr));
     let fw = forward.work_dead_loads;
-    let wrel = fw.map(|w| (w - predicted_work).abs() / w.abs().max(predicted_work.abs()).max(1e-300));
-    let work_ok = wrel.is_some_and(|r| r <= 1e-6) || fw.is_some_and(|w| (w - predicted_work).abs() < 1e-12);
+    let wrel =
+        fw.map(|w| (w - predicted_work).abs() / w.abs().max(predicted_work.abs()).max(1e-300));
+    let work_ok =
+        wrel.is_some_and(|r| r <= 1e-6) || fw.is_some_and(|w| (w - predicted_work).abs() < 1e-12);
     let widths_ok = diff <= 1e-6 * omax.max(1e-300);
     let reproduces = certified && work_ok && same && widths_ok;
     let message = if reproduces {
         "the forward settlement analysis of the identified motion opens the same points with the same widths".to_string()
     } else if !certified {
-        format!("the forward settlement analysis is not certified ({})", forward.message)
+        format!(
+            "the forward settlement analysis is not certified ({})",
+            forward.message
+        )
     } else if work_ok {
         format!(
             "the forward analysis finds a mechanism with the same work of the dead loads (the predicted one is also optimal: the settlement mechanism is not unique), but {} (largest width difference {diff:.3e} m)",
@@ -875,8 +984,15 @@ fn closest(
     opts: &IdentifyOptions,
     reason: &str,
 ) -> Result<IdentifyResult> {
-    let gtol = pobs.iter().map(|o| o.tolerance).fold(f64::INFINITY, f64::min);
-    let gtol = if gtol.is_finite() { gtol } else { DEFAULT_TOLERANCE };
+    let gtol = pobs
+        .iter()
+        .map(|o| o.tolerance)
+        .fold(f64::INFINITY, f64::min);
+    let gtol = if gtol.is_finite() {
+        gtol
+    } else {
+        DEFAULT_TOLERANCE
+    };
     let mut targets: Vec<Option<(f64, f64)>> = vec![None; map.num_points()];
     for (k, r) in roles.iter().enumerate() {
         if map.bilateral[k] || map.gap[k] > 0.0 {
@@ -927,10 +1043,16 @@ fn closest(
         .collect();
     let mut why = String::new();
     if !contradictions.is_empty() {
-        why.push_str(&format!("; it also opens joints observed closed ({})", dedup(contradictions)));
+        why.push_str(&format!(
+            "; it also opens joints observed closed ({})",
+            dedup(contradictions)
+        ));
     }
     if !missing.is_empty() {
-        why.push_str(&format!("; it leaves closed joints observed open ({})", dedup(missing)));
+        why.push_str(&format!(
+            "; it leaves closed joints observed open ({})",
+            dedup(missing)
+        ));
     }
     let unknown_results = unknowns
         .iter()

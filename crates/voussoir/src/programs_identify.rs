@@ -52,11 +52,17 @@
 //! The identifiability LPs use the same rows with `|e_o| ≤ τ_o` and minimise or maximise one
 //! `a_q` ([`MisfitMode::WithinTolerance`]).
 
+// Loops run over point and column numbers that index several parallel vectors at once.
+#![allow(clippy::needless_range_loop)]
+
 use crate::discretize::KinematicMap;
 use crate::lp::{Direction, LinearProgram};
 use crate::programs::ForceProgram;
 
 const INF: f64 = f64::INFINITY;
+
+/// A column under assembly: cost, lower and upper bound, `(row, value)` entries.
+type Col = (f64, f64, f64, Vec<(usize, f64)>);
 
 /// What the observations say about one collocation point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -150,7 +156,7 @@ impl IdentifyProgram {
         };
         let mut lp = LinearProgram::new(direction);
         // Columns under assembly: (cost, lo, hi, entries).
-        let mut cols: Vec<(f64, f64, f64, Vec<(usize, f64)>)> = Vec::new();
+        let mut cols: Vec<Col> = Vec::new();
         // Primal rows of (F), with active-set fixes.
         for i in 0..nr {
             let (lo, hi) = (f.row_lower[i], f.row_upper[i]);

@@ -222,6 +222,16 @@ fn arch_vertical_settlement_of_a_fixed_support_round_trip() {
 const F5_7: [&str; 3] = ["f5", "f6", "f7"];
 const F0_7: [&str; 8] = ["f0", "f1", "f2", "f3", "f4", "f5", "f6", "f7"];
 
+/// The friction wall with its three right foundation segments (f5..f7) settled by 1 cm.
+fn settled_friction_wall() -> Model {
+    let mut m = friction_wall();
+    for k in 5..8 {
+        let i = m.support_index(&format!("f{k}")).unwrap();
+        m.supports[i].motion = [0.0, -0.01, 0.0];
+    }
+    m
+}
+
 fn friction_wall() -> Model {
     let mut m = wall(&WallSpec {
         courses: 6,
@@ -239,12 +249,7 @@ fn friction_wall() -> Model {
 #[test]
 fn running_bond_wall_with_friction_round_trip() {
     // The three right foundation segments (f5..f7) settle by 1 cm.
-    let mut m = friction_wall();
-    for k in 5..8 {
-        let i = m.support_index(&format!("f{k}")).unwrap();
-        m.supports[i].motion = [0.0, -0.01, 0.0];
-    }
-    let (st, f) = forward(&m, SettlementForm::Both);
+    let (st, f) = forward(&settled_friction_wall(), SettlementForm::Both);
     let obs = exact(&f, false);
     assert!(!obs.cracks.is_empty());
     let r = run(
@@ -340,12 +345,7 @@ fn noisy_widths_still_recover_the_spreading() {
 
 #[test]
 fn noisy_widths_on_the_friction_wall() {
-    let mut m = friction_wall();
-    for k in 5..8 {
-        let i = m.support_index(&format!("f{k}")).unwrap();
-        m.supports[i].motion = [0.0, -0.01, 0.0];
-    }
-    let (st, f) = forward(&m, SettlementForm::Both);
+    let (st, f) = forward(&settled_friction_wall(), SettlementForm::Both);
     let tol = |w: f64| 0.25 * w;
     let obs = pattern(&f, false, &mut noise(7), Some(&tol));
     let r = run(
@@ -368,12 +368,7 @@ fn noisy_widths_on_the_friction_wall() {
 fn a_rigid_translation_is_not_identifiable() {
     // Settlement of f5..f7 as above; a second unknown moves every segment horizontally: the
     // whole wall translates, no crack depends on it.
-    let mut m = friction_wall();
-    for k in 5..8 {
-        let i = m.support_index(&format!("f{k}")).unwrap();
-        m.supports[i].motion = [0.0, -0.01, 0.0];
-    }
-    let (st, f) = forward(&m, SettlementForm::Both);
+    let (st, f) = forward(&settled_friction_wall(), SettlementForm::Both);
     let obs = exact(&f, false);
     let r = run(
         &st,

@@ -21,6 +21,9 @@
 //!   least-misfit admissible mechanism with optimality dropped, see
 //!   [`crate::programs_identify::ClosestProgram`]) with its forward analysis.
 
+// Loops run over point numbers that index several parallel vectors at once.
+#![allow(clippy::needless_range_loop)]
+
 use crate::analysis::settlement::{
     settle, settle_with, SettlementForm, SettlementResult, SettlementStatus,
 };

@@ -70,11 +70,22 @@ fn box_overturns_at_the_closed_form_multiplier_at_every_azimuth() {
         let [b, d, h] = dims;
         for deg in [0.0f64, 20.0, 45.0, 90.0, 135.0, 200.0, 290.0] {
             let t = deg.to_radians();
-            let by_x = if t.cos().abs() > 1e-12 { b / (h * t.cos().abs()) } else { f64::INFINITY };
-            let by_y = if t.sin().abs() > 1e-12 { d / (h * t.sin().abs()) } else { f64::INFINITY };
+            let by_x = if t.cos().abs() > 1e-12 {
+                b / (h * t.cos().abs())
+            } else {
+                f64::INFINITY
+            };
+            let by_y = if t.sin().abs() > 1e-12 {
+                d / (h * t.sin().abs())
+            } else {
+                f64::INFINITY
+            };
             let want = by_x.min(by_y);
             let got = lambda(&map, t);
-            assert!((got - want).abs() < 1e-9, "{dims:?} at {deg}°: λ = {got}, closed form {want}");
+            assert!(
+                (got - want).abs() < 1e-9,
+                "{dims:?} at {deg}°: λ = {got}, closed form {want}"
+            );
         }
     }
 }
@@ -92,10 +103,16 @@ fn inscribed_friction_pyramid_slides_between_mu_cos_pi_over_k_and_mu() {
         let at_vertex = lambda(&map, 0.0);
         let at_facet = lambda(&map, pi_k);
         assert!((at_vertex - mu).abs() < 1e-9, "K = {k}: {at_vertex}");
-        assert!((at_facet - mu * pi_k.cos()).abs() < 1e-9, "K = {k}: {at_facet}");
+        assert!(
+            (at_facet - mu * pi_k.cos()).abs() < 1e-9,
+            "K = {k}: {at_facet}"
+        );
         for deg in [7.0f64, 33.0, 61.0, 100.0, 250.0] {
             let l = lambda(&map, deg.to_radians());
-            assert!(l >= mu * pi_k.cos() - 1e-9 && l <= mu + 1e-9, "K = {k} at {deg}°: {l}");
+            assert!(
+                l >= mu * pi_k.cos() - 1e-9 && l <= mu + 1e-9,
+                "K = {k} at {deg}°: {l}"
+            );
         }
     }
 }
@@ -107,7 +124,12 @@ fn settling_base_carries_the_box_with_both_programs_agreeing() {
     // 1 cm (the tilt only moves it sideways there), so the dead load does W × 0.01 of work, and
     // the base's reaction, W up, does the same work on the base's motion.
     let h = 2.0;
-    let map = box_on_base([1.0, 1.0, h], [0.5, 0.5, -0.5], [0.0, 0.0, -0.01, 0.0, 0.002, 0.0], None);
+    let map = box_on_base(
+        [1.0, 1.0, h],
+        [0.5, 0.5, -0.5],
+        [0.0, 0.0, -0.01, 0.0, 0.002, 0.0],
+        None,
+    );
     let dead = [0.0, 0.0, -W, 0.0, 0.0, 0.0];
     let o = SolverOptions::default();
     let mp = programs::settlement_motion_program(&map, &dead).unwrap();
@@ -117,7 +139,11 @@ fn settling_base_carries_the_box_with_both_programs_agreeing() {
     assert!((work - W * 0.01).abs() < 1e-9, "primal {work}");
     let fp = programs::settlement_force_program(&map, &dead);
     let dual = fp.solve(&o).unwrap();
-    assert!((dual.objective - W * 0.01).abs() < 1e-9, "dual {}", dual.objective);
+    assert!(
+        (dual.objective - W * 0.01).abs() < 1e-9,
+        "dual {}",
+        dual.objective
+    );
     // The mechanism is the base's rigid motion carried to the box's centroid:
     // u = ω × (c − c_base) = (0, 0.002, 0) × (0, 0, 1.5) = (0.003, 0, 0), w = −0.01, θy = 0.002.
     let d = mp.motion(&primal.x);

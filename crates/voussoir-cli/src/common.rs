@@ -201,7 +201,7 @@ impl SettleArgs {
             moves.push((name.to_string(), motion));
         }
         let profile = match &self.profile {
-            Some(p) => Some(Profile::parse(p)?),
+            Some(p) => Some(parse_profile(p)?),
             None => None,
         };
         Ok(Motion {
@@ -293,6 +293,9 @@ impl ModelArgs {
                 MethodArg::Pdlp => Method::Pdlp,
                 MethodArg::Clarabel => Method::Clarabel,
             },
+            // Diagnostics: VOUSSOIR_HIGHS_LOG=1 prints the solver's own log on stdout (read here,
+            // in the binary; the library takes it as a setting).
+            log: std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1"),
             ..SolverOptions::default()
         }
     }
@@ -465,4 +468,77 @@ pub fn settle_summary(st: &Structure, r: &SettlementResult) -> String {
         );
     }
     s
+}
+
+/// Parse the command-line form: `uniform:X0,X1,V`, `linear:X0,V0,X1,V1` or
+/// `table:X,V;X,V;…` (metres).
+pub fn parse_profile(s: &str) -> Result<Profile, Fail> {
+    let bad = || {
+        Fail(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"))
+    };
+    let (kind, rest) = s.split_once(':').ok_or_else(bad)?;
+    let nums = |t: &str| -> Result<Vec<f64>, Fail> {
+        t.split(',')
+            .map(|x| x.trim().parse::<f64>().map_err(|_| bad()))
+            .collect()
+    };
+    let p = match kind {
+        "uniform" => match nums(rest)?.as_slice() {
+            [x0, x1, v] => Profile::Uniform {
+                x0: *x0,
+                x1: *x1,
+                v: *v,
+            },
+            _ => return Err(bad()),
+        },
+        "linear" => match nums(rest)?.as_slice() {
+            [x0, v0, x1, v1] => Profile::Linear {
+                x0: *x0,
+                v0: *v0,
+                x1: *x1,
+                v1: *v1,
+            },
+            _ => return Err(bad()),
+        },
+        "table" => {
+            let mut points = Vec::new();
+            for pair in rest.split(';').filter(|t| !t.trim().is_empty()) {
+                match nums(pair)?.as_slice() {
+                    [x, v] => points.push([*x, *v]),
+                    _ => return Err(bad()),
+                }
+            }
+            Profile::Table { points }
+        }
+        _ => return Err(bad()),
+    };
+    p.validate().map_err(Fail::from)?;
+    Ok(p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn profiles_parse_from_the_command_line_form() {
+        assert_eq!(
+            parse_profile("uniform:1,2,-0.2").unwrap(),
+            Profile::Uniform {
+                x0: 1.0,
+                x1: 2.0,
+                v: -0.2
+            }
+        );
+        assert_eq!(
+            parse_profile("table:0,0;1,-0.1").unwrap(),
+            Profile::Table {
+                points: vec![[0.0, 0.0], [1.0, -0.1]]
+            }
+        );
+        assert!(parse_profile("uniform:2,1,-0.2").is_err());
+        assert!(parse_profile("linear:0,0,0,1").is_err());
+        assert!(parse_profile("table:0,0;1").is_err());
+        assert!(parse_profile("wavy:1").is_err());
+    }
 }

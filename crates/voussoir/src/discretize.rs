@@ -13,7 +13,7 @@
 //! a compressive normal force `p_n,k ≥ 0` on `b` along `+n` and a shear `p_t,k` along `+t` give
 //! block resultants `Nᵀ p_n + Tᵀ p_t`, so that equilibrium reads `F + Nᵀ p_n + Tᵀ p_t = 0`.
 
-use crate::geometry::{cross, small_displacement, sub};
+use crate::dim::{Dim, Two};
 use crate::structure::{Body, Structure};
 use sprs::{CsMat, TriMat};
 
@@ -46,18 +46,52 @@ impl JointLaw {
     }
 }
 
+/// A joint in contact-frame form: all the kinematic map needs of it, in any dimension.
+#[derive(Clone, Debug)]
+pub struct ContactJoint<D: Dim> {
+    pub a: Body,
+    pub b: Body,
+    /// Unit normal from `a` into `b`, and the tangents ([`Dim::tangents`]).
+    pub normal: D::Vector,
+    pub tangents: D::Tangents,
+    /// Collocation points and their current gaps.
+    pub points: Vec<(D::Vector, f64)>,
+    /// Bilateral joint (tied to a `fixed` support).
+    pub bilateral: bool,
+    pub law: JointLaw,
+    /// Position of each point along the joint from its midpoint (m): the lever arm of the
+    /// crushing domain (2D; 0 in 3D, where finite strength is not modelled).
+    pub along: Vec<f64>,
+}
+
+/// The bodies as the kinematic map sees them: reference points of the blocks (where their DOFs
+/// act), and of the supports with their prescribed motions (`Dim::DOFS` values each).
+#[derive(Clone, Debug)]
+pub struct ContactBodies<D: Dim> {
+    pub blocks: Vec<D::Vector>,
+    pub supports: Vec<(D::Vector, Vec<f64>)>,
+}
+
 /// The assembled kinematic map of a structure.
+///
+/// Rows: one opening row per collocation point `k` (`N`), `tangents_per_point` sliding rows per
+/// point (`T`, row `k·tangents_per_point + j` for tangent `j`). Columns: `dofs_per_block` per
+/// block (`dofs_per_block·i …`).
 #[derive(Clone, Debug)]
 pub struct KinematicMap {
     pub num_dofs: usize,
+    /// 3 in 2D, 6 in 3D.
+    pub dofs_per_block: usize,
+    /// 1 in 2D, 2 in 3D.
+    pub tangents_per_point: usize,
     pub points: Vec<PointRef>,
     /// Opening rows `N` (points × DOFs), CSR.
     pub normal: CsMat<f64>,
-    /// Sliding rows `T` (points × DOFs), CSR.
+    /// Sliding rows `T` (points·tangents × DOFs), CSR.
     pub tangent: CsMat<f64>,
     /// Opening caused by prescribed support motions at each point.
     pub support_normal: Vec<f64>,
-    /// Sliding caused by prescribed support motions at each point.
+    /// Sliding caused by prescribed support motions at each point and tangent.
     pub support_tangent: Vec<f64>,
     /// Whether each point belongs to a bilateral (fixed-support) joint.
     pub bilateral: Vec<bool>,
@@ -71,63 +105,116 @@ pub struct KinematicMap {
     pub along: Vec<f64>,
     /// Facets of the piecewise-linear crushing domain (finite compressive strength).
     pub facets: usize,
+    /// Facets of the pyramid inscribed in the friction cone (3D; 2D needs none).
+    pub friction_facets: usize,
     /// Fixed shear capacities per point, replacing `μ p_n + c` on frictional joints (used by the
     /// non-associative friction iteration: sliding without dilatancy).
     pub shear_limits: Option<Vec<f64>>,
 }
 
 impl KinematicMap {
+    /// The map of a (2D) structure: its joints in contact-frame form, assembled by
+    /// [`KinematicMap::assemble`].
     pub fn new(st: &Structure) -> KinematicMap {
-        let num_dofs = 3 * st.blocks.len();
-        let npts: usize = st.joints.iter().map(|j| j.points.len()).sum();
-        let mut tn = TriMat::with_capacity((npts, num_dofs), 6 * npts);
-        let mut tt = TriMat::with_capacity((npts, num_dofs), 6 * npts);
+        let bodies = ContactBodies::<Two> {
+            blocks: st.blocks.iter().map(|b| b.centroid).collect(),
+            supports: st
+                .supports
+                .iter()
+                .map(|s| (s.centroid, s.motion.to_vec()))
+                .collect(),
+        };
+        let joints: Vec<ContactJoint<Two>> = st
+            .joints
+            .iter()
+            .map(|joint| {
+                let t = joint.tangent();
+                let mid = joint.midpoint();
+                ContactJoint {
+                    a: joint.a,
+                    b: joint.b,
+                    normal: joint.normal,
+                    tangents: Two::tangents(joint.normal),
+                    points: joint.points.iter().map(|p| (p.x, p.gap)).collect(),
+                    bilateral: joint.bilateral,
+                    law: joint_law(st, joint),
+                    along: joint
+                        .points
+                        .iter()
+                        .map(|p| (p.x[0] - mid[0]) * t[0] + (p.x[1] - mid[1]) * t[1])
+                        .collect(),
+                }
+            })
+            .collect();
+        KinematicMap::assemble(&bodies, &joints)
+    }
+
+    /// Assemble the opening and sliding rows from contact frames only: each point's position,
+    /// its joint's normal and tangents, and the bodies' reference points. The jump
+    /// `[u] = u_b(x) − u_a(x)` along a direction `e` is `Σ ± (e·u + (r × e)·ω)` over the two
+    /// bodies ([`Dim::dof_row`]); a support contributes its prescribed motion to `g`.
+    pub fn assemble<D: Dim>(bodies: &ContactBodies<D>, joints: &[ContactJoint<D>]) -> KinematicMap {
+        let (nd, nt) = (D::DOFS, D::TANGENTS);
+        let num_dofs = nd * bodies.blocks.len();
+        let npts: usize = joints.iter().map(|j| j.points.len()).sum();
+        let mut tn = TriMat::with_capacity((npts, num_dofs), 2 * nd * npts);
+        let mut tt = TriMat::with_capacity((npts * nt, num_dofs), 2 * nd * nt * npts);
         let mut points = Vec::with_capacity(npts);
         let mut support_normal = Vec::with_capacity(npts);
-        let mut support_tangent = Vec::with_capacity(npts);
+        let mut support_tangent = Vec::with_capacity(npts * nt);
         let mut bilateral = Vec::with_capacity(npts);
         let mut gap = Vec::with_capacity(npts);
-        let mut joint_start = Vec::with_capacity(st.joints.len() + 1);
-        let mut laws = Vec::with_capacity(st.joints.len());
+        let mut joint_start = Vec::with_capacity(joints.len() + 1);
+        let mut laws = Vec::with_capacity(joints.len());
         let mut along = Vec::with_capacity(npts);
-        for (j, joint) in st.joints.iter().enumerate() {
+        let mut row = [0.0f64; 6];
+        for (j, joint) in joints.iter().enumerate() {
             joint_start.push(points.len());
+            laws.push(joint.law);
             let n = joint.normal;
-            let t = joint.tangent();
-            laws.push(joint_law(st, joint));
-            let mid = joint.midpoint();
-            for (k, p) in joint.points.iter().enumerate() {
-                let row = points.len();
-                let (mut gn, mut gt) = (0.0, 0.0);
+            let ts = joint.tangents.as_ref();
+            for (k, &(x, g)) in joint.points.iter().enumerate() {
+                let r_n = points.len();
+                let mut gn = 0.0;
+                let mut gt = [0.0f64; 2];
                 for (body, sign) in [(joint.a, -1.0), (joint.b, 1.0)] {
                     match body {
                         Body::Block(i) => {
-                            let r = sub(p.x, st.blocks[i].centroid);
-                            for (tri, dir) in [(&mut tn, n), (&mut tt, t)] {
-                                tri.add_triplet(row, 3 * i, sign * dir[0]);
-                                tri.add_triplet(row, 3 * i + 1, sign * dir[1]);
-                                tri.add_triplet(row, 3 * i + 2, sign * cross(r, dir));
+                            let r = D::sub(x, bodies.blocks[i]);
+                            D::dof_row(r, n, &mut row[..nd]);
+                            for (c, &v) in row[..nd].iter().enumerate() {
+                                tn.add_triplet(r_n, nd * i + c, sign * v);
+                            }
+                            for (m, &t) in ts.iter().enumerate() {
+                                D::dof_row(r, t, &mut row[..nd]);
+                                for (c, &v) in row[..nd].iter().enumerate() {
+                                    tt.add_triplet(r_n * nt + m, nd * i + c, sign * v);
+                                }
                             }
                         }
                         Body::Support(s) => {
-                            let sp = &st.supports[s];
-                            let u = small_displacement(sp.centroid, sp.motion, p.x);
-                            gn += sign * (n[0] * u[0] + n[1] * u[1]);
-                            gt += sign * (t[0] * u[0] + t[1] * u[1]);
+                            let (c, motion) = &bodies.supports[s];
+                            let u = D::small_displacement(*c, motion, x);
+                            gn += sign * D::dot(n, u);
+                            for (m, &t) in ts.iter().enumerate() {
+                                gt[m] += sign * D::dot(t, u);
+                            }
                         }
                     }
                 }
                 points.push(PointRef { joint: j, index: k });
                 support_normal.push(gn);
-                support_tangent.push(gt);
+                support_tangent.extend_from_slice(&gt[..nt]);
                 bilateral.push(joint.bilateral);
-                gap.push(p.gap);
-                along.push((p.x[0] - mid[0]) * t[0] + (p.x[1] - mid[1]) * t[1]);
+                gap.push(g);
+                along.push(joint.along.get(k).copied().unwrap_or(0.0));
             }
         }
         joint_start.push(points.len());
         KinematicMap {
             num_dofs,
+            dofs_per_block: nd,
+            tangents_per_point: nt,
             points,
             normal: tn.to_csr(),
             tangent: tt.to_csr(),
@@ -139,15 +226,18 @@ impl KinematicMap {
             laws,
             along,
             facets: 16,
+            friction_facets: 8,
             shear_limits: None,
         }
     }
 
-    /// Whether any joint has friction or finite strength.
+    /// Whether any joint has friction or finite strength, or the shear capacities of the
+    /// non-associative iteration are set: the force program then has rows beyond equilibrium.
     pub fn has_joint_laws(&self) -> bool {
         self.laws
             .iter()
             .any(|l| l.friction.is_some() || l.strength.is_some())
+            || self.shear_limits.is_some()
     }
 
     pub fn num_points(&self) -> usize {
@@ -161,11 +251,17 @@ impl KinematicMap {
             .unwrap_or_default()
     }
 
-    /// Openings `N d + s·g_n` and slidings `T d + s·g_t` for block DOFs `d`, with the support
-    /// motions scaled by `s` (1 for the motions as prescribed, 0 to ignore them).
+    /// Number of sliding rows (points × tangents).
+    pub fn num_tangent_rows(&self) -> usize {
+        self.support_tangent.len()
+    }
+
+    /// Openings `N d + s·g_n` (one per point) and slidings `T d + s·g_t` (one per point and
+    /// tangent) for block DOFs `d`, with the support motions scaled by `s` (1 for the motions
+    /// as prescribed, 0 to ignore them).
     pub fn jumps(&self, d: &[f64], s: f64) -> (Vec<f64>, Vec<f64>) {
         let apply = |m: &CsMat<f64>, g: &[f64]| -> Vec<f64> {
-            (0..self.num_points())
+            (0..g.len())
                 .map(|k| {
                     let mut v = s * g[k];
                     if let Some(row) = m.outer_view(k) {
@@ -183,15 +279,15 @@ impl KinematicMap {
         )
     }
 
-    /// `Nᵀ p_n + Tᵀ p_t`: block resultants of point forces.
+    /// `Nᵀ p_n + Tᵀ p_t`: block resultants of point forces (`p_t` one per point and tangent).
     pub fn resultants(&self, pn: &[f64], pt: &[f64]) -> Vec<f64> {
         let mut f = vec![0.0; self.num_dofs];
-        for k in 0..self.num_points() {
-            for (m, p) in [(&self.normal, pn[k]), (&self.tangent, pt[k])] {
-                if p != 0.0 {
+        for (m, p) in [(&self.normal, pn), (&self.tangent, pt)] {
+            for (k, &pk) in p.iter().enumerate() {
+                if pk != 0.0 {
                     if let Some(row) = m.outer_view(k) {
                         for (c, &x) in row.iter() {
-                            f[c] += x * p;
+                            f[c] += x * pk;
                         }
                     }
                 }

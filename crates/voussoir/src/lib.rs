@@ -32,7 +32,8 @@
 //! [`analysis`] → [`result`].
 
 pub mod analysis;
-pub mod conic;
+pub mod bench;
+pub mod dim;
 pub mod discretize;
 pub mod duality;
 pub mod error;
@@ -45,6 +46,7 @@ pub mod programs;
 pub mod result;
 pub mod settlement_input;
 pub mod structure;
+pub mod sweep;
 
 pub use error::{Error, Result};
 pub use model::Model;

@@ -11,15 +11,31 @@
 //!   and no sliding `T d + g_t = 0` (or the associative sliding rule with friction).
 //!
 //! Points with a gap carry no force and constrain no motion.
+//!
+//! ## Where each program of the paper is built
+//!
+//! | program | paper | builder |
+//! |---|---|---|
+//! | settlement, force form (dual): `min g·p`, `F_D + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` | (69)–(71) | [`settlement_force_program`] |
+//! | settlement, motion form (primal): `max F_D·d`, `N d + g_n ≥ 0`, `T d + g_t = 0` | (62)–(66) | [`settlement_motion_program`] |
+//! | limit analysis, static: `max λ`, `F_D + λF_L + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` | Remark 3 | [`limit_force_program`] (and [`limit_force_program_fixed_topology`] for warm-started sequences) |
+//! | limit analysis, kinematic: `F_L·d = 1`, `λ = −F_D·d` | Remark 3 | the row duals of the static program ([`crate::analysis::limit`]) |
+//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`] |
+//! | a dead-load ray (no λ in equilibrium) | — | [`dead_load_ray_program`] |
+//!
+//! Every analysis, the benchmark and the sweeps call these builders; nothing else assembles a
+//! program of the paper.
 
 use crate::discretize::KinematicMap;
-use crate::lp::{Direction, LinearProgram};
+use crate::lp::{Cone3, Direction, LinearProgram};
 
 const INF: f64 = f64::INFINITY;
 
 /// The force LP and where its variables are.
 pub struct ForceProgram {
     pub lp: LinearProgram,
+    /// Second-order cones to add to `lp` (the exact crushing domain); empty for an LP.
+    pub cones: Vec<Cone3>,
     /// Column of λ, if the program has one.
     pub lambda: Option<usize>,
     /// Column of `p_n` and `p_t` per point (None for points with a gap).
@@ -44,14 +60,17 @@ impl Columns {
 
 impl ForceProgram {
     /// Assemble. `dead` and `live` are block load resultants (`live` = None: no λ column).
-    /// `cost(k)` gives the objective coefficients `(c_n, c_t)` of point `k`; λ has cost 1.
+    /// `normal_cost(k)` is the objective coefficient of `p_n` at point `k`, `tangent_cost(r)`
+    /// that of the shear on sliding row `r` (`r = k·tangents_per_point + j`); λ has cost 1.
     pub fn new(
         map: &KinematicMap,
         dead: &[f64],
         live: Option<&[f64]>,
         direction: Direction,
-        cost: impl Fn(usize) -> (f64, f64),
+        normal_cost: impl Fn(usize) -> f64,
+        tangent_cost: impl Fn(usize) -> f64,
     ) -> ForceProgram {
+        let nt = map.tangents_per_point;
         let mut lp = LinearProgram::new(direction);
         for &f in dead {
             lp.add_row(-f, -f);
@@ -59,7 +78,7 @@ impl ForceProgram {
         let mut c = Columns { cols: Vec::new() };
         let lambda = live.map(|l| c.add(1.0, -INF, INF, l.iter().copied().enumerate().collect()));
         let mut pn = Vec::with_capacity(map.num_points());
-        let mut pt = Vec::with_capacity(map.num_points());
+        let mut pt = Vec::with_capacity(map.num_tangent_rows());
         for k in 0..map.num_points() {
             let law = &map.laws[map.points[k].joint];
             // A point with a gap carries nothing, except on a joint of finite strength, where its
@@ -67,27 +86,49 @@ impl ForceProgram {
             let gapped = map.gap[k] > 0.0;
             if gapped && law.strength.is_none() {
                 pn.push(None);
-                pt.push(None);
+                pt.extend((0..nt).map(|_| None));
                 continue;
             }
-            let (cn, ct) = cost(k);
             let lo = if map.bilateral[k] { -INF } else { 0.0 };
-            pn.push(Some(c.add(cn, lo, INF, KinematicMap::row(&map.normal, k))));
-            pt.push(if gapped {
-                None
-            } else {
-                Some(c.add(ct, -INF, INF, KinematicMap::row(&map.tangent, k)))
-            });
+            let row_n = KinematicMap::row(&map.normal, k);
+            pn.push(Some(c.add(normal_cost(k), lo, INF, row_n)));
+            for r in k * nt..(k + 1) * nt {
+                pt.push(if gapped {
+                    None
+                } else {
+                    let row_t = KinematicMap::row(&map.tangent, r);
+                    Some(c.add(tangent_cost(r), -INF, INF, row_t))
+                });
+            }
         }
         friction_rows(map, &mut lp, &mut c, &pn, &pt);
         crushing_rows(map, &mut lp, &mut c, &pn);
         for (cost, lo, hi, entries) in c.cols {
             lp.add_column(cost, lo, hi, entries);
         }
-        ForceProgram { lp, lambda, pn, pt }
+        ForceProgram {
+            lp,
+            cones: Vec::new(),
+            lambda,
+            pn,
+            pt,
+        }
     }
 
-    /// Point forces `(p_n, p_t)` from a solution vector (0 where a point has no column).
+    /// Solve with the backend of `opts` (the cones, if any, with a backend that takes them).
+    pub fn solve(
+        &self,
+        opts: &crate::lp::SolverOptions,
+    ) -> crate::error::Result<crate::lp::LpSolution> {
+        if self.cones.is_empty() {
+            crate::lp::solve(&self.lp, opts)
+        } else {
+            crate::lp::solve_with_cones(&self.lp, &self.cones, opts)
+        }
+    }
+
+    /// Point forces `(p_n, p_t)` from a solution vector (0 where a point has no column); `p_t`
+    /// has one value per point and tangent.
     pub fn forces(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
         let get = |c: &Option<usize>| c.map_or(0.0, |j| x[j]);
         (
@@ -97,7 +138,10 @@ impl ForceProgram {
     }
 }
 
-/// Coulomb: `|p_t| ≤ μ p_n + c` at every point of a joint with finite friction.
+/// Coulomb: `|p_t| ≤ μ p_n + c` at every point of a joint with finite friction. In 2D (one
+/// tangent) the two rows `±p_t ≤ μ p_n + c`; in 3D the pyramid of `map.friction_facets` facets
+/// *inscribed* in the cone (conservative): `(cos φ_i, sin φ_i)·p_t ≤ cos(π/K)(μ p_n + c)`,
+/// `φ_i = (2i + 1)π/K`, whose vertices lie on the cone.
 fn friction_rows(
     map: &KinematicMap,
     lp: &mut LinearProgram,
@@ -105,9 +149,26 @@ fn friction_rows(
     pn: &[Option<usize>],
     pt: &[Option<usize>],
 ) {
+    let nt = map.tangents_per_point;
+    let directions: Vec<(Vec<f64>, f64)> = if nt == 1 {
+        vec![(vec![1.0], 1.0), (vec![-1.0], 1.0)]
+    } else {
+        let k = map.friction_facets.max(3);
+        let shrink = (std::f64::consts::PI / k as f64).cos();
+        (0..k)
+            .map(|i| {
+                let phi = (2 * i + 1) as f64 * std::f64::consts::PI / k as f64;
+                (vec![phi.cos(), phi.sin()], shrink)
+            })
+            .collect()
+    };
     for k in 0..map.num_points() {
         let law = &map.laws[map.points[k].joint];
-        let (Some(mu), Some(cn), Some(ct)) = (law.friction, pn[k], pt[k]) else {
+        let (Some(mu), Some(cn)) = (law.friction, pn[k]) else {
+            continue;
+        };
+        let cts: Option<Vec<usize>> = (k * nt..(k + 1) * nt).map(|r| pt[r]).collect();
+        let Some(cts) = cts else {
             continue;
         };
         if map.bilateral[k] {
@@ -118,12 +179,26 @@ fn friction_rows(
             Some(lim) => (lim[k].max(0.0), 0.0),
             None => (law.cohesion, mu),
         };
-        for sign in [1.0, -1.0] {
-            let r = lp.add_row(-INF, bound);
-            c.entry(ct, r, sign);
-            c.entry(cn, r, -slope);
+        for (dir, shrink) in &directions {
+            let r = lp.add_row(-INF, shrink * bound);
+            for (&ct, &e) in cts.iter().zip(dir) {
+                c.entry(ct, r, e);
+            }
+            c.entry(cn, r, -shrink * slope);
         }
     }
+}
+
+/// The joints with a crushing domain: finite strength, not bilateral; with their law, largest
+/// normal force and range of points.
+fn crushing_joints(
+    map: &KinematicMap,
+) -> impl Iterator<Item = (&crate::discretize::JointLaw, f64, std::ops::Range<usize>)> {
+    map.laws.iter().enumerate().filter_map(|(j, law)| {
+        let nmax = law.max_normal_force()?;
+        let range = map.joint_start[j]..map.joint_start[j + 1];
+        (nmax > 0.0 && !range.clone().any(|k| map.bilateral[k])).then_some((law, nmax, range))
+    })
 }
 
 /// Finite compressive strength: `|M| ≤ N (t/2 − N / (2 f_c w))` per joint (rectangular stress
@@ -135,14 +210,7 @@ fn crushing_rows(
     c: &mut Columns,
     pn: &[Option<usize>],
 ) {
-    for (j, law) in map.laws.iter().enumerate() {
-        let Some(nmax) = law.max_normal_force() else {
-            continue;
-        };
-        let range = map.joint_start[j]..map.joint_start[j + 1];
-        if range.clone().any(|k| map.bilateral[k]) || nmax <= 0.0 {
-            continue;
-        }
+    for (law, nmax, range) in crushing_joints(map) {
         let cols: Vec<(usize, f64)> = range
             .clone()
             .filter_map(|k| pn[k].map(|col| (col, map.along[k])))
@@ -191,10 +259,9 @@ pub struct MotionProgram {
 }
 
 impl MotionProgram {
+    /// The LP dual of [`settlement_force_program`] with dead loads `work`.
     pub fn new(map: &KinematicMap, work: &[f64]) -> crate::error::Result<MotionProgram> {
-        let fp = ForceProgram::new(map, work, None, Direction::Minimise, |k| {
-            (map.support_normal[k], map.support_tangent[k])
-        });
+        let fp = settlement_force_program(map, work);
         let d = crate::duality::dual(&fp.lp)?;
         Ok(MotionProgram {
             lp: d.lp,
@@ -208,4 +275,123 @@ impl MotionProgram {
     pub fn motion(&self, x: &[f64]) -> Vec<f64> {
         x[..self.num_dofs].iter().map(|v| -v).collect()
     }
+}
+
+/// The paper's (69)–(71), the force form of a settlement analysis: contact forces in
+/// equilibrium with the dead loads `dead` that minimise the work `g_nᵀp_n + g_tᵀp_t` of the
+/// forces on the moving supports.
+pub fn settlement_force_program(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
+    ForceProgram::new(
+        map,
+        dead,
+        None,
+        Direction::Minimise,
+        |k| map.support_normal[k],
+        |r| map.support_tangent[r],
+    )
+}
+
+/// The paper's (62)–(66), the motion form of a settlement analysis: the mechanism that
+/// maximises the work of the dead loads over admissible motions, formed as the LP dual of
+/// [`settlement_force_program`].
+pub fn settlement_motion_program(
+    map: &KinematicMap,
+    dead: &[f64],
+) -> crate::error::Result<MotionProgram> {
+    MotionProgram::new(map, dead)
+}
+
+/// The static program of limit analysis (the paper's Remark 3): `max λ` subject to
+/// `F_D + λ F_L + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` and the joint laws. Its row duals are the
+/// collapse mechanism.
+pub fn limit_force_program(map: &KinematicMap, dead: &[f64], live: &[f64]) -> ForceProgram {
+    ForceProgram::new(map, dead, Some(live), Direction::Maximise, |_| 0.0, |_| 0.0)
+}
+
+/// [`limit_force_program`] with every point a column, those with a gap fixed at zero by their
+/// bounds: structures of one topology (a deformation sequence) then give programs of one shape,
+/// so the optimal basis of one starts the next. Without joint laws it is the same problem.
+pub fn limit_force_program_fixed_topology(
+    map: &KinematicMap,
+    dead: &[f64],
+    live: &[f64],
+) -> ForceProgram {
+    let mut all = map.clone();
+    all.gap.iter_mut().for_each(|g| *g = 0.0);
+    let mut fp = limit_force_program(&all, dead, live);
+    let nt = map.tangents_per_point;
+    for k in 0..map.num_points() {
+        if map.gap[k] > 0.0 {
+            let shear = &fp.pt[k * nt..(k + 1) * nt];
+            for &c in std::iter::once(&fp.pn[k]).chain(shear).flatten() {
+                fp.lp.col_lower[c] = 0.0;
+                fp.lp.col_upper[c] = 0.0;
+            }
+        }
+    }
+    fp
+}
+
+/// [`limit_force_program`] with the exact crushing domain: no inscribed chords; each joint of
+/// finite strength gets the two rotated cones
+/// ```text
+///   N² ≤ 2 f_c w · (N t/2 ∓ M)      ⇔      ‖(N, (r − f_c w)/√2)‖ ≤ (r + f_c w)/√2,  r = N t/2 ∓ M
+/// ```
+/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly.
+pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64]) -> ForceProgram {
+    let mut m = map.clone();
+    m.facets = 0;
+    let mut fp = limit_force_program(&m, dead, live);
+    let r2 = std::f64::consts::SQRT_2;
+    for (law, nmax, range) in crushing_joints(map) {
+        let t = law.depth;
+        let fw = nmax / t;
+        let cols: Vec<(usize, f64)> = range
+            .filter_map(|k| fp.pn[k].map(|c| (c, map.along[k])))
+            .collect();
+        for s in [1.0, -1.0] {
+            // r = Σ (t/2 − s·s_k) p_k; slacks b − A x = ((r + f w)/√2, N, (r − f w)/√2).
+            let r_row: Vec<(usize, f64)> = cols
+                .iter()
+                .map(|&(c, a)| (c, -(t / 2.0 - s * a) / r2))
+                .collect();
+            let n_row: Vec<(usize, f64)> = cols.iter().map(|&(c, _)| (c, -1.0)).collect();
+            fp.cones
+                .push([(r_row.clone(), fw / r2), (n_row, 0.0), (r_row, -fw / r2)]);
+        }
+    }
+    fp
+}
+
+/// A mechanism on which the live loads do no work and the dead loads do positive work (a ray of
+/// the kinematic limit program, which exists when no λ gives equilibrium): `max F_D·d` subject
+/// to `F_L·d = 0`, `N d ≥ 0` (`= 0` on bilateral points), `T d = 0`, `−1 ≤ d ≤ 1`, over points
+/// without a gap.
+pub fn dead_load_ray_program(map: &KinematicMap, dead: &[f64], live: &[f64]) -> LinearProgram {
+    let mut lp = LinearProgram::new(Direction::Maximise);
+    let mut cols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); map.num_dofs];
+    let r = lp.add_row(0.0, 0.0);
+    for (c, &v) in live.iter().enumerate() {
+        cols[c].push((r, v));
+    }
+    for k in 0..map.num_points() {
+        if map.gap[k] > 0.0 {
+            continue;
+        }
+        let r = lp.add_row(0.0, if map.bilateral[k] { 0.0 } else { f64::INFINITY });
+        for (c, v) in KinematicMap::row(&map.normal, k) {
+            cols[c].push((r, v));
+        }
+        let nt = map.tangents_per_point;
+        for row in k * nt..(k + 1) * nt {
+            let r = lp.add_row(0.0, 0.0);
+            for (c, v) in KinematicMap::row(&map.tangent, row) {
+                cols[c].push((r, v));
+            }
+        }
+    }
+    for (c, e) in cols.into_iter().enumerate() {
+        lp.add_column(dead[c], -1.0, 1.0, e);
+    }
+    lp
 }

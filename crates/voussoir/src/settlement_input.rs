@@ -81,52 +81,6 @@ impl Profile {
         }
         Ok(())
     }
-
-    /// Parse the command-line form: `uniform:X0,X1,V`, `linear:X0,V0,X1,V1` or
-    /// `table:X,V;X,V;…` (metres).
-    pub fn parse(s: &str) -> Result<Profile> {
-        let bad = || {
-            Error::Request(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"))
-        };
-        let (kind, rest) = s.split_once(':').ok_or_else(bad)?;
-        let nums = |t: &str| -> Result<Vec<f64>> {
-            t.split(',')
-                .map(|x| x.trim().parse::<f64>().map_err(|_| bad()))
-                .collect()
-        };
-        let p = match kind {
-            "uniform" => match nums(rest)?.as_slice() {
-                [x0, x1, v] => Profile::Uniform {
-                    x0: *x0,
-                    x1: *x1,
-                    v: *v,
-                },
-                _ => return Err(bad()),
-            },
-            "linear" => match nums(rest)?.as_slice() {
-                [x0, v0, x1, v1] => Profile::Linear {
-                    x0: *x0,
-                    v0: *v0,
-                    x1: *x1,
-                    v1: *v1,
-                },
-                _ => return Err(bad()),
-            },
-            "table" => {
-                let mut points = Vec::new();
-                for pair in rest.split(';').filter(|t| !t.trim().is_empty()) {
-                    match nums(pair)?.as_slice() {
-                        [x, v] => points.push([*x, *v]),
-                        _ => return Err(bad()),
-                    }
-                }
-                Profile::Table { points }
-            }
-            _ => return Err(bad()),
-        };
-        p.validate()?;
-        Ok(p)
-    }
 }
 
 /// Add a profile's motion to every support of `model` (by centroid).
@@ -188,19 +142,17 @@ mod tests {
     use crate::generate::{wall, WallSpec};
 
     #[test]
-    fn profiles_parse_and_apply_by_centroid() {
-        assert_eq!(
-            Profile::parse("uniform:1,2,-0.2").unwrap(),
-            Profile::Uniform {
-                x0: 1.0,
-                x1: 2.0,
-                v: -0.2
-            }
-        );
-        assert!(Profile::parse("uniform:2,1,-0.2").is_err());
-        assert!(Profile::parse("linear:0,0,0,1").is_err());
-        assert!(Profile::parse("table:0,0;1").is_err());
-        assert!(Profile::parse("wavy:1").is_err());
+    fn profiles_validate_and_apply_by_centroid() {
+        let uniform = |x0, x1| Profile::Uniform { x0, x1, v: -0.2 };
+        assert!(uniform(1.0, 2.0).validate().is_ok());
+        assert!(uniform(2.0, 1.0).validate().is_err());
+        let linear = Profile::Linear {
+            x0: 0.0,
+            v0: 0.0,
+            x1: 0.0,
+            v1: 1.0,
+        };
+        assert!(linear.validate().is_err());
         // A wall of 5 units of 0.4 m: foundation centroids at 0.2, 0.6, 1.0, 1.4, 1.8.
         let mut m = wall(&WallSpec {
             courses: 2,
@@ -208,7 +160,13 @@ mod tests {
             ..WallSpec::default()
         })
         .unwrap();
-        apply_profile(&mut m, &Profile::parse("linear:0.4,0,2.0,-0.04").unwrap()).unwrap();
+        let linear = Profile::Linear {
+            x0: 0.4,
+            v0: 0.0,
+            x1: 2.0,
+            v1: -0.04,
+        };
+        apply_profile(&mut m, &linear).unwrap();
         let v: Vec<f64> = m.supports.iter().map(|s| s.motion[1]).collect();
         let th: Vec<f64> = m.supports.iter().map(|s| s.motion[2]).collect();
         let expect = [0.0, -0.005, -0.015, -0.025, -0.035];
@@ -223,7 +181,10 @@ mod tests {
             ..WallSpec::default()
         })
         .unwrap();
-        apply_profile(&mut m, &Profile::parse("table:0,0;1,-0.1;2,-0.1").unwrap()).unwrap();
+        let table = Profile::Table {
+            points: vec![[0.0, 0.0], [1.0, -0.1], [2.0, -0.1]],
+        };
+        apply_profile(&mut m, &table).unwrap();
         assert!((m.supports[1].motion[1] + 0.06).abs() < 1e-15);
         assert!((m.supports[4].motion[1] + 0.1).abs() < 1e-15);
     }

@@ -1,8 +1,9 @@
 //! Capacity after a settlement: limit analysis on the deformed geometry (paper, Section 6,
 //! Figs 10 and 12; targets and tolerances from `shared/reference/paper-cases.md`).
 
-use voussoir::analysis::capacity::{capacity, deform, CapacityOptions, SettlementPath};
+use voussoir::analysis::capacity::{capacity, CapacityOptions};
 use voussoir::analysis::limit::solve_limit;
+use voussoir::analysis::settlement::SettlementPath;
 use voussoir::analysis::{limit, LimitStatus};
 use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
@@ -258,8 +259,8 @@ fn finite_rigid_motions_move_and_return_exactly() {
     // stretch blocks visibly.
     let theta = (0..st.blocks.len()).fold(0.0f64, |m, i| m.max(d[3 * i + 2].abs()));
     let s = 0.3 / theta;
-    let moved = deform(&st, d, s).unwrap();
-    let back = deform(&moved, d, -s).unwrap();
+    let moved = st.deform(d, s).unwrap();
+    let back = moved.deform(d, -s).unwrap();
     let close =
         |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() <= 1e-12 && (a[1] - b[1]).abs() <= 1e-12;
     for (i, (b0, b1)) in st.blocks.iter().zip(&moved.blocks).enumerate() {
@@ -312,7 +313,7 @@ fn requests_that_do_not_fit_are_one_line_errors() {
     assert!(!e.to_string().contains('\n'));
     let no_live = paper_arch(LiveLoad::None, [0.01, 0.0], false);
     assert!(capacity(&no_live, &CapacityOptions::default()).is_err());
-    assert!(deform(&st, &[0.0; 3], 1.0).is_err());
+    assert!(st.deform(&[0.0; 3], 1.0).is_err());
 }
 
 #[test]
@@ -342,4 +343,38 @@ fn lintel_with_finite_strength_loses_capacity_at_half_its_thickness() {
     for w in r.curve.windows(2).filter(|w| w[1].settlement <= z) {
         assert!(w[1].load_multiplier.unwrap() < w[0].load_multiplier.unwrap());
     }
+}
+
+/// `--method clarabel` means Clarabel in every solve of the capacity analysis (settlement path,
+/// curve, root finding): the result says so, and the zero-capacity settlement agrees with dual
+/// simplex to 1e-4 m (the paper's horizontal case, 1.375 cm with dual simplex).
+#[test]
+fn capacity_with_clarabel_runs_clarabel_and_agrees_with_dual_simplex() {
+    use voussoir::lp::Method;
+    let st = paper_arch(LiveLoad::Full, [0.02, 0.0], false);
+    let run = |method| {
+        capacity(
+            &st,
+            &CapacityOptions {
+                steps: 20,
+                solver: SolverOptions {
+                    method,
+                    ..SolverOptions::default()
+                },
+                ..Default::default()
+            },
+        )
+        .unwrap()
+    };
+    let simplex = run(Method::DualSimplex);
+    let ipm = run(Method::Clarabel);
+    assert_eq!(simplex.solver.solver, "highs");
+    assert_eq!(ipm.solver.solver, "clarabel");
+    assert_eq!(ipm.solver.method, Method::Clarabel);
+    let (a, b) = (
+        simplex.zero_capacity_settlement.unwrap(),
+        ipm.zero_capacity_settlement.unwrap(),
+    );
+    assert!(within(a, 0.01375, 0.01), "dual simplex {a}");
+    assert!((a - b).abs() <= 1e-4, "dual simplex {a} vs Clarabel {b}");
 }

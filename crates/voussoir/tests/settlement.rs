@@ -172,15 +172,23 @@ fn extreme_thrust(direction: Direction) -> f64 {
     let map = KinematicMap::new(&st);
     let right = st.supports.iter().position(|s| s.name == "right").unwrap();
     // Force on the support: the support is body b of its joint, so it receives +p_n n + p_t t.
-    let cost = |k: usize| {
+    // (2D: one tangent per point, so sliding row k is point k.)
+    let cost = |k: usize, normal: bool| {
         let j = &st.joints[map.points[k].joint];
-        if j.b == Body::Support(right) {
-            (j.normal[0], j.tangent()[0])
-        } else {
-            (0.0, 0.0)
+        match (j.b == Body::Support(right), normal) {
+            (true, true) => j.normal[0],
+            (true, false) => j.tangent()[0],
+            _ => 0.0,
         }
     };
-    let fp = ForceProgram::new(&map, &st.load_vector(false), None, direction, cost);
+    let fp = ForceProgram::new(
+        &map,
+        &st.load_vector(false),
+        None,
+        direction,
+        |k| cost(k, true),
+        |k| cost(k, false),
+    );
     let s = lp::solve(&fp.lp, &SolverOptions::default()).unwrap();
     assert_eq!(s.status, LpStatus::Optimal);
     s.objective

@@ -41,21 +41,19 @@
 //! For `s > 0` every deformed structure has the same joints, points and open set (openings
 //! scale with `s`), so the limit LPs differ only in their coefficients. [`WarmLimit`] keeps all
 //! points as columns (open ones fixed at zero by their bounds), so that the optimal basis of one
-//! step is a valid starting basis for the next, and hands it to HiGHS (`Highs_setBasis`).
+//! step is a valid starting basis for the next, and hands it to the solver layer's warm start
+//! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
 
-use crate::analysis::limit::{solve_limit, LimitSolution, LimitStatus};
-use crate::analysis::settlement::{solve_settlement, SettlementStatus};
+use crate::analysis::limit::{LimitSolution, LimitStatus, WarmLimit};
+use crate::analysis::settlement::{SettlementPath, SettlementStatus};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, SolverOptions};
-use crate::programs::ForceProgram;
-use crate::result::{report, BlockMotion, Geometry, Hinge};
+use crate::lp::SolverOptions;
+pub use crate::result::capacity::*;
+use crate::result::{report, Geometry};
 use crate::structure::Structure;
-use serde::{Deserialize, Serialize};
-
-/// Relative threshold below which an opening counts as closed (same as the reports').
-pub const OPEN_TOLERANCE: f64 = 1e-7;
+use crate::structure::OPEN_TOLERANCE;
 
 /// Options of the capacity analysis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,229 +87,6 @@ impl Default for CapacityOptions {
     }
 }
 
-/// One point of the capacity curve.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CapacityPoint {
-    /// Settlement magnitude s (m).
-    pub settlement: f64,
-    /// λ(s): collapse multiplier on the deformed geometry; negative when the dead loads alone
-    /// cannot be carried; `null` when locked or without any equilibrium.
-    pub load_multiplier: Option<f64>,
-    pub status: LimitStatus,
-    /// False when the collapse mechanism closes points opened by the settlement (standard limit
-    /// analysis is then not valid: use the incremental analysis).
-    pub valid: bool,
-    /// Joints with an open point that the collapse mechanism would close.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub closing_joints: Vec<usize>,
-    /// Hinges of the collapse mechanism (positions on the deformed geometry).
-    pub hinges: Vec<Hinge>,
-}
-
-/// The collapse mechanism at one settlement.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CapacityMechanism {
-    pub settlement: f64,
-    /// Block motion rates, normalised to unit work of the live loads.
-    pub blocks: Vec<BlockMotion>,
-}
-
-/// A support's motion per unit settlement.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SupportDirection {
-    pub support: String,
-    /// `[u, v, θ]` per metre of settlement (θ in radians).
-    pub motion: [f64; 3],
-}
-
-/// Overall outcome.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum CapacityStatus {
-    /// The curve was computed.
-    Curve,
-    /// The settlement analysis found no mechanism (see the message): no curve.
-    NoSettlementMechanism,
-}
-
-/// Result of a capacity analysis.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CapacityResult {
-    pub status: CapacityStatus,
-    pub message: String,
-    /// Largest settlement (m, or rad for pure rotations).
-    pub max_settlement: f64,
-    /// Motion of each moving support per unit settlement.
-    pub direction: Vec<SupportDirection>,
-    /// `{settlement, load_multiplier, valid, …}` for s = 0 … max.
-    pub curve: Vec<CapacityPoint>,
-    /// The settlement at which λ reaches 0 (`null` if λ does not change sign in the range).
-    pub zero_capacity_settlement: Option<f64>,
-    /// Least-squares line `λ ≈ intercept + slope·s` through the valid points with s > 0, and the
-    /// largest deviation from it relative to λ(0) (a measure of linearity).
-    pub linear_fit: Option<LinearFit>,
-    /// Settlement mechanism per unit settlement and its hinges.
-    pub settlement_mechanism: Vec<BlockMotion>,
-    pub settlement_hinges: Vec<Hinge>,
-    /// Collapse mechanism per step (empty unless requested).
-    pub mechanisms: Vec<CapacityMechanism>,
-    /// LP solves and simplex iterations spent (curve and root finding).
-    pub solves: usize,
-    pub iterations: i64,
-    /// The undeformed geometry.
-    pub geometry: Geometry,
-}
-
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LinearFit {
-    pub intercept: f64,
-    pub slope: f64,
-    pub max_relative_deviation: f64,
-}
-
-/// Magnitude of a set of support motions: the largest translation (or rotation if none).
-pub fn settlement_magnitude(st: &Structure) -> f64 {
-    let t = st
-        .supports
-        .iter()
-        .fold(0.0f64, |m, s| m.max(s.motion[0].hypot(s.motion[1])));
-    if t > 0.0 {
-        t
-    } else {
-        st.supports
-            .iter()
-            .fold(0.0f64, |m, s| m.max(s.motion[2].abs()))
-    }
-}
-
-/// Openings of every point per joint for mechanism `d` (with the supports' prescribed motions),
-/// in the layout [`Structure::deformed`] takes, and the closed/open threshold.
-pub fn joint_openings(
-    st: &Structure,
-    map: &KinematicMap,
-    d: &[f64],
-    support_scale: f64,
-) -> (Vec<Vec<f64>>, f64) {
-    let (open, _) = map.jumps(d, support_scale);
-    let scale = open.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-    let mut out: Vec<Vec<f64>> = st
-        .joints
-        .iter()
-        .map(|j| vec![0.0; j.points.len()])
-        .collect();
-    for (k, p) in map.points.iter().enumerate() {
-        out[p.joint][p.index] = open[k];
-    }
-    (out, OPEN_TOLERANCE * scale)
-}
-
-/// Move `st` by the mechanism `d` scaled by `s` (blocks by exact finite rigid motions, supports
-/// by `s·motion`): points whose opening `s·(N d + g_n)` exceeds `1e-7` of the largest opening
-/// get that gap (added to any gap they had) and carry no force; the others stay in contact.
-pub fn deform(st: &Structure, d: &[f64], s: f64) -> Result<Structure> {
-    if d.len() != 3 * st.blocks.len() {
-        return Err(Error::Request(format!(
-            "a mechanism for {} blocks needs {} values, got {}",
-            st.blocks.len(),
-            3 * st.blocks.len(),
-            d.len()
-        )));
-    }
-    if !s.is_finite() || d.iter().any(|x| !x.is_finite()) {
-        return Err(Error::Request(
-            "deformation: the mechanism and its scale must be finite".into(),
-        ));
-    }
-    let map = KinematicMap::new(st);
-    let (openings, tol) = joint_openings(st, &map, d, 1.0);
-    Ok(st.deformed(d, s, &openings, (s.abs() * tol).max(0.0)))
-}
-
-/// The settlement path: the structure with unit support motions, its settlement mechanism and
-/// openings, from which every deformed structure is made.
-pub struct SettlementPath {
-    /// The structure with its support motions divided by `max_settlement`.
-    pub unit: Structure,
-    pub max_settlement: f64,
-    pub status: SettlementStatus,
-    /// Settlement mechanism per unit settlement (empty unless `status` is a mechanism).
-    pub mechanism: Vec<f64>,
-    openings: Vec<Vec<f64>>,
-    open_tol: f64,
-}
-
-impl SettlementPath {
-    pub fn new(st: &Structure, solver: &SolverOptions) -> Result<SettlementPath> {
-        let mag = settlement_magnitude(st);
-        if !(mag.is_finite() && mag > 0.0) {
-            return Err(Error::Request(
-                "capacity analysis needs a settlement: no support has a prescribed motion".into(),
-            ));
-        }
-        let motions: Vec<[f64; 3]> = st
-            .supports
-            .iter()
-            .map(|s| s.motion.map(|x| x / mag))
-            .collect();
-        let unit = st.with_support_motions(&motions);
-        let map = KinematicMap::new(&unit);
-        let sol = solve_settlement(&unit, &map, solver)?;
-        let (openings, open_tol) = if sol.status == SettlementStatus::Mechanism {
-            joint_openings(&unit, &map, &sol.mechanism, 1.0)
-        } else {
-            (vec![], 0.0)
-        };
-        Ok(SettlementPath {
-            unit,
-            max_settlement: mag,
-            status: sol.status,
-            mechanism: sol.mechanism,
-            openings,
-            open_tol,
-        })
-    }
-
-    /// The structure after a settlement `s` (m). `s = 0` returns the undeformed structure as is.
-    pub fn deformed(&self, s: f64) -> Structure {
-        if s == 0.0 || self.mechanism.is_empty() {
-            let mut st = self.unit.clone();
-            for sp in st.supports.iter_mut() {
-                sp.motion = [0.0; 3];
-            }
-            return st;
-        }
-        let mut st =
-            self.unit
-                .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol);
-        for sp in st.supports.iter_mut() {
-            sp.motion = [0.0; 3];
-        }
-        st
-    }
-}
-
-/// Turn every `fixed` support into a contact one: its joints become unilateral (no tension).
-pub fn release_fixed(st: &mut Structure) {
-    use crate::model::Connection;
-    use crate::structure::Body;
-    let fixed: Vec<bool> = st
-        .supports
-        .iter()
-        .map(|s| s.connection == Connection::Fixed)
-        .collect();
-    for j in st.joints.iter_mut() {
-        if [j.a, j.b]
-            .iter()
-            .any(|b| matches!(b, Body::Support(k) if fixed[*k]))
-        {
-            j.bilateral = false;
-        }
-    }
-    for sp in st.supports.iter_mut() {
-        sp.connection = Connection::Contact;
-    }
-}
-
 /// Open points whose opening rate under mechanism `d` is negative: the joints whose settlement
 /// cracks the mechanism would close.
 pub fn closing_joints(st: &Structure, map: &KinematicMap, d: &[f64]) -> Vec<usize> {
@@ -331,181 +106,6 @@ pub fn closing_joints(st: &Structure, map: &KinematicMap, d: &[f64]) -> Vec<usiz
     out.dedup();
     let _ = st;
     out
-}
-
-/// A limit LP kept between solves on structures of one topology (same blocks, joints and
-/// points): all points are columns, open ones fixed at zero, and the optimal basis of a solve
-/// starts the next one.
-pub struct WarmLimit {
-    solver: SolverOptions,
-    hot: bool,
-    basis: Option<(Vec<i32>, Vec<i32>)>,
-    shape: (usize, usize),
-    /// LP solves and simplex iterations so far.
-    pub solves: usize,
-    pub iterations: i64,
-}
-
-impl WarmLimit {
-    /// `hot = false` solves every LP from scratch with [`solve_limit`].
-    pub fn new(solver: &SolverOptions, hot: bool) -> WarmLimit {
-        WarmLimit {
-            solver: *solver,
-            hot,
-            basis: None,
-            shape: (0, 0),
-            solves: 0,
-            iterations: 0,
-        }
-    }
-
-    /// Limit analysis of `st` (same meaning as [`solve_limit`]).
-    pub fn solve(&mut self, st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
-        self.solves += 1;
-        // Joint laws (friction, crushing) give gapped points roles of their own in the force
-        // program: those structures are solved from scratch.
-        let sol = if self.hot && !map.has_joint_laws() {
-            self.solve_hot(st, map)?
-        } else {
-            solve_limit(st, map, &self.solver)?
-        };
-        self.iterations += sol.iterations;
-        Ok(sol)
-    }
-
-    fn solve_hot(&mut self, st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
-        if !st.has_live_loads() {
-            return Err(Error::Request(
-                "limit analysis needs live loads (the model has none)".into(),
-            ));
-        }
-        let dead = st.load_vector(false);
-        let live = st.load_vector(true);
-        let mut all = map.clone();
-        all.gap.iter_mut().for_each(|g| *g = 0.0);
-        let mut fp = ForceProgram::new(&all, &dead, Some(&live), Direction::Maximise, |_| {
-            (0.0, 0.0)
-        });
-        for k in 0..map.num_points() {
-            if map.gap[k] > 0.0 {
-                for c in [fp.pn[k], fp.pt[k]].into_iter().flatten() {
-                    fp.lp.col_lower[c] = 0.0;
-                    fp.lp.col_upper[c] = 0.0;
-                }
-            }
-        }
-        let shape = (fp.lp.num_cols(), fp.lp.num_rows());
-        if shape != self.shape {
-            self.basis = None;
-            self.shape = shape;
-        }
-        let mut opts = self.solver;
-        // Presolve would discard the starting basis; without one it is worth its cost.
-        opts.presolve = self.solver.presolve && self.basis.is_none();
-        let mut model = lp::build(&fp.lp);
-        lp::configure(&mut model, &opts)?;
-        if let Some((cs, rs)) = &self.basis {
-            let cs = sanitize(cs, &fp.lp.col_lower, &fp.lp.col_upper);
-            let rs = sanitize(rs, &fp.lp.row_lower, &fp.lp.row_upper);
-            // SAFETY: the pointer is the live HiGHS instance owned by `model`; the arrays have
-            // exactly num_col and num_row entries (checked by `shape`).
-            let ok =
-                unsafe { highs_sys::Highs_setBasis(model.as_mut_ptr(), cs.as_ptr(), rs.as_ptr()) };
-            if ok == highs_sys::kHighsStatusError {
-                self.basis = None;
-            }
-        }
-        let solved = match model.try_solve() {
-            Ok(s) => s,
-            Err(_) => {
-                // A failed run: forget the basis and solve from scratch.
-                self.basis = None;
-                return solve_limit(st, map, &self.solver);
-            }
-        };
-        let iterations = solved.simplex_iteration_count();
-        let status = solved.status();
-        use highs::HighsModelStatus as H;
-        let n = map.num_points();
-        let none = |status, iterations| LimitSolution {
-            status,
-            lambda: None,
-            mechanism: vec![],
-            pn: vec![0.0; n],
-            pt: vec![0.0; n],
-            iterations,
-        };
-        match status {
-            H::Optimal => {}
-            H::Unbounded => return Ok(none(LimitStatus::Locked, iterations)),
-            H::Infeasible => return Ok(none(LimitStatus::NoEquilibrium, iterations)),
-            _ => {
-                // Anything unusual: forget the basis and solve from scratch.
-                self.basis = None;
-                let mut s = solve_limit(st, map, &self.solver)?;
-                s.iterations += iterations;
-                return Ok(s);
-            }
-        }
-        let s = solved.get_solution();
-        let x = s.columns().to_vec();
-        let y = s.dual_rows()[..map.num_dofs].to_vec();
-        let mut cs = vec![0i32; shape.0];
-        let mut rs = vec![0i32; shape.1];
-        // SAFETY: as above; HiGHS fills exactly num_col and num_row entries.
-        let got = unsafe {
-            let mut m: highs::Model = solved.into();
-            highs_sys::Highs_getBasis(m.as_mut_ptr(), cs.as_mut_ptr(), rs.as_mut_ptr())
-        };
-        self.basis = if got == highs_sys::kHighsStatusError {
-            None
-        } else {
-            Some((cs, rs))
-        };
-        let lambda = x[fp.lambda.expect("program has λ")];
-        let (pn, pt) = fp.forces(&x);
-        let wl: f64 = live.iter().zip(&y).map(|(a, b)| a * b).sum();
-        let mechanism = if wl.abs() > 0.0 {
-            y.iter().map(|v| v / wl).collect()
-        } else {
-            vec![0.0; y.len()]
-        };
-        Ok(LimitSolution {
-            status: if lambda >= 0.0 {
-                LimitStatus::Collapse
-            } else {
-                LimitStatus::NoEquilibrium
-            },
-            lambda: Some(lambda),
-            mechanism,
-            pn,
-            pt,
-            iterations,
-        })
-    }
-}
-
-/// Make nonbasic statuses consistent with (possibly changed) bounds.
-fn sanitize(status: &[i32], lo: &[f64], hi: &[f64]) -> Vec<i32> {
-    use highs_sys::{
-        kHighsBasisStatusBasic as B, kHighsBasisStatusLower as L, kHighsBasisStatusUpper as U,
-        kHighsBasisStatusZero as Z,
-    };
-    status
-        .iter()
-        .zip(lo.iter().zip(hi))
-        .map(|(&s, (&l, &h))| {
-            if s == B {
-                B
-            } else if l.is_finite() && (s == L || !h.is_finite()) {
-                L
-            } else if h.is_finite() {
-                U
-            } else {
-                Z
-            }
-        })
-        .collect()
 }
 
 /// λ as a number for root finding: locked counts as +∞, no equilibrium at all as −∞.
@@ -548,6 +148,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
         return Ok(CapacityResult {
             status: CapacityStatus::NoSettlementMechanism,
             message: format!("settlement analysis: {}", path.status.sentence()),
+            solver: opts.solver.info(),
             max_settlement: smax,
             direction,
             curve: vec![],
@@ -574,7 +175,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
         let s = smax * i as f64 / opts.steps as f64;
         let mut dst = path.deformed(s);
         if opts.release_fixed {
-            release_fixed(&mut dst);
+            dst.release_fixed();
         }
         let map = KinematicMap::new(&dst);
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
@@ -618,7 +219,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
                     let lam = |s: f64, w: &mut WarmLimit| -> Result<f64> {
                         let mut dst = path.deformed(s);
                         if opts.release_fixed {
-                            release_fixed(&mut dst);
+                            dst.release_fixed();
                         }
                         let map = KinematicMap::new(&dst);
                         Ok(signed_lambda(&w.solve(&dst, &map)?))
@@ -661,6 +262,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
     Ok(CapacityResult {
         status: CapacityStatus::Curve,
         message,
+        solver: opts.solver.info(),
         max_settlement: smax,
         direction,
         curve,

@@ -37,26 +37,19 @@
 //! the dead loads), at the maximum control displacement, or when the LP has no mechanism
 //! (locked) or no equilibrium.
 
-use crate::analysis::capacity::{release_fixed, SettlementPath, WarmLimit, OPEN_TOLERANCE};
 use crate::analysis::limit::LimitStatus;
+use crate::analysis::limit::WarmLimit;
+use crate::analysis::settlement::SettlementPath;
 use crate::analysis::settlement::SettlementStatus;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::geometry::{self, small_displacement, RigidMotion};
 use crate::lp::SolverOptions;
 use crate::model::Point;
-use crate::result::{report, BlockMotion, Geometry, Hinge};
+pub use crate::result::incremental::*;
+use crate::result::{report, Geometry};
 use crate::structure::Structure;
-use serde::{Deserialize, Serialize};
-
-/// The control point: a point of a block (in the start geometry) and a direction.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Control {
-    pub block: usize,
-    pub point: Point,
-    /// Unit direction along which the control displacement is measured.
-    pub direction: Point,
-}
+use crate::structure::OPEN_TOLERANCE;
 
 impl Control {
     /// A control point on `block`; `direction` is normalised.
@@ -138,106 +131,6 @@ impl Default for IncrementalOptions {
     }
 }
 
-/// Why the analysis stopped.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum IncrementalStatus {
-    /// λ fell to zero after its peak: the structure can no longer carry its own weight.
-    Collapsed,
-    /// The maximum control displacement was reached.
-    MaxDisplacement,
-    /// The step cap was reached.
-    MaxSteps,
-    /// No finite collapse load on the current geometry.
-    Locked,
-    /// No equilibrium for any λ on the current geometry.
-    NoEquilibrium,
-    /// The mechanism does not move the control point along the control direction.
-    ControlStill,
-}
-
-/// A point of the curve.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct IncrementalPoint {
-    /// Step at which the point was computed.
-    pub step: usize,
-    /// Control displacement along the direction (m).
-    pub displacement: f64,
-    /// Live load needed: max(λ, 0).
-    pub load_multiplier: f64,
-    /// λ by virtual work (negative: the dead loads alone drive the mechanism).
-    pub equilibrium_multiplier: f64,
-    /// Evaluated at the end of a step in which a point closed, with the point still open: the
-    /// value just before the jump (the next point, at the same displacement, is just after).
-    #[serde(default, skip_serializing_if = "is_false")]
-    pub before_closure: bool,
-}
-
-fn is_false(b: &bool) -> bool {
-    !*b
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum EventKind {
-    /// A point in contact opened (a crack or hinge forms).
-    Opened,
-    /// An open point closed and carries force again.
-    Closed,
-}
-
-/// A change of contact at a point.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Event {
-    pub step: usize,
-    pub displacement: f64,
-    pub kind: EventKind,
-    pub joint: usize,
-    /// Index of the point in its joint.
-    pub point: usize,
-    pub x: f64,
-    pub y: f64,
-}
-
-/// The mechanism at one step.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Snapshot {
-    pub step: usize,
-    pub displacement: f64,
-    pub load_multiplier: f64,
-    /// Block motion rates per unit control displacement.
-    pub blocks: Vec<BlockMotion>,
-    /// Joints with an open point, at their point in contact.
-    pub hinges: Vec<Hinge>,
-    /// The current geometry.
-    pub geometry: Geometry,
-}
-
-/// Result of an incremental analysis.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct IncrementalResult {
-    pub status: IncrementalStatus,
-    pub message: String,
-    pub control: Control,
-    /// `{displacement, load_multiplier, …}` in the order computed.
-    pub curve: Vec<IncrementalPoint>,
-    pub events: Vec<Event>,
-    pub snapshots: Vec<Snapshot>,
-    pub peak_load_multiplier: f64,
-    pub peak_displacement: f64,
-    /// Joints open at the start (e.g. opened by a settlement).
-    pub initial_open_joints: Vec<usize>,
-    pub steps: usize,
-    /// Steps without equilibrium for any λ in which the dead loads alone moved the structure
-    /// until an open point closed (a hinge moving to the next joint); they add no curve point.
-    pub snaps: usize,
-    pub solves: usize,
-    pub iterations: i64,
-    /// Geometry at the start and at the end.
-    pub initial_geometry: Geometry,
-    pub final_geometry: Geometry,
-}
-
 /// The structure after the settlement prescribed by its supports' motions: settlement
 /// analysis, then every block moved by its finite rigid motion and every opened point given its
 /// gap. `release` turns `fixed` supports into contact ones afterwards (see
@@ -252,7 +145,7 @@ pub fn settled(st: &Structure, solver: &SolverOptions, release: bool) -> Result<
     }
     let mut out = path.deformed(path.max_settlement);
     if release {
-        release_fixed(&mut out);
+        out.release_fixed();
     }
     Ok(out)
 }
@@ -506,6 +399,7 @@ pub fn incremental_with(
     Ok(IncrementalResult {
         status,
         message,
+        solver: opts.solver.info(),
         control,
         curve,
         events,
@@ -536,31 +430,10 @@ fn dead_load_ray(
     map: &KinematicMap,
     solver: &SolverOptions,
 ) -> Result<Option<Vec<f64>>> {
-    use crate::lp::{Direction, LinearProgram, LpStatus};
+    use crate::lp::LpStatus;
     let dead = st.load_vector(false);
     let live = st.load_vector(true);
-    let mut lp = LinearProgram::new(Direction::Maximise);
-    let mut cols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); map.num_dofs];
-    let r = lp.add_row(0.0, 0.0);
-    for (c, &v) in live.iter().enumerate() {
-        cols[c].push((r, v));
-    }
-    for k in 0..map.num_points() {
-        if map.gap[k] > 0.0 {
-            continue;
-        }
-        let r = lp.add_row(0.0, if map.bilateral[k] { 0.0 } else { f64::INFINITY });
-        for (c, v) in KinematicMap::row(&map.normal, k) {
-            cols[c].push((r, v));
-        }
-        let r = lp.add_row(0.0, 0.0);
-        for (c, v) in KinematicMap::row(&map.tangent, k) {
-            cols[c].push((r, v));
-        }
-    }
-    for (c, e) in cols.into_iter().enumerate() {
-        lp.add_column(dead[c], -1.0, 1.0, e);
-    }
+    let lp = crate::programs::dead_load_ray_program(map, &dead, &live);
     let sol = crate::lp::solve(&lp, solver)?;
     let wscale: f64 = dead.iter().map(|f| f.abs()).sum::<f64>().max(1e-300);
     Ok(match sol.status {

@@ -6,56 +6,12 @@
 
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, LpStatus, SolverOptions};
-use crate::programs::ForceProgram;
-use crate::result::{report, BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::lp::{self, LpSolution, LpStatus, SolverInfo, SolverOptions};
+use crate::programs::{self, ForceProgram};
+pub use crate::result::limit::*;
+use crate::result::{report, Geometry};
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
-
-/// Outcome of a limit analysis.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum LimitStatus {
-    /// A finite collapse multiplier λ ≥ 0 and its mechanism.
-    Collapse,
-    /// No finite collapse load: equilibrium holds for every λ ("locked").
-    Locked,
-    /// No equilibrium under the dead loads alone (λ would have to be negative, or no λ works).
-    NoEquilibrium,
-}
-
-impl LimitStatus {
-    pub fn sentence(&self) -> &'static str {
-        match self {
-            LimitStatus::Collapse => "collapse: finite load multiplier with its mechanism",
-            LimitStatus::Locked => "no finite collapse load: the structure is locked (equilibrium for every load multiplier)",
-            LimitStatus::NoEquilibrium => "no equilibrium under the dead loads: the structure cannot stand even without live load",
-        }
-    }
-}
-
-/// Result of a limit analysis.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LimitResult {
-    pub status: LimitStatus,
-    pub message: String,
-    /// λ: the collapse multiplier (negative when the dead loads alone cannot be carried and the
-    /// live load, reversed, would be needed; `null` when locked or infeasible).
-    pub load_multiplier: Option<f64>,
-    /// Work of the dead loads and of the live loads on the mechanism (−λ and 1 at collapse).
-    pub work_dead_loads: Option<f64>,
-    pub work_live_loads: Option<f64>,
-    /// The collapse mechanism (normalised: unit work of the live loads).
-    pub blocks: Vec<BlockMotion>,
-    pub joints: Vec<JointResult>,
-    pub hinges: Vec<Hinge>,
-    pub thrust_line: Vec<ThrustPoint>,
-    pub reactions: Vec<Reaction>,
-    /// Simplex iterations spent.
-    pub iterations: i64,
-    /// The geometry analysed (for drawing a saved result).
-    pub geometry: Geometry,
-}
 
 /// The raw vectors of a limit analysis, for the analyses built on top of it.
 #[derive(Clone, Debug)]
@@ -67,6 +23,8 @@ pub struct LimitSolution {
     pub pn: Vec<f64>,
     pub pt: Vec<f64>,
     pub iterations: i64,
+    /// The solver and method that produced it.
+    pub solver: SolverInfo,
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
@@ -76,17 +34,9 @@ pub fn solve_limit(
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
     let (dead, live) = load_vectors(st)?;
-    let fp = ForceProgram::new(map, &dead, Some(&live), Direction::Maximise, |_| (0.0, 0.0));
-    let sol = lp::solve(&fp.lp, opts)?;
-    Ok(finish(
-        map,
-        &fp,
-        &live,
-        sol.status,
-        &sol.x,
-        &sol.row_dual,
-        sol.iterations,
-    ))
+    let fp = programs::limit_force_program(map, &dead, &live);
+    let sol = fp.solve(opts)?;
+    Ok(limit_solution(map, &fp, &live, &sol, opts.info()))
 }
 
 /// Dead and live load vectors; an error if there is no live load.
@@ -107,37 +57,37 @@ pub fn solve_limit_conic(
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
     let (dead, live) = load_vectors(st)?;
-    let fp = crate::conic::limit_force_program(map, &dead, &live);
-    let sol = crate::conic::solve_force_conic(map, &fp, opts)?;
-    Ok(finish(
-        map,
-        &fp,
-        &live,
-        sol.status,
-        &sol.x,
-        &sol.row_dual,
-        sol.iterations,
-    ))
+    let fp = programs::limit_force_program_conic(map, &dead, &live);
+    let o = SolverOptions {
+        feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
+        ..*opts
+    };
+    let sol = fp.solve(&o)?;
+    let solver = crate::lp::SolverInfo {
+        solver: crate::lp::cone_backend(&o).name().to_string(),
+        method: crate::lp::Method::Clarabel,
+    };
+    Ok(limit_solution(map, &fp, &live, &sol, solver))
 }
 
 /// λ, forces and the mechanism (duals of the equilibrium rows, normalised to unit live-load
 /// work) from a solved force program.
-fn finish(
+pub fn limit_solution(
     map: &KinematicMap,
     fp: &ForceProgram,
     live: &[f64],
-    status: LpStatus,
-    x: &[f64],
-    row_dual: &[f64],
-    iterations: i64,
+    sol: &LpSolution,
+    solver: SolverInfo,
 ) -> LimitSolution {
+    let (status, x, row_dual, iterations) = (sol.status, &sol.x, &sol.row_dual, sol.iterations);
     let none = |status| LimitSolution {
         status,
         lambda: None,
         mechanism: vec![],
         pn: vec![0.0; map.num_points()],
-        pt: vec![0.0; map.num_points()],
+        pt: vec![0.0; map.num_tangent_rows()],
         iterations,
+        solver: solver.clone(),
     };
     match status {
         LpStatus::Unbounded => return none(LimitStatus::Locked),
@@ -164,6 +114,7 @@ fn finish(
         pn,
         pt,
         iterations,
+        solver,
     }
 }
 
@@ -229,6 +180,7 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
     LimitResult {
         status: s.status,
         message,
+        solver: s.solver.clone(),
         load_multiplier: s.lambda,
         work_dead_loads: wd,
         work_live_loads: wl,
@@ -247,5 +199,48 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
         reactions: rep.reactions,
         iterations: s.iterations,
         geometry: Geometry::of(st),
+    }
+}
+
+/// A limit LP kept between solves on structures of one topology (same blocks, joints and
+/// points): all points are columns, open ones fixed at zero
+/// ([`programs::limit_force_program_fixed_topology`]), and the optimal basis of a solve starts
+/// the next one, where the backend has bases ([`lp::solve_warm`]).
+pub struct WarmLimit {
+    solver: SolverOptions,
+    hot: bool,
+    basis: Option<lp::Basis>,
+    /// LP solves and simplex iterations so far.
+    pub solves: usize,
+    pub iterations: i64,
+}
+
+impl WarmLimit {
+    /// `hot = false` solves every LP from scratch with [`solve_limit`].
+    pub fn new(solver: &SolverOptions, hot: bool) -> WarmLimit {
+        WarmLimit {
+            solver: *solver,
+            hot,
+            basis: None,
+            solves: 0,
+            iterations: 0,
+        }
+    }
+
+    /// Limit analysis of `st` (same meaning as [`solve_limit`]).
+    pub fn solve(&mut self, st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
+        self.solves += 1;
+        // Joint laws (friction, crushing) give gapped points roles of their own in the force
+        // program: those structures are solved from scratch.
+        let sol = if self.hot && !map.has_joint_laws() {
+            let (dead, live) = load_vectors(st)?;
+            let fp = programs::limit_force_program_fixed_topology(map, &dead, &live);
+            let sol = lp::solve_warm(&fp.lp, &self.solver, &mut self.basis)?;
+            limit_solution(map, &fp, &live, &sol, self.solver.info())
+        } else {
+            solve_limit(st, map, &self.solver)?
+        };
+        self.iterations += sol.iterations;
+        Ok(sol)
     }
 }

@@ -16,12 +16,12 @@
 //! non-associative problem is not convex): the result reports whether it converged, and the
 //! multiplier is never above the associative one in our tests.
 
-use super::limit::{limit_result, solve_limit, LimitResult, LimitStatus};
+use super::limit::{limit_result, solve_limit, LimitStatus};
 use crate::discretize::KinematicMap;
 use crate::error::Result;
 use crate::lp::SolverOptions;
+pub use crate::result::nonassociative::*;
 use crate::structure::Structure;
-use serde::{Deserialize, Serialize};
 
 /// Settings of the iteration.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,17 +41,6 @@ impl Default for NonAssociativeOptions {
             tolerance: 1e-7,
         }
     }
-}
-
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct NonAssociativeResult {
-    /// λ of the associative problem (an upper bound in practice).
-    pub associative_multiplier: Option<f64>,
-    /// λ per iteration.
-    pub history: Vec<f64>,
-    pub converged: bool,
-    /// The final limit analysis (forces, mechanism without dilatancy).
-    pub limit: LimitResult,
 }
 
 pub fn limit_nonassociative(

@@ -18,72 +18,13 @@
 //! the result is proportional to the settlement magnitude and the forces do not depend on it.
 
 use crate::discretize::KinematicMap;
-use crate::error::Result;
-use crate::lp::{self, Direction, LpStatus, SolverOptions};
-use crate::programs::{ForceProgram, MotionProgram};
-use crate::result::{report, BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::error::{Error, Result};
+use crate::lp::{self, LpStatus, SolverOptions};
+use crate::programs::{self, ForceProgram};
+pub use crate::result::settlement::*;
+use crate::result::{report, Geometry};
 use crate::structure::Structure;
 use serde::{Deserialize, Serialize};
-
-/// Outcome of a settlement analysis.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SettlementStatus {
-    /// A mechanism that accommodates the settlement, with forces in equilibrium.
-    Mechanism,
-    /// The primal is unbounded: the structure cannot stand under its own weight.
-    CannotStand,
-    /// The primal is infeasible: the prescribed motions cannot be accommodated.
-    Incompatible,
-}
-
-impl SettlementStatus {
-    pub fn sentence(&self) -> &'static str {
-        match self {
-            SettlementStatus::Mechanism => "the structure accommodates the settlement by the mechanism below",
-            SettlementStatus::CannotStand => "the structure cannot stand under its own weight: a mechanism exists in which the dead loads do unbounded work",
-            SettlementStatus::Incompatible => "the prescribed support motions cannot be accommodated by any admissible mechanism (they would need interpenetration or sliding)",
-        }
-    }
-}
-
-/// The duality certificate of a settlement result.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Certificate {
-    /// Optimum of the primal (work of dead loads) and of the dual (work on the supports).
-    pub primal: f64,
-    pub dual: f64,
-    /// |primal − dual| / max(|primal|, |dual|, floor).
-    pub relative_gap: f64,
-    /// Largest opening × compression over all points (kN·m).
-    pub complementarity: f64,
-    /// Largest equilibrium residual of the dual's forces (kN or kN·m).
-    pub equilibrium_residual: f64,
-    /// Whether the gap is within tolerance (1e-7).
-    pub ok: bool,
-}
-
-/// Result of a settlement analysis.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SettlementResult {
-    pub status: SettlementStatus,
-    pub message: String,
-    /// Work of the dead loads on the mechanism (primal optimum), kN·m.
-    pub work_dead_loads: Option<f64>,
-    /// Work of the structure's forces on the moving supports (dual optimum), kN·m.
-    pub work_reactions: Option<f64>,
-    /// Relative duality gap.
-    pub duality_gap: Option<f64>,
-    pub certificate: Option<Certificate>,
-    /// Block motions (m, rad) for the prescribed settlement.
-    pub blocks: Vec<BlockMotion>,
-    pub joints: Vec<JointResult>,
-    pub hinges: Vec<Hinge>,
-    pub thrust_line: Vec<ThrustPoint>,
-    pub reactions: Vec<Reaction>,
-    /// The geometry analysed (for drawing a saved result).
-    pub geometry: Geometry,
-}
 
 /// Raw vectors of a settlement analysis.
 #[derive(Clone, Debug)]
@@ -94,10 +35,28 @@ pub struct SettlementSolution {
     pub pt: Vec<f64>,
     pub primal: f64,
     pub dual: f64,
+    /// The solver and method that produced it.
+    pub solver: lp::SolverInfo,
 }
 
-/// Tolerance on the relative duality gap.
-pub const GAP_TOLERANCE: f64 = 1e-7;
+impl SettlementSolution {
+    /// A solution whose status is not a mechanism: no motion, no forces.
+    fn without_mechanism(
+        status: SettlementStatus,
+        map: &KinematicMap,
+        solver: lp::SolverInfo,
+    ) -> SettlementSolution {
+        SettlementSolution {
+            status,
+            mechanism: vec![],
+            pn: vec![0.0; map.num_points()],
+            pt: vec![0.0; map.num_tangent_rows()],
+            primal: f64::NAN,
+            dual: f64::NAN,
+            solver,
+        }
+    }
+}
 
 /// Solve both LPs.
 pub fn solve_settlement(
@@ -106,7 +65,7 @@ pub fn solve_settlement(
     opts: &SolverOptions,
 ) -> Result<SettlementSolution> {
     let dead = st.load_vector(false);
-    let mp = MotionProgram::new(map, &dead)?;
+    let mp = programs::settlement_motion_program(map, &dead)?;
     let primal = lp::solve(&mp.lp, opts)?;
     let status = match primal.status {
         LpStatus::Optimal => SettlementStatus::Mechanism,
@@ -115,19 +74,14 @@ pub fn solve_settlement(
     };
     let n = map.num_points();
     if status != SettlementStatus::Mechanism {
-        return Ok(SettlementSolution {
+        return Ok(SettlementSolution::without_mechanism(
             status,
-            mechanism: vec![],
-            pn: vec![0.0; n],
-            pt: vec![0.0; n],
-            primal: f64::NAN,
-            dual: f64::NAN,
-        });
+            map,
+            opts.info(),
+        ));
     }
-    let fp = ForceProgram::new(map, &dead, None, Direction::Minimise, |k| {
-        (map.support_normal[k], map.support_tangent[k])
-    });
-    let dual = lp::solve(&fp.lp, opts)?;
+    let fp = programs::settlement_force_program(map, &dead);
+    let dual = fp.solve(opts)?;
     let (pn, pt, dval) = if dual.status == LpStatus::Optimal {
         let (pn, pt) = fp.forces(&dual.x);
         (pn, pt, dual.objective)
@@ -141,6 +95,7 @@ pub fn solve_settlement(
         pt,
         primal: mp.objective_sign * primal.objective,
         dual: dval,
+        solver: opts.info(),
     })
 }
 
@@ -160,6 +115,7 @@ pub fn settlement_result(
         return SettlementResult {
             status: s.status,
             message: s.status.sentence().to_string(),
+            solver: s.solver.clone(),
             work_dead_loads: None,
             work_reactions: None,
             duality_gap: None,
@@ -204,6 +160,7 @@ pub fn settlement_result(
     SettlementResult {
         status: s.status,
         message,
+        solver: s.solver.clone(),
         work_dead_loads: Some(s.primal),
         work_reactions: Some(s.dual),
         duality_gap: Some(gap),
@@ -241,15 +198,6 @@ pub enum SettlementForm {
     ForceOnly,
 }
 
-/// The force LP of a settlement analysis: `min g·p` over forces in equilibrium with the dead
-/// loads (the paper's (69)–(71)).
-pub fn settlement_force_program(st: &Structure, map: &KinematicMap) -> ForceProgram {
-    let dead = st.load_vector(false);
-    ForceProgram::new(map, &dead, None, Direction::Minimise, |k| {
-        (map.support_normal[k], map.support_tangent[k])
-    })
-}
-
 /// Largest violation of kinematic admissibility of block motions `d` (with the prescribed
 /// support motions): interpenetration `max(0, −(N d + g_n))` at contact points, `|N d + g_n|`
 /// at bilateral points, and sliding `|T d + g_t|`, over points that carry force.
@@ -265,7 +213,11 @@ pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
         } else {
             (-open[k]).max(0.0)
         };
-        v = v.max(o).max(slide[k].abs());
+        let nt = map.tangents_per_point;
+        let s = slide[k * nt..(k + 1) * nt]
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        v = v.max(o).max(s);
     }
     v
 }
@@ -279,8 +231,8 @@ pub fn settlement_from_force_solution(
     map: &KinematicMap,
     fp: &ForceProgram,
     sol: &lp::LpSolution,
+    solver: lp::SolverInfo,
 ) -> SettlementSolution {
-    let n = map.num_points();
     let status = match sol.status {
         LpStatus::Optimal => SettlementStatus::Mechanism,
         // No equilibrium under the dead loads: the primal is unbounded.
@@ -289,22 +241,13 @@ pub fn settlement_from_force_solution(
         LpStatus::Unbounded => SettlementStatus::Incompatible,
     };
     if status != SettlementStatus::Mechanism {
-        return SettlementSolution {
-            status,
-            mechanism: vec![],
-            pn: vec![0.0; n],
-            pt: vec![0.0; n],
-            primal: f64::NAN,
-            dual: f64::NAN,
-        };
+        return SettlementSolution::without_mechanism(status, map, solver);
     }
     let dead = st.load_vector(false);
     let d: Vec<f64> = sol.row_dual[..map.num_dofs].iter().map(|y| -y).collect();
     let primal: f64 = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
     let (pn, pt) = fp.forces(&sol.x);
-    let dual: f64 = (0..n)
-        .map(|k| map.support_normal[k] * pn[k] + map.support_tangent[k] * pt[k])
-        .sum();
+    let dual: f64 = dot(&map.support_normal, &pn) + dot(&map.support_tangent, &pt);
     SettlementSolution {
         status,
         mechanism: d,
@@ -312,16 +255,8 @@ pub fn settlement_from_force_solution(
         pt,
         primal,
         dual,
+        solver,
     }
-}
-
-/// Whether the map has joint laws (friction, finite strength) that the force-only form does not
-/// handle.
-fn has_joint_laws(map: &KinematicMap) -> bool {
-    map.laws
-        .iter()
-        .any(|l| l.friction.is_some() || l.strength.is_some())
-        || map.shear_limits.is_some()
 }
 
 /// Settlement analysis in the chosen form.
@@ -331,12 +266,18 @@ pub fn solve_settlement_with(
     opts: &SolverOptions,
     form: SettlementForm,
 ) -> Result<SettlementSolution> {
-    if form == SettlementForm::Both || has_joint_laws(map) {
+    if form == SettlementForm::Both || map.has_joint_laws() {
         return solve_settlement(st, map, opts);
     }
-    let fp = settlement_force_program(st, map);
-    let sol = lp::solve(&fp.lp, opts)?;
-    Ok(settlement_from_force_solution(st, map, &fp, &sol))
+    let fp = programs::settlement_force_program(map, &st.load_vector(false));
+    let sol = fp.solve(opts)?;
+    Ok(settlement_from_force_solution(
+        st,
+        map,
+        &fp,
+        &sol,
+        opts.info(),
+    ))
 }
 
 /// The reported result of a solution, with the mechanism's admissibility checked: a mechanism
@@ -377,4 +318,71 @@ pub fn settle_with(
     let map = KinematicMap::new(st);
     let s = solve_settlement_with(st, &map, opts, form)?;
     Ok(settlement_result_checked(st, &map, &s))
+}
+
+/// The settlement path: the structure with unit support motions, its settlement mechanism and
+/// openings, from which every deformed structure is made.
+pub struct SettlementPath {
+    /// The structure with its support motions divided by `max_settlement`.
+    pub unit: Structure,
+    pub max_settlement: f64,
+    pub status: SettlementStatus,
+    /// Settlement mechanism per unit settlement (empty unless `status` is a mechanism).
+    pub mechanism: Vec<f64>,
+    openings: Vec<Vec<f64>>,
+    open_tol: f64,
+}
+
+impl SettlementPath {
+    pub fn new(st: &Structure, solver: &SolverOptions) -> Result<SettlementPath> {
+        let mag = st.settlement_magnitude();
+        if !(mag.is_finite() && mag > 0.0) {
+            return Err(Error::Request(
+                "capacity analysis needs a settlement: no support has a prescribed motion".into(),
+            ));
+        }
+        let motions: Vec<[f64; 3]> = st
+            .supports
+            .iter()
+            .map(|s| s.motion.map(|x| x / mag))
+            .collect();
+        let unit = st.with_support_motions(&motions);
+        let map = KinematicMap::new(&unit);
+        let sol = solve_settlement(&unit, &map, solver)?;
+        let (openings, open_tol) = if sol.status == SettlementStatus::Mechanism {
+            unit.joint_openings(&map, &sol.mechanism, 1.0)
+        } else {
+            (vec![], 0.0)
+        };
+        Ok(SettlementPath {
+            unit,
+            max_settlement: mag,
+            status: sol.status,
+            mechanism: sol.mechanism,
+            openings,
+            open_tol,
+        })
+    }
+
+    /// The structure after a settlement `s` (m). `s = 0` returns the undeformed structure as is.
+    pub fn deformed(&self, s: f64) -> Structure {
+        if s == 0.0 || self.mechanism.is_empty() {
+            let mut st = self.unit.clone();
+            for sp in st.supports.iter_mut() {
+                sp.motion = [0.0; 3];
+            }
+            return st;
+        }
+        let mut st =
+            self.unit
+                .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol);
+        for sp in st.supports.iter_mut() {
+            sp.motion = [0.0; 3];
+        }
+        st
+    }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

@@ -6,24 +6,12 @@
 //! multiplier of that load. The model's own live loads are replaced; its extra dead loads are
 //! kept as given (they do not rotate with the table).
 
-use super::limit::{limit_result, solve_limit, LimitResult, LimitStatus};
+use super::limit::{limit_result, solve_limit, LimitStatus};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
+pub use crate::result::tilt::*;
 use crate::structure::{AppliedLoad, Structure};
-use serde::{Deserialize, Serialize};
-
-/// Result of a tilting-table analysis.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct TiltResult {
-    /// Critical tilt angle in degrees (towards +x for direction +1, towards −x for −1);
-    /// `null` when the structure never collapses (locked) or cannot stand untilted.
-    pub tilt_angle: Option<f64>,
-    /// +1 or −1.
-    pub direction: f64,
-    /// The underlying limit analysis (λ = tan α) with its mechanism.
-    pub limit: LimitResult,
-}
 
 /// Critical tilt towards `direction` (+1: +x, −1: −x).
 pub fn tilt(st: &Structure, direction: f64, opts: &SolverOptions) -> Result<TiltResult> {

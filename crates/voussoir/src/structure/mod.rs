@@ -4,6 +4,9 @@
 //! [`Structure::deformed`] moves it by a finite rigid motion per block and returns a new one:
 //! deformation is a geometry operation, so every analysis runs unchanged on a deformed structure.
 
+pub mod deform;
+pub use deform::OPEN_TOLERANCE;
+
 use crate::error::{model_err, Result};
 use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::model::{Connection, Load, Material, Model, Per, Point};

@@ -1,5 +1,22 @@
-//! Typed results shared by the analyses: block motions, joints with their points, hinges, the
-//! thrust line and support reactions. Every result serialises to the JSON the CLI prints.
+//! Typed results: one submodule per analysis ([`limit`], [`settlement`], [`capacity`],
+//! [`incremental`], [`tilt`], [`nonassociative`]) over the pieces they share here — block
+//! motions, joints with their points, hinges, the thrust line and support reactions. Every
+//! result serialises to the JSON the CLI prints. Drawings and other front ends read results
+//! from this module only, never from the algorithms in [`crate::analysis`].
+
+pub mod capacity;
+pub mod incremental;
+pub mod limit;
+pub mod nonassociative;
+pub mod settlement;
+pub mod tilt;
+
+pub use capacity::*;
+pub use incremental::*;
+pub use limit::*;
+pub use nonassociative::*;
+pub use settlement::*;
+pub use tilt::*;
 
 use crate::discretize::KinematicMap;
 use crate::structure::{Body, Structure};

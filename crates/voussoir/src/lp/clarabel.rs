@@ -1,0 +1,241 @@
+//! The Clarabel backend: an interior-point method (direct sparse LDLᵀ, QDLDL) for LPs and for
+//! programs with second-order cones (exact crushing domains). The only file that names Clarabel.
+
+use super::{Backend, Basis, Cone3, LinearProgram, LpSolution, LpStatus, Solved, SolverOptions};
+use crate::error::{Error, Result};
+
+/// The Clarabel backend. It has no basis: warm starts solve from scratch.
+pub struct Clarabel;
+
+impl Backend for Clarabel {
+    fn name(&self) -> &'static str {
+        "clarabel"
+    }
+
+    fn supports_cones(&self) -> bool {
+        true
+    }
+
+    fn solve(
+        &self,
+        lp: &LinearProgram,
+        cones: &[Cone3],
+        o: &SolverOptions,
+        _start: Option<&Basis>,
+    ) -> Result<Solved> {
+        let solution = if cones.is_empty() {
+            solve_clarabel(lp, o)?
+        } else {
+            solve_clarabel_with_cones(lp, o, cones)?
+        };
+        Ok(Solved {
+            solution,
+            basis: None,
+        })
+    }
+}
+
+/// Solve with Clarabel: `min cᵀx` with `A x + s = b`, `s` in the zero cone (equality rows and
+/// fixed variables) or the non-negative cone (each finite side of a range row or bound). Row
+/// duals are returned with HiGHS's convention (`c − Aᵀy` are the reduced costs of a
+/// minimisation; negated for a maximisation).
+fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
+    // Identical columns (same entries, cost and bounds, each free or non-negative) are one
+    // variable for the solver: in the force LP the two shear forces of a straight joint have
+    // the same column. The merged value goes to the first of them.
+    let (reduced, map) = merge_duplicate_columns(lp);
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &[])?;
+    if sol.status == LpStatus::Optimal {
+        let mut x = vec![0.0; lp.num_cols()];
+        let mut col_dual = vec![0.0; lp.num_cols()];
+        let mut first = vec![true; reduced.num_cols()];
+        for (j, &r) in map.iter().enumerate() {
+            if first[r] {
+                x[j] = sol.x[r];
+                first[r] = false;
+            }
+            col_dual[j] = sol.col_dual[r];
+        }
+        sol.x = x;
+        sol.col_dual = col_dual;
+    }
+    Ok(sol)
+}
+
+/// The LP with duplicate columns merged, and the reduced column of every original column.
+fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
+    use std::collections::HashMap;
+    let mergeable = |j: usize| {
+        lp.col_upper[j] == f64::INFINITY
+            && (lp.col_lower[j] == 0.0 || lp.col_lower[j] == f64::NEG_INFINITY)
+    };
+    let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
+    let mut out = LinearProgram {
+        maximise: lp.maximise,
+        col_start: vec![0],
+        ..Default::default()
+    };
+    out.row_lower = lp.row_lower.clone();
+    out.row_upper = lp.row_upper.clone();
+    let mut map = Vec::with_capacity(lp.num_cols());
+    for j in 0..lp.num_cols() {
+        let key: Option<Vec<u64>> = mergeable(j).then(|| {
+            let mut k = vec![lp.cost[j].to_bits(), lp.col_lower[j].to_bits()];
+            for (i, v) in lp.column(j) {
+                k.push(i as u64);
+                k.push(v.to_bits());
+            }
+            k
+        });
+        if let Some(&r) = key.as_ref().and_then(|k| seen.get(k)) {
+            map.push(r);
+            continue;
+        }
+        let r = out.add_column(lp.cost[j], lp.col_lower[j], lp.col_upper[j], lp.column(j));
+        if let Some(k) = key {
+            seen.insert(k, r);
+        }
+        map.push(r);
+    }
+    (out, map)
+}
+
+/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP).
+fn solve_clarabel_with_cones(
+    lp: &LinearProgram,
+    o: &SolverOptions,
+    socs: &[Cone3],
+) -> Result<LpSolution> {
+    use clarabel::algebra::CscMatrix;
+    use clarabel::solver::{
+        DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
+    };
+    let sign = if lp.maximise { -1.0 } else { 1.0 };
+    let n = lp.num_cols();
+    let mut rows: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_rows()];
+    for j in 0..n {
+        for (i, v) in lp.column(j) {
+            rows[i].push((j, v));
+        }
+    }
+    // (entries, rhs, lp row or usize::MAX, sign of the row in the LP's A x)
+    let mut zero: Vec<(Vec<(usize, f64)>, f64, usize)> = Vec::new();
+    let mut nonneg: Vec<(Vec<(usize, f64)>, f64, usize, f64)> = Vec::new();
+    for (i, r) in rows.into_iter().enumerate() {
+        let (lo, hi) = (lp.row_lower[i], lp.row_upper[i]);
+        if lo == hi {
+            zero.push((r, hi, i));
+            continue;
+        }
+        if hi < f64::INFINITY {
+            nonneg.push((r.clone(), hi, i, 1.0));
+        }
+        if lo > f64::NEG_INFINITY {
+            nonneg.push((r.iter().map(|&(j, v)| (j, -v)).collect(), -lo, i, -1.0));
+        }
+    }
+    for j in 0..n {
+        let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
+        if lo == hi {
+            zero.push((vec![(j, 1.0)], lo, usize::MAX));
+            continue;
+        }
+        if lo > f64::NEG_INFINITY {
+            nonneg.push((vec![(j, -1.0)], -lo, usize::MAX, 0.0));
+        }
+        if hi < f64::INFINITY {
+            nonneg.push((vec![(j, 1.0)], hi, usize::MAX, 0.0));
+        }
+    }
+    let (mut ii, mut jj, mut vv, mut b) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (r, rhs) in zero
+        .iter()
+        .map(|z| (&z.0, z.1))
+        .chain(nonneg.iter().map(|z| (&z.0, z.1)))
+        .chain(socs.iter().flat_map(|c| c.iter().map(|(r, b)| (r, *b))))
+    {
+        let k = b.len();
+        for &(j, v) in r {
+            ii.push(k);
+            jj.push(j);
+            vv.push(v);
+        }
+        b.push(rhs);
+    }
+    let m = b.len();
+    let a = CscMatrix::new_from_triplets(m, n, ii, jj, vv);
+    let p = CscMatrix::<f64>::zeros((n, n));
+    let q: Vec<f64> = lp.cost.iter().map(|c| sign * c).collect();
+    let mut cones: Vec<SupportedConeT<f64>> = Vec::new();
+    if !zero.is_empty() {
+        cones.push(SupportedConeT::ZeroConeT(zero.len()));
+    }
+    if !nonneg.is_empty() {
+        cones.push(SupportedConeT::NonnegativeConeT(nonneg.len()));
+    }
+    cones.extend(socs.iter().map(|_| SupportedConeT::SecondOrderConeT(3)));
+    let tol = o.feasibility_tolerance.clamp(1e-12, 1e-4);
+    let settings = DefaultSettings {
+        verbose: o.log,
+        tol_gap_abs: tol,
+        tol_gap_rel: tol,
+        tol_feas: tol,
+        time_limit: o.time_limit.unwrap_or(f64::INFINITY),
+        max_iter: 500,
+        direct_solve_method: "qdldl".to_string(),
+        ..DefaultSettings::default()
+    };
+    let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, settings)
+        .map_err(|e| Error::Solver(format!("Clarabel setup: {e:?}")))?;
+    solver.solve();
+    let sol = &solver.solution;
+    let status = match sol.status {
+        SolverStatus::Solved | SolverStatus::AlmostSolved => LpStatus::Optimal,
+        SolverStatus::PrimalInfeasible | SolverStatus::AlmostPrimalInfeasible => {
+            LpStatus::Infeasible
+        }
+        SolverStatus::DualInfeasible | SolverStatus::AlmostDualInfeasible => LpStatus::Unbounded,
+        other => return Err(Error::Solver(format!("Clarabel stopped: {other:?}"))),
+    };
+    let iterations = sol.iterations as i64;
+    if status != LpStatus::Optimal {
+        return Ok(LpSolution {
+            status,
+            objective: f64::NAN,
+            x: vec![],
+            row_dual: vec![],
+            col_dual: vec![],
+            iterations,
+        });
+    }
+    // Clarabel's z ≥ 0 multiplies `A x + s = b` in `min qᵀx`: q + Aᵀz = 0 in its convention, so the
+    // multiplier of LP row i (HiGHS: c − Aᵀy = reduced costs) is y = −z (rows as written) or +z
+    // (rows negated for a lower bound).
+    let mut row_dual = vec![0.0; lp.num_rows()];
+    for (k, zr) in zero.iter().enumerate() {
+        if zr.2 != usize::MAX {
+            row_dual[zr.2] = -sign * sol.z[k];
+        }
+    }
+    for (k, nr) in nonneg.iter().enumerate() {
+        if nr.2 != usize::MAX {
+            row_dual[nr.2] += -sign * nr.3 * sol.z[zero.len() + k];
+        }
+    }
+    let x = sol.x.clone();
+    let mut col_dual = lp.cost.clone();
+    for j in 0..n {
+        for (i, v) in lp.column(j) {
+            col_dual[j] -= v * row_dual[i];
+        }
+    }
+    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
+    Ok(LpSolution {
+        status,
+        objective,
+        x,
+        row_dual,
+        col_dual,
+        iterations,
+    })
+}

@@ -1,0 +1,219 @@
+//! The HiGHS backend (through the `highs` crate; warm starts through `highs-sys`): dual and
+//! primal simplex, interior point with or without crossover, PDLP. The only file that names
+//! HiGHS.
+
+use super::{
+    Backend, Basis, BasisStatus, Cone3, LinearProgram, LpSolution, LpStatus, Method, Solved,
+    SolverOptions,
+};
+use crate::error::{Error, Result};
+use highs::{ColProblem, HighsModelStatus, Sense};
+
+/// The HiGHS backend.
+pub struct Highs;
+
+fn opt<V: highs::HighsOptionValue>(m: &mut highs::Model, k: &str, v: V) -> Result<()> {
+    m.try_set_option(k, v)
+        .map_err(|e| Error::Solver(format!("HiGHS option {k}: {e:?}")))
+}
+
+fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
+    m.make_quiet();
+    opt(m, "output_flag", false)?;
+    opt(m, "presolve", if o.presolve { "on" } else { "off" })?;
+    match o.method {
+        Method::DualSimplex => {
+            opt(m, "solver", "simplex")?;
+            opt(m, "simplex_strategy", 1)?;
+        }
+        Method::PrimalSimplex => {
+            opt(m, "solver", "simplex")?;
+            opt(m, "simplex_strategy", 4)?;
+        }
+        Method::Ipm => {
+            opt(m, "solver", "ipm")?;
+            opt(m, "run_crossover", "on")?;
+        }
+        Method::Choose => opt(m, "solver", "choose")?,
+        Method::IpmNoCrossover => {
+            opt(m, "solver", "ipm")?;
+            opt(m, "run_crossover", "off")?;
+        }
+        Method::Pdlp => opt(m, "solver", "pdlp")?,
+        Method::Clarabel => {
+            return Err(Error::Solver(
+                "the HiGHS backend was handed the Clarabel method".into(),
+            ))
+        }
+    }
+    opt(m, "primal_feasibility_tolerance", o.feasibility_tolerance)?;
+    opt(m, "dual_feasibility_tolerance", o.feasibility_tolerance)?;
+    opt(m, "threads", o.threads.max(1) as i32)?;
+    opt(m, "random_seed", 0)?;
+    if let Some(t) = o.time_limit {
+        opt(m, "time_limit", t)?;
+    }
+    if o.log {
+        opt(m, "output_flag", true)?;
+        opt(m, "log_to_console", true)?;
+    }
+    Ok(())
+}
+
+fn build(lp: &LinearProgram) -> highs::Model {
+    let mut p = ColProblem::default();
+    let rows: Vec<highs::Row> = (0..lp.num_rows())
+        .map(|i| p.add_row(lp.row_lower[i]..=lp.row_upper[i]))
+        .collect();
+    for j in 0..lp.num_cols() {
+        let entries: Vec<(highs::Row, f64)> = lp.column(j).map(|(i, v)| (rows[i], v)).collect();
+        p.add_column(lp.cost[j], lp.col_lower[j]..=lp.col_upper[j], entries);
+    }
+    p.optimise(if lp.maximise {
+        Sense::Maximise
+    } else {
+        Sense::Minimise
+    })
+}
+
+fn to_highs(s: BasisStatus) -> i32 {
+    match s {
+        BasisStatus::Lower => highs_sys::kHighsBasisStatusLower,
+        BasisStatus::Basic => highs_sys::kHighsBasisStatusBasic,
+        BasisStatus::Upper => highs_sys::kHighsBasisStatusUpper,
+        BasisStatus::Zero => highs_sys::kHighsBasisStatusZero,
+    }
+}
+
+fn from_highs(s: i32) -> BasisStatus {
+    if s == highs_sys::kHighsBasisStatusBasic {
+        BasisStatus::Basic
+    } else if s == highs_sys::kHighsBasisStatusUpper {
+        BasisStatus::Upper
+    } else if s == highs_sys::kHighsBasisStatusZero {
+        BasisStatus::Zero
+    } else {
+        BasisStatus::Lower
+    }
+}
+
+impl Backend for Highs {
+    fn name(&self) -> &'static str {
+        "highs"
+    }
+
+    fn supports_cones(&self) -> bool {
+        false
+    }
+
+    /// Infeasible and unbounded are statuses; an "unbounded or infeasible" answer from presolve
+    /// is settled by solving again without presolve. With a starting basis, presolve is off
+    /// (it would discard the basis), and a failed warm run is repeated from scratch.
+    fn solve(
+        &self,
+        lp: &LinearProgram,
+        cones: &[Cone3],
+        o: &SolverOptions,
+        start: Option<&Basis>,
+    ) -> Result<Solved> {
+        if !cones.is_empty() {
+            return Err(Error::Solver("HiGHS does not take cone constraints".into()));
+        }
+        let mut opts = *o;
+        let mut start = start.filter(|_| o.method.is_simplex());
+        let mut spent = 0i64;
+        loop {
+            let mut m = build(lp);
+            let warm = start.is_some();
+            if warm {
+                opts.presolve = false;
+            }
+            configure(&mut m, &opts)?;
+            if let Some(b) = start {
+                let cs: Vec<i32> = b.cols.iter().map(|&s| to_highs(s)).collect();
+                let rs: Vec<i32> = b.rows.iter().map(|&s| to_highs(s)).collect();
+                // SAFETY: the pointer is the live HiGHS instance owned by `m`; the arrays have
+                // exactly num_col and num_row entries (checked by `lp::solve_warm`).
+                let ok =
+                    unsafe { highs_sys::Highs_setBasis(m.as_mut_ptr(), cs.as_ptr(), rs.as_ptr()) };
+                if ok == highs_sys::kHighsStatusError {
+                    start = None;
+                    opts.presolve = o.presolve;
+                    continue;
+                }
+            }
+            let solved = match m.try_solve() {
+                Ok(s) => s,
+                Err(_) if warm => {
+                    start = None;
+                    opts.presolve = o.presolve;
+                    continue;
+                }
+                Err(e) => return Err(Error::Solver(format!("HiGHS run failed: {e:?}"))),
+            };
+            let iterations =
+                spent + solved.simplex_iteration_count() + solved.ipm_iteration_count();
+            let status = match solved.status() {
+                HighsModelStatus::Optimal => LpStatus::Optimal,
+                HighsModelStatus::Infeasible => LpStatus::Infeasible,
+                HighsModelStatus::Unbounded => LpStatus::Unbounded,
+                HighsModelStatus::UnboundedOrInfeasible if opts.presolve => {
+                    opts.presolve = false;
+                    spent = iterations;
+                    continue;
+                }
+                HighsModelStatus::ModelEmpty => LpStatus::Optimal,
+                _ if warm => {
+                    // Anything unusual from a warm start: solve again from scratch.
+                    start = None;
+                    opts.presolve = o.presolve;
+                    spent = iterations;
+                    continue;
+                }
+                other => {
+                    return Err(Error::Solver(format!(
+                        "HiGHS stopped with status {other:?}"
+                    )))
+                }
+            };
+            if status != LpStatus::Optimal {
+                return Ok(Solved {
+                    solution: LpSolution {
+                        status,
+                        objective: f64::NAN,
+                        x: vec![],
+                        row_dual: vec![],
+                        col_dual: vec![],
+                        iterations,
+                    },
+                    basis: None,
+                });
+            }
+            let s = solved.get_solution();
+            let solution = LpSolution {
+                status,
+                objective: solved.objective_value(),
+                x: s.columns().to_vec(),
+                row_dual: s.dual_rows().to_vec(),
+                col_dual: s.dual_columns().to_vec(),
+                iterations,
+            };
+            let basis = if o.method.is_simplex() {
+                let mut cs = vec![0i32; lp.num_cols()];
+                let mut rs = vec![0i32; lp.num_rows()];
+                // SAFETY: as above; HiGHS fills exactly num_col and num_row entries.
+                let got = unsafe {
+                    let mut m: highs::Model = solved.into();
+                    highs_sys::Highs_getBasis(m.as_mut_ptr(), cs.as_mut_ptr(), rs.as_mut_ptr())
+                };
+                (got != highs_sys::kHighsStatusError).then(|| Basis {
+                    cols: cs.into_iter().map(from_highs).collect(),
+                    rows: rs.into_iter().map(from_highs).collect(),
+                })
+            } else {
+                None
+            };
+            return Ok(Solved { solution, basis });
+        }
+    }
+}

@@ -1,0 +1,452 @@
+//! The solver layer: a solver-neutral sparse program, the [`Backend`] trait, and one file per
+//! backend ([`highs`], [`clarabel`]). Every solve in voussoir goes through this module; nothing
+//! outside the backend files names a solver crate.
+//!
+//! ```text
+//!   optimise  cᵀx   (minimise or maximise)
+//!   s.t.      row_lower ≤ A x ≤ row_upper
+//!             col_lower ≤ x   ≤ col_upper
+//!             (optionally) second-order cones over affine rows
+//! ```
+//! `A` is stored by columns (CSC). The programs of the paper are built in
+//! [`crate::programs`]; the analyses hand them to [`solve`], [`solve_warm`] or
+//! [`solve_with_cones`], which pick the backend from [`SolverOptions::method`]:
+//! HiGHS for the simplex, interior-point and PDLP methods (dual simplex by default, so that
+//! mechanisms are vertex solutions with crisp hinges), Clarabel for [`Method::Clarabel`] and for
+//! every program with cones.
+
+pub mod clarabel;
+pub mod highs;
+
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// Optimisation sense.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    Minimise,
+    Maximise,
+}
+
+/// A sparse LP in column form.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct LinearProgram {
+    pub maximise: bool,
+    pub cost: Vec<f64>,
+    pub col_lower: Vec<f64>,
+    pub col_upper: Vec<f64>,
+    pub row_lower: Vec<f64>,
+    pub row_upper: Vec<f64>,
+    pub col_start: Vec<usize>,
+    pub row_index: Vec<usize>,
+    pub value: Vec<f64>,
+}
+
+impl LinearProgram {
+    pub fn new(direction: Direction) -> Self {
+        LinearProgram {
+            maximise: direction == Direction::Maximise,
+            col_start: vec![0],
+            ..Default::default()
+        }
+    }
+    /// Add a row `lo ≤ a·x ≤ hi` (its entries come with the columns); returns its index.
+    pub fn add_row(&mut self, lo: f64, hi: f64) -> usize {
+        self.row_lower.push(lo);
+        self.row_upper.push(hi);
+        self.row_lower.len() - 1
+    }
+    /// Add a column with its cost, bounds and `(row, value)` entries; returns its index.
+    pub fn add_column(
+        &mut self,
+        cost: f64,
+        lo: f64,
+        hi: f64,
+        entries: impl IntoIterator<Item = (usize, f64)>,
+    ) -> usize {
+        self.cost.push(cost);
+        self.col_lower.push(lo);
+        self.col_upper.push(hi);
+        for (r, v) in entries {
+            if v != 0.0 {
+                self.row_index.push(r);
+                self.value.push(v);
+            }
+        }
+        self.col_start.push(self.row_index.len());
+        self.cost.len() - 1
+    }
+    pub fn num_cols(&self) -> usize {
+        self.cost.len()
+    }
+    pub fn num_rows(&self) -> usize {
+        self.row_lower.len()
+    }
+    pub fn num_nonzeros(&self) -> usize {
+        self.value.len()
+    }
+    /// Entries of column `j`.
+    pub fn column(&self, j: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
+        (self.col_start[j]..self.col_start[j + 1]).map(move |k| (self.row_index[k], self.value[k]))
+    }
+    /// `A x` (row activities).
+    pub fn row_activity(&self, x: &[f64]) -> Vec<f64> {
+        let mut r = vec![0.0; self.num_rows()];
+        for (j, &xj) in x.iter().enumerate() {
+            if xj != 0.0 {
+                for (i, v) in self.column(j) {
+                    r[i] += v * xj;
+                }
+            }
+        }
+        r
+    }
+}
+
+/// What the solver concluded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LpStatus {
+    Optimal,
+    Infeasible,
+    Unbounded,
+}
+
+/// The LP method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Method {
+    /// Dual simplex: vertex solutions (crisp hinges). The default.
+    #[default]
+    DualSimplex,
+    /// Primal simplex.
+    PrimalSimplex,
+    /// Interior point followed by crossover to a vertex.
+    Ipm,
+    /// Let HiGHS choose.
+    Choose,
+    /// Interior point without crossover: an optimal, generally non-vertex, solution (faster on
+    /// large models; the duality gap still certifies it).
+    IpmNoCrossover,
+    /// First-order primal-dual hybrid gradient (PDLP): low accuracy, for very large models.
+    Pdlp,
+    /// Clarabel's interior point (direct sparse LDLᵀ factorisation) instead of HiGHS: fast on
+    /// large block structures; optimal, generally non-vertex solutions (tolerance:
+    /// `feasibility_tolerance`).
+    Clarabel,
+}
+
+impl Method {
+    /// The backend that runs this method.
+    pub fn backend(self) -> &'static dyn Backend {
+        match self {
+            Method::Clarabel => &clarabel::Clarabel,
+            _ => &highs::Highs,
+        }
+    }
+    /// The method's name as on the command line and in results.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::DualSimplex => "dual-simplex",
+            Method::PrimalSimplex => "primal-simplex",
+            Method::Ipm => "ipm",
+            Method::Choose => "choose",
+            Method::IpmNoCrossover => "ipm-no-crossover",
+            Method::Pdlp => "pdlp",
+            Method::Clarabel => "clarabel",
+        }
+    }
+    /// Whether the method returns vertex (basic) solutions and can start from a basis.
+    pub fn is_simplex(self) -> bool {
+        matches!(self, Method::DualSimplex | Method::PrimalSimplex)
+    }
+}
+
+/// Solver settings: one documented struct with defaults (Clarabel's habit).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolverOptions {
+    pub method: Method,
+    pub presolve: bool,
+    /// Seconds; `None` for no limit.
+    pub time_limit: Option<f64>,
+    /// Primal and dual feasibility tolerance.
+    pub feasibility_tolerance: f64,
+    pub threads: usize,
+    /// Let the backend print its own log on standard output (diagnostics; off by default).
+    pub log: bool,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        SolverOptions {
+            method: Method::DualSimplex,
+            presolve: true,
+            time_limit: None,
+            feasibility_tolerance: 1e-9,
+            threads: 1,
+            log: false,
+        }
+    }
+}
+
+impl SolverOptions {
+    /// Which solver and method these options run, as stated in every result.
+    pub fn info(&self) -> SolverInfo {
+        SolverInfo {
+            solver: self.method.backend().name().to_string(),
+            method: self.method,
+        }
+    }
+}
+
+/// The solver and method that produced a result.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SolverInfo {
+    /// `highs` or `clarabel`.
+    pub solver: String,
+    pub method: Method,
+}
+
+/// A solution (primal values and duals); vectors are empty unless `status` is optimal.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LpSolution {
+    pub status: LpStatus,
+    pub objective: f64,
+    pub x: Vec<f64>,
+    pub row_dual: Vec<f64>,
+    pub col_dual: Vec<f64>,
+    pub iterations: i64,
+}
+
+/// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.
+pub type Cone3 = [(Vec<(usize, f64)>, f64); 3];
+
+/// Status of a column or row in a simplex basis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BasisStatus {
+    /// Nonbasic at its lower bound.
+    Lower,
+    Basic,
+    /// Nonbasic at its upper bound.
+    Upper,
+    /// Nonbasic free variable at zero.
+    Zero,
+}
+
+/// A simplex basis: where the next solve of a program of the same shape starts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Basis {
+    pub cols: Vec<BasisStatus>,
+    pub rows: Vec<BasisStatus>,
+}
+
+impl Basis {
+    /// Make nonbasic statuses consistent with (possibly changed) bounds of the next program.
+    pub fn adapted(&self, lp: &LinearProgram) -> Basis {
+        let fix = |s: &[BasisStatus], lo: &[f64], hi: &[f64]| -> Vec<BasisStatus> {
+            s.iter()
+                .zip(lo.iter().zip(hi))
+                .map(|(&s, (&l, &h))| {
+                    if s == BasisStatus::Basic {
+                        BasisStatus::Basic
+                    } else if l.is_finite() && (s == BasisStatus::Lower || !h.is_finite()) {
+                        BasisStatus::Lower
+                    } else if h.is_finite() {
+                        BasisStatus::Upper
+                    } else {
+                        BasisStatus::Zero
+                    }
+                })
+                .collect()
+        };
+        Basis {
+            cols: fix(&self.cols, &lp.col_lower, &lp.col_upper),
+            rows: fix(&self.rows, &lp.row_lower, &lp.row_upper),
+        }
+    }
+}
+
+/// What a backend returns: the solution and, where the backend has one, its final basis.
+#[derive(Clone, Debug)]
+pub struct Solved {
+    pub solution: LpSolution,
+    pub basis: Option<Basis>,
+}
+
+/// A solver backend. Implementations live in one file each and are the only code that talks
+/// to the solver library.
+pub trait Backend: Sync {
+    /// `highs`, `clarabel`.
+    fn name(&self) -> &'static str;
+    /// Whether the backend takes second-order cones.
+    fn supports_cones(&self) -> bool;
+    /// Solve `lp` with the cones `cones` (empty for a plain LP), starting from `start` where the
+    /// backend can (ignored otherwise). Infeasible and unbounded are statuses, not errors; a
+    /// backend that cannot reach a conclusion returns [`Error::Solver`] with one line.
+    fn solve(
+        &self,
+        lp: &LinearProgram,
+        cones: &[Cone3],
+        opts: &SolverOptions,
+        start: Option<&Basis>,
+    ) -> Result<Solved>;
+}
+
+fn check_numbers(lp: &LinearProgram) -> Result<()> {
+    if lp
+        .row_lower
+        .iter()
+        .chain(&lp.row_upper)
+        .chain(&lp.col_lower)
+        .chain(&lp.col_upper)
+        .any(|b| b.is_nan())
+    {
+        return Err(Error::Solver("the LP has a NaN bound".into()));
+    }
+    if lp.cost.iter().chain(&lp.value).any(|v| !v.is_finite()) {
+        return Err(Error::Solver(
+            "the LP has a coefficient that is not finite".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Solve `lp` with the backend of `opts.method`. Infeasible and unbounded are statuses, not
+/// errors.
+pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    Ok(opts.method.backend().solve(lp, &[], opts, None)?.solution)
+}
+
+/// Solve `lp` starting from `basis` (a basis of the previous program of the same shape, if
+/// any; backends without bases solve from scratch), and replace `basis` with the final one.
+pub fn solve_warm(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    basis: &mut Option<Basis>,
+) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    let start = basis
+        .as_ref()
+        .filter(|b| b.cols.len() == lp.num_cols() && b.rows.len() == lp.num_rows())
+        .map(|b| b.adapted(lp));
+    let solved = opts.method.backend().solve(lp, &[], opts, start.as_ref())?;
+    *basis = solved.basis;
+    Ok(solved.solution)
+}
+
+/// Solve `lp` with second-order cones appended. Only a backend with cones takes them: with a
+/// HiGHS method the program goes to Clarabel, whose name the result then states.
+pub fn solve_with_cones(
+    lp: &LinearProgram,
+    cones: &[Cone3],
+    opts: &SolverOptions,
+) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    let backend = cone_backend(opts);
+    Ok(backend.solve(lp, cones, opts, None)?.solution)
+}
+
+/// The backend that solves cone programs under `opts`.
+pub fn cone_backend(opts: &SolverOptions) -> &'static dyn Backend {
+    let b = opts.method.backend();
+    if b.supports_cones() {
+        b
+    } else {
+        &clarabel::Clarabel
+    }
+}
+
+/// max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x, y ≥ 0  → x = 1.6, y = 1.2, obj 2.8 (by hand).
+#[cfg(test)]
+fn tiny_lp() -> LinearProgram {
+    let mut lp = LinearProgram::new(Direction::Maximise);
+    let r0 = lp.add_row(f64::NEG_INFINITY, 4.0);
+    let r1 = lp.add_row(f64::NEG_INFINITY, 6.0);
+    lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
+    lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
+    lp
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_lp_and_duals() {
+        let lp = tiny_lp();
+        let s = solve(&lp, &SolverOptions::default()).unwrap();
+        assert_eq!(s.status, LpStatus::Optimal);
+        assert!((s.objective - 2.8).abs() < 1e-9);
+        // Duals: y0 = 0.4, y1 = 0.2 (shadow prices), up to HiGHS's sign convention.
+        assert!((s.row_dual[0].abs() - 0.4).abs() < 1e-9);
+        assert!((s.row_dual[1].abs() - 0.2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn unbounded_and_infeasible_are_statuses() {
+        let mut lp = LinearProgram::new(Direction::Maximise);
+        let r = lp.add_row(0.0, f64::INFINITY);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r, 1.0)]);
+        assert_eq!(
+            solve(&lp, &SolverOptions::default()).unwrap().status,
+            LpStatus::Unbounded
+        );
+        let mut lp = LinearProgram::new(Direction::Minimise);
+        let r = lp.add_row(1.0, 1.0);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r, -1.0)]);
+        assert_eq!(
+            solve(&lp, &SolverOptions::default()).unwrap().status,
+            LpStatus::Infeasible
+        );
+    }
+}
+
+#[cfg(test)]
+mod clarabel_tests {
+    use super::*;
+
+    #[test]
+    fn clarabel_matches_highs_on_a_tiny_lp_with_duals() {
+        let lp = tiny_lp();
+        let h = solve(&lp, &SolverOptions::default()).unwrap();
+        let c = solve(
+            &lp,
+            &SolverOptions {
+                method: Method::Clarabel,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        assert_eq!(c.status, LpStatus::Optimal);
+        assert!((c.objective - 2.8).abs() < 1e-7);
+        for i in 0..2 {
+            assert!(
+                (c.row_dual[i] - h.row_dual[i]).abs() < 1e-6,
+                "{:?} {:?}",
+                c.row_dual,
+                h.row_dual
+            );
+        }
+        // An equality-constrained minimisation: min 2a + b, a + b = 1, a, b ≥ 0 → b = 1, y = 1.
+        let mut lp = LinearProgram::new(Direction::Minimise);
+        let r = lp.add_row(1.0, 1.0);
+        lp.add_column(2.0, 0.0, f64::INFINITY, [(r, 1.0)]);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r, 1.0)]);
+        let h = solve(&lp, &SolverOptions::default()).unwrap();
+        let c = solve(
+            &lp,
+            &SolverOptions {
+                method: Method::Clarabel,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        assert!(
+            (c.objective - 1.0).abs() < 1e-7 && (c.row_dual[0] - h.row_dual[0]).abs() < 1e-6,
+            "{:?} {:?}",
+            c.row_dual,
+            h.row_dual
+        );
+    }
+}

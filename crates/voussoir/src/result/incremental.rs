@@ -1,0 +1,117 @@
+//! Result of an incremental analysis: λ against the control displacement, events, snapshots.
+
+use super::{BlockMotion, Geometry, Hinge};
+use crate::lp::SolverInfo;
+use crate::model::Point;
+use serde::{Deserialize, Serialize};
+
+/// The control point: a point of a block (in the start geometry) and a direction.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Control {
+    pub block: usize,
+    pub point: Point,
+    /// Unit direction along which the control displacement is measured.
+    pub direction: Point,
+}
+
+/// Why the analysis stopped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum IncrementalStatus {
+    /// λ fell to zero after its peak: the structure can no longer carry its own weight.
+    Collapsed,
+    /// The maximum control displacement was reached.
+    MaxDisplacement,
+    /// The step cap was reached.
+    MaxSteps,
+    /// No finite collapse load on the current geometry.
+    Locked,
+    /// No equilibrium for any λ on the current geometry.
+    NoEquilibrium,
+    /// The mechanism does not move the control point along the control direction.
+    ControlStill,
+}
+
+/// A point of the curve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct IncrementalPoint {
+    /// Step at which the point was computed.
+    pub step: usize,
+    /// Control displacement along the direction (m).
+    pub displacement: f64,
+    /// Live load needed: max(λ, 0).
+    pub load_multiplier: f64,
+    /// λ by virtual work (negative: the dead loads alone drive the mechanism).
+    pub equilibrium_multiplier: f64,
+    /// Evaluated at the end of a step in which a point closed, with the point still open: the
+    /// value just before the jump (the next point, at the same displacement, is just after).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub before_closure: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EventKind {
+    /// A point in contact opened (a crack or hinge forms).
+    Opened,
+    /// An open point closed and carries force again.
+    Closed,
+}
+
+/// A change of contact at a point.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Event {
+    pub step: usize,
+    pub displacement: f64,
+    pub kind: EventKind,
+    pub joint: usize,
+    /// Index of the point in its joint.
+    pub point: usize,
+    pub x: f64,
+    pub y: f64,
+}
+
+/// The mechanism at one step.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Snapshot {
+    pub step: usize,
+    pub displacement: f64,
+    pub load_multiplier: f64,
+    /// Block motion rates per unit control displacement.
+    pub blocks: Vec<BlockMotion>,
+    /// Joints with an open point, at their point in contact.
+    pub hinges: Vec<Hinge>,
+    /// The current geometry.
+    pub geometry: Geometry,
+}
+
+/// Result of an incremental analysis.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct IncrementalResult {
+    pub status: IncrementalStatus,
+    pub message: String,
+    /// The solver and method that produced the result.
+    pub solver: SolverInfo,
+    pub control: Control,
+    /// `{displacement, load_multiplier, …}` in the order computed.
+    pub curve: Vec<IncrementalPoint>,
+    pub events: Vec<Event>,
+    pub snapshots: Vec<Snapshot>,
+    pub peak_load_multiplier: f64,
+    pub peak_displacement: f64,
+    /// Joints open at the start (e.g. opened by a settlement).
+    pub initial_open_joints: Vec<usize>,
+    pub steps: usize,
+    /// Steps without equilibrium for any λ in which the dead loads alone moved the structure
+    /// until an open point closed (a hinge moving to the next joint); they add no curve point.
+    pub snaps: usize,
+    pub solves: usize,
+    pub iterations: i64,
+    /// Geometry at the start and at the end.
+    pub initial_geometry: Geometry,
+    pub final_geometry: Geometry,
+}

@@ -1,0 +1,52 @@
+//! Result of a limit analysis.
+
+use super::{BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::lp::SolverInfo;
+use serde::{Deserialize, Serialize};
+
+/// Outcome of a limit analysis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LimitStatus {
+    /// A finite collapse multiplier λ ≥ 0 and its mechanism.
+    Collapse,
+    /// No finite collapse load: equilibrium holds for every λ ("locked").
+    Locked,
+    /// No equilibrium under the dead loads alone (λ would have to be negative, or no λ works).
+    NoEquilibrium,
+}
+
+impl LimitStatus {
+    pub fn sentence(&self) -> &'static str {
+        match self {
+            LimitStatus::Collapse => "collapse: finite load multiplier with its mechanism",
+            LimitStatus::Locked => "no finite collapse load: the structure is locked (equilibrium for every load multiplier)",
+            LimitStatus::NoEquilibrium => "no equilibrium under the dead loads: the structure cannot stand even without live load",
+        }
+    }
+}
+
+/// Result of a limit analysis.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LimitResult {
+    pub status: LimitStatus,
+    pub message: String,
+    /// The solver and method that produced the result.
+    pub solver: SolverInfo,
+    /// λ: the collapse multiplier (negative when the dead loads alone cannot be carried and the
+    /// live load, reversed, would be needed; `null` when locked or infeasible).
+    pub load_multiplier: Option<f64>,
+    /// Work of the dead loads and of the live loads on the mechanism (−λ and 1 at collapse).
+    pub work_dead_loads: Option<f64>,
+    pub work_live_loads: Option<f64>,
+    /// The collapse mechanism (normalised: unit work of the live loads).
+    pub blocks: Vec<BlockMotion>,
+    pub joints: Vec<JointResult>,
+    pub hinges: Vec<Hinge>,
+    pub thrust_line: Vec<ThrustPoint>,
+    pub reactions: Vec<Reaction>,
+    /// Simplex iterations spent.
+    pub iterations: i64,
+    /// The geometry analysed (for drawing a saved result).
+    pub geometry: Geometry,
+}

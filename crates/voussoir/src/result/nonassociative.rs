@@ -1,0 +1,15 @@
+//! Result of the non-associative friction iteration.
+
+use super::limit::LimitResult;
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct NonAssociativeResult {
+    /// λ of the associative problem (an upper bound in practice).
+    pub associative_multiplier: Option<f64>,
+    /// λ per iteration.
+    pub history: Vec<f64>,
+    pub converged: bool,
+    /// The final limit analysis (forces, mechanism without dilatancy).
+    pub limit: LimitResult,
+}

@@ -163,3 +163,14 @@ fn top_level_help_lists_every_gen_kind_and_the_sweep_doc() {
     }
     assert!(Path::new(&repo().join("docs/sweep.md")).is_file());
 }
+
+#[test]
+fn release_binary_is_at_most_25_mb() {
+    // Tests run in the release profile (scripts/test.sh), so this is the quick start's binary.
+    let len = std::fs::metadata(bin()).unwrap().len();
+    assert!(
+        len <= 25_000_000,
+        "{} is {len} bytes (> 25 MB); tests must run with --release",
+        bin().display()
+    );
+}

@@ -43,7 +43,9 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         ));
     }
     if a.steps == 0 {
-        return Err(Fail("--steps 0: the curve needs at least one interval".into()));
+        return Err(Fail(
+            "--steps 0: the curve needs at least one interval".into(),
+        ));
     }
     a.draw.check()?;
     let input = a.model.resolve()?;

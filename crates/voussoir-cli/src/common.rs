@@ -257,7 +257,9 @@ impl ModelArgs {
     pub fn resolve(&self) -> Result<Input, Fail> {
         if let Some(t) = self.tolerance {
             if !(t.is_finite() && t > 0.0) {
-                return Err(Fail(format!("--tolerance {t}: must be a finite number > 0")));
+                return Err(Fail(format!(
+                    "--tolerance {t}: must be a finite number > 0"
+                )));
             }
         }
         check_materials(self.friction, self.compressive_strength)?;

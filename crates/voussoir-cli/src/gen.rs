@@ -293,7 +293,12 @@ pub enum FacadeMeshArg {
     /// A grid of rectangular elements (continuous head joints).
     Grid,
     /// A running bond (head joints staggered by half an element).
-    #[value(alias = "running", alias = "bond", alias = "runningbond", alias = "stretcher-bond")]
+    #[value(
+        alias = "running",
+        alias = "bond",
+        alias = "runningbond",
+        alias = "stretcher-bond"
+    )]
     RunningBond,
 }
 

@@ -10,10 +10,20 @@ use voussoir_io::dxf::{read_dxf, DxfOptions, ImportLive, ImportReport, Units};
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnitsArg {
     /// Millimetres.
-    #[value(alias = "millimetre", alias = "millimetres", alias = "millimeter", alias = "millimeters")]
+    #[value(
+        alias = "millimetre",
+        alias = "millimetres",
+        alias = "millimeter",
+        alias = "millimeters"
+    )]
     Mm,
     /// Centimetres.
-    #[value(alias = "centimetre", alias = "centimetres", alias = "centimeter", alias = "centimeters")]
+    #[value(
+        alias = "centimetre",
+        alias = "centimetres",
+        alias = "centimeter",
+        alias = "centimeters"
+    )]
     Cm,
     /// Metres.
     #[value(alias = "metre", alias = "metres", alias = "meter", alias = "meters")]

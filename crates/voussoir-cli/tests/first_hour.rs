@@ -78,7 +78,14 @@ fn settle_with_crushing_conic_is_refused_in_one_line() {
     let d = tmpdir("crushing");
     let a = arch(&d, "full");
     let err = fails_in_one_line(
-        &["settle", &a, "--move", "right=0.01,0", "--crushing", "conic"],
+        &[
+            "settle",
+            &a,
+            "--move",
+            "right=0.01,0",
+            "--crushing",
+            "conic",
+        ],
         &["--crushing", "settle", "`limit`"],
     );
     assert!(!err.contains("Usage"), "{err}");
@@ -95,14 +102,26 @@ fn flags_that_do_not_apply_are_absent_from_help_and_refused() {
         (vec!["settle", &a, mv[0], mv[1]], ["--facets", "32"]),
         (vec!["capacity", &a, mv[0], mv[1]], ["--crushing", "conic"]),
         (vec!["capacity", &a, mv[0], mv[1]], ["--facets", "32"]),
-        (vec!["capacity", &a, mv[0], mv[1]], ["--settlement-form", "both"]),
+        (
+            vec!["capacity", &a, mv[0], mv[1]],
+            ["--settlement-form", "both"],
+        ),
         (vec!["tilt", &a], ["--facets", "32"]),
         (vec!["tilt", &a], ["--settlement-form", "both"]),
         (vec!["limit", &a], ["--settlement-form", "force-only"]),
         (vec!["limit", &a], ["--move", "right=0.01,0"]),
-        (vec!["incremental", &a, "--control", "0,3"], ["--crushing", "conic"]),
-        (vec!["incremental", &a, "--control", "0,3"], ["--settlement-form", "both"]),
-        (vec!["sweep", &a, mv[0], mv[1], "--steps", "2"], ["--facets", "32"]),
+        (
+            vec!["incremental", &a, "--control", "0,3"],
+            ["--crushing", "conic"],
+        ),
+        (
+            vec!["incremental", &a, "--control", "0,3"],
+            ["--settlement-form", "both"],
+        ),
+        (
+            vec!["sweep", &a, mv[0], mv[1], "--steps", "2"],
+            ["--facets", "32"],
+        ),
     ];
     for (cmd, [flag, value]) in cases {
         let h = help(&[cmd[0], "--help"]);
@@ -115,7 +134,10 @@ fn flags_that_do_not_apply_are_absent_from_help_and_refused() {
     let h = help(&["limit", "--help"]);
     assert!(h.contains("--crushing") && h.contains("--facets"));
     for cmd in ["settle", "sweep"] {
-        assert!(help(&[cmd, "--help"]).contains("--settlement-form"), "{cmd}");
+        assert!(
+            help(&[cmd, "--help"]).contains("--settlement-form"),
+            "{cmd}"
+        );
     }
 }
 
@@ -136,7 +158,14 @@ fn dxf_flags_are_refused_for_a_json_model() {
     let a = arch(&d, "full");
     fails_in_one_line(&["limit", &a, "--units", "mm"], &["--units", "DXF"]);
     fails_in_one_line(
-        &["settle", &a, "--move", "right=0.01,0", "--unit-weight", "20"],
+        &[
+            "settle",
+            &a,
+            "--move",
+            "right=0.01,0",
+            "--unit-weight",
+            "20",
+        ],
         &["--unit-weight", "DXF"],
     );
 }
@@ -144,7 +173,10 @@ fn dxf_flags_are_refused_for_a_json_model() {
 #[test]
 fn help_lists_own_flags_first_then_headed_shared_groups_with_every_value_described() {
     let h = help(&["settle", "--help"]);
-    let at = |s: &str| h.find(s).unwrap_or_else(|| panic!("'{s}' not in settle --help:\n{h}"));
+    let at = |s: &str| {
+        h.find(s)
+            .unwrap_or_else(|| panic!("'{s}' not in settle --help:\n{h}"))
+    };
     // Own flags before the shared groups, the groups in a fixed order.
     let own = at("--move");
     let groups = [
@@ -183,11 +215,21 @@ fn help_lists_own_flags_first_then_headed_shared_groups_with_every_value_describ
         let h = help(&[cmd, "--help"]);
         for v in values {
             let line = format!("- {v}: ");
-            assert!(h.contains(&line), "`{cmd} --help`: value {v} undescribed:\n{h}");
+            assert!(
+                h.contains(&line),
+                "`{cmd} --help`: value {v} undescribed:\n{h}"
+            );
         }
     }
     let g = help(&["gen", "arch", "--help"]);
-    for v in ["intrados", "centreline", "extrados", "semicircular", "pointed", "left"] {
+    for v in [
+        "intrados",
+        "centreline",
+        "extrados",
+        "semicircular",
+        "pointed",
+        "left",
+    ] {
         assert!(g.contains(&format!("- {v}: ")), "gen arch: {v}");
     }
     // --json and -o are documented together with their rule.
@@ -201,7 +243,10 @@ fn json_with_output_file_prints_the_json_and_writes_the_same_json() {
     let f = d.join("r.json");
     let o = ok(&["limit", &a, "--json", "-o", f.to_str().unwrap()]);
     let file = std::fs::read(&f).unwrap();
-    assert_eq!(o.stdout, file, "--json -o: the same JSON on stdout and in the file");
+    assert_eq!(
+        o.stdout, file,
+        "--json -o: the same JSON on stdout and in the file"
+    );
     serde_json::from_slice::<serde_json::Value>(&file).unwrap();
     // Without --json: the summary on stdout, the JSON in the file.
     std::fs::remove_file(&f).unwrap();
@@ -236,7 +281,15 @@ fn spelling_aliases_engineers_type_are_accepted() {
         .join("../voussoir-io/tests/fixtures/lact3/arch_1.dxf");
     let dxf = dxf.to_str().unwrap();
     let a = ok(&["limit", dxf, "--units", "mm", "--json"]);
-    let b = ok(&["limit", dxf, "--units", "millimetres", "--method", "Dual-Simplex", "--json"]);
+    let b = ok(&[
+        "limit",
+        dxf,
+        "--units",
+        "millimetres",
+        "--method",
+        "Dual-Simplex",
+        "--json",
+    ]);
     assert_eq!(a.stdout, b.stdout);
 }
 
@@ -244,7 +297,16 @@ fn spelling_aliases_engineers_type_are_accepted() {
 fn tilt_draws_png_svg_and_report() {
     let d = tmpdir("tilt");
     let w = d.join("wall.json");
-    ok(&["gen", "wall", "--courses", "4", "--units", "4", "-o", w.to_str().unwrap()]);
+    ok(&[
+        "gen",
+        "wall",
+        "--courses",
+        "4",
+        "--units",
+        "4",
+        "-o",
+        w.to_str().unwrap(),
+    ]);
     let (png, svg, html) = (d.join("t.png"), d.join("t.svg"), d.join("t.html"));
     ok(&[
         "tilt",
@@ -258,7 +320,10 @@ fn tilt_draws_png_svg_and_report() {
     ]);
     assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
     let text = std::fs::read_to_string(&svg).unwrap();
-    assert!(text.contains("critical tilt angle α = "), "the angle is in the figure");
+    assert!(
+        text.contains("critical tilt angle α = "),
+        "the angle is in the figure"
+    );
     assert!(std::fs::read_to_string(&html).unwrap().contains("<svg"));
 }
 
@@ -267,19 +332,40 @@ fn settlement_drawings_have_no_lambda() {
     let d = tmpdir("no-lambda");
     let a = arch(&d, "full");
     let svg = d.join("s.svg");
-    ok(&["settle", &a, "--move", "right=0.01,0", "--svg", svg.to_str().unwrap()]);
+    ok(&[
+        "settle",
+        &a,
+        "--move",
+        "right=0.01,0",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
     let text = std::fs::read_to_string(&svg).unwrap();
-    assert!(!text.contains('λ') && !text.contains("live load"), "settlement drawing mentions λ");
+    assert!(
+        !text.contains('λ') && !text.contains("live load"),
+        "settlement drawing mentions λ"
+    );
     // The limit drawing of the same model keeps its live loads × λ.
     ok(&["limit", &a, "--svg", svg.to_str().unwrap()]);
-    assert!(std::fs::read_to_string(&svg).unwrap().contains("live load × λ"));
+    assert!(std::fs::read_to_string(&svg)
+        .unwrap()
+        .contains("live load × λ"));
 }
 
 #[test]
 fn many_settling_supports_are_summarised_in_one_subtitle_line() {
     let d = tmpdir("subtitle");
     let w = d.join("wall.json");
-    ok(&["gen", "wall", "--courses", "3", "--units", "6", "-o", w.to_str().unwrap()]);
+    ok(&[
+        "gen",
+        "wall",
+        "--courses",
+        "3",
+        "--units",
+        "6",
+        "-o",
+        w.to_str().unwrap(),
+    ]);
     let svg = d.join("w.svg");
     ok(&[
         "settle",
@@ -306,24 +392,61 @@ fn incremental_uses_one_length_unit_on_flags_tables_and_plots() {
     let a = arch(&d, "left");
     let svg = d.join("i.svg");
     let mm = ok(&[
-        "incremental", &a, "--control", "0,3.19", "--max", "2mm", "--step", "0.25mm", "--json",
+        "incremental",
+        &a,
+        "--control",
+        "0,3.19",
+        "--max",
+        "2mm",
+        "--step",
+        "0.25mm",
+        "--json",
     ]);
     let m = ok(&[
-        "incremental", &a, "--control", "0,3.19", "--max", "0.002", "--step", "0.00025", "--json",
+        "incremental",
+        &a,
+        "--control",
+        "0,3.19",
+        "--max",
+        "0.002",
+        "--step",
+        "0.00025",
+        "--json",
     ]);
     assert_eq!(mm.stdout, m.stdout, "2mm is 0.002 m");
     let o = ok(&[
-        "incremental", &a, "--control", "0,3.19", "--max", "2mm", "--step", "0.25mm", "--svg",
+        "incremental",
+        &a,
+        "--control",
+        "0,3.19",
+        "--max",
+        "2mm",
+        "--step",
+        "0.25mm",
+        "--svg",
         svg.to_str().unwrap(),
     ]);
     let summary = stdout(&o);
-    assert!(summary.contains("dx (mm)") && !summary.contains("cm"), "{summary}");
+    assert!(
+        summary.contains("dx (mm)") && !summary.contains("cm"),
+        "{summary}"
+    );
     let plot = std::fs::read_to_string(&svg).unwrap();
     assert!(plot.contains("control displacement dx (mm)") && !plot.contains("(cm)"));
     let help = help(&["incremental", "--help"]);
-    assert!(help.contains("[default: 50mm]") && help.contains("[default: 0.5mm]"), "{help}");
+    assert!(
+        help.contains("[default: 50mm]") && help.contains("[default: 0.5mm]"),
+        "{help}"
+    );
     fails_in_one_line(
-        &["incremental", &a, "--control", "0,3.19", "--max", "5 furlongs"],
+        &[
+            "incremental",
+            &a,
+            "--control",
+            "0,3.19",
+            "--max",
+            "5 furlongs",
+        ],
         &["--max", "50mm"],
     );
 }
@@ -335,7 +458,15 @@ fn incremental_names_the_same_control_block_with_and_without_settlement() {
     let d = tmpdir("control-block");
     let a = arch(&d, "left");
     let block = |extra: &[&str]| -> u64 {
-        let mut args = vec!["incremental", &a, "--control", "0,3.19", "--max", "2mm", "--json"];
+        let mut args = vec![
+            "incremental",
+            &a,
+            "--control",
+            "0,3.19",
+            "--max",
+            "2mm",
+            "--json",
+        ];
         args.extend_from_slice(extra);
         let v: serde_json::Value = serde_json::from_slice(&ok(&args).stdout).unwrap();
         v["control"]["block"].as_u64().unwrap()
@@ -350,12 +481,14 @@ fn incremental_names_the_same_control_block_with_and_without_settlement() {
 fn incremental_message_counts_in_the_singular_for_one() {
     let d = tmpdir("plural");
     let a = arch(&d, "left");
-    let v: serde_json::Value = serde_json::from_slice(
-        &ok(&["incremental", &a, "--control", "0,3.19", "--json"]).stdout,
-    )
-    .unwrap();
+    let v: serde_json::Value =
+        serde_json::from_slice(&ok(&["incremental", &a, "--control", "0,3.19", "--json"]).stdout)
+            .unwrap();
     let m = v["message"].as_str().unwrap();
-    assert!(m.contains(" 1 closure,") && !m.contains("1 closures"), "{m}");
+    assert!(
+        m.contains(" 1 closure,") && !m.contains("1 closures"),
+        "{m}"
+    );
 }
 
 #[test]
@@ -363,8 +496,18 @@ fn capacity_prints_a_linear_fit_only_where_it_fits() {
     let d = tmpdir("linear-fit");
     // The paper's arch, right springing outwards: λ(s) is nearly straight (≈ 2 % of λ(0)).
     let a = arch(&d, "full");
-    let s = stdout(&ok(&["capacity", &a, "--move", "right=0.02,0", "--steps", "20"]));
-    let fit = s.lines().find(|l| l.starts_with("linear fit: ")).expect("fit");
+    let s = stdout(&ok(&[
+        "capacity",
+        &a,
+        "--move",
+        "right=0.02,0",
+        "--steps",
+        "20",
+    ]));
+    let fit = s
+        .lines()
+        .find(|l| l.starts_with("linear fit: "))
+        .expect("fit");
     assert!(!s.contains("warning"), "{s}");
     let dev: f64 = fit
         .split("largest deviation ")
@@ -375,7 +518,14 @@ fn capacity_prints_a_linear_fit_only_where_it_fits() {
     assert!(dev < 5.0, "{fit}");
     // A lintel with finite compressive strength: λ(s) is curved, so no fit, a warning instead.
     let l = d.join("lintel.json");
-    ok(&["gen", "lintel", "--compressive-strength", "1000", "-o", l.to_str().unwrap()]);
+    ok(&[
+        "gen",
+        "lintel",
+        "--compressive-strength",
+        "1000",
+        "-o",
+        l.to_str().unwrap(),
+    ]);
     let s = stdout(&ok(&[
         "capacity",
         l.to_str().unwrap(),
@@ -385,6 +535,9 @@ fn capacity_prints_a_linear_fit_only_where_it_fits() {
         "28",
     ]));
     assert!(!s.contains("linear fit:"), "{s}");
-    let w = s.lines().find(|l| l.starts_with("warning: ")).expect("warning");
+    let w = s
+        .lines()
+        .find(|l| l.starts_with("warning: "))
+        .expect("warning");
     assert!(w.contains("not linear") && w.contains("% of λ(0)"), "{w}");
 }

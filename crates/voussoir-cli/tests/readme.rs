@@ -52,7 +52,11 @@ fn example(file: &str, name: &str) -> Vec<String> {
         }
         cur.clear();
     }
-    assert!(lines.len() >= 3, "{file}: example {name} has {} lines", lines.len());
+    assert!(
+        lines.len() >= 3,
+        "{file}: example {name} has {} lines",
+        lines.len()
+    );
     lines
 }
 
@@ -62,8 +66,10 @@ fn outputs(line: &str) -> Vec<String> {
     let words: Vec<&str> = code.split_whitespace().collect();
     let mut out = Vec::new();
     for w in words.windows(2) {
-        if ["-o", "--output", "--png", "--svg", "--report", "--jsonl", "--csv", ">"]
-            .contains(&w[0])
+        if [
+            "-o", "--output", "--png", "--svg", "--report", "--jsonl", "--csv", ">",
+        ]
+        .contains(&w[0])
         {
             out.push(w[1].to_string());
         }
@@ -103,14 +109,21 @@ fn run_example(file: &str, name: &str) {
             let p = dir.join(&f);
             let len = std::fs::metadata(&p).map(|m| m.len()).unwrap_or(0);
             assert!(len > 0, "{file}: `{line}` did not write {f}");
-            assert!(f.starts_with("out/"), "{file}: `{line}` writes {f} outside out/");
+            assert!(
+                f.starts_with("out/"),
+                "{file}: `{line}` writes {f} outside out/"
+            );
         }
     }
     let top: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
-    assert_eq!(top, vec!["out".to_string()], "{file}: example {name} wrote {top:?}");
+    assert_eq!(
+        top,
+        vec!["out".to_string()],
+        "{file}: example {name} wrote {top:?}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -186,7 +186,11 @@ pub fn support_motion_text(g: &Geometry) -> Option<String> {
     }
     if moving.len() > LISTED_SUPPORTS {
         let range = |k: usize, scale: f64, unit: &str, name: &str| -> String {
-            let lo = moving.iter().map(|s| s.motion[k]).fold(f64::INFINITY, f64::min) * scale;
+            let lo = moving
+                .iter()
+                .map(|s| s.motion[k])
+                .fold(f64::INFINITY, f64::min)
+                * scale;
             let hi = moving
                 .iter()
                 .map(|s| s.motion[k])
@@ -1421,7 +1425,8 @@ mod tests {
 
     #[test]
     fn long_subtitles_wrap_within_the_width() {
-        let line = "prescribed support motion: ".to_string() + &"f1 u = 0 mm, v = −200 mm; ".repeat(40);
+        let line =
+            "prescribed support motion: ".to_string() + &"f1 u = 0 mm, v = −200 mm; ".repeat(40);
         let lines = wrap(line.trim_end(), 13.0, 944.0);
         assert!(lines.len() > 5, "{lines:?}");
         for l in &lines {

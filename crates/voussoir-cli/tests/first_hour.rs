@@ -345,6 +345,22 @@ fn settlement_drawings_have_no_lambda() {
         !text.contains('λ') && !text.contains("live load"),
         "settlement drawing mentions λ"
     );
+    // Nor does its report (figures, captions, model summary).
+    let html = d.join("s.html");
+    ok(&[
+        "settle",
+        &a,
+        "--move",
+        "right=0.01,0",
+        "--report",
+        html.to_str().unwrap(),
+    ]);
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert!(
+        !page.contains("× λ") && !page.contains("multiplied by λ"),
+        "settlement report mentions λ"
+    );
+    assert!(page.contains("not applied (a settlement analysis has no λ)"));
     // The limit drawing of the same model keeps its live loads × λ.
     ok(&["limit", &a, "--svg", svg.to_str().unwrap()]);
     assert!(std::fs::read_to_string(&svg)

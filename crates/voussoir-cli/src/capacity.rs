@@ -14,7 +14,7 @@ pub struct CapacityArgs {
     /// analysis, `--profile` as for `settle`.
     #[command(flatten)]
     pub settle: SettleArgs,
-    /// Number of intervals of the curve (it has STEPS + 1 points from 0 to the largest
+    /// Number of intervals of the curve (it has N + 1 points from 0 to the largest
     /// settlement).
     #[arg(long, default_value_t = 40, value_name = "N")]
     pub steps: usize,

@@ -154,8 +154,9 @@ pub enum MethodArg {
 // The support motion of a settlement: moves, fixed supports, a profile.
 #[derive(Args, Clone, Debug, Default)]
 pub struct SettleArgs {
-    /// Prescribed motion of a support: NAME=u,v[,θ] with u, v in m (v up) and θ in degrees
-    /// counter-clockwise about the support's centroid. Repeatable.
+    /// Prescribed motion of a support: NAME=u,v[,θ] with u, v in m or with a unit (v up;
+    /// `right=0,-5mm`) and θ in degrees counter-clockwise about the support's centroid.
+    /// Repeatable.
     #[arg(long = "move", value_name = "NAME=U,V[,THETA]")]
     pub moves: Vec<String>,
     /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
@@ -166,6 +167,21 @@ pub struct SettleArgs {
     /// settlement is < 0).
     #[arg(long, value_name = "KIND:NUMBERS")]
     pub profile: Option<String>,
+}
+
+/// A length in metres from the command line: a number in m, or with a unit `mm`, `cm` or `m`.
+pub fn signed_length(s: &str) -> Option<f64> {
+    let t = s.trim();
+    let (num, factor) = if let Some(n) = t.strip_suffix("mm") {
+        (n, 1e-3)
+    } else if let Some(n) = t.strip_suffix("cm") {
+        (n, 1e-2)
+    } else if let Some(n) = t.strip_suffix('m') {
+        (n, 1.0)
+    } else {
+        (t, 1.0)
+    };
+    num.trim().parse::<f64>().ok().map(|x| x * factor)
 }
 
 /// A support motion resolved from the flags: every value parsed and checked.
@@ -185,11 +201,19 @@ impl SettleArgs {
             let (name, vals) = m
                 .split_once('=')
                 .ok_or_else(|| Fail(format!("--move {m}: expected NAME=u,v[,θ]")))?;
+            // u and v may carry a length unit (`-2.5mm`, `1cm`; bare numbers are metres).
             let nums: Vec<f64> = vals
                 .split(',')
-                .map(|x| x.trim().parse::<f64>())
-                .collect::<Result<_, _>>()
-                .map_err(|_| Fail(format!("--move {m}: u, v and θ must be numbers")))?;
+                .enumerate()
+                .map(|(k, x)| {
+                    if k < 2 {
+                        signed_length(x)
+                    } else {
+                        x.trim().parse::<f64>().ok()
+                    }
+                })
+                .collect::<Option<_>>()
+                .ok_or_else(|| Fail(format!("--move {m}: u, v and θ must be numbers")))?;
             let motion = match nums.as_slice() {
                 [u, v] => [*u, *v, 0.0],
                 [u, v, t] => [*u, *v, t.to_radians()],

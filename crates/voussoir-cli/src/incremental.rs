@@ -29,8 +29,9 @@ pub struct IncrementalArgs {
     /// Control displacement per step: a length with its unit (0.5mm; a bare number is in m).
     #[arg(long, value_name = "LENGTH", default_value = "0.5mm", value_parser = length)]
     pub step: f64,
-    /// Settle first: NAME=u,v[,θ] (u, v in m, θ in degrees), repeatable; the analysis starts
-    /// from the settled geometry with the settlement's cracks open.
+    /// Settle first: NAME=u,v[,θ] (u, v in m or with a unit, `right=0,-2.5mm`; θ in degrees),
+    /// repeatable; the analysis starts from the settled geometry with the settlement's cracks
+    /// open.
     #[arg(
         long = "settle",
         value_name = "NAME=U,V[,THETA]",
@@ -57,20 +58,10 @@ pub struct IncrementalArgs {
     pub draw: crate::draw_args::DrawArgs,
 }
 
-/// A length on the command line: a number in metres, or with a unit `mm`, `cm` or `m`.
+/// A positive length on the command line: a number in metres, or with a unit `mm`, `cm` or `m`.
 pub fn length(s: &str) -> Result<f64, String> {
-    let t = s.trim();
-    let (num, factor) = if let Some(n) = t.strip_suffix("mm") {
-        (n, 1e-3)
-    } else if let Some(n) = t.strip_suffix("cm") {
-        (n, 1e-2)
-    } else if let Some(n) = t.strip_suffix('m') {
-        (n, 1.0)
-    } else {
-        (t, 1.0)
-    };
-    match num.trim().parse::<f64>() {
-        Ok(x) if x.is_finite() && x > 0.0 => Ok(x * factor),
+    match crate::common::signed_length(s) {
+        Some(x) if x.is_finite() && x > 0.0 => Ok(x),
         _ => Err(format!(
             "expected a positive length such as 50mm, 5cm or 0.05 (m), got '{s}'"
         )),

@@ -557,3 +557,18 @@ fn capacity_prints_a_linear_fit_only_where_it_fits() {
         .expect("warning");
     assert!(w.contains("not linear") && w.contains("% of λ(0)"), "{w}");
 }
+
+#[test]
+fn support_motions_take_a_length_unit() {
+    let d = tmpdir("motion-units");
+    let a = arch(&d, "full");
+    let m = ok(&["settle", &a, "--move", "right=0.01,0", "--json"]);
+    for spelled in ["right=10mm,0", "right=1cm,0mm", "right=0.01m,0"] {
+        let o = ok(&["settle", &a, "--move", spelled, "--json"]);
+        assert_eq!(o.stdout, m.stdout, "--move {spelled}");
+    }
+    fails_in_one_line(
+        &["settle", &a, "--move", "right=10 furlongs,0"],
+        &["must be numbers"],
+    );
+}

@@ -36,6 +36,12 @@ pub struct LimitResult {
     /// λ: the collapse multiplier (negative when the dead loads alone cannot be carried and the
     /// live load, reversed, would be needed; `null` when locked or infeasible).
     pub load_multiplier: Option<f64>,
+    /// The least multiplier in equilibrium (`null` when unbounded below): the structure stands
+    /// under its dead loads alone only if it is ≤ 0. When it is positive the status is
+    /// `no_equilibrium` and `[least_load_multiplier, load_multiplier]` is the range of λ in
+    /// which it stands.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub least_load_multiplier: Option<f64>,
     /// Work of the dead loads and of the live loads on the mechanism (−λ and 1 at collapse).
     pub work_dead_loads: Option<f64>,
     pub work_live_loads: Option<f64>,

@@ -47,7 +47,7 @@ pub enum RadiusAtArg {
     /// The inner (lower) face of the ring.
     #[value(alias = "inner", alias = "soffit")]
     Intrados,
-    /// The middle of the ring's thickness.
+    /// The middle of the ring's thickness (also spelled centerline, centre-line, center).
     #[value(
         alias = "centerline",
         alias = "centre-line",

@@ -572,3 +572,55 @@ fn support_motions_take_a_length_unit() {
         &["must be numbers"],
     );
 }
+
+#[test]
+fn every_value_of_every_choice_is_described_in_every_help() {
+    let commands: [&[&str]; 14] = [
+        &["gen", "arch"],
+        &["gen", "lintel"],
+        &["gen", "wall"],
+        &["gen", "facade"],
+        &["import"],
+        &["limit"],
+        &["settle"],
+        &["tilt"],
+        &["capacity"],
+        &["incremental"],
+        &["plot"],
+        &["sweep"],
+        &["merge"],
+        &["bench"],
+    ];
+    let mut values = 0;
+    for cmd in commands {
+        let mut args = cmd.to_vec();
+        args.push("--help");
+        let h = help(&args);
+        let mut in_values = false;
+        for line in h.lines() {
+            let t = line.trim();
+            if t == "Possible values:" {
+                in_values = true;
+                continue;
+            }
+            if in_values {
+                if let Some(v) = t.strip_prefix("- ") {
+                    let (name, text) = v.split_once(':').unwrap_or((v, ""));
+                    assert!(
+                        !text.trim().is_empty(),
+                        "`voussoir {}`: value '{name}' has no description",
+                        cmd.join(" ")
+                    );
+                    values += 1;
+                } else {
+                    in_values = false;
+                }
+            }
+        }
+        assert!(
+            !h.contains("[possible values:"),
+            "{cmd:?}: an undescribed value list"
+        );
+    }
+    assert!(values >= 40, "only {values} values found");
+}

@@ -142,12 +142,7 @@ pub fn settlement_motions(r: &CapacityResult) -> Vec<BlockMotion> {
     };
     r.settlement_mechanism
         .iter()
-        .map(|b| BlockMotion {
-            id: b.id,
-            u: b.u * s,
-            v: b.v * s,
-            theta: b.theta * s,
-        })
+        .map(|b| BlockMotion::planar(b.id, b.u * s, b.v * s, b.theta * s))
         .collect()
 }
 

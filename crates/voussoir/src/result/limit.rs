@@ -1,6 +1,8 @@
 //! Result of a limit analysis.
 
-use super::{BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
+use super::Spatial;
+use super::{BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::dim::Two;
 use crate::lp::SolverInfo;
 use serde::{Deserialize, Serialize};
 
@@ -28,7 +30,8 @@ impl LimitStatus {
 
 /// Result of a limit analysis.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LimitResult {
+#[serde(bound = "")]
+pub struct LimitResult<D: Spatial = Two> {
     pub status: LimitStatus,
     pub message: String,
     /// The solver and method that produced the result.
@@ -46,13 +49,13 @@ pub struct LimitResult {
     pub work_dead_loads: Option<f64>,
     pub work_live_loads: Option<f64>,
     /// The collapse mechanism (normalised: unit work of the live loads).
-    pub blocks: Vec<BlockMotion>,
-    pub joints: Vec<JointResult>,
-    pub hinges: Vec<Hinge>,
-    pub thrust_line: Vec<ThrustPoint>,
-    pub reactions: Vec<Reaction>,
+    pub blocks: Vec<BlockMotion<D>>,
+    pub joints: Vec<JointResult<D>>,
+    pub hinges: Vec<Hinge<D>>,
+    pub thrust_line: Vec<ThrustPoint<D>>,
+    pub reactions: Vec<Reaction<D>>,
     /// Simplex iterations spent.
     pub iterations: i64,
     /// The geometry analysed (for drawing a saved result).
-    pub geometry: Geometry,
+    pub geometry: D::Shapes,
 }

@@ -1,5 +1,6 @@
 //! Drawing flags shared by the analysis commands (`--svg`, `--png`, `--report`, `--scale`,
-//! `--forces`). Flatten [`DrawArgs`] into a command and call one of its `emit_*` methods.
+//! `--title`; `--forces` in [`ForcesArgs`], only where the figure is a structure). Flatten
+//! [`DrawArgs`] into a command and call one of its `emit_*` methods.
 
 use crate::common::Fail;
 use clap::Args;
@@ -25,18 +26,37 @@ pub struct DrawArgs {
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
     /// Displacement scale factor of the deformed drawing (dimensionless; default: automatic,
-    /// shown in the figure). Limit mechanisms are normalised, settlement mechanisms are in m.
+    /// shown in the figure). Limit mechanisms are normalised, settlement mechanisms are in m;
+    /// for capacity and incremental, the mechanism figures of the report.
     #[arg(long, value_name = "S")]
     pub scale: Option<f64>,
-    /// Also draw contact-force resultants as arrows (length ∝ magnitude, kN).
-    #[arg(long)]
+    /// Contact-force arrows: set from [`ForcesArgs`] by the commands whose figure is a structure
+    /// (limit, settle, tilt); the curve figures of capacity and incremental have none.
+    #[arg(skip)]
     pub forces: bool,
     /// Title of the drawing (default: by analysis).
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
 }
 
+// `--forces`: only on the commands whose figure is the structure (limit, settle, tilt).
+#[derive(Args, Clone, Debug, Default)]
+#[command(next_help_heading = "Drawing")]
+pub struct ForcesArgs {
+    /// Also draw contact-force resultants as arrows (length ∝ magnitude, kN).
+    #[arg(long)]
+    pub forces: bool,
+}
+
 impl DrawArgs {
+    /// These drawing flags with `--forces`.
+    pub fn with(&self, f: &ForcesArgs) -> DrawArgs {
+        DrawArgs {
+            forces: f.forces,
+            ..self.clone()
+        }
+    }
+
     /// Whether any drawing output was asked for.
     pub fn any(&self) -> bool {
         self.svg.is_some() || self.png.is_some() || self.report.is_some()

@@ -24,6 +24,8 @@ pub struct LimitArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub draw: DrawArgs,
+    #[command(flatten)]
+    pub forces: crate::draw_args::ForcesArgs,
 }
 
 /// `limit`'s flags, resolved.
@@ -67,6 +69,6 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
     let c = a.resolve()?;
     let st = c.input.structure(None)?;
     let r = limit_with(&st, &c.input.solver, c.crushing, c.facets)?;
-    a.draw.emit_limit(&r, &c.input.path)?;
+    a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
     a.out.emit(&r, || crate::common::limit_summary(&st, &r))
 }

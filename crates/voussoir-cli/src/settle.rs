@@ -17,6 +17,8 @@ pub struct SettleCmdArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub draw: DrawArgs,
+    #[command(flatten)]
+    pub forces: crate::draw_args::ForcesArgs,
 }
 
 /// `settle`'s flags, resolved.
@@ -53,6 +55,6 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         SettlementForm::Both => settle(&st, &c.input.solver)?,
         form => settle_with(&st, &c.input.solver, form)?,
     };
-    a.draw.emit_settlement(&r, &c.input.path)?;
+    a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
     a.out.emit(&r, || common::settle_summary(&st, &r))
 }

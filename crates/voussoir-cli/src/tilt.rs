@@ -31,6 +31,8 @@ pub struct TiltArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub draw: crate::draw_args::DrawArgs,
+    #[command(flatten)]
+    pub forces: crate::draw_args::ForcesArgs,
 }
 
 pub fn run(a: TiltArgs) -> Result<(), Fail> {
@@ -42,7 +44,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
     };
     let st = input.structure(None)?;
     let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver)?;
-    a.draw.emit_tilt(&r, &input.path)?;
+    a.draw.with(&a.forces).emit_tilt(&r, &input.path)?;
     a.out.emit(&r, || {
         let mut s = String::new();
         let _ = writeln!(s, "blocks {}, joints {}", st.blocks.len(), st.joints.len());

@@ -130,6 +130,21 @@ fn flags_that_do_not_apply_are_absent_from_help_and_refused() {
         args.extend([flag, value]);
         fails_in_one_line(&args, &[flag, "does not apply"]);
     }
+    // --forces draws contact forces on a structure: not on the curves of capacity, incremental.
+    for cmd in [
+        vec!["capacity", &a, mv[0], mv[1], "--forces"],
+        vec!["incremental", &a, "--control", "0,3", "--forces"],
+    ] {
+        assert!(
+            !help(&[cmd[0], "--help"]).contains("--forces"),
+            "{}",
+            cmd[0]
+        );
+        fails_in_one_line(&cmd, &["--forces", "does not apply"]);
+    }
+    for cmd in ["limit", "settle", "tilt"] {
+        assert!(help(&[cmd, "--help"]).contains("--forces"), "{cmd}");
+    }
     // ... and present where they are used.
     let h = help(&["limit", "--help"]);
     assert!(h.contains("--crushing") && h.contains("--facets"));

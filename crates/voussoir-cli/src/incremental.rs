@@ -88,6 +88,9 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     if a.settle.is_empty() && !a.fixed.is_empty() {
         return Err(Fail("--fixed only applies with --settle".into()));
     }
+    if a.settle.is_empty() && a.keep_fixed {
+        return Err(Fail("--keep-fixed only applies with --settle".into()));
+    }
     if a.step > a.max {
         return Err(Fail(format!(
             "--step {} mm is larger than --max {} mm",

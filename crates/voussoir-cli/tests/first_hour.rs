@@ -145,6 +145,11 @@ fn flags_that_do_not_apply_are_absent_from_help_and_refused() {
     for cmd in ["limit", "settle", "tilt"] {
         assert!(help(&[cmd, "--help"]).contains("--forces"), "{cmd}");
     }
+    // Flags of the settlement before an incremental analysis need --settle.
+    fails_in_one_line(
+        &["incremental", &a, "--control", "0,3", "--keep-fixed"],
+        &["--keep-fixed only applies with --settle"],
+    );
     // ... and present where they are used.
     let h = help(&["limit", "--help"]);
     assert!(h.contains("--crushing") && h.contains("--facets"));

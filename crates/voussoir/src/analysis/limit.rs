@@ -182,6 +182,13 @@ pub enum Crushing {
     Conic,
 }
 
+/// Fewest and most facets of the inscribed crushing polygon. Two chords are the coarsest
+/// polygon that still allows an eccentric thrust; 4,096 chords put the polygon within
+/// (t/2)·(1/4096)² of the parabola, far below any tolerance of the solvers, while bounding the
+/// program's size (two rows per facet and joint).
+pub const MIN_FACETS: usize = 2;
+pub const MAX_FACETS: usize = 4096;
+
 /// Limit analysis with a choice of crushing model and number of facets.
 pub fn limit_with(
     st: &Structure,
@@ -189,8 +196,13 @@ pub fn limit_with(
     crushing: Crushing,
     facets: usize,
 ) -> Result<LimitResult> {
+    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
+        return Err(Error::Request(format!(
+            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+        )));
+    }
     let mut map = KinematicMap::new(st);
-    map.facets = facets.max(1);
+    map.facets = facets;
     let s = match crushing {
         Crushing::Linear => solve_limit_checked(st, &map, opts)?,
         Crushing::Conic => solve_limit_conic(st, &map, opts)?,

@@ -3,7 +3,7 @@
 use crate::common::{CrushingArg, Fail, Input, ModelArgs, OutArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
-use voussoir::analysis::limit::{limit_with, Crushing};
+use voussoir::analysis::limit::{limit_with, Crushing, MAX_FACETS, MIN_FACETS};
 
 /// Facets of the inscribed crushing polygon when --facets is not given.
 const DEFAULT_FACETS: usize = 16;
@@ -48,9 +48,9 @@ impl LimitArgs {
                         .into(),
                 ))
             }
-            (_, Some(n)) if n < 3 => {
+            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => {
                 return Err(Fail(format!(
-                    "--facets {n}: the crushing polygon needs at least 3 facets"
+                    "--facets {n}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
                 )))
             }
             (_, Some(n)) => n,

@@ -169,7 +169,11 @@ fn facets_with_the_exact_cone_are_refused() {
         &["limit", &a, "--crushing", "conic", "--facets", "32"],
         &["--facets", "--crushing linear"],
     );
-    fails_in_one_line(&["limit", &a, "--facets", "2"], &["--facets 2"]);
+    fails_in_one_line(&["limit", &a, "--facets", "1"], &["--facets 1", "between"]);
+    fails_in_one_line(
+        &["limit", &a, "--facets", "5000"],
+        &["--facets 5000", "between"],
+    );
 }
 
 #[test]

@@ -406,7 +406,7 @@ impl OutArgs {
     pub fn emit<T: Serialize>(&self, result: &T, summary: impl Fn() -> String) -> Result<(), Fail> {
         let json = voussoir_io::files::to_json(result)?;
         if let Some(path) = &self.output {
-            voussoir_io::write_atomic(path, json.as_bytes())?;
+            crate::outputs::stage(path, json.as_bytes())?;
         }
         if self.json {
             out(&json);

@@ -104,7 +104,7 @@ impl DrawArgs {
             write_drawing(&d.svg, self.svg.as_deref(), self.png.as_deref())?;
         }
         if let Some(path) = &self.report {
-            voussoir_io::write_atomic(path, report().to_html().as_bytes())?;
+            crate::outputs::stage(path, report().to_html().as_bytes())?;
         }
         Ok(())
     }
@@ -166,7 +166,7 @@ impl DrawArgs {
             write_drawing(&svg(title), self.svg.as_deref(), self.png.as_deref())?;
         }
         if let Some(path) = &self.report {
-            voussoir_io::write_atomic(path, html().as_bytes())?;
+            crate::outputs::stage(path, html().as_bytes())?;
         }
         Ok(())
     }
@@ -185,11 +185,11 @@ pub fn write_drawing(
     png_path: Option<&Path>,
 ) -> Result<(), Fail> {
     if let Some(p) = svg_path {
-        voussoir_io::write_atomic(p, svg.as_bytes())?;
+        crate::outputs::stage(p, svg.as_bytes())?;
     }
     if let Some(p) = png_path {
         let png = draw::svg_to_png(svg, draw::PNG_ZOOM)?;
-        voussoir_io::write_atomic(p, &png)?;
+        crate::outputs::stage(p, &png)?;
     }
     Ok(())
 }

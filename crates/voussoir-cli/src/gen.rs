@@ -197,7 +197,7 @@ fn write(model: &Model, out: &Output) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(model)?;
     match &out.output {
         Some(p) => {
-            voussoir_io::write_atomic(p, json.as_bytes())?;
+            crate::outputs::stage(p, json.as_bytes())?;
             eprintln!(
                 "wrote {} ({} blocks, {} supports)",
                 p.display(),

@@ -124,6 +124,7 @@ impl DxfArgs {
 
     /// Read `path` as a model: DXF by extension, JSON otherwise. The report is there for DXF.
     pub fn read(&self, path: &Path) -> Result<(Model, Option<ImportReport>), Fail> {
+        crate::outputs::input(path);
         if voussoir_io::dxf::is_dxf(path) {
             let (m, rep) = read_dxf(path, &self.options())?;
             Ok((m, Some(rep)))
@@ -173,7 +174,7 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     )?;
     let json = voussoir_io::files::to_json(&model)?;
     match &a.output {
-        Some(p) => voussoir_io::write_atomic(p, json.as_bytes())?,
+        Some(p) => crate::outputs::stage(p, json.as_bytes())?,
         None => print!("{json}"),
     }
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());

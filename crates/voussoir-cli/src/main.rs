@@ -8,6 +8,7 @@ mod gen;
 mod import;
 mod incremental;
 mod limit;
+mod outputs;
 mod plot;
 mod settle;
 mod sweep;
@@ -159,7 +160,7 @@ fn main() {
             }
         },
     };
-    if let Err(e) = run(cli) {
+    if let Err(e) = run(cli).and_then(|()| outputs::commit()) {
         eprintln!("error: {e}");
         std::process::exit(1);
     }

@@ -80,10 +80,10 @@ fn write_outputs(
     cv: &Option<PathBuf>,
 ) -> Result<(), Fail> {
     if let Some(p) = jl {
-        voussoir_io::write_atomic(p, jsonl(records)?.as_bytes())?;
+        crate::outputs::stage(p, jsonl(records)?.as_bytes())?;
     }
     match cv {
-        Some(p) => voussoir_io::write_atomic(p, csv(records).as_bytes())?,
+        Some(p) => crate::outputs::stage(p, csv(records).as_bytes())?,
         None if jl.is_none() => print!("{}", csv(records)),
         None => {}
     }
@@ -173,6 +173,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
 pub fn merge(a: MergeArgs) -> Result<(), Fail> {
     let mut records: Vec<SweepRecord> = Vec::new();
     for p in &a.inputs {
+        crate::outputs::input(p);
         let text = std::fs::read_to_string(p)
             .map_err(|e| Fail(format!("cannot read {}: {e}", p.display())))?;
         for (i, line) in text

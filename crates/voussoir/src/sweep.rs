@@ -79,6 +79,8 @@ pub struct SweepRecord {
     pub max_rotation: f64,
     /// The prescribed motion of every moving support, `[u, v, θ]`.
     pub motions: BTreeMap<String, [f64; 3]>,
+    /// The solver and method that produced the analysis.
+    pub solver: crate::lp::SolverInfo,
 }
 
 /// Deterministic random numbers (SplitMix64), so that a seed means the same samples everywhere.
@@ -183,6 +185,7 @@ pub fn analyse(
             .filter(|s| s.motion.iter().any(|x| *x != 0.0))
             .map(|s| (s.name.clone(), s.motion))
             .collect(),
+        solver: r.solver.clone(),
     })
 }
 

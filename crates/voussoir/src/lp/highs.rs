@@ -60,7 +60,9 @@ fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
     Ok(())
 }
 
-fn build(lp: &LinearProgram) -> highs::Model {
+/// The HiGHS model of `lp`; HiGHS's refusal (for example a coefficient beyond its infinity,
+/// 1e20) is a one-line error, never a panic.
+fn build(lp: &LinearProgram) -> Result<highs::Model> {
     let mut p = ColProblem::default();
     let rows: Vec<highs::Row> = (0..lp.num_rows())
         .map(|i| p.add_row(lp.row_lower[i]..=lp.row_upper[i]))
@@ -69,10 +71,15 @@ fn build(lp: &LinearProgram) -> highs::Model {
         let entries: Vec<(highs::Row, f64)> = lp.column(j).map(|(i, v)| (rows[i], v)).collect();
         p.add_column(lp.cost[j], lp.col_lower[j]..=lp.col_upper[j], entries);
     }
-    p.optimise(if lp.maximise {
+    p.try_optimise(if lp.maximise {
         Sense::Maximise
     } else {
         Sense::Minimise
+    })
+    .map_err(|e| {
+        Error::Solver(format!(
+            "HiGHS refused the program ({e:?}): a number in the model is too large for the solver"
+        ))
     })
 }
 
@@ -123,7 +130,7 @@ impl Backend for Highs {
         let mut start = start.filter(|_| o.method.is_simplex());
         let mut spent = 0i64;
         loop {
-            let mut m = build(lp);
+            let mut m = build(lp)?;
             let warm = start.is_some();
             if warm {
                 opts.presolve = false;

@@ -1,7 +1,7 @@
 //! `voussoir identify`: which support motions caused the observed cracks (inverse settlement
 //! analysis, docs/identify.md).
 
-use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
+use crate::common::{Fail, FormArgs, ModelArgs, OutArgs, SettleArgs};
 use crate::draw_args::{write_drawing, DrawArgs};
 use clap::Args;
 use std::fmt::Write as _;
@@ -29,6 +29,9 @@ pub struct IdentifyArgs {
     /// Known motions and fixed supports (added to the unknowns).
     #[command(flatten)]
     pub settle: SettleArgs,
+    /// Form of the forward settlement analysis (the certificate).
+    #[command(flatten)]
+    pub form: FormArgs,
     /// Skip the identifiability ranges (two LPs per unknown).
     #[arg(long)]
     pub no_ranges: bool,
@@ -39,7 +42,11 @@ pub struct IdentifyArgs {
 }
 
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
-    let (st, solver) = a.model.structure(Some(&a.settle))?;
+    a.draw.check()?;
+    let input = a.model.resolve()?;
+    let motion = a.settle.resolve()?;
+    let st = input.structure(Some(&motion))?;
+    let solver = input.solver;
     let text = std::fs::read_to_string(&a.cracks)
         .map_err(|e| Fail(format!("cannot read {}: {e}", a.cracks.display())))?;
     let obs: Observations = serde_json::from_str(&text)
@@ -55,7 +62,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
         &IdentifyOptions {
             solver,
             ranges: !a.no_ranges,
-            form: a.model.settlement_form(),
+            form: a.form.settlement_form.form(),
         },
     )?;
     if a.draw.svg.is_some() || a.draw.png.is_some() {

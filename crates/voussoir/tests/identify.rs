@@ -426,9 +426,28 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
     );
     assert_eq!(r.status, IdentifyStatus::Inconsistent);
     assert!(r.message.starts_with("no settlement"), "{}", r.message);
-    // The closest motion spreads the arch and opens the haunches too.
+    // The closest motion: the spreading whose crown crack has the observed width (here the
+    // 1 cm that produced it), which opens the haunches too. Every spreading opens the crown and
+    // each haunch in the ratio 2 : 1 : 1, so the misfit is flat between 0 and that spreading;
+    // the closest is its upper end.
     let u = r.unknowns[0].value;
-    assert!(u > 0.0, "closest u = {u}");
+    assert!((u - 0.01).abs() <= 1e-6 * 0.01, "closest u = {u}");
+    assert!(
+        r.observations[0].misfit.abs() <= 1e-9,
+        "{:?}",
+        r.observations
+    );
+    // Its misfit: the two haunch cracks, observed closed, in units of the default 0.1 mm.
+    let haunch = f.joints[13]
+        .points
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p.opening));
+    let expect = 2.0 * haunch / 1e-4;
+    assert!(
+        (r.misfit_all_points - expect).abs() <= 1e-6 * expect,
+        "{} against {expect}",
+        r.misfit_all_points
+    );
     assert!(r
         .predicted_cracks
         .iter()

@@ -44,11 +44,14 @@ pub fn identify_scene(r: &IdentifyResult) -> Scene<'_> {
     scene.info.insert(
         1,
         format!(
-            "{} observed point{}, misfit {} tolerances in total (largest {} mm)",
+            "{} crack observation{}, misfit {} tolerances over every observed point{}",
             r.observations.len(),
             if r.observations.len() == 1 { "" } else { "s" },
-            human(tiny(r.total_misfit), 3),
-            human(tiny(r.max_misfit) * 1000.0, 3)
+            human(tiny(r.misfit_all_points), 3),
+            match r.status {
+                IdentifyStatus::Identified => "",
+                IdentifyStatus::Inconsistent => " (closed ones included)",
+            }
         ),
     );
     scene

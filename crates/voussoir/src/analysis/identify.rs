@@ -511,6 +511,9 @@ pub struct IdentifyResult {
     pub observations: Vec<ObservationResult>,
     /// Σ |misfit| / tolerance over the observations.
     pub total_misfit: f64,
+    /// The same over every observed point, the implicitly closed ones included (equal to
+    /// `total_misfit` when identified: closed points are closed by construction).
+    pub misfit_all_points: f64,
     pub max_misfit: f64,
     pub predicted_cracks: Vec<PredictedCrack>,
     /// Whether the active set at unobserved points or Coulomb rows had to be fixed after a
@@ -599,6 +602,7 @@ pub fn identify(
     let st0 = st.with_support_motions(&motions_of(st, unknowns, &zero));
     let map = KinematicMap::new(&st0);
     let (roles, pobs) = obs.resolve(&st0, &map)?;
+    let gtol = obs.tolerance.unwrap_or(DEFAULT_TOLERANCE);
     // Unit responses.
     let unit: Vec<(Vec<f64>, Vec<f64>)> = unknowns
         .iter()
@@ -655,7 +659,9 @@ pub fn identify(
     }
     let Some((ip, sol)) = solved else {
         let why = "no motion within the bounds makes this pattern a settlement mechanism";
-        return closest(st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, why);
+        return closest(
+            st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, gtol, why,
+        );
     };
     let a = ip.amplitudes(&sol.x);
     let d = ip.motion(&sol.x);
@@ -677,7 +683,7 @@ pub fn identify(
             dedup(shut)
         );
         return closest(
-            st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, &why,
+            st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, gtol, &why,
         );
     }
     let forward = forward_settle(&st_id, opts)?;
@@ -773,6 +779,7 @@ pub fn identify(
         support_motions: support_motions(&st_id),
         observations,
         total_misfit: total,
+        misfit_all_points: total,
         max_misfit: maxm,
         predicted_cracks,
         active_set_fixed,
@@ -985,17 +992,10 @@ fn closest(
     roles: &[PointRole],
     pobs: &[PointObs],
     opts: &IdentifyOptions,
+    gtol: f64,
     reason: &str,
 ) -> Result<IdentifyResult> {
-    let gtol = pobs
-        .iter()
-        .map(|o| o.tolerance)
-        .fold(f64::INFINITY, f64::min);
-    let gtol = if gtol.is_finite() {
-        gtol
-    } else {
-        DEFAULT_TOLERANCE
-    };
+    // Closed points count at the global tolerance `gtol`.
     let mut targets: Vec<Option<(f64, f64)>> = vec![None; map.num_points()];
     for (k, r) in roles.iter().enumerate() {
         if map.bilateral[k] || map.gap[k] > 0.0 {
@@ -1019,19 +1019,39 @@ fn closest(
             "identify: the observed pattern cannot be produced by any settlement, and no admissible motion within the bounds exists either (check the bounds and the known support motions)".into(),
         ));
     }
-    let a: Vec<f64> = cp.amplitudes(&sol.x).iter().map(|v| v + 0.0).collect();
-    let st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
-    let map_c = KinematicMap::new(&st_c);
-    let forward = forward_settle(&st_c, opts)?;
-    let mut open = vec![0.0; map_c.num_points()];
-    if forward.status == SettlementStatus::Mechanism {
-        for (j, jr) in forward.joints.iter().enumerate() {
-            for (i, p) in jr.points.iter().enumerate() {
-                open[map_c.joint_start[j] + i] = p.opening;
-            }
+    let mut a: Vec<f64> = cp.amplitudes(&sol.x).iter().map(|v| v + 0.0).collect();
+    let mut st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
+    let mut forward = forward_settle(&st_c, opts)?;
+    let mut open = forward_openings(map, &forward);
+    // With no known motions the forward analysis is homogeneous of degree one in the motions:
+    // scaling them by t scales every opening by t. Take the t that minimises the misfit of the
+    // forward openings over every observed point (closed ones at 0), if it stays in the bounds.
+    let homogeneous = st.supports.iter().all(|s| s.motion == [0.0; 3])
+        && unknowns
+            .iter()
+            .all(|u| u.base.iter().all(|b| *b == [0.0; 3]));
+    if homogeneous && forward.status == SettlementStatus::Mechanism {
+        let t = best_scaling(&open, &targets);
+        let scaled: Vec<f64> = a.iter().map(|v| t * v + 0.0).collect();
+        let inside = scaled
+            .iter()
+            .zip(bounds)
+            .all(|(v, (lo, hi))| v >= lo && v <= hi);
+        if inside && t > 0.0 && (t - 1.0).abs() > 1e-12 {
+            a = scaled;
+            st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
+            forward = forward_settle(&st_c, opts)?;
+            open = forward_openings(map, &forward);
         }
     }
+    let map_c = KinematicMap::new(&st_c);
     let omax = max_abs(&open);
+    // Misfit over every observed point, the implicitly closed ones included.
+    let all_misfit: f64 = targets
+        .iter()
+        .zip(&open)
+        .filter_map(|(t, o)| t.map(|(w, tau)| (o - w).abs() / tau))
+        .sum();
     let (observations, total, maxm) = compare(&st_c, &map_c, pobs, &open);
     let predicted_cracks = predicted(&st_c, &map_c, &open, roles, omax);
     let contradictions: Vec<String> = predicted_cracks
@@ -1075,18 +1095,60 @@ fn closest(
     Ok(IdentifyResult {
         status: IdentifyStatus::Inconsistent,
         message: format!(
-            "no settlement of the unknown support motions produces the observed crack pattern ({reason}); the closest motion (least misfit over every observed point, the pattern relaxed) is below, with the cracks its own settlement analysis opens (misfit {total:.3} tolerances){why}"
+            "no settlement of the unknown support motions produces the observed crack pattern ({reason}); the closest motion (least misfit over every observed point, the pattern relaxed) is below, with the cracks its own settlement analysis opens (misfit {all_misfit:.3} tolerances over every observed point, closed ones included){why}"
         ),
         unknowns: unknown_results,
         support_motions: support_motions(&st_c),
         observations,
         total_misfit: total,
+        misfit_all_points: all_misfit,
         max_misfit: maxm,
         predicted_cracks,
         active_set_fixed: false,
         certificate: None,
         forward,
     })
+}
+
+/// Openings of a forward result, by point (0 when it has no mechanism).
+fn forward_openings(map: &KinematicMap, forward: &SettlementResult) -> Vec<f64> {
+    let mut open = vec![0.0; map.num_points()];
+    if forward.status == SettlementStatus::Mechanism {
+        for (j, jr) in forward.joints.iter().enumerate() {
+            for (i, p) in jr.points.iter().enumerate() {
+                open[map.joint_start[j] + i] = p.opening;
+            }
+        }
+    }
+    open
+}
+
+/// The factor `t ≥ 0` minimising `Σ |t·o_k − w_k| / τ_k` over observed points `k`
+/// (`targets[k] = (w_k, τ_k)`): a weighted median of the ratios `w_k / o_k` with weights
+/// `o_k / τ_k` (points that do not open add a constant). Of equally good factors, the largest
+/// (the one that opens the observed cracks most nearly at their widths).
+fn best_scaling(open: &[f64], targets: &[Option<(f64, f64)>]) -> f64 {
+    let mut items: Vec<(f64, f64)> = targets
+        .iter()
+        .zip(open)
+        .filter_map(|(t, &o)| t.filter(|_| o > 0.0).map(|(w, tau)| (w / o, o / tau)))
+        .collect();
+    if items.is_empty() {
+        return 1.0;
+    }
+    items.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let total: f64 = items.iter().map(|i| i.1).sum();
+    // The slope of the misfit at t is (weight below t) − (weight above t): the minimisers are
+    // where it changes sign; take the last ratio where the weight below does not exceed half.
+    let mut below = 0.0;
+    let mut best = items[0].0;
+    for (r, w) in &items {
+        if below <= 0.5 * total * (1.0 + 1e-12) {
+            best = *r;
+        }
+        below += w;
+    }
+    best
 }
 
 fn dedup(mut v: Vec<String>) -> String {

@@ -174,3 +174,81 @@ fn identify_refuses_bad_input_in_one_line() {
         assert!(!out.exists());
     }
 }
+
+#[test]
+fn identify_recovers_a_linear_settlement_profile_with_unknown_end_value() {
+    // A running-bond wall (6 courses × 8 units of 0.4 m) whose foundation settles linearly from
+    // 0 at x = 1.6 m to −2 cm at x = 3.2 m; the survey gives every cracked joint by number.
+    let d = tmpdir("profile");
+    let wall = d.join("wall.json");
+    let o = run(&[
+        "gen",
+        "wall",
+        "--courses",
+        "6",
+        "--units",
+        "8",
+        "-o",
+        wall.to_str().unwrap(),
+    ]);
+    assert!(o.status.success());
+    let wall = wall.to_str().unwrap();
+    let f = run(&[
+        "settle",
+        wall,
+        "--profile",
+        "linear:1.6,0,3.2,-0.02",
+        "--json",
+    ]);
+    assert!(f.status.success(), "{}", String::from_utf8_lossy(&f.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&f.stdout).unwrap();
+    let mut cracks = Vec::new();
+    for j in v["joints"].as_array().unwrap() {
+        let ws: Vec<f64> = j["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p["opening"].as_f64().unwrap())
+            .map(|w| if w > 1e-9 { w } else { 0.0 })
+            .collect();
+        if ws.iter().any(|w| *w > 0.0) {
+            cracks.push(serde_json::json!({"joint": j["id"], "opening": ws}));
+        }
+    }
+    assert!(cracks.len() > 3, "{} cracked joints", cracks.len());
+    let obs = d.join("obs.json");
+    std::fs::write(&obs, serde_json::json!({ "cracks": cracks }).to_string()).unwrap();
+    let o = run(&[
+        "identify",
+        wall,
+        "--cracks",
+        obs.to_str().unwrap(),
+        "--unknown",
+        "linear:1.6,0,3.2,?",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let a = r["unknowns"][0]["value"].as_f64().unwrap();
+    assert!((a + 0.02).abs() <= 1e-6 * 0.02, "end value {a}");
+    assert_eq!(r["certificate"]["reproduces"], true);
+    // A '?' in a position, or a reversed range, is refused in one line.
+    for bad in ["linear:?,0,3.2,1", "f7..f3=v"] {
+        let o = run(&[
+            "identify",
+            wall,
+            "--cracks",
+            obs.to_str().unwrap(),
+            "--unknown",
+            bad,
+        ]);
+        assert!(!o.status.success());
+        assert_eq!(
+            String::from_utf8_lossy(&o.stderr)
+                .trim_end()
+                .lines()
+                .count(),
+            1
+        );
+    }
+}

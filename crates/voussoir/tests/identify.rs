@@ -5,7 +5,7 @@
 
 use voussoir::analysis::identify::{
     identify, Component, Crack, IdentifyOptions, IdentifyResult, IdentifyStatus, Observations,
-    Unknown, Width,
+    Unknown, Unobserved, Width,
 };
 use voussoir::analysis::settlement::{settle_with, SettlementForm, SettlementStatus};
 use voussoir::analysis::{settle, SettlementResult};
@@ -455,5 +455,43 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
     println!(
         "{}\nclosest u = {u}\n{:?}\n{:?}",
         r.message, r.observations, r.predicted_cracks
+    );
+}
+
+#[test]
+fn an_unobserved_joint_is_left_free() {
+    // Spreading of 1 cm; joint 51 (the right haunch) is hidden under plaster: its crack is not
+    // in the survey and nothing is assumed there. The other two cracks still fix u, and the
+    // prediction opens the hidden joint as the forward analysis does.
+    let m = with_moves(paper_arch(), &[("right", [0.01, 0.0, 0.0])], &[]);
+    let (st, f) = forward(&m, SettlementForm::Both);
+    let mut obs = exact(&f, false);
+    obs.cracks.retain(|c| c.joint != Some(51));
+    assert_eq!(obs.cracks.len(), 2);
+    obs.unobserved.push(Unobserved {
+        joint: Some(51),
+        region: None,
+    });
+    let r = run(
+        &st,
+        &obs,
+        &[U::Sup(&["right"], Component::U, None)],
+        SettlementForm::Both,
+    );
+    assert_recovers(&r, 0, 0.01);
+    let hidden = r
+        .predicted_cracks
+        .iter()
+        .find(|c| c.joint == 51)
+        .expect("joint 51 opens");
+    assert_eq!(hidden.observed, "unobserved");
+    let fw = f.joints[51]
+        .points
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p.opening));
+    assert!(
+        (hidden.opening - fw).abs() <= 1e-6 * fw,
+        "{} against {fw}",
+        hidden.opening
     );
 }

@@ -6,3 +6,4 @@ cd "$(dirname "$0")/.."
 ./scripts/deps.sh
 export PATH="$HOME/.cargo/bin:$PATH"
 cargo test --workspace --release --no-fail-fast "$@"
+./scripts/test-python.sh

@@ -1,0 +1,291 @@
+"""The analyses. Keyword arguments are named like the CLI's flags, with the same defaults
+(``voussoir limit|settle|capacity|incremental|tilt|sweep --help``); every solve runs in the Rust
+library with the GIL released, so Python threads run analyses in parallel.
+
+Every function accepts ``executor=``: a :class:`concurrent.futures.Executor` (a
+``ProcessPoolExecutor``, Dask's ``client.get_executor()`` or a ``distributed.Client`` itself, a
+Ray executor…). With an executor a single analysis returns a future of its result, and
+:func:`sweep` spreads its scenarios over the executor's workers.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Iterable, List, Optional, Sequence, Tuple, Union
+
+from . import _native
+from . import _options as o
+from ._model import Model
+from ._results import (
+    CapacityResult,
+    IncrementalResult,
+    LimitResult,
+    SettlementResult,
+    SweepResult,
+    TiltResult,
+)
+
+ModelLike = Union[Model, str, "os.PathLike[str]"]
+
+
+def _model(model: ModelLike) -> Model:
+    if isinstance(model, Model):
+        return model
+    return Model.from_json(model)
+
+
+# Executed in the caller's process, or in an executor's worker (module-level, so it pickles).
+def _run(kind: str, model_json: str, args: tuple) -> Any:
+    fn = getattr(_native, kind)
+    text = fn(model_json, *args)
+    return _WRAP[kind](text)
+
+
+_WRAP = {
+    "limit": LimitResult,
+    "settle": SettlementResult,
+    "capacity": CapacityResult,
+    "incremental": IncrementalResult,
+    "tilt": TiltResult,
+}
+
+
+def _dispatch(kind: str, model: ModelLike, args: tuple, executor):
+    m = _model(model)
+    if executor is None:
+        return _run(kind, m._json, args)
+    return executor.submit(_run, kind, m._json, args)
+
+
+def limit(
+    model: ModelLike,
+    *,
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    crushing: str = "linear",
+    facets: int = 16,
+    executor=None,
+) -> LimitResult:
+    """Classic limit analysis (``voussoir limit``): the collapse load multiplier λ of the live
+    loads and the collapse mechanism.
+
+    ``model``: a :class:`Model` or a JSON path. ``tolerance``: joint detection, relative to the
+    model's size (default 1e-7). ``method``: LP method (``"dual-simplex"``, ``"primal-simplex"``,
+    ``"ipm"``, ``"choose"``, ``"ipm-no-crossover"``, ``"pdlp"``, ``"clarabel"``). ``friction``:
+    Coulomb μ for every joint (default: no sliding). ``compressive_strength``: f_c in kPa
+    (default: infinite). ``crushing``: ``"linear"`` (inscribed polygon of ``facets`` sides) or
+    ``"conic"`` (exact, SOCP). ``executor``: return a future computed there.
+
+    >>> import voussoir as v
+    >>> r = v.limit(v.generate.arch(live="full"))
+    >>> round(r.load_multiplier, 4)
+    0.4346
+    """
+    c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
+    return _dispatch("limit", model, (c,), executor)
+
+
+def settle(
+    model: ModelLike,
+    *,
+    move: o.Moves = None,
+    fixed: Union[str, Iterable[str], None] = None,
+    profile: Optional[str] = None,
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    settlement_form: str = "both",
+    executor=None,
+) -> SettlementResult:
+    """Settlement analysis (``voussoir settle``): the mechanism and contact forces for
+    prescribed support motions, by the paper's primal and dual LPs, certified by the duality gap.
+
+    ``move``: ``{"right": (u, v)}`` or ``{"right": (u, v, θ)}`` — u, v in metres (v up), θ in
+    degrees counter-clockwise about the support's centroid (the CLI's ``--move right=u,v[,θ]``;
+    strings in that syntax are accepted too). ``fixed``: support name(s) declared fixed
+    (bilateral). ``profile``: vertical settlement profile along x applied to every support,
+    ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``.
+    ``settlement_form``: ``"both"`` (default) or ``"force-only"``. Other keywords as
+    :func:`limit`.
+    """
+    c = o.common(tolerance, method, friction, compressive_strength, "linear", 16, settlement_form)
+    s = o.settle(move, fixed, profile)
+    return _dispatch("settle", model, (c, s), executor)
+
+
+def capacity(
+    model: ModelLike,
+    *,
+    move: o.Moves = None,
+    fixed: Union[str, Iterable[str], None] = None,
+    profile: Optional[str] = None,
+    steps: int = 40,
+    keep_fixed: bool = False,
+    no_mechanisms: bool = False,
+    cold: bool = False,
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    crushing: str = "linear",
+    facets: int = 16,
+    executor=None,
+) -> CapacityResult:
+    """Load capacity after a settlement (``voussoir capacity``): λ against the settlement (limit
+    analysis on the deformed geometry) from 0 to the settlement given by ``move``/``profile``
+    in ``steps`` intervals, and the settlement at which λ reaches zero.
+
+    ``keep_fixed``: keep ``fixed`` supports tied after the settlement (default: contact joints).
+    ``no_mechanisms``: leave each step's mechanism out of the JSON. ``cold``: no HiGHS hot start.
+    Other keywords as :func:`settle` and :func:`limit`.
+    """
+    c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
+    s = o.settle(move, fixed, profile)
+    return _dispatch(
+        "capacity", model, (c, s, int(steps), bool(keep_fixed), bool(no_mechanisms), bool(cold)), executor
+    )
+
+
+def incremental(
+    model: ModelLike,
+    *,
+    control: Sequence[float],
+    direction: Sequence[float] = (1.0, 0.0),
+    max: float = 0.05,
+    step: float = 0.0005,
+    settle: o.Moves = None,
+    fixed: Union[str, Iterable[str], None] = None,
+    keep_fixed: bool = False,
+    snapshot_every: int = 0,
+    no_stop: bool = False,
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    executor=None,
+) -> IncrementalResult:
+    """Incremental (nonlinear kinematic) analysis (``voussoir incremental``): λ against the
+    displacement of a control point as the mechanism evolves and cracks close.
+
+    ``control``: the control point (x, y) in m (the block containing it, or the nearest).
+    ``direction``: along which the control displacement is measured. ``max``: largest control
+    displacement (m); ``step``: per step (m). ``settle``: settle first, ``{"right": (u, v)}``
+    (θ in degrees as third value); ``fixed``/``keep_fixed`` as for :func:`capacity`.
+    ``snapshot_every``: keep the mechanism every N steps. ``no_stop``: go on after λ reaches 0.
+    """
+    c = o.common(tolerance, method, friction, compressive_strength)
+    s = o.settle(settle, fixed, None)
+    args = (
+        c,
+        o.pair("control", control),
+        o.pair("direction", direction),
+        float(max),
+        float(step),
+        s,
+        bool(keep_fixed),
+        int(snapshot_every),
+        bool(no_stop),
+    )
+    return _dispatch("incremental", model, args, executor)
+
+
+def tilt(
+    model: ModelLike,
+    *,
+    direction: str = "+x",
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    crushing: str = "linear",
+    facets: int = 16,
+    executor=None,
+) -> TiltResult:
+    """Tilting-table analysis (``voussoir tilt``): the critical tilt angle (degrees) towards
+    ``direction`` (``"+x"`` or ``"-x"``)."""
+    if direction not in ("+x", "-x"):
+        raise ValueError(f"direction={direction!r}: expected '+x' or '-x'")
+    c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
+    return _dispatch("tilt", model, (c, direction), executor)
+
+
+def _sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, seed: int) -> str:
+    # One scenario; module-level so that executors can pickle it.
+    return _native.sweep_task(base, common, kind, n, k, cov, seed)
+
+
+def _shard(shard) -> Tuple[int, int]:
+    if shard is None:
+        return (0, 1)
+    if isinstance(shard, str):
+        try:
+            i, n = (int(x) for x in shard.split("/"))
+        except ValueError:
+            raise ValueError(f"shard={shard!r}: expected 'I/N' with 0 ≤ I < N") from None
+    else:
+        i, n = shard
+    if n <= 0 or not 0 <= i < n:
+        raise ValueError(f"shard={shard!r}: expected 'I/N' with 0 ≤ I < N")
+    return (int(i), int(n))
+
+
+def sweep(
+    model: ModelLike,
+    *,
+    move: o.Moves = None,
+    fixed: Union[str, Iterable[str], None] = None,
+    profile: Optional[str] = None,
+    steps: Optional[int] = None,
+    directions: Optional[int] = None,
+    samples: Optional[int] = None,
+    cov: float = 0.3,
+    seed: int = 1,
+    shard: Union[str, Tuple[int, int], None] = None,
+    threads: Optional[int] = None,
+    executor=None,
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    settlement_form: str = "both",
+) -> SweepResult:
+    """Many settlement analyses (``voussoir sweep``): give exactly one of
+
+    * ``steps=N``: the base motions (``move``/``profile``) scaled by k/N, k = 1 … N;
+    * ``directions=N``: the ``move`` vectors (u, v) rotated through 360°·k/N;
+    * ``samples=N``: Monte Carlo, each support's motion times (1 + ``cov``·ξ), ξ standard
+      normal, from ``seed`` (the same seed gives the CLI's samples on any machine).
+
+    Without ``executor`` the scenarios run on ``threads`` Rust threads (default: one per core);
+    with one, each scenario is a task submitted to it (e.g. a Dask ``Client`` or
+    ``client.get_executor()``), and the records come back in task order. ``shard=(i, n)`` runs
+    only the tasks with index ≡ i (mod n). The records equal the CLI's, field for field.
+    """
+    modes = [x for x in (("steps", steps), ("directions", directions), ("samples", samples)) if x[1] is not None]
+    if len(modes) != 1:
+        raise ValueError("give exactly one of steps=, directions=, samples=")
+    kind, n = modes[0][0], int(modes[0][1])
+    if n < 1:
+        raise ValueError("the number of analyses must be at least 1")
+    seed = int(seed)
+    if not 0 <= seed < 2**64:
+        raise ValueError(f"seed={seed}: expected an integer in [0, 2⁶⁴)")
+    c = o.common(tolerance, method, friction, compressive_strength, "linear", 16, settlement_form)
+    s = o.settle(move, fixed, profile)
+    m = _model(model)
+    base = _native.sweep_base(m._json, c, s, kind, n, float(cov))
+    i, shards = _shard(shard)
+    tasks = [k for k in range(n) if k % shards == i]
+    if executor is None:
+        if threads is not None and int(threads) < 1:
+            raise ValueError(f"threads={threads}: expected at least 1")
+        lines = _native.sweep_run(base, c, kind, n, tasks, float(cov), seed, int(threads or 0))
+    else:
+        futures = [
+            executor.submit(_sweep_task, base, c, kind, n, k, float(cov), seed) for k in tasks
+        ]
+        lines = [f.result() for f in futures]
+    return SweepResult(lines)

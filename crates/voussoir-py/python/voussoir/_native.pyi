@@ -1,0 +1,97 @@
+# Type stubs of the compiled extension module (crates/voussoir-py/src). Models and results cross
+# the boundary as JSON text; the public API is in voussoir/__init__.py.
+from typing import List, Optional, Sequence, Tuple
+
+__version__: str
+
+class VoussoirError(Exception): ...
+class ModelError(VoussoirError): ...
+class SolverError(VoussoirError): ...
+
+def model_from_text(text: str) -> str: ...
+def model_from_path(path: str) -> str: ...
+def model_from_dxf(
+    path: str,
+    units: Optional[str],
+    unit_weight: float,
+    dxf_width: float,
+    support_layers: List[str],
+    support_handles: List[str],
+    merge_tolerance: Optional[float],
+    dxf_live: str,
+) -> Tuple[str, str, List[str]]: ...
+def model_check(model: str, tolerance: Optional[float] = None) -> Tuple[int, int, int]: ...
+def gen_arch(
+    shape: str,
+    radius: float,
+    radius_at: str,
+    thickness: float,
+    voussoirs: int,
+    unit_weight: float,
+    width: float,
+    live: str,
+    live_load: float,
+    half_angle: float,
+    offset: float,
+) -> str: ...
+def gen_lintel(
+    span: float,
+    thickness: float,
+    bricks: int,
+    unit_weight: float,
+    width: float,
+    live_load: float,
+    compressive_strength: Optional[float],
+) -> str: ...
+def gen_wall(
+    courses: int,
+    units: int,
+    unit: Tuple[float, float],
+    first_course: str,
+    unit_weight: float,
+    width: float,
+    live: str,
+) -> str: ...
+def gen_facade(
+    element: Tuple[float, Optional[float]],
+    mesh: str,
+    width: float,
+    height: float,
+    gable: float,
+    openings: Optional[List[str]],
+    segments: int,
+    unit_weight: float,
+    thickness: float,
+    live: str,
+) -> str: ...
+def limit(model: str, common: dict) -> str: ...
+def settle(model: str, common: dict, settle: dict) -> str: ...
+def capacity(
+    model: str, common: dict, settle: dict, steps: int, keep_fixed: bool, no_mechanisms: bool, cold: bool
+) -> str: ...
+def incremental(
+    model: str,
+    common: dict,
+    control: Tuple[float, float],
+    direction: Tuple[float, float],
+    max: float,
+    step: float,
+    settle: dict,
+    keep_fixed: bool,
+    snapshot_every: int,
+    no_stop: bool,
+) -> str: ...
+def tilt(model: str, common: dict, direction: str) -> str: ...
+def sweep_base(model: str, common: dict, settle: dict, kind: str, n: int, cov: float) -> str: ...
+def sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, seed: int) -> str: ...
+def sweep_run(
+    base: str, common: dict, kind: str, n: int, tasks: Sequence[int], cov: float, seed: int, threads: int
+) -> List[str]: ...
+def sweep_csv(lines: Sequence[str]) -> str: ...
+def draw_svg(
+    result: str, scale: Optional[float] = None, forces: bool = False, title: Optional[str] = None
+) -> str: ...
+def report_html(
+    result: str, title: Optional[str] = None, source: str = "", scale: Optional[float] = None
+) -> str: ...
+def svg_to_png(svg: str) -> bytes: ...

@@ -1,0 +1,194 @@
+//! The options every analysis shares (the CLI's `ModelArgs` and `SettleArgs`,
+//! crates/voussoir-cli/src/common.rs), received from Python as dicts, and the one-line failure.
+//!
+//! The CLI's versions live in its binary crate and cannot be called from here; this is the same
+//! sequence of library calls (load → override materials → apply settlement → `Structure::new`),
+//! with messages naming the Python keyword instead of the flag.
+
+use pyo3::prelude::*;
+use voussoir::analysis::limit::Crushing;
+use voussoir::analysis::settlement::SettlementForm;
+use voussoir::lp::{Method, SolverOptions};
+use voussoir::settlement_input::{apply_profile, fix_support, move_support, Profile};
+use voussoir::{BuildOptions, Model, Structure};
+
+/// A failure: one line; `Solver` for the solver's own failures, `Model` for everything else.
+#[derive(Debug)]
+pub enum Fail {
+    Model(String),
+    Solver(String),
+}
+
+impl From<voussoir::Error> for Fail {
+    fn from(e: voussoir::Error) -> Self {
+        match e {
+            voussoir::Error::Solver(_) => Fail::Solver(e.to_string()),
+            _ => Fail::Model(e.to_string()),
+        }
+    }
+}
+impl From<voussoir_io::IoError> for Fail {
+    fn from(e: voussoir_io::IoError) -> Self {
+        Fail::Model(e.0)
+    }
+}
+
+/// `ModelArgs` of the CLI: how to read, build and solve.
+#[derive(FromPyObject, Clone, Debug)]
+#[pyo3(from_item_all)]
+pub struct Common {
+    pub tolerance: Option<f64>,
+    pub method: String,
+    pub friction: Option<f64>,
+    pub compressive_strength: Option<f64>,
+    pub crushing: String,
+    pub facets: usize,
+    pub settlement_form: String,
+}
+
+/// `SettleArgs` of the CLI: moves (θ in degrees), fixed supports, a profile.
+#[derive(FromPyObject, Clone, Debug, Default)]
+#[pyo3(from_item_all)]
+pub struct Settle {
+    pub moves: Vec<(String, Vec<f64>)>,
+    pub fixed: Vec<String>,
+    pub profile: Option<String>,
+}
+
+impl Settle {
+    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+        for f in &self.fixed {
+            fix_support(model, f)?;
+        }
+        for (name, nums) in &self.moves {
+            let motion = match nums.as_slice() {
+                [u, v] => [*u, *v, 0.0],
+                [u, v, t] => [*u, *v, t.to_radians()],
+                _ => {
+                    return Err(Fail::Model(format!(
+                        "move {name}: expected (u, v) or (u, v, θ in degrees)"
+                    )))
+                }
+            };
+            move_support(model, name, motion)?;
+        }
+        if let Some(p) = &self.profile {
+            apply_profile(model, &Profile::parse(p)?)?;
+        }
+        Ok(())
+    }
+}
+
+impl Common {
+    pub fn solver(&self) -> Result<SolverOptions, Fail> {
+        let method = match self.method.as_str() {
+            "dual-simplex" => Method::DualSimplex,
+            "primal-simplex" => Method::PrimalSimplex,
+            "ipm" => Method::Ipm,
+            "choose" => Method::Choose,
+            "ipm-no-crossover" => Method::IpmNoCrossover,
+            "pdlp" => Method::Pdlp,
+            "clarabel" => Method::Clarabel,
+            m => {
+                return Err(Fail::Model(format!(
+                    "method={m}: expected dual-simplex, primal-simplex, ipm, choose, ipm-no-crossover, pdlp or clarabel"
+                )))
+            }
+        };
+        Ok(SolverOptions {
+            method,
+            ..SolverOptions::default()
+        })
+    }
+
+    pub fn settlement_form(&self) -> Result<SettlementForm, Fail> {
+        match self.settlement_form.as_str() {
+            "both" => Ok(SettlementForm::Both),
+            "force-only" => Ok(SettlementForm::ForceOnly),
+            f => Err(Fail::Model(format!(
+                "settlement_form={f}: expected both or force-only"
+            ))),
+        }
+    }
+
+    /// Apply `friction` and `compressive_strength` to every material (the implicit `default`
+    /// one included), as the CLI's `--friction` / `--compressive-strength` do.
+    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
+        if let Some(mu) = self.friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return Err(Fail::Model(format!(
+                    "friction={mu}: must be a finite number ≥ 0"
+                )));
+            }
+        }
+        if let Some(f) = self.compressive_strength {
+            if !(f.is_finite() && f > 0.0) {
+                return Err(Fail::Model(format!(
+                    "compressive_strength={f}: must be a finite number > 0 (kPa)"
+                )));
+            }
+        }
+        if self.friction.is_none() && self.compressive_strength.is_none() {
+            return Ok(());
+        }
+        m.materials.entry("default".to_string()).or_default();
+        for mat in m.materials.values_mut() {
+            if self.friction.is_some() {
+                mat.friction = self.friction;
+            }
+            if self.compressive_strength.is_some() {
+                mat.compressive_strength = self.compressive_strength;
+            }
+        }
+        Ok(())
+    }
+
+    /// The model with materials overridden and the settlement applied.
+    pub fn model(&self, model_json: &str, settle: Option<&Settle>) -> Result<Model, Fail> {
+        let mut model = voussoir_io::files::parse_model(model_json)?;
+        self.override_materials(&mut model)?;
+        if let Some(s) = settle {
+            s.apply(&mut model)?;
+        }
+        Ok(model)
+    }
+
+    /// Load, apply the settlement, validate and discretise (the CLI's `ModelArgs::structure`).
+    pub fn structure(
+        &self,
+        model_json: &str,
+        settle: Option<&Settle>,
+    ) -> Result<(Structure, SolverOptions), Fail> {
+        let model = self.model(model_json, settle)?;
+        let st = Structure::new(
+            &model,
+            BuildOptions {
+                tolerance: self.tolerance,
+            },
+        )?;
+        Ok((st, self.solver()?))
+    }
+
+    /// Limit analysis with the chosen crushing model.
+    pub fn limit(
+        &self,
+        st: &Structure,
+        opts: &SolverOptions,
+    ) -> Result<voussoir::analysis::LimitResult, Fail> {
+        let crushing = match self.crushing.as_str() {
+            "linear" => Crushing::Linear,
+            "conic" => Crushing::Conic,
+            c => {
+                return Err(Fail::Model(format!(
+                    "crushing={c}: expected linear or conic"
+                )))
+            }
+        };
+        Ok(voussoir::analysis::limit::limit_with(
+            st,
+            opts,
+            crushing,
+            self.facets,
+        )?)
+    }
+}

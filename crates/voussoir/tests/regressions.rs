@@ -93,3 +93,29 @@ fn a_support_motion_of_1e300_is_a_one_line_error_not_a_panic() {
         ),
     }
 }
+
+/// Regression: with friction, `settle_with(.., Both)` flagged every sliding mechanism as
+/// uncertified, because the admissibility check counted sliding on frictional joints as a
+/// violation. A running-bond wall with μ = 0.6 whose end segments settle is certified.
+#[test]
+fn frictional_settlement_mechanisms_are_not_flagged_as_inadmissible() {
+    use voussoir::analysis::settlement::{settle_with, SettlementForm};
+    use voussoir::generate::{wall, WallSpec};
+    let mut m = wall(&WallSpec {
+        courses: 6,
+        units: 8,
+        ..WallSpec::default()
+    })
+    .unwrap();
+    m.materials.entry("default".into()).or_default().friction = Some(0.6);
+    let n = m.supports.len();
+    for s in m.supports[n - 3..].iter_mut() {
+        s.motion = [0.0, -0.01, 0.0];
+    }
+    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let r = settle_with(&st, &SolverOptions::default(), SettlementForm::Both).unwrap();
+    let c = r.certificate.as_ref().unwrap();
+    assert!(c.ok, "{}", r.message);
+    assert!(!r.message.contains("WARNING"), "{}", r.message);
+    assert!(c.relative_gap <= 1e-7);
+}

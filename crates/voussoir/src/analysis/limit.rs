@@ -35,10 +35,19 @@ pub fn solve_limit(
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
+    Ok(solve_static(st, map, opts)?.0)
+}
+
+/// The static program of `st`, solved: the solution and the program.
+fn solve_static(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<(LimitSolution, ForceProgram)> {
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
     let sol = fp.solve(opts)?;
-    Ok(limit_solution(map, &fp, &live, &sol, opts.info()))
+    Ok((limit_solution(map, &fp, &live, &sol, opts.info()), fp))
 }
 
 /// [`solve_limit`] of a structure as given, with the check that it stands under its dead loads
@@ -50,10 +59,7 @@ pub fn solve_limit_checked(
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
-    let (dead, live) = load_vectors(st)?;
-    let fp = programs::limit_force_program(map, &dead, &live);
-    let sol = fp.solve(opts)?;
-    let s = limit_solution(map, &fp, &live, &sol, opts.info());
+    let (s, fp) = solve_static(st, map, opts)?;
     with_least_multiplier(s, &fp, |lp| lp::solve(lp, opts))
 }
 

@@ -5,7 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/deps.sh
 export PATH="$HOME/.cargo/bin:$PATH"
-cargo build --release -q -p voussoir-cli
+# cargo's own progress is shown: the first build compiles HiGHS from source (see README for the
+# measured time); ./scripts/test.sh reuses this build (same release profile).
+cargo build --release -p voussoir-cli
 V=target/release/voussoir
 mkdir -p out
 $V gen arch --radius 2.86 --radius-at intrados --thickness 0.33 --voussoirs 64 \

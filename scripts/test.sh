@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Run the whole test suite (installs build dependencies first if they are missing).
+# Tests run in the release profile, the one the quick start builds: HiGHS is compiled once.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/deps.sh
 export PATH="$HOME/.cargo/bin:$PATH"
-cargo test --workspace --no-fail-fast "$@"
+cargo test --workspace --release --no-fail-fast "$@"
 ./scripts/test-python.sh

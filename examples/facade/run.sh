@@ -4,7 +4,7 @@
 # foundation under the right half by 20 cm, and draw the model and the fractured configuration.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-cargo build --release -q -p voussoir-cli
+cargo build --release -p voussoir-cli
 V=target/release/voussoir
 out=examples/facade/out
 mkdir -p "$out"

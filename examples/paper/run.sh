@@ -19,7 +19,7 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 cd "$root"
 if [[ -z "${VOUSSOIR:-}" ]]; then
-  cargo build --release -q -p voussoir-cli
+  cargo build --release -p voussoir-cli
   VOUSSOIR=$root/target/release/voussoir
 fi
 v() { "$VOUSSOIR" "$@"; }
@@ -81,20 +81,20 @@ say "Fig 12 (paper: zero at 0.42 cm)" "fig12-capacity-vertical.png"
 inc() { # NAME SETTLEMENT(m) TITLE
   local settle=()
   [[ "$2" != 0 ]] && settle=(--settle "right=0,-$2" --fixed right)
-  v incremental arch-left.json --control 0,3.19 --direction 1,0 --step 0.0001 --max 0.05 "${settle[@]}" \
+  v incremental arch-left.json --control 0,3.19 --direction 1,0 --step 0.1mm --max 50mm "${settle[@]}" \
     -o "$1.json" --svg "$1.svg" --png "$1.png" --report "$1-report.html" --title "$3" >/dev/null
 }
 inc fig14b-incremental-perfect 0 "Fig 14b — incremental analysis of the perfect arch"
-inc fig15-incremental-0.25cm 0.0025 "Fig 15 — after a 0.25 cm settlement of the right springing"
-inc fig16-incremental-0.5cm 0.005 "Fig 16 — after a 0.5 cm settlement of the right springing"
+inc fig15-incremental-0.25cm 0.0025 "Fig 15 — after a 2.5 mm settlement of the right springing"
+inc fig16-incremental-0.5cm 0.005 "Fig 16 — after a 5 mm settlement of the right springing"
 say "Figs 14b, 15, 16 (incremental)" "fig14b-incremental-perfect.png fig15-incremental-0.25cm.png fig16-incremental-0.5cm.png"
 
 # ── Fig 17: the three force–displacement curves together ──────────────────────────────────
 v plot fig14b-incremental-perfect.json fig15-incremental-0.25cm.json fig16-incremental-0.5cm.json \
-  --label "perfect arch" --label "settlement 0.25 cm" --label "settlement 0.5 cm" \
+  --label "perfect arch" --label "settlement 2.5 mm" --label "settlement 5 mm" \
   -o fig17-incremental-comparison.png --title "Fig 17 — force–displacement curves compared" >/dev/null
 v plot fig14b-incremental-perfect.json fig15-incremental-0.25cm.json fig16-incremental-0.5cm.json \
-  --label "perfect arch" --label "settlement 0.25 cm" --label "settlement 0.5 cm" \
+  --label "perfect arch" --label "settlement 2.5 mm" --label "settlement 5 mm" \
   -o fig17-incremental-comparison.svg --title "Fig 17 — force–displacement curves compared" >/dev/null
 say "Fig 17 (comparison)" "fig17-incremental-comparison.png"
 

@@ -11,11 +11,17 @@ use voussoir::lp::Method;
 pub enum BenchMethod {
     /// Per size: dual simplex up to 2,000 blocks (vertex mechanisms), Clarabel above.
     Auto,
+    /// HiGHS dual simplex: an exact vertex.
     DualSimplex,
+    /// HiGHS primal simplex: an exact vertex.
     PrimalSimplex,
+    /// HiGHS interior point with crossover to a vertex.
     Ipm,
+    /// HiGHS interior point without crossover (not a vertex).
     IpmNoCrossover,
+    /// HiGHS first-order PDLP (low accuracy).
     Pdlp,
+    /// HiGHS chooses by the problem's size.
     Choose,
     /// Clarabel's interior point (direct sparse LDLᵀ factorisation), on the same force LP.
     Clarabel,
@@ -31,8 +37,11 @@ pub enum BenchForm {
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
 pub enum BenchAnalysis {
+    /// Settlement analyses (prescribed settlement of the wall's base).
     Settle,
+    /// Limit analyses (horizontal live load).
     Limit,
+    /// Both.
     Both,
 }
 
@@ -53,11 +62,12 @@ pub struct BenchArgs {
     /// Switch HiGHS's presolve off.
     #[arg(long)]
     pub no_presolve: bool,
-    /// Primal/dual feasibility (and, for Clarabel, gap) tolerance of the solver.
-    #[arg(long, default_value_t = 1e-9)]
+    /// Primal/dual feasibility (and, for Clarabel, gap) tolerance of the solver
+    /// (dimensionless).
+    #[arg(long, default_value_t = 1e-9, value_name = "TOL")]
     pub solver_tolerance: f64,
-    /// Solver time limit per LP, seconds.
-    #[arg(long)]
+    /// Solver time limit per LP, in seconds.
+    #[arg(long, value_name = "S")]
     pub time_limit: Option<f64>,
     /// Also time structure building and interface detection alone (no solve) at these sizes.
     #[arg(long, value_delimiter = ',', default_value = "100000")]

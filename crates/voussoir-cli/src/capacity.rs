@@ -5,19 +5,18 @@ use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
 use clap::Args;
 use std::fmt::Write as _;
 use voussoir::analysis::capacity::{capacity, CapacityOptions, CapacityResult};
+use voussoir_io::draw::capacity::LinearFitText;
 
 #[derive(Args)]
 pub struct CapacityArgs {
-    #[command(flatten)]
-    pub model: ModelArgs,
     /// The settlement: `--move NAME=u,v[,θ]` gives its direction and its largest value (m;
     /// θ in degrees), `--fixed NAME` ties the blocks to that support for the settlement
     /// analysis, `--profile` as for `settle`.
     #[command(flatten)]
     pub settle: SettleArgs,
-    /// Number of intervals of the curve (it has STEPS + 1 points from 0 to the largest
+    /// Number of intervals of the curve (it has N + 1 points from 0 to the largest
     /// settlement).
-    #[arg(long, default_value_t = 40)]
+    #[arg(long, default_value_t = 40, value_name = "N")]
     pub steps: usize,
     /// Keep `fixed` supports tied to their blocks after the settlement (default: they act as
     /// contact joints in the limit analyses that follow).
@@ -30,8 +29,9 @@ pub struct CapacityArgs {
     #[arg(long)]
     pub cold: bool,
     #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
     pub out: OutArgs,
-    /// `--svg`/`--png`: the curve; `--report`: an HTML report with the mechanisms.
     #[command(flatten)]
     pub draw: crate::draw_args::DrawArgs,
 }
@@ -42,7 +42,16 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             "capacity needs a settlement: give --move NAME=u,v (or --profile)".into(),
         ));
     }
-    let (st, solver) = a.model.structure(Some(&a.settle))?;
+    if a.steps == 0 {
+        return Err(Fail(
+            "--steps 0: the curve needs at least one interval".into(),
+        ));
+    }
+    a.draw.check()?;
+    let input = a.model.resolve()?;
+    let motion = a.settle.resolve()?;
+    let solver = input.solver;
+    let st = input.structure(Some(&motion))?;
     let opts = CapacityOptions {
         steps: a.steps,
         hot_start: !a.cold,
@@ -52,7 +61,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         ..CapacityOptions::default()
     };
     let r = capacity(&st, &opts)?;
-    a.draw.emit_capacity(&r, &a.model.model)?;
+    a.draw.emit_capacity(&r, &input.path)?;
     a.out.emit(&r, || summary(&st, &r))
 }
 
@@ -98,14 +107,14 @@ fn summary(st: &voussoir::Structure, r: &CapacityResult) -> String {
             z * 100.0
         );
     }
-    if let Some(f) = &r.linear_fit {
-        let _ = writeln!(
-            s,
-            "linear fit: λ ≈ {:.5} {:+.4}·s (s in m), largest deviation {:.2} % of λ(0)",
-            f.intercept,
-            f.slope,
-            f.max_relative_deviation * 100.0
-        );
+    match voussoir_io::draw::capacity::linear_fit_text(r) {
+        Some(LinearFitText::Fits(t)) => {
+            let _ = writeln!(s, "linear fit: {t}");
+        }
+        Some(LinearFitText::DoesNotFit(t)) => {
+            let _ = writeln!(s, "warning: {t}");
+        }
+        None => {}
     }
     let _ = writeln!(s, "{:>12}  {:>12}  valid", "s (cm)", "λ");
     let every = (r.curve.len() / 20).max(1);

@@ -29,125 +29,288 @@ impl From<voussoir_io::IoError> for Fail {
     }
 }
 
+// Model input: every analysis command reads one model.
 #[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Model input")]
 pub struct ModelArgs {
-    /// The model: a JSON file (see README, "Model format") or a DXF drawing (`.dxf`).
+    /// The model: a JSON file (see README, "Model format") or a DXF drawing (`.dxf`, read with
+    /// the "DXF import" flags below).
     pub model: PathBuf,
-    /// Geometric tolerance for joint detection, relative to the model's size (default 1e-7).
-    #[arg(long)]
+    /// Geometric tolerance for joint detection, relative to the model's size (dimensionless;
+    /// default 1e-7).
+    #[arg(long, value_name = "REL")]
     pub tolerance: Option<f64>,
-    /// LP method: dual-simplex (default; crisp vertex mechanisms), primal-simplex, ipm, choose.
-    #[arg(long, value_enum, default_value = "dual-simplex")]
-    pub method: MethodArg,
-    /// Coulomb friction coefficient μ for every joint (overrides the model's materials;
-    /// default: no sliding).
-    #[arg(long)]
+    /// Coulomb friction coefficient μ = tan φ for every joint (dimensionless; overrides the
+    /// model's materials; default: the model's, else no sliding).
+    #[arg(long, value_name = "MU")]
     pub friction: Option<f64>,
-    /// Compressive strength f_c in kPa for every joint (overrides the model's materials;
-    /// default: infinite).
+    /// Compressive strength f_c for every joint, in kPa (overrides the model's materials;
+    /// default: the model's, else infinite).
     #[arg(long, value_name = "KPA")]
     pub compressive_strength: Option<f64>,
-    /// Finite-strength model: `linear` (inscribed polygon, an LP) or `conic` (exact, SOCP via
-    /// Clarabel; limit analysis only).
-    #[arg(long, value_enum, default_value = "linear")]
-    pub crushing: CrushingArg,
-    /// Facets of the inscribed crushing polygon.
-    #[arg(long, default_value_t = 16)]
-    pub facets: usize,
-    /// How to read a `.dxf` model.
     #[command(flatten)]
     pub dxf: crate::import::DxfArgs,
-    /// Settlement analyses: solve both LPs (default), or only the force LP (`force-only`: 3 rows
-    /// per block, the mechanism from its duals, the certificate from both sides; for large
-    /// models, with --method clarabel).
-    #[arg(long, value_enum, default_value = "both")]
-    pub settlement_form: FormArg,
+    #[command(flatten)]
+    pub solver: SolverArgs,
 }
 
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+// The LP solver.
+#[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Solver")]
+pub struct SolverArgs {
+    /// LP method.
+    #[arg(long, value_enum, default_value = "dual-simplex", ignore_case = true)]
+    pub method: MethodArg,
+}
+
+/// Finite-strength (crushing) model of a limit analysis.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CrushingArg {
+    /// Inscribed polygon of the crushing domain with --facets chords: a linear program
+    /// (HiGHS), slightly safe.
+    #[value(alias = "polygon", alias = "lp")]
     Linear,
+    /// The exact crushing cone: a second-order cone program (Clarabel).
+    #[value(alias = "cone", alias = "socp", alias = "exact")]
     Conic,
 }
 
 /// Which LPs a settlement analysis solves.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum FormArg {
+    /// The kinematic LP and the force LP; the certificate compares their optima.
     #[default]
+    #[value(alias = "primal-dual")]
     Both,
+    /// Only the force LP (3 rows per block); the mechanism from its duals, the certificate from
+    /// both sides. For large models, with --method clarabel.
+    #[value(alias = "force", alias = "forces-only", alias = "dual-only")]
     ForceOnly,
 }
 
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+impl FormArg {
+    pub fn form(self) -> voussoir::analysis::settlement::SettlementForm {
+        match self {
+            FormArg::Both => voussoir::analysis::settlement::SettlementForm::Both,
+            FormArg::ForceOnly => voussoir::analysis::settlement::SettlementForm::ForceOnly,
+        }
+    }
+}
+
+// `--settlement-form`: only on the commands that run settlement LPs (`settle`, `sweep`).
+#[derive(Args, Clone, Debug)]
+pub struct FormArgs {
+    /// Which programs a settlement analysis solves.
+    #[arg(long, value_enum, default_value = "both", ignore_case = true)]
+    pub settlement_form: FormArg,
+}
+
+// A model input with the settlement form (`sweep`): reads as [`ModelArgs`] (the sweep engine
+// uses `a.model.tolerance`, `a.model.solver()`, …) plus [`SettleModelArgs::settlement_form`].
+#[derive(Args, Clone, Debug)]
+pub struct SettleModelArgs {
+    #[command(flatten)]
+    pub base: ModelArgs,
+    #[command(flatten)]
+    pub form: FormArgs,
+}
+
+impl std::ops::Deref for SettleModelArgs {
+    type Target = ModelArgs;
+    fn deref(&self) -> &ModelArgs {
+        &self.base
+    }
+}
+
+impl SettleModelArgs {
+    /// The settlement form chosen by `--settlement-form`.
+    pub fn settlement_form(&self) -> voussoir::analysis::settlement::SettlementForm {
+        self.form.settlement_form.form()
+    }
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MethodArg {
+    /// HiGHS dual simplex (default): an exact vertex, so crisp mechanisms and hinges.
+    #[value(alias = "dual", alias = "simplex")]
     DualSimplex,
+    /// HiGHS primal simplex: an exact vertex too; sometimes faster on settlement LPs.
+    #[value(alias = "primal")]
     PrimalSimplex,
+    /// HiGHS interior point with crossover to a vertex: for large models.
+    #[value(alias = "interior-point", alias = "barrier")]
     Ipm,
+    /// HiGHS chooses between simplex and interior point by the problem's size.
+    #[value(alias = "auto")]
     Choose,
-    /// Interior point without crossover (HiGHS).
+    /// HiGHS interior point without crossover: faster, the solution may not be a vertex.
     IpmNoCrossover,
-    /// First-order PDLP (HiGHS; low accuracy).
+    /// HiGHS first-order PDLP: low accuracy, for experiments on very large models.
     Pdlp,
     /// Clarabel's interior point: fastest on large models (see docs/performance.md).
     Clarabel,
 }
 
+// The support motion of a settlement: moves, fixed supports, a profile.
 #[derive(Args, Clone, Debug, Default)]
 pub struct SettleArgs {
-    /// Prescribed motion of a support: NAME=u,v[,θ] with u, v in metres (v up) and θ in
-    /// degrees counter-clockwise about the support's centroid. Repeatable.
+    /// Prescribed motion of a support: NAME=u,v[,θ] with u, v in m or with a unit (v up;
+    /// `right=0,-5mm`) and θ in degrees counter-clockwise about the support's centroid.
+    /// Repeatable.
     #[arg(long = "move", value_name = "NAME=U,V[,THETA]")]
     pub moves: Vec<String>,
     /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
     pub fixed: Vec<String>,
     /// Vertical settlement profile along x (m) applied to every support by its centroid:
-    /// uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…  (v up, so a settlement is < 0).
-    #[arg(long)]
+    /// uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…  (all in m; v up, so a
+    /// settlement is < 0).
+    #[arg(long, value_name = "KIND:NUMBERS")]
     pub profile: Option<String>,
 }
 
+/// A length in metres from the command line: a number in m, or with a unit `mm`, `cm` or `m`.
+pub fn signed_length(s: &str) -> Option<f64> {
+    let t = s.trim();
+    let (num, factor) = if let Some(n) = t.strip_suffix("mm") {
+        (n, 1e-3)
+    } else if let Some(n) = t.strip_suffix("cm") {
+        (n, 1e-2)
+    } else if let Some(n) = t.strip_suffix('m') {
+        (n, 1.0)
+    } else {
+        (t, 1.0)
+    };
+    num.trim().parse::<f64>().ok().map(|x| x * factor)
+}
+
+/// A support motion resolved from the flags: every value parsed and checked.
+#[derive(Clone, Debug, Default)]
+pub struct Motion {
+    pub fixed: Vec<String>,
+    /// (support, [u, v, θ]) with θ in radians.
+    pub moves: Vec<(String, [f64; 3])>,
+    pub profile: Option<Profile>,
+}
+
 impl SettleArgs {
-    /// Apply the moves, fixed supports and profile to a model.
-    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
-        for f in &self.fixed {
-            fix_support(model, f)?;
-        }
+    /// Parse every `--move` and `--profile` (before any work).
+    pub fn resolve(&self) -> Result<Motion, Fail> {
+        let mut moves = Vec::new();
         for m in &self.moves {
             let (name, vals) = m
                 .split_once('=')
                 .ok_or_else(|| Fail(format!("--move {m}: expected NAME=u,v[,θ]")))?;
+            // u and v may carry a length unit (`-2.5mm`, `1cm`; bare numbers are metres).
             let nums: Vec<f64> = vals
                 .split(',')
-                .map(|x| x.trim().parse::<f64>())
-                .collect::<Result<_, _>>()
-                .map_err(|_| Fail(format!("--move {m}: u, v and θ must be numbers")))?;
+                .enumerate()
+                .map(|(k, x)| {
+                    if k < 2 {
+                        signed_length(x)
+                    } else {
+                        x.trim().parse::<f64>().ok()
+                    }
+                })
+                .collect::<Option<_>>()
+                .ok_or_else(|| Fail(format!("--move {m}: u, v and θ must be numbers")))?;
             let motion = match nums.as_slice() {
                 [u, v] => [*u, *v, 0.0],
                 [u, v, t] => [*u, *v, t.to_radians()],
                 _ => return Err(Fail(format!("--move {m}: expected NAME=u,v[,θ]"))),
             };
-            move_support(model, name, motion)?;
+            if motion.iter().any(|x| !x.is_finite()) {
+                return Err(Fail(format!("--move {m}: u, v and θ must be finite")));
+            }
+            moves.push((name.to_string(), motion));
+        }
+        let profile = match &self.profile {
+            Some(p) => Some(parse_profile(p)?),
+            None => None,
+        };
+        Ok(Motion {
+            fixed: self.fixed.clone(),
+            moves,
+            profile,
+        })
+    }
+
+    /// Apply the moves, fixed supports and profile to a model.
+    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+        self.resolve()?.apply(model)
+    }
+}
+
+impl Motion {
+    /// Apply the moves, fixed supports and profile to a model.
+    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+        for f in &self.fixed {
+            fix_support(model, f)?;
+        }
+        for (name, motion) in &self.moves {
+            move_support(model, name, *motion)?;
         }
         if let Some(p) = &self.profile {
-            apply_profile(model, &parse_profile(p)?)?;
+            apply_profile(model, p)?;
         }
         Ok(())
     }
 }
 
+/// Whether any support of a model moves.
+pub fn has_support_motion(model: &Model) -> bool {
+    model
+        .supports
+        .iter()
+        .any(|s| s.motion.iter().any(|x| *x != 0.0))
+}
+
+/// The model input resolved from the flags: every value checked, before any work.
+#[derive(Clone, Debug)]
+pub struct Input {
+    pub path: PathBuf,
+    pub build: BuildOptions,
+    pub friction: Option<f64>,
+    pub compressive_strength: Option<f64>,
+    pub dxf: crate::import::DxfArgs,
+    pub solver: SolverOptions,
+}
+
 impl ModelArgs {
-    /// The settlement form chosen by `--settlement-form`.
-    pub fn settlement_form(&self) -> voussoir::analysis::settlement::SettlementForm {
-        match self.settlement_form {
-            FormArg::Both => voussoir::analysis::settlement::SettlementForm::Both,
-            FormArg::ForceOnly => voussoir::analysis::settlement::SettlementForm::ForceOnly,
+    /// Check every model-input flag: numbers in range; DXF flags only with a `.dxf` model.
+    pub fn resolve(&self) -> Result<Input, Fail> {
+        if let Some(t) = self.tolerance {
+            if !(t.is_finite() && t > 0.0) {
+                return Err(Fail(format!(
+                    "--tolerance {t}: must be a finite number > 0"
+                )));
+            }
         }
+        check_materials(self.friction, self.compressive_strength)?;
+        if !voussoir_io::dxf::is_dxf(&self.model) {
+            if let Some(flag) = self.dxf.given() {
+                return Err(Fail(format!(
+                    "{flag} applies to DXF drawings only, and {} is not a .dxf file",
+                    self.model.display()
+                )));
+            }
+        }
+        self.dxf.check()?;
+        Ok(Input {
+            path: self.model.clone(),
+            build: BuildOptions {
+                tolerance: self.tolerance,
+            },
+            friction: self.friction,
+            compressive_strength: self.compressive_strength,
+            dxf: self.dxf.clone(),
+            solver: self.solver(),
+        })
     }
 
     pub fn solver(&self) -> SolverOptions {
         SolverOptions {
-            method: match self.method {
+            method: match self.solver.method {
                 MethodArg::DualSimplex => Method::DualSimplex,
                 MethodArg::PrimalSimplex => Method::PrimalSimplex,
                 MethodArg::Ipm => Method::Ipm,
@@ -163,98 +326,89 @@ impl ModelArgs {
         }
     }
 
-    pub fn load(&self) -> Result<Model, Fail> {
-        let mut m = self.dxf.read(&self.model)?.0;
-        self.override_materials(&mut m)?;
-        Ok(m)
-    }
-
     /// Apply `--friction` and `--compressive-strength` to every material (the implicit
     /// `default` one included).
     pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
-        if let Some(mu) = self.friction {
-            if !(mu.is_finite() && mu >= 0.0) {
-                return Err(Fail(format!(
-                    "--friction {mu}: must be a finite number ≥ 0"
-                )));
-            }
-        }
-        if let Some(f) = self.compressive_strength {
-            if !(f.is_finite() && f > 0.0) {
-                return Err(Fail(format!(
-                    "--compressive-strength {f}: must be a finite number > 0 (kPa)"
-                )));
-            }
-        }
-        if self.friction.is_none() && self.compressive_strength.is_none() {
-            return Ok(());
-        }
-        m.materials.entry("default".to_string()).or_default();
-        for mat in m.materials.values_mut() {
-            if self.friction.is_some() {
-                mat.friction = self.friction;
-            }
-            if self.compressive_strength.is_some() {
-                mat.compressive_strength = self.compressive_strength;
-            }
-        }
+        check_materials(self.friction, self.compressive_strength)?;
+        apply_materials(m, self.friction, self.compressive_strength);
         Ok(())
-    }
-
-    /// Limit analysis with the chosen crushing model.
-    pub fn limit(
-        &self,
-        st: &Structure,
-        opts: &SolverOptions,
-    ) -> Result<voussoir::analysis::LimitResult, Fail> {
-        let crushing = match self.crushing {
-            CrushingArg::Linear => voussoir::analysis::limit::Crushing::Linear,
-            CrushingArg::Conic => voussoir::analysis::limit::Crushing::Conic,
-        };
-        Ok(voussoir::analysis::limit::limit_with(
-            st,
-            opts,
-            crushing,
-            self.facets,
-        )?)
-    }
-
-    /// Load, apply settlement flags, validate and discretise.
-    pub fn structure(
-        &self,
-        settle: Option<&SettleArgs>,
-    ) -> Result<(Structure, SolverOptions), Fail> {
-        let mut model = self.load()?;
-        if let Some(s) = settle {
-            s.apply(&mut model)?;
-        }
-        let st = Structure::new(
-            &model,
-            BuildOptions {
-                tolerance: self.tolerance,
-            },
-        )?;
-        Ok((st, self.solver()))
     }
 }
 
+fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
+    if let Some(mu) = friction {
+        if !(mu.is_finite() && mu >= 0.0) {
+            return Err(Fail(format!(
+                "--friction {mu}: must be a finite number ≥ 0"
+            )));
+        }
+    }
+    if let Some(f) = fc {
+        if !(f.is_finite() && f > 0.0) {
+            return Err(Fail(format!(
+                "--compressive-strength {f}: must be a finite number > 0 (kPa)"
+            )));
+        }
+    }
+    Ok(())
+}
+
+fn apply_materials(m: &mut Model, friction: Option<f64>, fc: Option<f64>) {
+    if friction.is_none() && fc.is_none() {
+        return;
+    }
+    m.materials.entry("default".to_string()).or_default();
+    for mat in m.materials.values_mut() {
+        if friction.is_some() {
+            mat.friction = friction;
+        }
+        if fc.is_some() {
+            mat.compressive_strength = fc;
+        }
+    }
+}
+
+impl Input {
+    /// Read the model (JSON, or DXF by extension) and apply the material overrides.
+    pub fn load(&self) -> Result<Model, Fail> {
+        let mut m = self.dxf.read(&self.path)?.0;
+        apply_materials(&mut m, self.friction, self.compressive_strength);
+        Ok(m)
+    }
+
+    /// Load, apply a support motion, validate and discretise.
+    pub fn structure(&self, motion: Option<&Motion>) -> Result<Structure, Fail> {
+        let mut model = self.load()?;
+        if let Some(s) = motion {
+            s.apply(&mut model)?;
+        }
+        Ok(Structure::new(&model, self.build)?)
+    }
+}
+
+// Output of an analysis: the summary or the JSON result on stdout, the JSON result in a file.
 #[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Output")]
 pub struct OutArgs {
-    /// Print the full result as JSON on stdout (instead of the summary).
+    /// Print the full result as JSON on stdout instead of the human summary. The rule: stdout
+    /// gets the summary, or the JSON with --json; -o writes the JSON to a file in either case
+    /// (so `--json -o r.json` gives the same JSON on stdout and in r.json).
     #[arg(long)]
     pub json: bool,
-    /// Write the full JSON result to this file (the summary still goes to stdout).
+    /// Also write the full JSON result to FILE (read back by `voussoir plot`).
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<PathBuf>,
 }
 
 impl OutArgs {
+    /// The one rule of --json and -o: the file (if any) gets the JSON; stdout gets the JSON with
+    /// --json, else the summary.
     pub fn emit<T: Serialize>(&self, result: &T, summary: impl Fn() -> String) -> Result<(), Fail> {
         let json = voussoir_io::files::to_json(result)?;
         if let Some(path) = &self.output {
-            voussoir_io::write_atomic(path, json.as_bytes())?;
+            crate::outputs::stage(path, json.as_bytes())?;
         }
-        if self.json && self.output.is_none() {
+        if self.json {
             out(&json);
         } else {
             out(&summary());

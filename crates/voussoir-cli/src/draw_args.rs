@@ -1,47 +1,79 @@
 //! Drawing flags shared by the analysis commands (`--svg`, `--png`, `--report`, `--scale`,
-//! `--forces`). Flatten [`DrawArgs`] into a command and call one of its `emit_*` methods.
+//! `--title`; `--forces` in [`ForcesArgs`], only where the figure is a structure). Flatten
+//! [`DrawArgs`] into a command and call one of its `emit_*` methods.
 
 use crate::common::Fail;
 use clap::Args;
 use std::path::{Path, PathBuf};
+use voussoir::analysis::tilt::TiltResult;
 use voussoir::analysis::{CapacityResult, IncrementalResult, LimitResult, SettlementResult};
 use voussoir_io::draw::{self, DrawOptions, Report, ReportOptions, Scene};
 
+// Figures and reports. The figure is the structure (deformed configuration, hinges, cracks,
+// thrust line) for `limit`, `settle` and `tilt`, and the λ curve for `capacity` and
+// `incremental`; the report holds every figure.
 #[derive(Args, Clone, Debug, Default)]
+#[command(next_help_heading = "Drawing")]
 pub struct DrawArgs {
-    /// Draw the result (deformed configuration, hinges, cracks, thrust line) as SVG.
+    /// Draw the result as SVG: the mechanism for limit, settle and tilt; the λ curve for
+    /// capacity and incremental.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
-    /// Draw the result as PNG (rendered from the same SVG, bundled font).
+    /// Draw the same figure as PNG (rendered from the SVG, bundled font).
     #[arg(long, value_name = "FILE")]
     pub png: Option<PathBuf>,
     /// Write a self-contained HTML report (key numbers, tables, every figure).
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
-    /// Displacement scale factor of the deformed drawing (default: automatic, shown in the
-    /// figure). Limit mechanisms are normalised, settlement mechanisms are in metres.
+    /// Displacement scale factor of the deformed drawing (dimensionless; default: automatic,
+    /// shown in the figure). Limit mechanisms are normalised, settlement mechanisms are in m;
+    /// for capacity and incremental, the mechanism figures of the report.
     #[arg(long, value_name = "S")]
     pub scale: Option<f64>,
-    /// Also draw contact-force resultants as arrows (length ∝ magnitude).
-    #[arg(long)]
+    /// Contact-force arrows: set from [`ForcesArgs`] by the commands whose figure is a structure
+    /// (limit, settle, tilt); the curve figures of capacity and incremental have none.
+    #[arg(skip)]
     pub forces: bool,
     /// Title of the drawing (default: by analysis).
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
 }
 
+// `--forces`: only on the commands whose figure is the structure (limit, settle, tilt).
+#[derive(Args, Clone, Debug, Default)]
+#[command(next_help_heading = "Drawing")]
+pub struct ForcesArgs {
+    /// Also draw contact-force resultants as arrows (length ∝ magnitude, kN).
+    #[arg(long)]
+    pub forces: bool,
+}
+
 impl DrawArgs {
+    /// These drawing flags with `--forces`.
+    pub fn with(&self, f: &ForcesArgs) -> DrawArgs {
+        DrawArgs {
+            forces: f.forces,
+            ..self.clone()
+        }
+    }
+
     /// Whether any drawing output was asked for.
     pub fn any(&self) -> bool {
         self.svg.is_some() || self.png.is_some() || self.report.is_some()
     }
 
-    pub fn options(&self) -> Result<DrawOptions, Fail> {
+    /// Check the flags (before any work).
+    pub fn check(&self) -> Result<(), Fail> {
         if let Some(s) = self.scale {
             if !(s.is_finite() && s >= 0.0) {
                 return Err(Fail(format!("--scale {s}: expected a finite number ≥ 0")));
             }
         }
+        Ok(())
+    }
+
+    pub fn options(&self) -> Result<DrawOptions, Fail> {
+        self.check()?;
         Ok(DrawOptions {
             scale: self.scale,
             forces: self.forces,
@@ -72,7 +104,7 @@ impl DrawArgs {
             write_drawing(&d.svg, self.svg.as_deref(), self.png.as_deref())?;
         }
         if let Some(path) = &self.report {
-            voussoir_io::write_atomic(path, report().to_html().as_bytes())?;
+            crate::outputs::stage(path, report().to_html().as_bytes())?;
         }
         Ok(())
     }
@@ -81,6 +113,25 @@ impl DrawArgs {
         self.emit_scene(Scene::limit(r), || {
             draw::limit_report(r, &self.report_options(source))
         })
+    }
+
+    /// Tilting table: the collapse mechanism at the critical tilt (the live load is the
+    /// horizontal λ·W of every block, λ = tan α); the report is the limit analysis' report.
+    pub fn emit_tilt(&self, r: &TiltResult, source: &Path) -> Result<(), Fail> {
+        let mut scene = Scene::limit(&r.limit);
+        let towards = if r.direction > 0.0 { "+x" } else { "−x" };
+        if let Some(a) = r.tilt_angle {
+            scene.title = format!("Tilting table: collapse mechanism towards {towards}");
+            scene.info.insert(
+                0,
+                format!("critical tilt angle α = {a:.3}°   ·   live load: horizontal, λ = tan α"),
+            );
+        }
+        let mut ro = self.report_options(source);
+        if ro.title.is_none() {
+            ro.title = Some(scene.title.clone());
+        }
+        self.emit_scene(scene, || draw::limit_report(&r.limit, &ro))
     }
 
     /// Capacity analysis: the figure is the λ–settlement curve; the report adds the settlement
@@ -115,7 +166,7 @@ impl DrawArgs {
             write_drawing(&svg(title), self.svg.as_deref(), self.png.as_deref())?;
         }
         if let Some(path) = &self.report {
-            voussoir_io::write_atomic(path, html().as_bytes())?;
+            crate::outputs::stage(path, html().as_bytes())?;
         }
         Ok(())
     }
@@ -134,11 +185,11 @@ pub fn write_drawing(
     png_path: Option<&Path>,
 ) -> Result<(), Fail> {
     if let Some(p) = svg_path {
-        voussoir_io::write_atomic(p, svg.as_bytes())?;
+        crate::outputs::stage(p, svg.as_bytes())?;
     }
     if let Some(p) = png_path {
         let png = draw::svg_to_png(svg, draw::PNG_ZOOM)?;
-        voussoir_io::write_atomic(p, &png)?;
+        crate::outputs::stage(p, &png)?;
     }
     Ok(())
 }

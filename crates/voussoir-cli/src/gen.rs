@@ -19,6 +19,7 @@ pub enum Gen {
     Wall(WallArgs),
     /// A façade with pointed doors, rose and rectangular windows (default: the paper's Fig 18
     /// church façade, 22 m × 19 m), meshed as a grid or a running bond on segments f0, f1, ….
+    #[command(alias = "façade")]
     Facade(FacadeArgs),
 }
 
@@ -31,22 +32,49 @@ pub struct Output {
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum ShapeArg {
+    /// Half a circle: springings at the level of the centre.
+    #[value(alias = "semi-circular", alias = "round")]
     Semicircular,
+    /// A circular arc of less than 180° (see --half-angle).
+    #[value(alias = "segmented", alias = "segment")]
     Segmental,
+    /// Two circular arcs meeting at the crown (see --offset).
+    #[value(alias = "gothic", alias = "ogival")]
     Pointed,
 }
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum RadiusAtArg {
+    /// The inner (lower) face of the ring.
+    #[value(alias = "inner", alias = "soffit")]
     Intrados,
+    /// The middle of the ring's thickness (also spelled centerline, centre-line, center).
+    #[value(
+        alias = "centerline",
+        alias = "centre-line",
+        alias = "center-line",
+        alias = "centre",
+        alias = "center",
+        alias = "middle",
+        alias = "midline"
+    )]
     Centreline,
+    /// The outer (upper) face of the ring.
+    #[value(alias = "outer")]
     Extrados,
 }
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum LiveArg {
+    /// No live load.
     None,
+    /// Vertical, on the whole span (arch: the extrados; wall: 1 kN/m² on the top course).
+    #[value(alias = "uniform", alias = "all")]
     Full,
+    /// Vertical, on the left half of the span (arch).
     Left,
+    /// Vertical, on the right half of the span (arch).
     Right,
+    /// Horizontal, equal to each block's weight, along +x (tilting table).
+    #[value(alias = "tilt", alias = "seismic")]
     Horizontal,
 }
 impl From<LiveArg> for LiveLoad {
@@ -64,13 +92,13 @@ impl From<LiveArg> for LiveLoad {
 #[derive(Args)]
 pub struct ArchArgs {
     /// Shape of the arch.
-    #[arg(long, value_enum, default_value = "semicircular")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "semicircular")]
     pub shape: ShapeArg,
     /// Radius in m (where: see --radius-at).
     #[arg(long, default_value_t = 2.86)]
     pub radius: f64,
     /// Where the radius is measured.
-    #[arg(long, value_enum, default_value = "intrados")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "intrados")]
     pub radius_at: RadiusAtArg,
     /// Ring thickness in m.
     #[arg(long, default_value_t = 0.33)]
@@ -86,7 +114,7 @@ pub struct ArchArgs {
     pub width: f64,
     /// Live load: none, full span, left or right half (vertical, on the extrados), or
     /// horizontal (equal to each block's weight).
-    #[arg(long, value_enum, default_value = "none")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "none")]
     pub live: LiveArg,
     /// Live load intensity q in kN/m² per unit horizontal projection of the extrados.
     #[arg(long, default_value_t = 1.0)]
@@ -131,7 +159,9 @@ pub struct LintelArgs {
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum FirstCourseArg {
+    /// The first course is made of full units.
     Full,
+    /// The first course starts with a half unit.
     Half,
 }
 
@@ -147,7 +177,7 @@ pub struct WallArgs {
     #[arg(long, default_value = "0.4,0.175")]
     pub unit: String,
     /// Whether the first course is made of full units or starts with half units.
-    #[arg(long, value_enum, default_value = "full")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "full")]
     pub first_course: FirstCourseArg,
     /// Unit weight γ in kN/m³.
     #[arg(long, default_value_t = 18.0)]
@@ -157,7 +187,7 @@ pub struct WallArgs {
     pub width: f64,
     /// Live load: none, horizontal (tilting table: each block's weight, along +x) or full
     /// (1 kN/m² on the top course).
-    #[arg(long, value_enum, default_value = "none")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "none")]
     pub live: LiveArg,
     #[command(flatten)]
     pub out: Output,
@@ -167,7 +197,7 @@ fn write(model: &Model, out: &Output) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(model)?;
     match &out.output {
         Some(p) => {
-            voussoir_io::write_atomic(p, json.as_bytes())?;
+            crate::outputs::stage(p, json.as_bytes())?;
             eprintln!(
                 "wrote {} ({} blocks, {} supports)",
                 p.display(),
@@ -260,24 +290,34 @@ pub fn run(g: Gen) -> Result<(), Fail> {
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum FacadeMeshArg {
+    /// A grid of rectangular elements (continuous head joints).
     Grid,
+    /// A running bond (head joints staggered by half an element).
+    #[value(
+        alias = "running",
+        alias = "bond",
+        alias = "runningbond",
+        alias = "stretcher-bond"
+    )]
     RunningBond,
 }
 
 #[derive(Args)]
 pub struct FacadeArgs {
     /// Element size in m: LENGTH[,HEIGHT] (height default: half the length).
-    #[arg(long, default_value = "0.5")]
+    #[arg(long, default_value = "0.5", value_name = "LENGTH[,HEIGHT]")]
     pub element: String,
     /// Mesh of the wall.
-    #[arg(long, value_enum, default_value = "grid")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "grid")]
     pub mesh: FacadeMeshArg,
-    /// Wall width, eaves height and gable height in m (default: the paper's façade).
-    #[arg(long, default_value_t = 22.0)]
+    /// Wall width in m (default: the paper's façade).
+    #[arg(long, default_value_t = 22.0, value_name = "M")]
     pub width: f64,
-    #[arg(long, default_value_t = 14.0)]
+    /// Eaves height in m.
+    #[arg(long, default_value_t = 14.0, value_name = "M")]
     pub height: f64,
-    #[arg(long, default_value_t = 5.0)]
+    /// Gable height above the eaves in m.
+    #[arg(long, default_value_t = 5.0, value_name = "M")]
     pub gable: f64,
     /// Openings replacing the default ones (repeatable): door:X,WIDTH,SPRINGING[,OFFSET,RING] |
     /// rose:X,Y,RADIUS[,RING] | rect:X0,Y0,X1,Y1 (metres).
@@ -286,13 +326,14 @@ pub struct FacadeArgs {
     /// Number of foundation segments.
     #[arg(long, default_value_t = 44)]
     pub segments: usize,
-    /// Unit weight γ in kN/m³ and out-of-plane thickness in m.
-    #[arg(long, default_value_t = 18.0)]
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0, value_name = "KN_M3")]
     pub unit_weight: f64,
-    #[arg(long, default_value_t = 1.0)]
+    /// Out-of-plane thickness in m.
+    #[arg(long, default_value_t = 1.0, value_name = "M")]
     pub thickness: f64,
     /// Live load: none or horizontal (tilting table).
-    #[arg(long, value_enum, default_value = "none")]
+    #[arg(long, value_enum, ignore_case = true, default_value = "none")]
     pub live: LiveArg,
     #[command(flatten)]
     pub out: Output,

@@ -11,12 +11,10 @@ use voussoir::analysis::incremental::{
 
 #[derive(Args)]
 pub struct IncrementalArgs {
-    #[command(flatten)]
-    pub model: ModelArgs,
     /// Control point x,y (m): the block containing it, or the nearest one, carries it.
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub control: String,
-    /// Direction along which the control displacement is measured.
+    /// Direction along which the control displacement is measured (a vector, any length).
     #[arg(
         long,
         value_name = "DX,DY",
@@ -24,21 +22,23 @@ pub struct IncrementalArgs {
         allow_hyphen_values = true
     )]
     pub direction: String,
-    /// Largest control displacement (m).
-    #[arg(long, default_value_t = 0.05)]
+    /// Largest control displacement: a length with its unit (50mm, 5cm, 0.05m; a bare number is
+    /// in m). This analysis reports displacements in mm.
+    #[arg(long, value_name = "LENGTH", default_value = "50mm", value_parser = length)]
     pub max: f64,
-    /// Control displacement per step (m).
-    #[arg(long, default_value_t = 0.0005)]
+    /// Control displacement per step: a length with its unit (0.5mm; a bare number is in m).
+    #[arg(long, value_name = "LENGTH", default_value = "0.5mm", value_parser = length)]
     pub step: f64,
-    /// Settle first: NAME=u,v[,θ] (m, θ in degrees), repeatable; the analysis starts from the
-    /// settled geometry with the settlement's cracks open.
+    /// Settle first: NAME=u,v[,θ] (u, v in m or with a unit, `right=0,-2.5mm`; θ in degrees),
+    /// repeatable; the analysis starts from the settled geometry with the settlement's cracks
+    /// open.
     #[arg(
         long = "settle",
         value_name = "NAME=U,V[,THETA]",
         allow_hyphen_values = true
     )]
     pub settle: Vec<String>,
-    /// Tie the blocks to this support for the settlement analysis. Repeatable.
+    /// Tie the blocks to this support for the settlement analysis (with --settle). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
     pub fixed: Vec<String>,
     /// Keep `fixed` supports tied after the settlement (default: contact joints).
@@ -51,10 +51,21 @@ pub struct IncrementalArgs {
     #[arg(long)]
     pub no_stop: bool,
     #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
     pub out: OutArgs,
-    /// `--svg`/`--png`: the curve; `--report`: an HTML report with the mechanisms.
     #[command(flatten)]
     pub draw: crate::draw_args::DrawArgs,
+}
+
+/// A positive length on the command line: a number in metres, or with a unit `mm`, `cm` or `m`.
+pub fn length(s: &str) -> Result<f64, String> {
+    match crate::common::signed_length(s) {
+        Some(x) if x.is_finite() && x > 0.0 => Ok(x),
+        _ => Err(format!(
+            "expected a positive length such as 50mm, 5cm or 0.05 (m), got '{s}'"
+        )),
+    }
 }
 
 fn pair(flag: &str, s: &str) -> Result<[f64; 2], Fail> {
@@ -77,18 +88,35 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     if a.settle.is_empty() && !a.fixed.is_empty() {
         return Err(Fail("--fixed only applies with --settle".into()));
     }
-    let settle_args = SettleArgs {
+    if a.settle.is_empty() && a.keep_fixed {
+        return Err(Fail("--keep-fixed only applies with --settle".into()));
+    }
+    if a.step > a.max {
+        return Err(Fail(format!(
+            "--step {} mm is larger than --max {} mm",
+            a.step * 1e3,
+            a.max * 1e3
+        )));
+    }
+    a.draw.check()?;
+    let input = a.model.resolve()?;
+    let motion = SettleArgs {
         moves: a.settle.clone(),
         fixed: a.fixed.clone(),
         profile: None,
-    };
-    let (st, solver) = a.model.structure(Some(&settle_args))?;
+    }
+    .resolve()?;
+    let solver = input.solver;
+    let st = input.structure(Some(&motion))?;
     let start = if a.settle.is_empty() {
         st.clone()
     } else {
         settled(&st, &solver, !a.keep_fixed)?
     };
-    let control = Control::nearest(&start, x, dir)?;
+    // The block that carries the control point is chosen on the undeformed structure, so that
+    // a point on a joint (the crown) names the same block with and without --settle.
+    let block = Control::nearest(&st, x, dir)?.block;
+    let control = Control::new(&start, block, x, dir)?;
     let opts = IncrementalOptions {
         step: a.step,
         max_displacement: a.max,
@@ -117,7 +145,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     } else {
         incremental_with(&start, &control, &opts, &mut |_| {})?
     };
-    a.draw.emit_incremental(&r, &a.model.model)?;
+    a.draw.emit_incremental(&r, &input.path)?;
     a.out.emit(&r, || summary(&start, &r))
 }
 

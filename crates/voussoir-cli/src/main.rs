@@ -5,15 +5,19 @@ mod capacity;
 mod common;
 mod draw_args;
 mod gen;
+mod identify;
 mod import;
 mod incremental;
+mod limit;
+mod outputs;
 mod plot;
+mod settle;
 mod sweep;
 mod tilt;
 
-use clap::{Parser, Subcommand};
-use common::{Fail, ModelArgs, OutArgs, SettleArgs};
-use voussoir::analysis::settle;
+use clap::error::{ContextKind, ContextValue, ErrorKind};
+use clap::{CommandFactory, Parser, Subcommand};
+use common::Fail;
 
 #[derive(Parser)]
 #[command(
@@ -22,7 +26,10 @@ use voussoir::analysis::settle;
     about = "Masonry as rigid no-tension blocks in unilateral contact: settlement, limit analysis, capacity.",
     long_about = "Masonry as rigid no-tension blocks in unilateral contact (Heyman's hypotheses).\n\
         Units: metres, kilonewtons, kN/m³, kPa; angles in degrees on the command line.\n\
-        Models are JSON files (see the README for the schema); `voussoir gen` writes them."
+        Models are JSON files (see the README for the schema) or DXF drawings; `voussoir gen` \
+        writes JSON models.\n\
+        Each command lists its own flags first, then the shared groups (model input, DXF import, \
+        solver, output, drawing); a flag that does not apply to a command is refused."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -31,40 +38,16 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Generate a model (arch, lintel, wall) as JSON.
+    /// Generate a model (arch, lintel, wall, facade) as JSON.
     #[command(subcommand)]
     Gen(gen::Gen),
-    /// Time the pipeline (generation, detection, assembly, solve, output) on running-bond
-    /// walls of growing size.
-    Bench(bench::BenchArgs),
-    /// Many settlement analyses in parallel: magnitudes, directions or Monte Carlo samples of
-    /// the support motions; JSON lines and CSV; --shard I/N for array jobs.
-    Sweep(sweep::SweepArgs),
-    /// Merge the JSON-lines results of sweep shards.
-    Merge(sweep::MergeArgs),
     /// Import a DXF drawing (closed polylines = blocks) as a JSON model.
     Import(import::ImportArgs),
     /// Classic limit analysis: collapse load multiplier λ of the live loads and the mechanism.
-    Limit {
-        #[command(flatten)]
-        model: ModelArgs,
-        #[command(flatten)]
-        out: OutArgs,
-        #[command(flatten)]
-        draw: draw_args::DrawArgs,
-    },
+    Limit(limit::LimitArgs),
     /// Settlement analysis: mechanism (crack pattern) and contact forces for prescribed support
     /// motions, by the paper's primal and dual LPs, with the duality gap as a certificate.
-    Settle {
-        #[command(flatten)]
-        model: ModelArgs,
-        #[command(flatten)]
-        settle: SettleArgs,
-        #[command(flatten)]
-        out: OutArgs,
-        #[command(flatten)]
-        draw: draw_args::DrawArgs,
-    },
+    Settle(settle::SettleCmdArgs),
     /// Tilting-table analysis: the critical tilt angle (degrees) at which the structure
     /// collapses when its base is tilted (gravity rotated).
     Tilt(tilt::TiltArgs),
@@ -74,9 +57,20 @@ enum Command {
     /// Incremental (nonlinear kinematic) analysis: λ against the displacement of a control
     /// point as the mechanism evolves and cracks close.
     Incremental(incremental::IncrementalArgs),
+    /// Inverse settlement analysis: the support motions whose settlement mechanism opens the
+    /// observed cracks, with misfits, a forward-analysis certificate and identifiability.
+    Identify(identify::IdentifyArgs),
     /// Draw a saved result (limit, settlement, capacity, incremental; several curves on one
     /// plot) or a model: `-o fig.svg`, `fig.png` or `report.html`.
     Plot(plot::PlotArgs),
+    /// Many settlement analyses in parallel: magnitudes, directions or Monte Carlo samples of
+    /// the support motions; JSON lines and CSV; --shard I/N for array jobs (docs/sweep.md).
+    Sweep(sweep::SweepArgs),
+    /// Merge the JSON-lines results of sweep shards (docs/sweep.md).
+    Merge(sweep::MergeArgs),
+    /// Time the pipeline (generation, detection, assembly, solve, output) on running-bond
+    /// walls of growing size (docs/performance.md).
+    Bench(bench::BenchArgs),
 }
 
 fn run(cli: Cli) -> Result<(), Fail> {
@@ -86,36 +80,92 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Sweep(a) => sweep::run(a),
         Command::Merge(a) => sweep::merge(a),
         Command::Bench(a) => bench::run(a),
-        Command::Limit { model, out, draw } => {
-            let (st, opts) = model.structure(None)?;
-            let r = model.limit(&st, &opts)?;
-            draw.emit_limit(&r, &model.model)?;
-            out.emit(&r, || common::limit_summary(&st, &r))
-        }
-        Command::Settle {
-            model,
-            settle: s,
-            out,
-            draw,
-        } => {
-            let (st, opts) = model.structure(Some(&s))?;
-            let r = match model.settlement_form() {
-                voussoir::analysis::settlement::SettlementForm::Both => settle(&st, &opts)?,
-                form => voussoir::analysis::settlement::settle_with(&st, &opts, form)?,
-            };
-            draw.emit_settlement(&r, &model.model)?;
-            out.emit(&r, || common::settle_summary(&st, &r))
-        }
+        Command::Limit(a) => limit::run(a),
+        Command::Settle(a) => settle::run(a),
         Command::Capacity(a) => capacity::run(a),
         Command::Incremental(a) => incremental::run(a),
         Command::Plot(a) => plot::run(a),
         Command::Tilt(a) => tilt::run(a),
+        Command::Identify(a) => identify::run(a),
     }
 }
 
+/// The commands (`gen arch`, `limit`, …) that accept the long flag `--name`.
+fn commands_with_flag(cmd: &clap::Command, prefix: &str, name: &str, found: &mut Vec<String>) {
+    for sub in cmd.get_subcommands() {
+        let path = if prefix.is_empty() {
+            sub.get_name().to_string()
+        } else {
+            format!("{prefix} {}", sub.get_name())
+        };
+        if sub.get_arguments().any(|a| a.get_long() == Some(name)) {
+            found.push(path.clone());
+        }
+        commands_with_flag(sub, &path, name, found);
+    }
+}
+
+/// A command-line error as one line: clap's message without the usage block, and for a flag of
+/// another command, which commands take it.
+fn one_line(e: &clap::Error) -> String {
+    let args: Vec<String> = std::env::args().collect();
+    let mut sub = args.get(1).cloned().unwrap_or_default();
+    if sub == "gen" {
+        if let Some(kind) = args.get(2).filter(|k| !k.starts_with('-')) {
+            sub = format!("gen {kind}");
+        }
+    }
+    if e.kind() == ErrorKind::UnknownArgument {
+        if let Some(ContextValue::String(bad)) = e.get(ContextKind::InvalidArg) {
+            let flag = bad.split('=').next().unwrap_or(bad);
+            if let Some(name) = flag.strip_prefix("--") {
+                let mut found = Vec::new();
+                commands_with_flag(&Cli::command(), "", name, &mut found);
+                if !found.is_empty() {
+                    return format!(
+                        "error: {flag} does not apply to `voussoir {sub}`; it is a flag of {} (see `voussoir {sub} --help`)",
+                        found
+                            .iter()
+                            .map(|c| format!("`{c}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    );
+                }
+            }
+        }
+    }
+    let text = e.to_string();
+    let mut parts: Vec<String> = Vec::new();
+    for line in text.lines() {
+        let l = line.trim();
+        if l.starts_with("Usage:") || l.starts_with("For more information") {
+            break;
+        }
+        if !l.is_empty() {
+            parts.push(l.to_string());
+        }
+    }
+    let mut s = parts.join(" ").replace(" tip: ", "; tip: ");
+    if !sub.is_empty() && !sub.starts_with('-') {
+        s.push_str(&format!(" (see `voussoir {sub} --help`)"));
+    }
+    s
+}
+
 fn main() {
-    let cli = Cli::parse();
-    if let Err(e) = run(cli) {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => match e.kind() {
+            ErrorKind::DisplayHelp
+            | ErrorKind::DisplayVersion
+            | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => e.exit(),
+            _ => {
+                eprintln!("{}", one_line(&e));
+                std::process::exit(2);
+            }
+        },
+    };
+    if let Err(e) = run(cli).and_then(|()| outputs::commit()) {
         eprintln!("error: {e}");
         std::process::exit(1);
     }

@@ -41,6 +41,7 @@ pub struct PlotArgs {
 }
 
 fn read(path: &std::path::Path) -> Result<draw::Saved, Fail> {
+    crate::outputs::input(path);
     let text = std::fs::read_to_string(path)
         .map_err(|e| Fail(format!("cannot read {}: {e}", path.display())))?;
     draw::parse_saved(&text).map_err(|e| Fail(format!("{}: {}", path.display(), e.0)))
@@ -176,7 +177,7 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
                 scale: a.scale,
             };
             let html = draw::report_saved(&saved, &opts).to_html();
-            voussoir_io::write_atomic(&a.output, html.as_bytes())?;
+            crate::outputs::stage(&a.output, html.as_bytes())?;
             println!(
                 "wrote report of {} {} → {}",
                 saved.kind(),

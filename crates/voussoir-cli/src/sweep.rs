@@ -4,7 +4,7 @@
 //! `--shard i/n` runs only the tasks with index ≡ i (mod n), so that an array job can split a
 //! sweep; `voussoir merge` joins the shards' JSON lines.
 
-use crate::common::{Fail, ModelArgs, SettleArgs};
+use crate::common::{Fail, SettleArgs, SettleModelArgs};
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -13,13 +13,11 @@ use voussoir::BuildOptions;
 
 #[derive(Args)]
 pub struct SweepArgs {
-    #[command(flatten)]
-    pub model: ModelArgs,
     /// The base settlement: moves, fixed supports, profile (as for `settle`).
     #[command(flatten)]
     pub settle: SettleArgs,
     /// Magnitude sweep: the base motions scaled by k/STEPS, k = 1 … STEPS.
-    #[arg(long)]
+    #[arg(long, value_name = "STEPS")]
     pub steps: Option<usize>,
     /// Direction sweep: the `--move` vectors (u, v) rotated through N angles 360°·k/N.
     #[arg(long, value_name = "N")]
@@ -27,8 +25,8 @@ pub struct SweepArgs {
     /// Monte Carlo: N random settlement fields around the base motions.
     #[arg(long, value_name = "N")]
     pub samples: Option<usize>,
-    /// Monte Carlo: coefficient of variation of each support's motion.
-    #[arg(long, default_value_t = 0.3)]
+    /// Monte Carlo: coefficient of variation of each support's motion (dimensionless).
+    #[arg(long, default_value_t = 0.3, value_name = "COV")]
     pub cov: f64,
     /// Monte Carlo: random seed (the same seed gives the same samples on any machine).
     #[arg(long, default_value_t = 1)]
@@ -37,13 +35,16 @@ pub struct SweepArgs {
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
     /// Worker threads (default: one per core).
-    #[arg(long)]
+    #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
-    /// Write the results as JSON lines here.
-    #[arg(long, value_name = "FILE")]
+    /// Model input, DXF import, solver, and --settlement-form.
+    #[command(flatten)]
+    pub model: SettleModelArgs,
+    /// Write the results as JSON lines here (one analysis per line; lengths in m).
+    #[arg(long, value_name = "FILE", help_heading = "Output")]
     pub jsonl: Option<PathBuf>,
     /// Write the results as a CSV table here (default: stdout when no --jsonl is given).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", help_heading = "Output")]
     pub csv: Option<PathBuf>,
 }
 
@@ -79,10 +80,10 @@ fn write_outputs(
     cv: &Option<PathBuf>,
 ) -> Result<(), Fail> {
     if let Some(p) = jl {
-        voussoir_io::write_atomic(p, jsonl(records)?.as_bytes())?;
+        crate::outputs::stage(p, jsonl(records)?.as_bytes())?;
     }
     match cv {
-        Some(p) => voussoir_io::write_atomic(p, csv(records).as_bytes())?,
+        Some(p) => crate::outputs::stage(p, csv(records).as_bytes())?,
         None if jl.is_none() => print!("{}", csv(records)),
         None => {}
     }
@@ -90,6 +91,8 @@ fn write_outputs(
 }
 
 pub fn run(a: SweepArgs) -> Result<(), Fail> {
+    // Flags resolved before any work (a DXF flag on a JSON model, bad numbers).
+    a.model.resolve()?;
     let modes = [
         a.steps.is_some(),
         a.directions.is_some(),
@@ -170,6 +173,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
 pub fn merge(a: MergeArgs) -> Result<(), Fail> {
     let mut records: Vec<SweepRecord> = Vec::new();
     for p in &a.inputs {
+        crate::outputs::input(p);
         let text = std::fs::read_to_string(p)
             .map_err(|e| Fail(format!("cannot read {}: {e}", p.display())))?;
         for (i, line) in text

@@ -6,30 +6,45 @@ use std::fmt::Write as _;
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum TiltDirection {
-    #[value(name = "+x")]
+    /// Towards +x (to the right): the horizontal load λ·W points along +x.
+    #[value(name = "+x", alias = "x", alias = "right", alias = "positive")]
     PlusX,
-    #[value(name = "-x")]
+    /// Towards −x (to the left).
+    #[value(name = "-x", alias = "left", alias = "negative")]
     MinusX,
 }
 
 #[derive(Args)]
 pub struct TiltArgs {
-    #[command(flatten)]
-    pub model: ModelArgs,
     /// Direction the table tilts towards (the structure tends to fall that way).
-    #[arg(long, value_enum, default_value = "+x", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_enum,
+        default_value = "+x",
+        allow_hyphen_values = true,
+        ignore_case = true
+    )]
     pub direction: TiltDirection,
     #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
     pub out: OutArgs,
+    #[command(flatten)]
+    pub draw: crate::draw_args::DrawArgs,
+    #[command(flatten)]
+    pub forces: crate::draw_args::ForcesArgs,
 }
 
 pub fn run(a: TiltArgs) -> Result<(), Fail> {
-    let (st, opts) = a.model.structure(None)?;
+    a.draw.check()?;
+    let input = a.model.resolve()?;
     let dir = match a.direction {
         TiltDirection::PlusX => 1.0,
         TiltDirection::MinusX => -1.0,
     };
-    let r = voussoir::analysis::tilt::tilt(&st, dir, &opts)?;
+    let st = input.structure(None)?;
+    let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver)?;
+    a.draw.with(&a.forces).emit_tilt(&r, &input.path)?;
     a.out.emit(&r, || {
         let mut s = String::new();
         let _ = writeln!(s, "blocks {}, joints {}", st.blocks.len(), st.joints.len());

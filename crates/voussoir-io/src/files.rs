@@ -1,7 +1,8 @@
 //! Reading models and writing outputs. Outputs are written to a temporary file beside the
-//! target and renamed into place, so a failed run never leaves a partial file behind.
+//! target and renamed into place, so a failed run never leaves a partial file behind; several
+//! outputs of one run are committed all or nothing ([`write_all_or_nothing`]).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use voussoir::Model;
 
 /// An I/O or format error, one line.
@@ -33,13 +34,64 @@ pub fn parse_model(text: &str) -> Result<Model, IoError> {
     serde_json::from_str::<Model>(text).map_err(|e| IoError(format!("invalid model JSON: {e}")))
 }
 
-/// Write `bytes` to `path` atomically (temporary file + rename).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
-    let dir = path
+/// Where the bytes for `path` really go: a symbolic link is written through (its target is
+/// replaced, the link stays), and an existing target that is not a regular file (a device such
+/// as `/dev/full`, a directory, a pipe) is refused — replacing it by a regular file would
+/// damage the system.
+fn resolve_target(path: &Path) -> Result<PathBuf, IoError> {
+    let mut target = path.to_path_buf();
+    // Follow a chain of links (bounded, against loops).
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&target) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let link = std::fs::read_link(&target).map_err(|e| {
+                    IoError(format!("cannot read the link {}: {e}", target.display()))
+                })?;
+                target = match target.parent() {
+                    Some(dir) if link.is_relative() => dir.join(link),
+                    _ => link,
+                };
+            }
+            Ok(m) if !m.file_type().is_file() => {
+                return Err(IoError(format!(
+                    "refusing to write {}: it exists and is not a regular file",
+                    path.display()
+                )))
+            }
+            _ => return Ok(target),
+        }
+    }
+    Err(IoError(format!(
+        "cannot write {}: too many levels of links",
+        path.display()
+    )))
+}
+
+/// A temporary file beside a target, removed unless it was renamed into place.
+struct Staged {
+    tmp: PathBuf,
+    target: PathBuf,
+    shown: PathBuf,
+    done: bool,
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        if !self.done {
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
+}
+
+/// Write `bytes` to a temporary file beside the (resolved) target, with the target's
+/// permissions if it exists.
+fn stage(path: &Path, bytes: &[u8]) -> Result<Staged, IoError> {
+    let target = resolve_target(path)?;
+    let dir = target
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
-    let name = path
+    let name = target
         .file_name()
         .ok_or_else(|| IoError(format!("{} is not a file path", path.display())))?;
     let tmp = dir.join(format!(
@@ -47,12 +99,64 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
         name.to_string_lossy(),
         std::process::id()
     ));
-    std::fs::write(&tmp, bytes)
-        .map_err(|e| IoError(format!("cannot write {}: {e}", path.display())))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        IoError(format!("cannot write {}: {e}", path.display()))
-    })
+    let staged = Staged {
+        tmp,
+        target: target.clone(),
+        shown: path.to_path_buf(),
+        done: false,
+    };
+    let fail = |e: std::io::Error| IoError(format!("cannot write {}: {e}", path.display()));
+    {
+        use std::io::Write;
+        let mut f = std::fs::File::create(&staged.tmp).map_err(fail)?;
+        f.write_all(bytes).map_err(fail)?;
+        f.sync_all().map_err(fail)?;
+    }
+    if let Ok(m) = std::fs::metadata(&target) {
+        std::fs::set_permissions(&staged.tmp, m.permissions()).map_err(fail)?;
+    }
+    Ok(staged)
+}
+
+/// Write `bytes` to `path` atomically (temporary file + rename): a failed run leaves neither a
+/// partial file nor a temporary one, a link is written through, a file keeps its permissions,
+/// and a device or directory is never replaced.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
+    write_all_or_nothing(&[(path, bytes)], &[])
+}
+
+/// Write several outputs all or nothing: every one is staged first, and only when all are
+/// staged are they renamed into place. An output that names one of `inputs` (the same file,
+/// through links too) is refused before anything is written.
+pub fn write_all_or_nothing(outputs: &[(&Path, &[u8])], inputs: &[&Path]) -> Result<(), IoError> {
+    let same = |a: &Path, b: &Path| match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) => x == y,
+        _ => false,
+    };
+    for (p, _) in outputs {
+        if let Some(i) = inputs.iter().find(|i| same(p, i)) {
+            return Err(IoError(format!(
+                "refusing to write {}: it is the input {}",
+                p.display(),
+                i.display()
+            )));
+        }
+    }
+    for (k, (p, _)) in outputs.iter().enumerate() {
+        if outputs[..k].iter().any(|(q, _)| q == p || same(p, q)) {
+            return Err(IoError(format!("{} is named as two outputs", p.display())));
+        }
+    }
+    let mut staged = Vec::with_capacity(outputs.len());
+    for (p, bytes) in outputs {
+        staged.push(stage(p, bytes)?);
+    }
+    for s in staged.iter_mut() {
+        std::fs::rename(&s.tmp, &s.target)
+            .map_err(|e| IoError(format!("cannot write {}: {e}", s.shown.display())))?;
+        s.done = true;
+    }
+    Ok(())
 }
 
 /// Pretty JSON with a trailing newline (deterministic for the same value).

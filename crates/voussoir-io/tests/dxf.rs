@@ -1,9 +1,8 @@
-//! DXF import on the LACT3 sample drawings (read from ../shared/data/lact3 beside the repository;
-//! each test prints a notice and passes when the drawings are absent) and on small drawings
-//! written here.
+//! DXF import on the LACT3 sample drawings (copied into `tests/fixtures/lact3/`, source and
+//! licence in its README; a missing fixture fails the test) and on small drawings written here.
 //!
 //! Independent references:
-//! * block counts: `shared/data/lact3/SOURCE.md` (41, 183 and 26 polygons including the base);
+//! * block counts: `tests/fixtures/lact3/README.md` (41, 183 and 26 polygons including the base);
 //! * joint counts: a brute-force count of facing, collinear, overlapping edge pairs over all
 //!   pairs of edges, written separately in Python (see docs/import.md): Portal 87, wall 391;
 //!   arch_1 is a chain of 25 voussoirs between two springings of one base: 24 + 2 = 26;
@@ -22,16 +21,17 @@ use voussoir::model::Model;
 use voussoir::{BuildOptions, Structure};
 use voussoir_io::dxf::{parse_dxf, read_dxf, DxfOptions, ImportLive, Units};
 
-fn lact3(name: &str) -> Option<PathBuf> {
+/// A LACT3 drawing from the repository's fixtures; panics (fails the test) if it is missing.
+fn lact3(name: &str) -> PathBuf {
     let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/data/lact3")
+        .join("tests/fixtures/lact3")
         .join(name);
-    if p.exists() {
-        Some(p)
-    } else {
-        println!("NOTICE: {} is absent; skipping this test", p.display());
-        None
-    }
+    assert!(
+        p.is_file(),
+        "fixture {} is missing (see tests/fixtures/lact3/README.md)",
+        p.display()
+    );
+    p
 }
 
 fn mm() -> DxfOptions {
@@ -65,8 +65,8 @@ fn whole_overturning(st: &Structure) -> f64 {
     resist / drive
 }
 
-fn check(file: &str, blocks: usize, joints: usize) -> Option<(Model, Structure, f64)> {
-    let p = lact3(file)?;
+fn check(file: &str, blocks: usize, joints: usize) -> (Model, Structure, f64) {
+    let p = lact3(file);
     let (m, rep) = read_dxf(&p, &mm()).unwrap();
     assert_eq!(
         m.blocks.len() + m.supports.len(),
@@ -86,14 +86,12 @@ fn check(file: &str, blocks: usize, joints: usize) -> Option<(Model, Structure, 
         rep.summary(),
         st.joints.len()
     );
-    Some((m, st, l))
+    (m, st, l)
 }
 
 #[test]
 fn lact3_arch_matches_lact3_collapse_angle() {
-    let Some((m, _, l)) = check("arch_1.dxf", 26, 26) else {
-        return;
-    };
+    let (m, _, l) = check("arch_1.dxf", 26, 26);
     assert_eq!(m.blocks.len(), 25);
     // LACT3 gives the angle to 0.01°.
     let theta = l.atan().to_degrees();
@@ -105,9 +103,7 @@ fn lact3_arch_matches_lact3_collapse_angle() {
 
 #[test]
 fn lact3_portal_imports_and_collapses_between_bounds() {
-    let Some((_, st, l)) = check("Portal.dxf", 41, 87) else {
-        return;
-    };
+    let (_, st, l) = check("Portal.dxf", 41, 87);
     let up = whole_overturning(&st);
     assert!(
         l >= 27.30f64.to_radians().tan() && l <= up + 1e-9,
@@ -118,9 +114,7 @@ fn lact3_portal_imports_and_collapses_between_bounds() {
 
 #[test]
 fn lact3_wall_imports_and_collapses_between_bounds() {
-    let Some((m, st, l)) = check("wall.dxf", 183, 391) else {
-        return;
-    };
+    let (m, st, l) = check("wall.dxf", 183, 391);
     // Units 55.6 mm high: every block is one course high.
     for b in &m.blocks {
         let bb = voussoir::geometry::bbox(&b.polygon);
@@ -137,20 +131,18 @@ fn lact3_wall_imports_and_collapses_between_bounds() {
 #[test]
 fn declared_units_are_used_and_inches_need_an_override() {
     // Portal declares mm ($INSUNITS = 4): no override needed.
-    if let Some(p) = lact3("Portal.dxf") {
-        let (m, rep) = read_dxf(&p, &DxfOptions::default()).unwrap();
-        assert_eq!(rep.units, "mm");
-        let bb = voussoir::geometry::bbox(&m.supports[0].polygon);
-        assert!((bb[2] - bb[0] - 2.5).abs() < 1e-12, "base 2500 mm = 2.5 m");
-    }
+    let (m, rep) = read_dxf(&lact3("Portal.dxf"), &DxfOptions::default()).unwrap();
+    assert_eq!(rep.units, "mm");
+    let bb = voussoir::geometry::bbox(&m.supports[0].polygon);
+    assert!((bb[2] - bb[0] - 2.5).abs() < 1e-12, "base 2500 mm = 2.5 m");
     // wall.dxf declares inches although drawn in mm: refuse and ask for --units.
-    if let Some(p) = lact3("wall.dxf") {
-        let e = read_dxf(&p, &DxfOptions::default()).unwrap_err().0;
-        assert!(
-            e.contains("--units") && e.contains("Inches") && !e.contains('\n'),
-            "{e}"
-        );
-    }
+    let e = read_dxf(&lact3("wall.dxf"), &DxfOptions::default())
+        .unwrap_err()
+        .0;
+    assert!(
+        e.contains("--units") && e.contains("Inches") && !e.contains('\n'),
+        "{e}"
+    );
 }
 
 // --- small drawings written here -------------------------------------------------------------
@@ -338,8 +330,7 @@ fn lact3_with_mohr_coulomb_joints_matches_lact3_tilt_angles() {
         ("wall.dxf", 26.0, 16.73),
         ("arch_1.dxf", 30.0, 17.10),
     ] {
-        let Some(p) = lact3(file) else { return };
-        let (mut m, _) = read_dxf(&p, &mm()).unwrap();
+        let (mut m, _) = read_dxf(&lact3(file), &mm()).unwrap();
         m.materials.get_mut("default").unwrap().friction = Some(phi.to_radians().tan());
         let st = Structure::new(&m, BuildOptions::default()).unwrap();
         let r = limit(&st, &SolverOptions::default()).unwrap();

@@ -29,7 +29,15 @@ pub trait Dim: Copy + Clone + Debug + Default + Send + Sync + 'static {
     /// Tangential directions per contact point (`N − 1`).
     const TANGENTS: usize;
     /// A point or free vector.
-    type Vector: Copy + Clone + Debug + PartialEq + AsRef<[f64]> + Send + Sync;
+    type Vector: Copy
+        + Clone
+        + Debug
+        + PartialEq
+        + AsRef<[f64]>
+        + Send
+        + Sync
+        + serde::Serialize
+        + serde::de::DeserializeOwned;
     /// The tangent directions of a contact point (an array of `TANGENTS` vectors).
     type Tangents: Copy + Clone + Debug + AsRef<[Self::Vector]> + Send + Sync;
 

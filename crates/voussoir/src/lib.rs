@@ -43,6 +43,7 @@ pub mod geometry;
 pub mod lp;
 pub mod model;
 pub mod programs;
+pub mod programs_identify;
 pub mod result;
 pub mod settlement_input;
 pub mod structure;

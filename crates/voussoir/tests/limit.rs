@@ -181,3 +181,47 @@ fn block_without_base_support_cannot_stand() {
     let r = limit(&st, &SolverOptions::default()).unwrap();
     assert_eq!(r.status, LimitStatus::NoEquilibrium, "{}", r.message);
 }
+
+/// Regression (issue 19, "collapse for structures that cannot stand"): a 1 m cube whose base
+/// overhangs its support (support under x ∈ [0, 0.45], centroid at x = 0.5), pushed to the left
+/// by λW at its centroid. It tips right about (0.45, 0) unless λW·0.5 ≥ W·0.05 (λ ≥ 0.1) and
+/// tips left about (0, 0) once λW·0.5 > W·0.5 (λ > 1): it stands only for λ ∈ [0.1, 1], so under
+/// its own weight it cannot stand — never "collapse at λ = 1".
+#[test]
+fn overhanging_block_that_stands_only_when_pushed_is_not_a_collapse() {
+    let model: voussoir::Model = serde_json::from_str(
+        r#"{
+        "blocks": [ { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]] } ],
+        "supports": [ { "name": "base", "polygon": [[-1, -1], [0.45, -1], [0.45, 0], [-1, 0]] } ],
+        "loads": { "live": [ { "type": "body", "coefficients": [-1.0, 0.0] } ] }
+    }"#,
+    )
+    .unwrap();
+    let st = Structure::new(&model, BuildOptions::default()).unwrap();
+    let r = limit(&st, &SolverOptions::default()).unwrap();
+    assert_eq!(r.status, LimitStatus::NoEquilibrium, "{}", r.message);
+    assert!((r.load_multiplier.unwrap() - 1.0).abs() < 1e-9);
+    assert!((r.least_load_multiplier.unwrap() - 0.1).abs() < 1e-9);
+    assert!(r.hinges.is_empty() && r.blocks.is_empty());
+    assert!(
+        r.message.contains("0.100000") && r.message.contains("1.000000"),
+        "{}",
+        r.message
+    );
+    // The settlement analysis agrees: under its own weight it cannot stand.
+    let s = settle(&st, &SolverOptions::default()).unwrap();
+    assert_eq!(s.status, SettlementStatus::CannotStand);
+    // And so does the tilting table (towards −x): no tilt angle.
+    let t = voussoir::analysis::tilt::tilt(&st, -1.0, &SolverOptions::default()).unwrap();
+    assert_eq!(t.tilt_angle, None);
+    // The paper's arch stands without its live load: its least multiplier is ≤ 0.
+    let m = arch(&ArchSpec {
+        live: LiveLoad::Full,
+        ..ArchSpec::default()
+    })
+    .unwrap();
+    let arch = Structure::new(&m, BuildOptions::default()).unwrap();
+    let r = limit(&arch, &SolverOptions::default()).unwrap();
+    assert_eq!(r.status, LimitStatus::Collapse);
+    assert!(r.least_load_multiplier.is_none_or(|m| m <= 0.0));
+}

@@ -9,6 +9,39 @@ use super::svg::{fmt_fixed, human};
 use voussoir::analysis::capacity::{CapacityResult, CapacityStatus};
 use voussoir::result::BlockMotion;
 
+/// Largest deviation from the least-squares line, relative to λ(0), up to which λ(s) is called
+/// linear and its fit is shown (5 %: within the scatter engineers accept for a straight-line
+/// reading of a curve; the paper's arches deviate by well under 1 %).
+pub const LINEAR_FIT_TOLERANCE: f64 = 0.05;
+
+/// The linear fit of a capacity curve as one line of text: the fit where it fits, else a
+/// warning stating the deviation (no fit printed as if it described the curve).
+#[derive(Clone, Debug, PartialEq)]
+pub enum LinearFitText {
+    Fits(String),
+    DoesNotFit(String),
+}
+
+/// See [`LinearFitText`]; `None` without a fit (fewer than two valid points).
+pub fn linear_fit_text(r: &CapacityResult) -> Option<LinearFitText> {
+    let f = r.linear_fit.as_ref()?;
+    let dev = human(100.0 * f.max_relative_deviation, 3);
+    if f.max_relative_deviation <= LINEAR_FIT_TOLERANCE {
+        Some(LinearFitText::Fits(format!(
+            "λ ≈ {} {} {}·s (s in m); largest deviation {} % of λ(0)",
+            fmt_fixed(f.intercept, 4),
+            if f.slope < 0.0 { "−" } else { "+" },
+            human(f.slope.abs(), 4),
+            dev
+        )))
+    } else {
+        Some(LinearFitText::DoesNotFit(format!(
+            "λ(s) is not linear: a straight line deviates from it by up to {dev} % of λ(0) (more than {} %), so no linear fit is given",
+            human(100.0 * LINEAR_FIT_TOLERANCE, 3)
+        )))
+    }
+}
+
 /// The curve λ(s) of one result as plot series (settlement in cm): the valid points as a solid
 /// line with markers and, if any, the points where the collapse mechanism would close
 /// settlement cracks (standard limit analysis not valid there) dashed.
@@ -109,12 +142,7 @@ pub fn settlement_motions(r: &CapacityResult) -> Vec<BlockMotion> {
     };
     r.settlement_mechanism
         .iter()
-        .map(|b| BlockMotion {
-            id: b.id,
-            u: b.u * s,
-            v: b.v * s,
-            theta: b.theta * s,
-        })
+        .map(|b| BlockMotion::planar(b.id, b.u * s, b.v * s, b.theta * s))
         .collect()
 }
 
@@ -161,17 +189,10 @@ pub fn capacity_report(r: &CapacityResult, opts: &ReportOptions) -> Report {
             .map(|s| format!("{} cm", fmt_fixed(s * 100.0, 4)))
             .unwrap_or_else(|| "not reached in the range".into()),
     ));
-    if let Some(f) = &r.linear_fit {
-        kv.push((
-            "linear fit".into(),
-            format!(
-                "λ ≈ {} {} {}·s (s in m); largest deviation {} % of λ(0)",
-                fmt_fixed(f.intercept, 4),
-                if f.slope < 0.0 { "−" } else { "+" },
-                human(f.slope.abs(), 4),
-                human(100.0 * f.max_relative_deviation, 3)
-            ),
-        ));
+    match linear_fit_text(r) {
+        Some(LinearFitText::Fits(t)) => kv.push(("linear fit".into(), t)),
+        Some(LinearFitText::DoesNotFit(t)) => kv.push(("linear fit (warning)".into(), t)),
+        None => {}
     }
     let invalid = r.curve.iter().filter(|p| !p.valid).count();
     kv.push((

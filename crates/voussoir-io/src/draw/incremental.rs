@@ -7,7 +7,7 @@ use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
 use voussoir::analysis::incremental::{EventKind, IncrementalResult};
 
-/// The curve of one result: control displacement in cm against λ = max(λ, 0). Two points at
+/// The curve of one result: control displacement in mm against λ = max(λ, 0). Two points at
 /// the same displacement (just before and just after a closure) draw the jump.
 pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> Series {
     Series {
@@ -17,7 +17,7 @@ pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> S
             .iter()
             .map(|p| {
                 if p.displacement.is_finite() && p.load_multiplier.is_finite() {
-                    [p.displacement * 100.0, p.load_multiplier]
+                    [p.displacement * 1000.0, p.load_multiplier]
                 } else {
                     [f64::NAN, f64::NAN]
                 }
@@ -45,7 +45,7 @@ pub fn incremental_plot(curves: &[(&str, &IncrementalResult)], title: &str) -> P
             && r.peak_load_multiplier > 0.0
         {
             marks.push(Mark::new(
-                r.peak_displacement * 100.0,
+                r.peak_displacement * 1000.0,
                 r.peak_load_multiplier,
                 format!("peak λ = {}", fmt_fixed(r.peak_load_multiplier, 3)),
             ));
@@ -55,7 +55,7 @@ pub fn incremental_plot(curves: &[(&str, &IncrementalResult)], title: &str) -> P
         &series,
         &PlotSpec {
             title: title.to_string(),
-            x_label: "control displacement dx (cm)".into(),
+            x_label: "control displacement dx (mm)".into(),
             y_label: "load multiplier λ".into(),
             marks,
             id: "inc".into(),
@@ -96,7 +96,7 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         ),
         (
             "at control displacement".into(),
-            format!("{} cm", human(r.peak_displacement * 100.0, 4)),
+            format!("{} mm", human(r.peak_displacement * 1000.0, 4)),
         ),
         (
             "joints open at the start".into(),
@@ -127,8 +127,8 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
     };
     for (k, s) in picks.into_iter().enumerate() {
         let title = format!(
-            "Mechanism at dx = {} cm (λ = {})",
-            human(s.displacement * 100.0, 4),
+            "Mechanism at dx = {} mm (λ = {})",
+            human(s.displacement * 1000.0, 4),
             fmt_fixed(s.load_multiplier, 4)
         );
         let mut scene = Scene::geometry(&s.geometry, &title);
@@ -152,7 +152,7 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         .map(|e| {
             vec![
                 e.step.to_string(),
-                fmt_fixed(e.displacement * 100.0, 4),
+                fmt_fixed(e.displacement * 1000.0, 4),
                 match e.kind {
                     EventKind::Opened => "opened".to_string(),
                     EventKind::Closed => "closed".to_string(),
@@ -165,7 +165,7 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         .collect();
     rep.section("Events").collapsed_table(
         "Contact changes",
-        ["step", "dx (cm)", "event", "joint", "x (m)", "y (m)"]
+        ["step", "dx (mm)", "event", "joint", "x (m)", "y (m)"]
             .iter()
             .map(|s| s.to_string())
             .collect(),

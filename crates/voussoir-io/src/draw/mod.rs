@@ -11,6 +11,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod capacity;
+pub mod identify;
 pub mod incremental;
 pub mod plot;
 pub mod png;
@@ -19,6 +20,7 @@ pub mod scene;
 pub mod svg;
 
 pub use capacity::{capacity_plot, capacity_report, capacity_series};
+pub use identify::{draw_identify, identify_report, identify_scene};
 pub use incremental::{incremental_plot, incremental_report, incremental_series};
 pub use plot::{plot, plot_curves, Mark, Plot, PlotSpec, Series};
 pub use png::svg_to_png;

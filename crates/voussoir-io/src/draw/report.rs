@@ -486,7 +486,8 @@ fn joint_sections(
 }
 
 fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f64>, what: &str) {
-    let model = Scene::geometry(geometry, "Model and loads");
+    let mut model = Scene::geometry(geometry, "Model and loads");
+    model.live_loads = scene.live_loads;
     let d0 = draw(
         &model,
         &DrawOptions {
@@ -496,7 +497,11 @@ fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f
     );
     sec.figure(
         d0.svg,
-        "The model: blocks, hatched supports and live loads (arrows; multiplied by λ).",
+        if scene.live_loads {
+            "The model: blocks, hatched supports and live loads (arrows; multiplied by λ)."
+        } else {
+            "The model: blocks and hatched supports (a settlement analysis applies the dead loads only)."
+        },
     );
     let d1 = draw(
         &scene,
@@ -653,8 +658,23 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
         format!("{} mm", human(dmax * 1000.0, 4)),
     ));
     rep.section("Key numbers").key_values(kv);
-    rep.section("Model")
-        .key_values(model_summary(&r.geometry, r.joints.len(), &opts.source));
+    // A settlement analysis has no λ: the model's live loads are listed as not applied.
+    let model: Vec<(String, String)> = model_summary(&r.geometry, r.joints.len(), &opts.source)
+        .into_iter()
+        .map(|(k, v)| {
+            if k == "live loads (× λ)" {
+                let v = if v == "none" {
+                    v
+                } else {
+                    format!("{v}; not applied (a settlement analysis has no λ)")
+                };
+                ("live loads".to_string(), v)
+            } else {
+                (k, v)
+            }
+        })
+        .collect();
+    rep.section("Model").key_values(model);
     figures(
         rep.section("Figures"),
         Scene::settlement(r),

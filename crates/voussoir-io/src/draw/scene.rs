@@ -42,6 +42,9 @@ pub struct Scene<'a> {
     pub hinges: &'a [Hinge],
     pub thrust_line: &'a [ThrustPoint],
     pub units: MotionUnits,
+    /// Whether the analysis multiplies the live loads by λ (limit analyses, models). A
+    /// settlement analysis has no λ and ignores live loads: they are not drawn.
+    pub live_loads: bool,
 }
 
 impl<'a> Scene<'a> {
@@ -68,6 +71,7 @@ impl<'a> Scene<'a> {
             hinges: &[],
             thrust_line: &[],
             units: MotionUnits::Metres,
+            live_loads: true,
         }
     }
 
@@ -95,6 +99,7 @@ impl<'a> Scene<'a> {
             hinges: &r.hinges,
             thrust_line: &r.thrust_line,
             units: MotionUnits::Normalised,
+            live_loads: true,
         }
     }
 
@@ -133,20 +138,89 @@ impl<'a> Scene<'a> {
             hinges: &r.hinges,
             thrust_line: &r.thrust_line,
             units: MotionUnits::Metres,
+            live_loads: false,
         }
     }
+}
+
+/// A line of text broken at spaces into lines at most `max` pixels wide (at font size `size`);
+/// a word longer than `max` stays whole.
+fn wrap(line: &str, size: f64, max: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    for w in line.split(' ') {
+        let candidate = if cur.is_empty() {
+            w.to_string()
+        } else {
+            format!("{cur} {w}")
+        };
+        if !cur.is_empty() && text_width(&candidate, size) > max {
+            out.push(std::mem::take(&mut cur));
+            cur = w.to_string();
+        } else {
+            cur = candidate;
+        }
+    }
+    out.push(cur);
+    out
 }
 
 fn plural(n: usize, what: &str) -> String {
     format!("{n} {what}{}", if n == 1 { "" } else { "s" })
 }
 
-/// "prescribed: right u = +10 mm, v = 0 mm" for the supports that move.
+/// Supports listed one by one in a drawing's subtitle; more moving supports are summarised.
+const LISTED_SUPPORTS: usize = 3;
+
+/// "prescribed support motion: right u = 10 mm, v = 0 mm" for the supports that move; with more
+/// than [`LISTED_SUPPORTS`] moving supports (a façade on 44 segments) one summary that fits on a
+/// line: "44 supports (f0 … f43): u = 0 mm, v = −200 mm" or the range of each component.
 pub fn support_motion_text(g: &Geometry) -> Option<String> {
-    let parts: Vec<String> = g
+    let moving: Vec<_> = g
         .supports
         .iter()
         .filter(|s| s.motion.iter().any(|&x| x != 0.0 && x.is_finite()))
+        .collect();
+    if moving.is_empty() {
+        return None;
+    }
+    if moving.len() > LISTED_SUPPORTS {
+        let range = |k: usize, scale: f64, unit: &str, name: &str| -> String {
+            let lo = moving
+                .iter()
+                .map(|s| s.motion[k])
+                .fold(f64::INFINITY, f64::min)
+                * scale;
+            let hi = moving
+                .iter()
+                .map(|s| s.motion[k])
+                .fold(f64::NEG_INFINITY, f64::max)
+                * scale;
+            if lo == hi {
+                format!("{name} = {}{unit}", human(lo, 3))
+            } else {
+                format!("{name} from {} to {}{unit}", human(lo, 3), human(hi, 3))
+            }
+        };
+        let mut t = format!(
+            "prescribed support motion: {} supports ({} … {}): {}, {}",
+            moving.len(),
+            moving[0].name,
+            moving[moving.len() - 1].name,
+            range(0, 1000.0, " mm", "u"),
+            range(1, 1000.0, " mm", "v")
+        );
+        if moving.iter().any(|s| s.motion[2] != 0.0) {
+            let _ = write!(t, ", {}", range(2, 180.0 / std::f64::consts::PI, "°", "θ"));
+        }
+        let fixed = moving.iter().filter(|s| s.fixed).count();
+        if fixed > 0 {
+            let _ = write!(t, " ({fixed} fixed)");
+        }
+        return Some(t);
+    }
+    let parts: Vec<String> = moving
+        .iter()
         .map(|s| {
             let mut t = format!(
                 "{} u = {} mm, v = {} mm",
@@ -163,11 +237,7 @@ pub fn support_motion_text(g: &Geometry) -> Option<String> {
             t
         })
         .collect();
-    if parts.is_empty() {
-        None
-    } else {
-        Some(format!("prescribed support motion: {}", parts.join("; ")))
-    }
+    Some(format!("prescribed support motion: {}", parts.join("; ")))
 }
 
 /// How to draw a scene.
@@ -622,7 +692,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     let mut loads: Vec<(usize, [f64; 2], [f64; 2], bool)> = Vec::new();
     for l in &scene.geometry.loads {
         let (show, fmax) = if l.live {
-            (opts.live_loads, live_max)
+            (opts.live_loads && scene.live_loads, live_max)
         } else {
             (opts.dead_loads, dead_max)
         };
@@ -713,7 +783,12 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         760.0
     };
     let margin = 28.0;
-    let title_h = 16.0 + 24.0 + 19.0 * scene.info.len() as f64;
+    let info: Vec<String> = scene
+        .info
+        .iter()
+        .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
+        .collect();
+    let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
     let legend_h = if opts.legend { 58.0 } else { 8.0 };
     let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
     let draw_w = bw * k;
@@ -781,7 +856,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         num(margin),
         esc(&scene.title)
     );
-    for (i, line) in scene.info.iter().enumerate() {
+    for (i, line) in info.iter().enumerate() {
         let _ = writeln!(
             o,
             "<text x=\"{}\" y=\"{}\" font-size=\"13\" fill=\"#444444\">{}</text>",
@@ -1346,6 +1421,19 @@ mod tests {
             let m = [cs * q[0] - sn * q[1] + e, sn * q[0] + cs * q[1] + f];
             assert!((want[0] - m[0]).abs() < 1e-9 && (want[1] - m[1]).abs() < 1e-9);
         }
+    }
+
+    #[test]
+    fn long_subtitles_wrap_within_the_width() {
+        let line =
+            "prescribed support motion: ".to_string() + &"f1 u = 0 mm, v = −200 mm; ".repeat(40);
+        let lines = wrap(line.trim_end(), 13.0, 944.0);
+        assert!(lines.len() > 5, "{lines:?}");
+        for l in &lines {
+            assert!(text_width(l, 13.0) <= 944.0, "{l}");
+        }
+        assert_eq!(lines.join(" "), line.trim_end());
+        assert_eq!(wrap("short", 13.0, 944.0), vec!["short".to_string()]);
     }
 
     #[test]

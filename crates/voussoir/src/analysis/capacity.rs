@@ -117,12 +117,16 @@ fn signed_lambda(s: &LimitSolution) -> f64 {
     }
 }
 
+/// Most steps of a capacity curve: each is a limit analysis, and the curve is kept in memory.
+pub const MAX_STEPS: usize = 100_000;
+
 /// Capacity curve λ(s) after the settlement prescribed by the supports' motions.
 pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult> {
-    if opts.steps == 0 {
-        return Err(Error::Request(
-            "a capacity curve needs at least one step".into(),
-        ));
+    if opts.steps == 0 || opts.steps > MAX_STEPS {
+        return Err(Error::Request(format!(
+            "steps {}: a capacity curve takes between 1 and {MAX_STEPS} steps",
+            opts.steps
+        )));
     }
     if opts.root_tolerance.is_nan() || opts.root_tolerance <= 0.0 {
         return Err(Error::Request("the root tolerance must be positive".into()));

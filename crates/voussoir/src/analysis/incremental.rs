@@ -385,12 +385,15 @@ pub fn incremental_with(
         .filter(|e| e.kind == EventKind::Closed)
         .count();
     let message = format!(
-        "peak λ = {:.6} at a control displacement of {:.3} mm; {} steps, {} closures, {} hinge moves under the dead loads; {}",
+        "peak λ = {:.6} at a control displacement of {:.3} mm; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
         peak_l,
         peak.1 * 1000.0,
         steps,
+        if steps == 1 { "" } else { "s" },
         closed,
+        if closed == 1 { "" } else { "s" },
         snaps,
+        if snaps == 1 { "" } else { "s" },
         what
     );
     Ok(IncrementalResult {

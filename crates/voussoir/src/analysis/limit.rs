@@ -25,6 +25,8 @@ pub struct LimitSolution {
     pub iterations: i64,
     /// The solver and method that produced it.
     pub solver: SolverInfo,
+    /// The least multiplier in equilibrium (`None`: unbounded below, or not computed).
+    pub least: Option<f64>,
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
@@ -33,11 +35,66 @@ pub fn solve_limit(
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
+    Ok(solve_static(st, map, opts)?.0)
+}
+
+/// The static program of `st`, solved: the solution and the program.
+fn solve_static(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<(LimitSolution, ForceProgram)> {
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
     let sol = fp.solve(opts)?;
-    Ok(limit_solution(map, &fp, &live, &sol, opts.info()))
+    Ok((limit_solution(map, &fp, &live, &sol, opts.info()), fp))
 }
+
+/// [`solve_limit`] of a structure as given, with the check that it stands under its dead loads
+/// alone ([`with_least_multiplier`]). The analyses that deform a structure along a settlement
+/// or a mechanism (capacity, incremental) ask for the collapse multiplier only: a displaced
+/// structure is routinely held by its live load there.
+pub fn solve_limit_checked(
+    st: &Structure,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<LimitSolution> {
+    let (s, fp) = solve_static(st, map, opts)?;
+    with_least_multiplier(s, &fp, |lp| lp::solve(lp, opts))
+}
+
+/// Statics that cannot lie: the multipliers in equilibrium form an interval `[λ_min, λ_max]`;
+/// the structure stands under its dead loads alone only if 0 is in it. Having found `λ_max`
+/// (or that it is unbounded), solve `min λ` on the same program: if `λ_min > 0` the structure
+/// needs the live load to stand (a block overhanging its support, held by a push), and the
+/// status is `no_equilibrium` with the range, never a collapse at `λ_max`.
+fn with_least_multiplier(
+    mut s: LimitSolution,
+    fp: &ForceProgram,
+    solve: impl FnOnce(&lp::LinearProgram) -> Result<LpSolution>,
+) -> Result<LimitSolution> {
+    if !matches!(s.status, LimitStatus::Collapse | LimitStatus::Locked) || !fp.cones.is_empty() {
+        return Ok(s);
+    }
+    let mut lp = fp.lp.clone();
+    lp.maximise = false;
+    let least = solve(&lp)?;
+    s.iterations += least.iterations;
+    if least.status != LpStatus::Optimal {
+        return Ok(s);
+    }
+    let lmin = least.x[fp.lambda.expect("program has λ")];
+    s.least = Some(lmin);
+    let scale = s.lambda.map_or(1.0, |l| l.abs().max(1.0));
+    if lmin > LEAST_TOLERANCE * scale {
+        s.status = LimitStatus::NoEquilibrium;
+        s.mechanism.clear();
+    }
+    Ok(s)
+}
+
+/// Relative tolerance below which a positive least multiplier counts as zero.
+pub const LEAST_TOLERANCE: f64 = 1e-9;
 
 /// Dead and live load vectors; an error if there is no live load.
 fn load_vectors(st: &Structure) -> Result<(Vec<f64>, Vec<f64>)> {
@@ -88,6 +145,7 @@ pub fn limit_solution(
         pt: vec![0.0; map.num_tangent_rows()],
         iterations,
         solver: solver.clone(),
+        least: None,
     };
     match status {
         LpStatus::Unbounded => return none(LimitStatus::Locked),
@@ -115,6 +173,7 @@ pub fn limit_solution(
         pt,
         iterations,
         solver,
+        least: None,
     }
 }
 
@@ -129,6 +188,13 @@ pub enum Crushing {
     Conic,
 }
 
+/// Fewest and most facets of the inscribed crushing polygon. Two chords are the coarsest
+/// polygon that still allows an eccentric thrust; 4,096 chords put the polygon within
+/// (t/2)·(1/4096)² of the parabola, far below any tolerance of the solvers, while bounding the
+/// program's size (two rows per facet and joint).
+pub const MIN_FACETS: usize = 2;
+pub const MAX_FACETS: usize = 4096;
+
 /// Limit analysis with a choice of crushing model and number of facets.
 pub fn limit_with(
     st: &Structure,
@@ -136,10 +202,15 @@ pub fn limit_with(
     crushing: Crushing,
     facets: usize,
 ) -> Result<LimitResult> {
+    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
+        return Err(Error::Request(format!(
+            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+        )));
+    }
     let mut map = KinematicMap::new(st);
-    map.facets = facets.max(1);
+    map.facets = facets;
     let s = match crushing {
-        Crushing::Linear => solve_limit(st, &map, opts)?,
+        Crushing::Linear => solve_limit_checked(st, &map, opts)?,
         Crushing::Conic => solve_limit_conic(st, &map, opts)?,
     };
     Ok(limit_result(st, &map, &s))
@@ -148,7 +219,7 @@ pub fn limit_with(
 /// Limit analysis of a structure: collapse multiplier, mechanism, forces, thrust line.
 pub fn limit(st: &Structure, opts: &SolverOptions) -> Result<LimitResult> {
     let map = KinematicMap::new(st);
-    let s = solve_limit(st, &map, opts)?;
+    let s = solve_limit_checked(st, &map, opts)?;
     Ok(limit_result(st, &map, &s))
 }
 
@@ -170,6 +241,16 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
         )
     };
     let message = match (s.status, s.lambda) {
+        (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
+            "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",
+            s.status.sentence(),
+            s.least.unwrap_or(f64::NAN)
+        ),
+        (LimitStatus::NoEquilibrium, None) if s.least.is_some_and(|m| m > 0.0) => format!(
+            "{}: it stands only with the live load, for λ ≥ {:.6}",
+            s.status.sentence(),
+            s.least.unwrap_or(f64::NAN)
+        ),
         (LimitStatus::Collapse, Some(l)) => format!("collapse load multiplier λ = {l:.6}"),
         (LimitStatus::NoEquilibrium, Some(l)) => format!(
             "{} (the largest multiplier in equilibrium is λ = {l:.6} < 0)",
@@ -182,6 +263,7 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
         message,
         solver: s.solver.clone(),
         load_multiplier: s.lambda,
+        least_load_multiplier: s.least,
         work_dead_loads: wd,
         work_live_loads: wl,
         blocks: if s.mechanism.is_empty() {

@@ -8,6 +8,7 @@ pub mod tilt;
 pub use limit::{limit, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};
 pub mod capacity;
+pub mod identify;
 pub use capacity::{capacity, CapacityOptions, CapacityResult};
 pub mod incremental;
 pub use incremental::{incremental, IncrementalOptions, IncrementalResult};

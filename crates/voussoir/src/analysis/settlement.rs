@@ -200,7 +200,8 @@ pub enum SettlementForm {
 
 /// Largest violation of kinematic admissibility of block motions `d` (with the prescribed
 /// support motions): interpenetration `max(0, −(N d + g_n))` at contact points, `|N d + g_n|`
-/// at bilateral points, and sliding `|T d + g_t|`, over points that carry force.
+/// at bilateral points, and sliding `|T d + g_t|` on joints without friction, over points that
+/// carry force.
 pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
     let (open, slide) = map.jumps(d, 1.0);
     let mut v = 0.0f64;
@@ -213,10 +214,16 @@ pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
         } else {
             (-open[k]).max(0.0)
         };
+        // Sliding is a violation only where the joint law forbids it (Heyman's joints); a
+        // frictional joint may slide (its dilatancy is in the opening rows).
         let nt = map.tangents_per_point;
-        let s = slide[k * nt..(k + 1) * nt]
-            .iter()
-            .fold(0.0f64, |m, x| m.max(x.abs()));
+        let s = if map.laws[map.points[k].joint].friction.is_some() {
+            0.0
+        } else {
+            slide[k * nt..(k + 1) * nt]
+                .iter()
+                .fold(0.0f64, |m, x| m.max(x.abs()))
+        };
         v = v.max(o).max(s);
     }
     v

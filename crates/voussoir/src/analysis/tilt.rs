@@ -6,7 +6,7 @@
 //! multiplier of that load. The model's own live loads are replaced; its extra dead loads are
 //! kept as given (they do not rotate with the table).
 
-use super::limit::{limit_result, solve_limit, LimitStatus};
+use super::limit::{limit_result, solve_limit_checked, LimitStatus};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
@@ -39,7 +39,7 @@ pub fn tilt(st: &Structure, direction: f64, opts: &SolverOptions) -> Result<Tilt
     }
     s.loads.extend(live);
     let map = KinematicMap::new(&s);
-    let sol = solve_limit(&s, &map, opts)?;
+    let sol = solve_limit_checked(&s, &map, opts)?;
     let limit = limit_result(&s, &map, &sol);
     let tilt_angle = match (sol.status, sol.lambda) {
         (LimitStatus::Collapse, Some(l)) => Some(l.atan().to_degrees()),

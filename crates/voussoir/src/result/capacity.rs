@@ -1,13 +1,16 @@
 //! Result of a capacity analysis: the curve λ(s) and the zero-capacity settlement.
 
 use super::limit::LimitStatus;
-use super::{BlockMotion, Geometry, Hinge};
+use super::Spatial;
+use super::{BlockMotion, Hinge};
+use crate::dim::Two;
 use crate::lp::SolverInfo;
 use serde::{Deserialize, Serialize};
 
 /// One point of the capacity curve.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CapacityPoint {
+#[serde(bound = "")]
+pub struct CapacityPoint<D: Spatial = Two> {
     /// Settlement magnitude s (m).
     pub settlement: f64,
     /// λ(s): collapse multiplier on the deformed geometry; negative when the dead loads alone
@@ -21,15 +24,16 @@ pub struct CapacityPoint {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub closing_joints: Vec<usize>,
     /// Hinges of the collapse mechanism (positions on the deformed geometry).
-    pub hinges: Vec<Hinge>,
+    pub hinges: Vec<Hinge<D>>,
 }
 
 /// The collapse mechanism at one settlement.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CapacityMechanism {
+#[serde(bound = "")]
+pub struct CapacityMechanism<D: Spatial = Two> {
     pub settlement: f64,
     /// Block motion rates, normalised to unit work of the live loads.
-    pub blocks: Vec<BlockMotion>,
+    pub blocks: Vec<BlockMotion<D>>,
 }
 
 /// A support's motion per unit settlement.
@@ -52,7 +56,8 @@ pub enum CapacityStatus {
 
 /// Result of a capacity analysis.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CapacityResult {
+#[serde(bound = "")]
+pub struct CapacityResult<D: Spatial = Two> {
     pub status: CapacityStatus,
     pub message: String,
     /// The solver and method that produced the result.
@@ -62,22 +67,22 @@ pub struct CapacityResult {
     /// Motion of each moving support per unit settlement.
     pub direction: Vec<SupportDirection>,
     /// `{settlement, load_multiplier, valid, …}` for s = 0 … max.
-    pub curve: Vec<CapacityPoint>,
+    pub curve: Vec<CapacityPoint<D>>,
     /// The settlement at which λ reaches 0 (`null` if λ does not change sign in the range).
     pub zero_capacity_settlement: Option<f64>,
     /// Least-squares line `λ ≈ intercept + slope·s` through the valid points with s > 0, and the
     /// largest deviation from it relative to λ(0) (a measure of linearity).
     pub linear_fit: Option<LinearFit>,
     /// Settlement mechanism per unit settlement and its hinges.
-    pub settlement_mechanism: Vec<BlockMotion>,
-    pub settlement_hinges: Vec<Hinge>,
+    pub settlement_mechanism: Vec<BlockMotion<D>>,
+    pub settlement_hinges: Vec<Hinge<D>>,
     /// Collapse mechanism per step (empty unless requested).
-    pub mechanisms: Vec<CapacityMechanism>,
+    pub mechanisms: Vec<CapacityMechanism<D>>,
     /// LP solves and simplex iterations spent (curve and root finding).
     pub solves: usize,
     pub iterations: i64,
     /// The undeformed geometry.
-    pub geometry: Geometry,
+    pub geometry: D::Shapes,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

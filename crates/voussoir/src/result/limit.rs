@@ -1,6 +1,8 @@
 //! Result of a limit analysis.
 
-use super::{BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
+use super::Spatial;
+use super::{BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::dim::Two;
 use crate::lp::SolverInfo;
 use serde::{Deserialize, Serialize};
 
@@ -28,7 +30,8 @@ impl LimitStatus {
 
 /// Result of a limit analysis.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LimitResult {
+#[serde(bound = "")]
+pub struct LimitResult<D: Spatial = Two> {
     pub status: LimitStatus,
     pub message: String,
     /// The solver and method that produced the result.
@@ -36,17 +39,23 @@ pub struct LimitResult {
     /// λ: the collapse multiplier (negative when the dead loads alone cannot be carried and the
     /// live load, reversed, would be needed; `null` when locked or infeasible).
     pub load_multiplier: Option<f64>,
+    /// The least multiplier in equilibrium (`null` when unbounded below): the structure stands
+    /// under its dead loads alone only if it is ≤ 0. When it is positive the status is
+    /// `no_equilibrium` and `[least_load_multiplier, load_multiplier]` is the range of λ in
+    /// which it stands.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub least_load_multiplier: Option<f64>,
     /// Work of the dead loads and of the live loads on the mechanism (−λ and 1 at collapse).
     pub work_dead_loads: Option<f64>,
     pub work_live_loads: Option<f64>,
     /// The collapse mechanism (normalised: unit work of the live loads).
-    pub blocks: Vec<BlockMotion>,
-    pub joints: Vec<JointResult>,
-    pub hinges: Vec<Hinge>,
-    pub thrust_line: Vec<ThrustPoint>,
-    pub reactions: Vec<Reaction>,
+    pub blocks: Vec<BlockMotion<D>>,
+    pub joints: Vec<JointResult<D>>,
+    pub hinges: Vec<Hinge<D>>,
+    pub thrust_line: Vec<ThrustPoint<D>>,
+    pub reactions: Vec<Reaction<D>>,
     /// Simplex iterations spent.
     pub iterations: i64,
     /// The geometry analysed (for drawing a saved result).
-    pub geometry: Geometry,
+    pub geometry: D::Shapes,
 }

@@ -18,6 +18,11 @@ pub use nonassociative::*;
 pub use settlement::*;
 pub use tilt::*;
 
+pub mod spatial;
+
+pub use spatial::{PlanarMotion, PlanarPoint, PlanarWrench, Spatial};
+
+use crate::dim::Two;
 use crate::discretize::KinematicMap;
 use crate::structure::{Body, Structure};
 use serde::{Deserialize, Serialize};
@@ -39,26 +44,51 @@ impl BodyName {
     }
 }
 
+/// Generic result types deref to their components, so that `block.u` or `hinge.x` read as
+/// fields in every dimension.
+macro_rules! deref_to {
+    ($t:ident, $field:ident, $target:ident) => {
+        impl<D: Spatial> std::ops::Deref for $t<D> {
+            type Target = D::$target;
+            fn deref(&self) -> &D::$target {
+                &self.$field
+            }
+        }
+    };
+}
+
 /// Motion of a block's centroid: translation (m, or per unit of the normalisation) and rotation
-/// (rad, counter-clockwise).
+/// (rad; counter-clockwise in 2D, a rotation vector in 3D).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct BlockMotion {
+#[serde(bound = "")]
+pub struct BlockMotion<D: Spatial = Two> {
     pub id: usize,
-    pub u: f64,
-    pub v: f64,
-    pub theta: f64,
+    #[serde(flatten)]
+    pub motion: D::Motion,
+}
+deref_to!(BlockMotion, motion, Motion);
+
+impl BlockMotion<Two> {
+    pub fn planar(id: usize, u: f64, v: f64, theta: f64) -> Self {
+        BlockMotion {
+            id,
+            motion: PlanarMotion { u, v, theta },
+        }
+    }
 }
 
 /// A collocation point: position, opening (≥ 0), sliding, compressive normal force (kN, ≥ 0
-/// except on fixed supports) and shear force (kN, along the joint tangent).
+/// except on fixed supports) and shear force (kN, along the joint's tangent; one value per
+/// tangent in 3D).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct PointResult {
-    pub x: f64,
-    pub y: f64,
+#[serde(bound = "")]
+pub struct PointResult<D: Spatial = Two> {
+    #[serde(flatten)]
+    pub position: D::Position,
     pub opening: f64,
-    pub sliding: f64,
+    pub sliding: D::Tangential,
     pub normal_force: f64,
-    pub shear_force: f64,
+    pub shear_force: D::Tangential,
     /// Gap before the analysis (only after deformation; 0 otherwise).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub gap: f64,
@@ -82,20 +112,23 @@ pub enum JointState {
     Sliding,
 }
 
+deref_to!(PointResult, position, Position);
+
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct JointResult {
+#[serde(bound = "")]
+pub struct JointResult<D: Spatial = Two> {
     pub id: usize,
     /// The two bodies; the normal points from `a` into `b`.
     pub a: BodyName,
     pub b: BodyName,
-    pub normal: [f64; 2],
-    pub points: Vec<PointResult>,
+    pub normal: D::Vector,
+    pub points: Vec<PointResult<D>>,
     /// Resultant compressive force N (kN) and shear V (kN).
     pub normal_force: f64,
-    pub shear_force: f64,
+    pub shear_force: D::Tangential,
     /// Signed distance (m) of the centre of pressure from the joint's midpoint along the
-    /// tangent; `null` where the joint carries no compression.
-    pub eccentricity: Option<f64>,
+    /// tangent(s); `null` where the joint carries no compression.
+    pub eccentricity: Option<D::Tangential>,
     pub state: JointState,
     /// Depth of the compressed zone N/(f_c w) (m), with finite compressive strength only.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -104,31 +137,34 @@ pub struct JointResult {
 
 /// A hinge: joint and the point it rotates about.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Hinge {
+#[serde(bound = "")]
+pub struct Hinge<D: Spatial = Two> {
     pub joint: usize,
-    pub x: f64,
-    pub y: f64,
+    #[serde(flatten)]
+    pub at: D::Position,
 }
+deref_to!(Hinge, at, Position);
 
 /// A point of the thrust line: the centre of pressure of a joint.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ThrustPoint {
+#[serde(bound = "")]
+pub struct ThrustPoint<D: Spatial = Two> {
     pub joint: usize,
-    pub x: f64,
-    pub y: f64,
+    #[serde(flatten)]
+    pub at: D::Position,
 }
+deref_to!(ThrustPoint, at, Position);
 
 /// Force exerted by a support on the structure (kN) and its moment (kN·m) about the support's
-/// centroid `[cx, cy]`.
+/// centroid (`fx, fy, m, cx, cy` in 2D).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Reaction {
+#[serde(bound = "")]
+pub struct Reaction<D: Spatial = Two> {
     pub support: String,
-    pub fx: f64,
-    pub fy: f64,
-    pub m: f64,
-    pub cx: f64,
-    pub cy: f64,
+    #[serde(flatten)]
+    pub wrench: D::Wrench,
 }
+deref_to!(Reaction, wrench, Wrench);
 
 /// The geometry a result refers to, so that a saved result can be drawn on its own.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -228,11 +264,13 @@ pub fn report(
     let open_tol = 1e-7 * mscale;
     let dscale = max_abs(d).max(1e-300);
     let blocks = (0..st.blocks.len())
-        .map(|i| BlockMotion {
-            id: i,
-            u: clean(d[3 * i], dscale),
-            v: clean(d[3 * i + 1], dscale),
-            theta: clean(d[3 * i + 2], dscale),
+        .map(|i| {
+            BlockMotion::planar(
+                i,
+                clean(d[3 * i], dscale),
+                clean(d[3 * i + 1], dscale),
+                clean(d[3 * i + 2], dscale),
+            )
         })
         .collect();
     let mut joints = Vec::with_capacity(st.joints.len());
@@ -243,7 +281,7 @@ pub fn report(
         let t = joint.tangent();
         let mid = joint.midpoint();
         let (mut nf, mut sf, mut mom, mut cx, mut cy) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        let mut points = Vec::new();
+        let mut points: Vec<PointResult> = Vec::new();
         let (mut n_open, mut n_closed, mut sliding) = (0, 0, false);
         for k in range {
             let p = joint.points[map.points[k].index];
@@ -262,8 +300,10 @@ pub fn report(
             cx += fn_ * p.x[0];
             cy += fn_ * p.x[1];
             points.push(PointResult {
-                x: p.x[0],
-                y: p.x[1],
+                position: PlanarPoint {
+                    x: p.x[0],
+                    y: p.x[1],
+                },
                 opening: o,
                 sliding: s,
                 normal_force: fn_,
@@ -285,16 +325,17 @@ pub fn report(
             if let Some(p) = points.iter().min_by(|a, b| a.opening.total_cmp(&b.opening)) {
                 hinges.push(Hinge {
                     joint: j,
-                    x: p.x,
-                    y: p.y,
+                    at: PlanarPoint { x: p.x, y: p.y },
                 });
             }
         }
         let eccentricity = if nf > 1e-9 * fscale {
             thrust_line.push(ThrustPoint {
                 joint: j,
-                x: cx / nf,
-                y: cy / nf,
+                at: PlanarPoint {
+                    x: cx / nf,
+                    y: cy / nf,
+                },
             });
             Some(mom / nf)
         } else {
@@ -360,11 +401,13 @@ pub fn reactions(st: &Structure, map: &KinematicMap, pn: &[f64], pt: &[f64]) -> 
         .zip(acc)
         .map(|(s, a)| Reaction {
             support: s.name.clone(),
-            fx: clean(a[0], scale),
-            fy: clean(a[1], scale),
-            m: clean(a[2], scale),
-            cx: s.centroid[0],
-            cy: s.centroid[1],
+            wrench: PlanarWrench {
+                fx: clean(a[0], scale),
+                fy: clean(a[1], scale),
+                m: clean(a[2], scale),
+                cx: s.centroid[0],
+                cy: s.centroid[1],
+            },
         })
         .collect()
 }

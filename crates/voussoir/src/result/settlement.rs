@@ -1,6 +1,8 @@
 //! Result of a settlement analysis and its duality certificate.
 
-use super::{BlockMotion, Geometry, Hinge, JointResult, Reaction, ThrustPoint};
+use super::Spatial;
+use super::{BlockMotion, Hinge, JointResult, Reaction, ThrustPoint};
+use crate::dim::Two;
 use crate::lp::SolverInfo;
 use serde::{Deserialize, Serialize};
 
@@ -44,7 +46,8 @@ pub struct Certificate {
 
 /// Result of a settlement analysis.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SettlementResult {
+#[serde(bound = "")]
+pub struct SettlementResult<D: Spatial = Two> {
     pub status: SettlementStatus,
     pub message: String,
     /// The solver and method that produced the result.
@@ -57,13 +60,13 @@ pub struct SettlementResult {
     pub duality_gap: Option<f64>,
     pub certificate: Option<Certificate>,
     /// Block motions (m, rad) for the prescribed settlement.
-    pub blocks: Vec<BlockMotion>,
-    pub joints: Vec<JointResult>,
-    pub hinges: Vec<Hinge>,
-    pub thrust_line: Vec<ThrustPoint>,
-    pub reactions: Vec<Reaction>,
+    pub blocks: Vec<BlockMotion<D>>,
+    pub joints: Vec<JointResult<D>>,
+    pub hinges: Vec<Hinge<D>>,
+    pub thrust_line: Vec<ThrustPoint<D>>,
+    pub reactions: Vec<Reaction<D>>,
     /// The geometry analysed (for drawing a saved result).
-    pub geometry: Geometry,
+    pub geometry: D::Shapes,
 }
 
 /// Tolerance on the relative duality gap.

@@ -1,16 +1,19 @@
 //! Result of a tilting-table analysis.
 
 use super::limit::LimitResult;
+use super::Spatial;
+use crate::dim::Two;
 use serde::{Deserialize, Serialize};
 
 /// Result of a tilting-table analysis.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct TiltResult {
+#[serde(bound = "")]
+pub struct TiltResult<D: Spatial = Two> {
     /// Critical tilt angle in degrees (towards +x for direction +1, towards −x for −1);
     /// `null` when the structure never collapses (locked) or cannot stand untilted.
     pub tilt_angle: Option<f64>,
     /// +1 or −1.
     pub direction: f64,
     /// The underlying limit analysis (λ = tan α) with its mechanism.
-    pub limit: LimitResult,
+    pub limit: LimitResult<D>,
 }

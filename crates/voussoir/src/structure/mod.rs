@@ -332,10 +332,9 @@ impl Structure {
             }
             for x in s..e {
                 for y in x + 1..e {
+                    // Supports are checked against each other too: two overlapping foundations
+                    // would give a block's face two joints.
                     let (p, q) = (entries[x].2, entries[y].2);
-                    if p >= nb && q >= nb {
-                        continue;
-                    }
                     let (bp, bq) = (boxes[p], boxes[q]);
                     if bp[0] < bq[2] && bq[0] < bp[2] && bp[1] < bq[3] && bq[1] < bp[3] {
                         pairs.push((p.min(q), p.max(q)));

@@ -389,7 +389,23 @@ fn limit(py: Python<'_>, model: String, common: Common) -> PyResult<String> {
 #[pyfunction]
 fn settle(py: Python<'_>, model: String, common: Common, settle: Settle) -> PyResult<String> {
     detached(py, || {
-        let (st, opts) = common.structure(&model, Some(&settle))?;
+        let m = common.model(&model, Some(&settle))?;
+        // Validated first, so that a bad model is named before a missing motion (as the CLI).
+        let st = Structure::new(
+            &m,
+            BuildOptions {
+                tolerance: common.tolerance,
+            },
+        )?;
+        let opts = common.solver()?;
+        if m.supports
+            .iter()
+            .all(|s| s.motion.iter().all(|x| *x == 0.0))
+        {
+            return Err(Fail::Model(
+                "settle needs a support motion: give move={NAME: (u, v)} or profile=... (the model's supports do not move)".into(),
+            ));
+        }
         let r = match common.settlement_form()? {
             SettlementForm::Both => voussoir::analysis::settle(&st, &opts)?,
             form => settle_with(&st, &opts, form)?,

@@ -116,6 +116,8 @@ def test_errors_are_exceptions_not_crashes(arch):
         v.limit(arch, method="simplex-please")
     with pytest.raises(v.ModelError, match="capacity needs a settlement"):
         v.capacity(arch)
+    with pytest.raises(v.ModelError, match="settle needs a support motion"):
+        v.settle(arch)
     with pytest.raises(v.ModelError, match="friction"):
         v.limit(arch, friction=-1)
     assert issubclass(v.SolverError, v.VoussoirError) and issubclass(v.ModelError, v.VoussoirError)

@@ -148,13 +148,13 @@ def test_absurd_input_is_an_exception_not_a_crash(cli, paper_arch):
 
 
 def test_profile_settlement_matches_cli(cli, tmp_path):
-    # The README's wall example: the foundation settles 1 cm under x ∈ [2.8, 4.0].
+    # The default wall (2 m long): its foundation settles 1 cm under x ∈ [1.1, 2.5].
     wall = tmp_path / "wall.json"
     cli("gen", "wall", "-o", wall)
-    out = cli("settle", wall, "--profile", "uniform:2.8,4.0,-0.01", "--json").stdout
+    out = cli("settle", wall, "--profile", "uniform:1.1,2.5,-0.01", "--json").stdout
     m = v.Model.from_json(wall)
-    assert v.settle(m, profile="uniform:2.8,4.0,-0.01").to_json() == out
-    assert v.settle(m, profile={"type": "uniform", "x0": 2.8, "x1": 4.0, "v": -0.01}).to_json() == out
+    assert v.settle(m, profile="uniform:1.1,2.5,-0.01").to_json() == out
+    assert v.settle(m, profile={"type": "uniform", "x0": 1.1, "x1": 2.5, "v": -0.01}).to_json() == out
     r = cli("settle", wall, "--profile", "uniform:2.8", check=False)
     with pytest.raises(v.ModelError) as e:
         v.settle(m, profile="uniform:2.8")

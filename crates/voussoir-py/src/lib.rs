@@ -8,6 +8,7 @@
 //! The GIL is released for everything that solves (`Python::detach`), and panics are caught and
 //! turned into `voussoir.VoussoirError`, so a failure never takes the interpreter down.
 
+mod identify;
 mod options;
 mod sweep;
 
@@ -590,6 +591,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_task, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(identify::identify, m)?)?;
     m.add_function(wrap_pyfunction!(draw_svg, m)?)?;
     m.add_function(wrap_pyfunction!(report_html, m)?)?;
     m.add_function(wrap_pyfunction!(svg_to_png, m)?)?;

@@ -18,11 +18,12 @@ rotations in results in radians.
 
 from . import _native
 from . import compas, generate
-from ._analysis import capacity, incremental, limit, settle, sweep, tilt
+from ._analysis import capacity, identify, incremental, limit, settle, sweep, tilt
 from ._model import Model, Support
 from ._native import ModelError, SolverError, VoussoirError
 from ._results import (
     CapacityResult,
+    IdentifyResult,
     IncrementalResult,
     LimitResult,
     Result,
@@ -44,6 +45,8 @@ __all__ = [
     "incremental",
     "tilt",
     "sweep",
+    "identify",
+    "IdentifyResult",
     "Result",
     "LimitResult",
     "SettlementResult",

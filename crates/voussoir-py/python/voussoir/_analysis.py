@@ -18,6 +18,7 @@ from . import _options as o
 from ._model import Model
 from ._results import (
     CapacityResult,
+    IdentifyResult,
     IncrementalResult,
     LimitResult,
     SettlementResult,
@@ -47,6 +48,7 @@ _WRAP = {
     "capacity": CapacityResult,
     "incremental": IncrementalResult,
     "tilt": TiltResult,
+    "identify": IdentifyResult,
 }
 
 
@@ -289,3 +291,54 @@ def sweep(
         ]
         lines = [f.result() for f in futures]
     return SweepResult(lines)
+
+
+def identify(
+    model: ModelLike,
+    cracks,
+    unknowns,
+    *,
+    move: o.Moves = None,
+    fixed: Union[str, Iterable[str], None] = None,
+    profile: Optional[str] = None,
+    ranges: bool = True,
+    tolerance: Optional[float] = None,
+    method: str = "dual-simplex",
+    friction: Optional[float] = None,
+    settlement_form: str = "both",
+    executor=None,
+) -> IdentifyResult:
+    """Inverse settlement analysis (``voussoir identify``): which support motions caused the
+    observed cracks.
+
+    ``cracks``: the observations (docs/identify.md) as a dict, a JSON string or a path:
+    ``{"cracks": [{"at": [x, y], "opening": w}, {"joint": j, "opening": [w0, w1]}, …],
+    "unobserved": …, "tolerance": …}``. ``unknowns``: ``{"right": "u"}`` (a component of a
+    support's motion: ``"u"``, ``"v"`` or ``"theta"``), or a list of dicts
+    ``{"supports": ["f22", "f23"], "component": "v", "lower": …, "upper": …}`` (one value shared by
+    several supports) or ``{"name": …, "profile": [P0, P1]}`` (a profile family: the profile as
+    JSON with the unknown set to 0 and to 1). ``move``/``fixed``/``profile``: the known motions,
+    as for :func:`settle`. ``ranges``: compute each unknown's range (two LPs per unknown).
+
+    >>> import voussoir as v
+    >>> arch = v.generate.arch()
+    >>> seen = {"cracks": [{"joint": 13, "opening": [0, 0.0025]}]}  # doctest: +SKIP
+    """
+    import json
+    from pathlib import Path
+
+    if isinstance(cracks, dict):
+        cracks_json = json.dumps(cracks)
+    elif isinstance(cracks, str) and cracks.lstrip().startswith("{"):
+        cracks_json = cracks
+    else:
+        cracks_json = Path(cracks).read_text()
+    if isinstance(unknowns, dict):
+        specs = [{"supports": [k], "component": c} for k, c in unknowns.items()]
+    else:
+        specs = [dict(u) for u in unknowns]
+    c = o.common(tolerance, method, friction, None, "linear", 16, settlement_form)
+    s = o.settle(move, fixed, profile)
+    return _dispatch(
+        "identify", model, (c, s, cracks_json, json.dumps(specs), bool(ranges)), executor
+    )

@@ -288,6 +288,64 @@ class SettlementResult(_Mechanism):
         return bool(c and c.get("ok"))
 
 
+class IdentifyResult(Result):
+    """Inverse settlement analysis (``voussoir identify``): the support motions whose
+    settlement mechanism opens the observed cracks, the misfit per observation, the range of
+    every unknown over the motions within the measurement tolerance, and the forward settlement
+    analysis of the identified motion (its certificate). Drawings are the forward analysis's."""
+
+    __slots__ = ()
+
+    @property
+    def identified(self) -> bool:
+        """Whether a motion reproducing the observed pattern was found."""
+        return self._d().get("status") == "identified"
+
+    @property
+    def motions(self) -> Dict[str, tuple]:
+        """``{support: (u, v, θ)}`` of the identified (or closest) motion, m and rad."""
+        return {
+            m["support"]: (m["u"], m["v"], m["theta"])
+            for m in self._d().get("support_motions", [])
+        }
+
+    @property
+    def unknowns(self) -> List[dict]:
+        """Per unknown: its value, its range over the motions within tolerance, and whether it
+        is identifiable."""
+        return [dict(u) for u in self._d().get("unknowns", [])]
+
+    @property
+    def values(self) -> Dict[str, float]:
+        """``{unknown name: identified value}``."""
+        return {u["name"]: _f(u.get("value")) for u in self._d().get("unknowns", [])}
+
+    @property
+    def total_misfit(self) -> float:
+        """Σ |misfit| / tolerance over the observations."""
+        return _f(self._d().get("total_misfit"))
+
+    @property
+    def reproduces(self) -> bool:
+        """Whether the forward settlement analysis of the identified motion reproduces the
+        predicted crack pattern (certified, same open points, same widths, same work)."""
+        c = self._d().get("certificate")
+        return bool(c and c.get("reproduces"))
+
+    @property
+    def forward(self) -> "SettlementResult":
+        """The forward settlement analysis of the identified motion."""
+        import json as _json
+
+        return SettlementResult(_json.dumps(self._d()["forward"], indent=2) + "\n")
+
+    def svg(self, **kw) -> str:
+        return self.forward.svg(**kw)
+
+    def report(self, path: Optional[PathOrStr] = None, title: Optional[str] = None) -> str:
+        return self.forward.report(path, title)
+
+
 class CapacityResult(Result):
     """Load capacity after a settlement: λ against the settlement s (limit analysis on the
     deformed geometry), the settlement at which λ reaches zero, the validity of each step."""

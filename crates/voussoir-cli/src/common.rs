@@ -382,7 +382,11 @@ impl Input {
         if let Some(s) = motion {
             s.apply(&mut model)?;
         }
-        Ok(Structure::new(&model, self.build)?)
+        let st = Structure::new(&model, self.build)?;
+        for w in model.warnings() {
+            eprintln!("warning: {w}");
+        }
+        Ok(st)
     }
 }
 

@@ -32,8 +32,8 @@ struct UnknownSpec {
 }
 
 fn unknowns(st: &Structure, text: &str) -> Result<Vec<Unknown>, Fail> {
-    let specs: Vec<UnknownSpec> = serde_json::from_str(text)
-        .map_err(|e| Fail::Model(format!("unknowns: {e}")))?;
+    let specs: Vec<UnknownSpec> =
+        serde_json::from_str(text).map_err(|e| Fail::Model(format!("unknowns: {e}")))?;
     let mut out = Vec::with_capacity(specs.len());
     for (i, s) in specs.iter().enumerate() {
         let u = match (&s.profile, s.component) {

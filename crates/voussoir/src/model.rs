@@ -198,6 +198,26 @@ impl Model {
         self.materials.get(name).cloned().unwrap_or_default()
     }
 
+    /// Things in a valid model that an engineer should know, one line each: today, blocks that
+    /// take the built-in default material (18 kN/m³, width 1 m) because the model defines no
+    /// material named `"default"`.
+    pub fn warnings(&self) -> Vec<String> {
+        let implicit = self
+            .blocks
+            .iter()
+            .filter(|b| b.material.as_deref().unwrap_or("default") == "default")
+            .count();
+        if implicit > 0 && !self.materials.contains_key("default") {
+            let d = Material::default();
+            vec![format!(
+                "{implicit} block(s) use the material 'default', which the model does not define: they weigh {} kN/m³ with width {} m (voussoir's built-in default); give materials.default to say so",
+                d.unit_weight, d.width
+            )]
+        } else {
+            vec![]
+        }
+    }
+
     /// Index of the support named `name`.
     pub fn support_index(&self, name: &str) -> Option<usize> {
         self.supports.iter().position(|s| s.name == name)

@@ -119,3 +119,47 @@ fn frictional_settlement_mechanisms_are_not_flagged_as_inadmissible() {
     assert!(!r.message.contains("WARNING"), "{}", r.message);
     assert!(c.relative_gap <= 1e-7);
 }
+
+/// Regression: an incremental control point far outside the structure was attached to some
+/// block; now it is refused in one line naming the distance and the nearest block. A point on
+/// the extrados (the README's `0,3.19`) is still accepted.
+#[test]
+fn incremental_control_point_far_from_the_structure_is_refused() {
+    use voussoir::analysis::incremental::Control;
+    let m = arch(&ArchSpec {
+        live: LiveLoad::Left,
+        ..ArchSpec::default()
+    })
+    .unwrap();
+    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    assert!(Control::nearest(&st, [0.0, 3.19], [1.0, 0.0]).is_ok());
+    let e = Control::nearest(&st, [0.0, 319.0], [1.0, 0.0]).unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("315.810 m from the nearest block") && !msg.contains('\n'),
+        "{msg}"
+    );
+}
+
+/// Regression: a model without a `"default"` material silently gave its blocks 18 kN/m³; the
+/// model now says so in one line (the CLI prints it as a warning), and says nothing when the
+/// material is defined.
+#[test]
+fn implicit_default_material_is_warned_about() {
+    let bare: Model = serde_json::from_str(
+        r#"{
+        "blocks": [ { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]] } ],
+        "supports": [ { "name": "base", "polygon": [[-1, -1], [2, -1], [2, 0], [-1, 0]] } ]
+    }"#,
+    )
+    .unwrap();
+    let w = bare.warnings();
+    assert_eq!(w.len(), 1);
+    assert!(
+        w[0].contains("18 kN/m³") && w[0].contains("materials.default") && !w[0].contains('\n')
+    );
+    // The weight is still the documented default: 18 kN/m³ × 1 m² × 1 m.
+    let st = Structure::new(&bare, BuildOptions::default()).unwrap();
+    assert_eq!(st.blocks[0].weight, 18.0);
+    assert!(paper_arch().warnings().is_empty());
+}

@@ -92,9 +92,33 @@ impl Control {
                 best = (dist, i);
             }
         }
+        // A point far from every block is a mistake (a typo, other units): refuse it rather
+        // than attach it to whichever block happens to be nearest.
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for q in st.blocks.iter().flat_map(|b| b.polygon.iter()) {
+            for c in 0..2 {
+                lo[c] = lo[c].min(q[c]);
+                hi[c] = hi[c].max(q[c]);
+            }
+        }
+        let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+        if !(best.0 <= CONTROL_REACH * diag) {
+            return Err(Error::Request(format!(
+                "control point ({}, {}) is {:.3} m from the nearest block (block {}): give a point on the structure (within {:.0} % of its size)",
+                x[0],
+                x[1],
+                best.0,
+                best.1,
+                100.0 * CONTROL_REACH
+            )));
+        }
         Control::new(st, best.1, x, direction)
     }
 }
+
+/// How far (relative to the structure's bounding-box diagonal) a control point may lie from the
+/// nearest block.
+pub const CONTROL_REACH: f64 = 0.02;
 
 /// Options of the incremental analysis.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -67,13 +67,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
 
 fn summary(st: &voussoir::Structure, r: &CapacityResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "blocks {}, joints {}, supports {}",
-        st.blocks.len(),
-        st.joints.len(),
-        st.supports.len()
-    );
+    let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(s, "{}", r.message);
     if r.curve.is_empty() {
         return s;

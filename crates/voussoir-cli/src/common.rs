@@ -330,7 +330,7 @@ impl ModelArgs {
     /// `default` one included).
     pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
         check_materials(self.friction, self.compressive_strength)?;
-        apply_materials(m, self.friction, self.compressive_strength);
+        m.override_joint_laws(self.friction, self.compressive_strength);
         Ok(())
     }
 }
@@ -353,26 +353,11 @@ fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
     Ok(())
 }
 
-fn apply_materials(m: &mut Model, friction: Option<f64>, fc: Option<f64>) {
-    if friction.is_none() && fc.is_none() {
-        return;
-    }
-    m.materials.entry("default".to_string()).or_default();
-    for mat in m.materials.values_mut() {
-        if friction.is_some() {
-            mat.friction = friction;
-        }
-        if fc.is_some() {
-            mat.compressive_strength = fc;
-        }
-    }
-}
-
 impl Input {
     /// Read the model (JSON, or DXF by extension) and apply the material overrides.
     pub fn load(&self) -> Result<Model, Fail> {
         let mut m = self.dxf.read(&self.path)?.0;
-        apply_materials(&mut m, self.friction, self.compressive_strength);
+        m.override_joint_laws(self.friction, self.compressive_strength);
         Ok(m)
     }
 
@@ -445,15 +430,19 @@ fn hinge_list(st: &Structure, hinges: &[voussoir::result::Hinge]) -> String {
     s
 }
 
-pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
+/// The first line of every summary: the structure's size.
+pub fn structure_line(st: &Structure) -> String {
+    format!(
         "blocks {}, joints {}, supports {}",
         st.blocks.len(),
         st.joints.len(),
         st.supports.len()
-    );
+    )
+}
+
+pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", structure_line(st));
     let _ = writeln!(s, "{}", r.message);
     if !r.hinges.is_empty() {
         let _ = writeln!(s, "hinges of the collapse mechanism ({}):", r.hinges.len());
@@ -464,13 +453,7 @@ pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
 
 pub fn settle_summary(st: &Structure, r: &SettlementResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "blocks {}, joints {}, supports {}",
-        st.blocks.len(),
-        st.joints.len(),
-        st.supports.len()
-    );
+    let _ = writeln!(s, "{}", structure_line(st));
     let _ = writeln!(s, "{}", r.message);
     if let (Some(p), Some(d), Some(g)) = (r.work_dead_loads, r.work_reactions, r.duality_gap) {
         let _ = writeln!(

@@ -47,6 +47,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     let motion = a.settle.resolve()?;
     let st = input.structure(Some(&motion))?;
     let solver = input.solver;
+    crate::outputs::input(&a.cracks);
     let text = std::fs::read_to_string(&a.cracks)
         .map_err(|e| Fail(format!("cannot read {}: {e}", a.cracks.display())))?;
     let obs: Observations = serde_json::from_str(&text)
@@ -78,20 +79,14 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
                 scale: a.draw.scale,
             },
         );
-        voussoir_io::write_atomic(path, rep.to_html().as_bytes())?;
+        crate::outputs::stage(path, rep.to_html().as_bytes())?;
     }
     a.out.emit(&r, || summary(&st, &r))
 }
 
 fn summary(st: &Structure, r: &IdentifyResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "blocks {}, joints {}, supports {}",
-        st.blocks.len(),
-        st.joints.len(),
-        st.supports.len()
-    );
+    let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(s, "{}", r.message);
     let _ = writeln!(s, "unknowns:");
     for u in &r.unknowns {

@@ -151,13 +151,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
 
 fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "blocks {}, joints {}, supports {}",
-        st.blocks.len(),
-        st.joints.len(),
-        st.supports.len()
-    );
+    let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(
         s,
         "control: block {} at ({:.4}, {:.4}), direction ({:.3}, {:.3})",

@@ -133,18 +133,7 @@ impl Common {
                 )));
             }
         }
-        if self.friction.is_none() && self.compressive_strength.is_none() {
-            return Ok(());
-        }
-        m.materials.entry("default".to_string()).or_default();
-        for mat in m.materials.values_mut() {
-            if self.friction.is_some() {
-                mat.friction = self.friction;
-            }
-            if self.compressive_strength.is_some() {
-                mat.compressive_strength = self.compressive_strength;
-            }
-        }
+        m.override_joint_laws(self.friction, self.compressive_strength);
         Ok(())
     }
 

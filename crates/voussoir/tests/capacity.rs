@@ -347,7 +347,7 @@ fn lintel_with_finite_strength_loses_capacity_at_half_its_thickness() {
 
 /// `--method clarabel` means Clarabel in every solve of the capacity analysis (settlement path,
 /// curve, root finding): the result says so, and the zero-capacity settlement agrees with dual
-/// simplex to 1e-4 m (the paper's horizontal case, 1.375 cm with dual simplex).
+/// simplex to 1e-4 m (the paper's horizontal case: 1.4 cm).
 #[test]
 fn capacity_with_clarabel_runs_clarabel_and_agrees_with_dual_simplex() {
     use voussoir::lp::Method;
@@ -375,6 +375,7 @@ fn capacity_with_clarabel_runs_clarabel_and_agrees_with_dual_simplex() {
         simplex.zero_capacity_settlement.unwrap(),
         ipm.zero_capacity_settlement.unwrap(),
     );
-    assert!(within(a, 0.01375, 0.01), "dual simplex {a}");
+    // The paper's zero-capacity settlement for this case: 1.4 cm (± 5 %, paper-cases.md).
+    assert!(within(a, 0.014, 0.05), "dual simplex {a}");
     assert!((a - b).abs() <= 1e-4, "dual simplex {a} vs Clarabel {b}");
 }

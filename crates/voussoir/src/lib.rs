@@ -42,6 +42,7 @@ pub mod generate_facade;
 pub mod geometry;
 pub mod lp;
 pub mod model;
+pub mod model3d;
 pub mod programs;
 pub mod programs_identify;
 pub mod result;

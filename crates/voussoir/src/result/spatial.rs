@@ -90,18 +90,40 @@ pub struct SpatialWrench {
     pub cz: f64,
 }
 
-/// The shapes of a 3D result: block and support polyhedra (vertices and faces).
+/// The shapes of a 3D result: block and support polyhedra (vertices and faces, outward
+/// counter-clockwise), the supports' names and prescribed motions, and the applied loads.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct SpatialShapes {
     pub blocks: Vec<Polyhedron>,
-    pub supports: Vec<Polyhedron>,
+    pub supports: Vec<SupportSolid>,
+    pub loads: Vec<LoadArrow3d>,
 }
 
+/// A support of a 3D result.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct Polyhedron {
+pub struct SupportSolid {
+    pub name: String,
     pub vertices: Vec<[f64; 3]>,
     pub faces: Vec<Vec<usize>>,
+    /// Prescribed motion `[u, v, w, θx, θy, θz]` about the support's centroid.
+    pub motion: [f64; 6],
+    pub fixed: bool,
 }
+
+/// An applied load of a 3D result: force `(fx, fy, fz)` kN at `(x, y, z)` on `block`.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct LoadArrow3d {
+    pub block: usize,
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub fx: f64,
+    pub fy: f64,
+    pub fz: f64,
+    pub live: bool,
+}
+
+pub use crate::model3d::Polyhedron;
 
 impl Spatial for Two {
     type Motion = PlanarMotion;

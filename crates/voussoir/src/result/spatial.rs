@@ -95,6 +95,8 @@ pub struct SpatialWrench {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct SpatialShapes {
     pub blocks: Vec<Polyhedron>,
+    /// Centroid of each block: the reference point of its motion (`u + θ × (x − c)`).
+    pub centroids: Vec<[f64; 3]>,
     pub supports: Vec<SupportSolid>,
     pub loads: Vec<LoadArrow3d>,
 }

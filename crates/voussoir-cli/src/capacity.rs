@@ -5,6 +5,8 @@ use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
 use clap::Args;
 use std::fmt::Write as _;
 use voussoir::analysis::capacity::{capacity, CapacityOptions, CapacityResult};
+use voussoir::model3d::AnyModel;
+use voussoir::Assembly;
 use voussoir_io::draw::capacity::LinearFitText;
 
 #[derive(Args)]
@@ -51,7 +53,6 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     let input = a.model.resolve()?;
     let motion = a.settle.resolve()?;
     let solver = input.solver;
-    let st = input.structure(Some(&motion))?;
     let opts = CapacityOptions {
         steps: a.steps,
         hot_start: !a.cold,
@@ -60,12 +61,23 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         solver,
         ..CapacityOptions::default()
     };
-    let r = capacity(&st, &opts)?;
-    a.draw.emit_capacity(&r, &input.path)?;
-    a.out.emit(&r, || summary(&st, &r))
+    match input.load_any()? {
+        AnyModel::Planar(model) => {
+            let st = input.structure_of(model, Some(&motion))?;
+            let r = capacity(&st, &opts)?;
+            a.draw.emit_capacity(&r, &input.path)?;
+            a.out.emit(&r, || summary(&st, &r))
+        }
+        AnyModel::Spatial(model) => {
+            a.draw.refuse_3d()?;
+            let st = input.structure3d(model, Some(&motion))?;
+            let r = capacity(&st, &opts)?;
+            a.out.emit(&r, || summary(&st, &r))
+        }
+    }
 }
 
-fn summary(st: &voussoir::Structure, r: &CapacityResult) -> String {
+fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(s, "{}", r.message);
@@ -75,7 +87,12 @@ fn summary(st: &voussoir::Structure, r: &CapacityResult) -> String {
     let moving: Vec<String> = r
         .direction
         .iter()
-        .map(|d| format!("{} ({:.3}, {:.3})", d.support, d.motion[0], d.motion[1]))
+        .map(|d| {
+            let m: Vec<String> = d.motion.iter().map(|x| format!("{x:.3}")).collect();
+            // The translation: (u, v) in 2D, (u, v, w) in 3D.
+            let n = if m.len() == 3 { 2 } else { 3 };
+            format!("{} ({})", d.support, m[..n].join(", "))
+        })
         .collect();
     let _ = writeln!(
         s,

@@ -5,9 +5,13 @@ use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use voussoir::analysis::{LimitResult, SettlementResult};
+use voussoir::result::{Hinge, Spatial};
+use voussoir::structure::Body;
+use voussoir::Assembly;
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{apply_profile, fix_support, move_support, Profile};
-use voussoir::{BuildOptions, Model, Structure};
+use voussoir::settlement_input::{apply_profile, fix_support, move_support, ModelSupports, Profile};
+use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::{BuildOptions, Model, Structure, Structure3d};
 
 /// A failure: one line for the user.
 #[derive(Debug)]
@@ -48,11 +52,32 @@ pub struct ModelArgs {
     /// default: the model's, else infinite).
     #[arg(long, value_name = "KPA")]
     pub compressive_strength: Option<f64>,
+    /// 3D models: facets of the pyramid inscribed in each friction cone (conservative; the
+    /// sliding resistance is between μ·cos(π/K) and μ; default 8).
+    #[arg(long, value_name = "K")]
+    pub friction_facets: Option<usize>,
+    /// 3D models, limit and tilt: `exact` replaces the inscribed pyramid by the exact friction
+    /// cone (a second-order cone program, Clarabel).
+    #[arg(long, value_enum, value_name = "CONE")]
+    pub friction_cone: Option<FrictionConeArg>,
     #[command(flatten)]
     pub dxf: crate::import::DxfArgs,
     #[command(flatten)]
     pub solver: SolverArgs,
 }
+
+/// The friction cone of a 3D joint.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FrictionConeArg {
+    /// The pyramid of --friction-facets facets inscribed in the cone (an LP).
+    Pyramid,
+    /// The exact cone (second-order cone program, Clarabel).
+    #[value(alias = "cone", alias = "socp")]
+    Exact,
+}
+
+/// Fewest and most facets of the friction pyramid.
+pub const FRICTION_FACETS: std::ops::RangeInclusive<usize> = 3..=1024;
 
 // The LP solver.
 #[derive(Args, Clone, Debug)]
@@ -154,10 +179,10 @@ pub enum MethodArg {
 // The support motion of a settlement: moves, fixed supports, a profile.
 #[derive(Args, Clone, Debug, Default)]
 pub struct SettleArgs {
-    /// Prescribed motion of a support: NAME=u,v[,θ] with u, v in m or with a unit (v up;
-    /// `right=0,-5mm`) and θ in degrees counter-clockwise about the support's centroid.
-    /// Repeatable.
-    #[arg(long = "move", value_name = "NAME=U,V[,THETA]")]
+    /// Prescribed motion of a support: in 2D NAME=u,v[,θ] with u, v in m or with a unit (v up;
+    /// `right=0,-5mm`) and θ in degrees counter-clockwise about the support's centroid; in 3D
+    /// NAME=u,v,w[,θx,θy,θz] (w up; rotations in degrees, right-handed). Repeatable.
+    #[arg(long = "move", value_name = "NAME=U,V[,W|THETA][,...]")]
     pub moves: Vec<String>,
     /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
@@ -188,8 +213,9 @@ pub fn signed_length(s: &str) -> Option<f64> {
 #[derive(Clone, Debug, Default)]
 pub struct Motion {
     pub fixed: Vec<String>,
-    /// (support, [u, v, θ]) with θ in radians.
-    pub moves: Vec<(String, [f64; 3])>,
+    /// (support, values, whether each value carried a length unit) as given; lengths in m,
+    /// angles in degrees. Their meaning depends on the model's dimension ([`Motion::apply`]).
+    pub moves: Vec<(String, Vec<(f64, bool)>)>,
     pub profile: Option<Profile>,
 }
 
@@ -198,31 +224,32 @@ impl SettleArgs {
     pub fn resolve(&self) -> Result<Motion, Fail> {
         let mut moves = Vec::new();
         for m in &self.moves {
-            let (name, vals) = m
-                .split_once('=')
-                .ok_or_else(|| Fail(format!("--move {m}: expected NAME=u,v[,θ]")))?;
-            // u and v may carry a length unit (`-2.5mm`, `1cm`; bare numbers are metres).
-            let nums: Vec<f64> = vals
+            let (name, vals) = m.split_once('=').ok_or_else(|| {
+                Fail(format!(
+                    "--move {m}: expected NAME=u,v[,θ] (2D) or NAME=u,v,w[,θx,θy,θz] (3D)"
+                ))
+            })?;
+            // Lengths may carry a unit (`-2.5mm`, `1cm`; bare numbers are metres).
+            let nums: Vec<(f64, bool)> = vals
                 .split(',')
-                .enumerate()
-                .map(|(k, x)| {
-                    if k < 2 {
-                        signed_length(x)
-                    } else {
-                        x.trim().parse::<f64>().ok()
-                    }
+                .map(|x| {
+                    let t = x.trim();
+                    t.parse::<f64>()
+                        .ok()
+                        .map(|v| (v, false))
+                        .or_else(|| signed_length(t).map(|v| (v, true)))
                 })
                 .collect::<Option<_>>()
-                .ok_or_else(|| Fail(format!("--move {m}: u, v and θ must be numbers")))?;
-            let motion = match nums.as_slice() {
-                [u, v] => [*u, *v, 0.0],
-                [u, v, t] => [*u, *v, t.to_radians()],
-                _ => return Err(Fail(format!("--move {m}: expected NAME=u,v[,θ]"))),
-            };
-            if motion.iter().any(|x| !x.is_finite()) {
-                return Err(Fail(format!("--move {m}: u, v and θ must be finite")));
+                .ok_or_else(|| Fail(format!("--move {m}: the lengths and angles must be numbers")))?;
+            if nums.iter().any(|(x, _)| !x.is_finite()) {
+                return Err(Fail(format!("--move {m}: every value must be finite")));
             }
-            moves.push((name.to_string(), motion));
+            if !matches!(nums.len(), 2 | 3 | 6) {
+                return Err(Fail(format!(
+                    "--move {m}: expected NAME=u,v[,θ] (2D) or NAME=u,v,w[,θx,θy,θz] (3D)"
+                )));
+            }
+            moves.push((name.to_string(), nums));
         }
         let profile = match &self.profile {
             Some(p) => Some(parse_profile(p)?),
@@ -236,19 +263,43 @@ impl SettleArgs {
     }
 
     /// Apply the moves, fixed supports and profile to a model.
-    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), Fail> {
         self.resolve()?.apply(model)
     }
 }
 
 impl Motion {
-    /// Apply the moves, fixed supports and profile to a model.
-    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+    /// Apply the moves, fixed supports and profile to a model of either dimension: in 2D a
+    /// move is `u, v[, θ]`, in 3D `u, v, w[, θx, θy, θz]` (lengths in m or with a unit, angles
+    /// in degrees).
+    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), Fail> {
+        let lengths = M::MOTION / 2 + usize::from(M::MOTION == 3);
         for f in &self.fixed {
             fix_support(model, f)?;
         }
-        for (name, motion) in &self.moves {
-            move_support(model, name, *motion)?;
+        for (name, nums) in &self.moves {
+            let form = if M::MOTION == 3 {
+                "NAME=u,v[,θ] in a 2D model"
+            } else {
+                "NAME=u,v,w[,θx,θy,θz] in a 3D model"
+            };
+            if nums.len() != lengths && nums.len() != M::MOTION {
+                return Err(Fail(format!(
+                    "--move {name}: {} values given, expected {form}",
+                    nums.len()
+                )));
+            }
+            if let Some(k) = (lengths..nums.len()).find(|&k| nums[k].1) {
+                return Err(Fail(format!(
+                    "--move {name}: value {} is an angle in degrees and takes no length unit",
+                    k + 1
+                )));
+            }
+            let mut motion = vec![0.0; M::MOTION];
+            for (k, (v, _)) in nums.iter().enumerate() {
+                motion[k] = if k < lengths { *v } else { v.to_radians() };
+            }
+            move_support(model, name, &motion)?;
         }
         if let Some(p) = &self.profile {
             apply_profile(model, p)?;
@@ -274,6 +325,9 @@ pub struct Input {
     pub compressive_strength: Option<f64>,
     pub dxf: crate::import::DxfArgs,
     pub solver: SolverOptions,
+    /// 3D: facets of the friction pyramid (None: the default), exact cone asked for.
+    pub friction_facets: Option<usize>,
+    pub exact_friction_cone: bool,
 }
 
 impl ModelArgs {
@@ -296,7 +350,23 @@ impl ModelArgs {
             }
         }
         self.dxf.check()?;
+        if let Some(k) = self.friction_facets {
+            if !FRICTION_FACETS.contains(&k) {
+                return Err(Fail(format!(
+                    "--friction-facets {k}: the friction pyramid needs between {} and {} facets",
+                    FRICTION_FACETS.start(),
+                    FRICTION_FACETS.end()
+                )));
+            }
+            if self.friction_cone == Some(FrictionConeArg::Exact) {
+                return Err(Fail(
+                    "--friction-facets applies to the pyramid, not to --friction-cone exact".into(),
+                ));
+            }
+        }
         Ok(Input {
+            friction_facets: self.friction_facets,
+            exact_friction_cone: self.friction_cone == Some(FrictionConeArg::Exact),
             path: self.model.clone(),
             build: BuildOptions {
                 tolerance: self.tolerance,
@@ -354,6 +424,37 @@ fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
 }
 
 impl Input {
+    /// Read a model of either dimension and apply the material overrides.
+    pub fn load_any(&self) -> Result<AnyModel, Fail> {
+        let mut m = self.dxf.read_any(&self.path)?.0;
+        match &mut m {
+            AnyModel::Planar(p) => p.override_joint_laws(self.friction, self.compressive_strength),
+            AnyModel::Spatial(s) => {
+                s.override_joint_laws(self.friction, self.compressive_strength)
+            }
+        }
+        Ok(m)
+    }
+
+    /// Load a 3D model, apply a support motion, validate and find its joints.
+    pub fn structure3d(
+        &self,
+        mut model: Model3d,
+        motion: Option<&Motion>,
+    ) -> Result<Structure3d, Fail> {
+        if let Some(s) = motion {
+            s.apply(&mut model)?;
+        }
+        let mut st = Structure3d::new(&model, self.build)?;
+        if let Some(k) = self.friction_facets {
+            st.friction_facets = k;
+        }
+        for w in model.warnings() {
+            eprintln!("warning: {w}");
+        }
+        Ok(st)
+    }
+
     /// Read the model (JSON, or DXF by extension) and apply the material overrides.
     pub fn load(&self) -> Result<Model, Fail> {
         let mut m = self.dxf.read(&self.path)?.0;
@@ -363,7 +464,16 @@ impl Input {
 
     /// Load, apply a support motion, validate and discretise.
     pub fn structure(&self, motion: Option<&Motion>) -> Result<Structure, Fail> {
-        let mut model = self.load()?;
+        self.structure_of(self.load()?, motion)
+    }
+
+    /// A loaded 2D model with a support motion, validated and discretised.
+    pub fn structure_of(&self, mut model: Model, motion: Option<&Motion>) -> Result<Structure, Fail> {
+        if self.friction_facets.is_some() || self.exact_friction_cone {
+            return Err(Fail(
+                "--friction-facets and --friction-cone apply to 3D models (a 2D joint's friction is exact)".into(),
+            ));
+        }
         if let Some(s) = motion {
             s.apply(&mut model)?;
         }
@@ -413,34 +523,44 @@ pub fn out(text: &str) {
     let _ = o.write_all(text.as_bytes()).and_then(|_| o.flush());
 }
 
-fn hinge_list(st: &Structure, hinges: &[voussoir::result::Hinge]) -> String {
+fn hinge_list<S: Assembly>(st: &S, hinges: &[Hinge<S::D>]) -> String {
     let mut s = String::new();
     for h in hinges {
-        let j = &st.joints[h.joint];
+        let (a, b) = st.joint_bodies(h.joint);
+        let at: Vec<String> = <S::D as Spatial>::coords(&h.at)
+            .iter()
+            .map(|x| format!("{x:.4}"))
+            .collect();
         let _ = writeln!(
             s,
-            "  joint {:>4} ({} | {}) at ({:.4}, {:.4})",
+            "  joint {:>4} ({} | {}) at ({})",
             h.joint,
-            st.name(j.a),
-            st.name(j.b),
-            h.x,
-            h.y
+            name(st, a),
+            name(st, b),
+            at.join(", ")
         );
     }
     s
 }
 
+fn name<S: Assembly>(st: &S, b: Body) -> String {
+    match b {
+        Body::Block(i) => i.to_string(),
+        Body::Support(k) => st.support_name(k).to_string(),
+    }
+}
+
 /// The first line of every summary: the structure's size.
-pub fn structure_line(st: &Structure) -> String {
+pub fn structure_line<S: Assembly>(st: &S) -> String {
     format!(
         "blocks {}, joints {}, supports {}",
-        st.blocks.len(),
-        st.joints.len(),
-        st.supports.len()
+        st.num_blocks(),
+        st.num_joints(),
+        st.num_supports()
     )
 }
 
-pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
+pub fn limit_summary<S: Assembly>(st: &S, r: &LimitResult<S::D>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", structure_line(st));
     let _ = writeln!(s, "{}", r.message);
@@ -451,7 +571,7 @@ pub fn limit_summary(st: &Structure, r: &LimitResult) -> String {
     s
 }
 
-pub fn settle_summary(st: &Structure, r: &SettlementResult) -> String {
+pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", structure_line(st));
     let _ = writeln!(s, "{}", r.message);
@@ -474,11 +594,11 @@ pub fn settle_summary(st: &Structure, r: &SettlementResult) -> String {
         let _ = writeln!(s, "fully open joints: {open}");
     }
     for re in &r.reactions {
-        let _ = writeln!(
-            s,
-            "reaction {:>8}: fx {:>10.4} kN  fy {:>10.4} kN  m {:>10.4} kN·m",
-            re.support, re.fx, re.fy, re.m
-        );
+        let parts: Vec<String> = <S::D as Spatial>::wrench_components(&re.wrench)
+            .iter()
+            .map(|(label, v, unit)| format!("{label} {v:>10.4} {unit}"))
+            .collect();
+        let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
     s
 }

@@ -57,6 +57,16 @@ impl DrawArgs {
         }
     }
 
+    /// Drawing flags on a 3D model: refused in one line until 3D drawings exist.
+    pub fn refuse_3d(&self) -> Result<(), Fail> {
+        if self.any() {
+            return Err(Fail(
+                "--svg, --png and --report draw 2D results only; for a 3D model write the JSON result (-o)".into(),
+            ));
+        }
+        Ok(())
+    }
+
     /// Whether any drawing output was asked for.
     pub fn any(&self) -> bool {
         self.svg.is_some() || self.png.is_some() || self.report.is_some()

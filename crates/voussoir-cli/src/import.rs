@@ -4,6 +4,7 @@
 use crate::common::Fail;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
+use voussoir::model3d::AnyModel;
 use voussoir::{BuildOptions, Model, Structure};
 use voussoir_io::dxf::{read_dxf, DxfOptions, ImportLive, ImportReport, Units};
 
@@ -122,14 +123,26 @@ impl DxfArgs {
         Ok(())
     }
 
-    /// Read `path` as a model: DXF by extension, JSON otherwise. The report is there for DXF.
+    /// Read `path` as a 2D model: DXF by extension, JSON otherwise. The report is there for
+    /// DXF. A 3D model is refused with a line that says where 3D models go.
     pub fn read(&self, path: &Path) -> Result<(Model, Option<ImportReport>), Fail> {
+        match self.read_any(path)? {
+            (AnyModel::Planar(m), rep) => Ok((m, rep)),
+            (AnyModel::Spatial(_), _) => Err(Fail(format!(
+                "{} is a 3D model: this command analyses 2D models only (3D models go to limit, settle, capacity and tilt)",
+                path.display()
+            ))),
+        }
+    }
+
+    /// Read `path` as a model of either dimension: DXF (2D) by extension, JSON otherwise.
+    pub fn read_any(&self, path: &Path) -> Result<(AnyModel, Option<ImportReport>), Fail> {
         crate::outputs::input(path);
         if voussoir_io::dxf::is_dxf(path) {
             let (m, rep) = read_dxf(path, &self.options())?;
-            Ok((m, Some(rep)))
+            Ok((AnyModel::Planar(m), Some(rep)))
         } else {
-            Ok((voussoir_io::read_model(path)?, None))
+            Ok((voussoir_io::read_any_model(path)?, None))
         }
     }
 }

@@ -4,6 +4,7 @@ use crate::common::{CrushingArg, Fail, Input, ModelArgs, OutArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
 use voussoir::analysis::limit::{limit_with, Crushing, MAX_FACETS, MIN_FACETS};
+use voussoir::model3d::AnyModel;
 
 /// Facets of the inscribed crushing polygon when --facets is not given.
 const DEFAULT_FACETS: usize = 16;
@@ -67,8 +68,28 @@ impl LimitArgs {
 
 pub fn run(a: LimitArgs) -> Result<(), Fail> {
     let c = a.resolve()?;
-    let st = c.input.structure(None)?;
-    let r = limit_with(&st, &c.input.solver, c.crushing, c.facets)?;
-    a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
-    a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+    match c.input.load_any()? {
+        AnyModel::Planar(model) => {
+            let st = c.input.structure_of(model, None)?;
+            let r = limit_with(&st, &c.input.solver, c.crushing, c.facets)?;
+            a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
+            a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+        }
+        AnyModel::Spatial(model) => {
+            a.draw.refuse_3d()?;
+            if c.crushing == Crushing::Conic || a.facets.is_some() {
+                return Err(Fail(
+                    "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),
+                ));
+            }
+            let st = c.input.structure3d(model, None)?;
+            let cone = if c.input.exact_friction_cone {
+                Crushing::Conic
+            } else {
+                Crushing::Linear
+            };
+            let r = limit_with(&st, &c.input.solver, cone, DEFAULT_FACETS)?;
+            a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+        }
+    }
 }

@@ -4,6 +4,7 @@ use crate::common::{self, Fail, FormArgs, Input, ModelArgs, Motion, OutArgs, Set
 use crate::draw_args::DrawArgs;
 use clap::Args;
 use voussoir::analysis::settlement::{settle, settle_with, SettlementForm};
+use voussoir::model3d::{AnyModel, Model3d};
 
 #[derive(Args)]
 pub struct SettleCmdArgs {
@@ -41,7 +42,10 @@ impl SettleCmdArgs {
 
 pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
     let c = a.resolve()?;
-    let mut model = c.input.load()?;
+    let mut model = match c.input.load_any()? {
+        AnyModel::Planar(m) => m,
+        AnyModel::Spatial(m) => return run3d(&a, &c, m),
+    };
     c.motion.apply(&mut model)?;
     // The model is validated first, so that a bad model is named before a missing motion.
     let st = voussoir::Structure::new(&model, c.input.build)?;
@@ -56,5 +60,29 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         form => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
+    a.out.emit(&r, || common::settle_summary(&st, &r))
+}
+
+fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
+    a.draw.refuse_3d()?;
+    c.motion.apply(&mut model)?;
+    let st = voussoir::Structure3d::new(&model, c.input.build)?;
+    for w in model.warnings() {
+        eprintln!("warning: {w}");
+    }
+    if !model
+        .supports
+        .iter()
+        .any(|s| s.motion.iter().any(|x| *x != 0.0))
+    {
+        return Err(Fail(
+            "settle needs a support motion: give --move NAME=u,v,w[,θx,θy,θz] or --profile (the model's supports do not move)"
+                .into(),
+        ));
+    }
+    let r = match c.form {
+        SettlementForm::Both => settle(&st, &c.input.solver)?,
+        form => settle_with(&st, &c.input.solver, form)?,
+    };
     a.out.emit(&r, || common::settle_summary(&st, &r))
 }

@@ -3,6 +3,7 @@
 use crate::common::{Fail, ModelArgs, OutArgs};
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
+use voussoir::model3d::AnyModel;
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub enum TiltDirection {
@@ -25,6 +26,10 @@ pub struct TiltArgs {
         ignore_case = true
     )]
     pub direction: TiltDirection,
+    /// 3D models: azimuth of the tilt in degrees from x towards y (the structure tends to fall
+    /// that way; default 0, towards +x).
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub azimuth: Option<f64>,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -42,7 +47,47 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
         TiltDirection::PlusX => 1.0,
         TiltDirection::MinusX => -1.0,
     };
-    let st = input.structure(None)?;
+    if let Some(az) = a.azimuth {
+        if !az.is_finite() {
+            return Err(Fail(format!("--azimuth {az}: must be a finite number of degrees")));
+        }
+    }
+    let model = match input.load_any()? {
+        AnyModel::Planar(m) => m,
+        AnyModel::Spatial(m) => {
+            a.draw.refuse_3d()?;
+            let st = input.structure3d(m, None)?;
+            let az = a.azimuth.unwrap_or(0.0);
+            let r = if input.exact_friction_cone {
+                voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &input.solver)?
+            } else {
+                voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver)?
+            };
+            return a.out.emit(&r, || {
+                let mut s = String::new();
+                let _ = writeln!(s, "{}", crate::common::structure_line(&st));
+                match r.tilt_angle {
+                    Some(t) => {
+                        let _ = writeln!(
+                            s,
+                            "critical tilt angle {t:.4}° towards azimuth {az}° (tan α = λ = {:.6})",
+                            t.to_radians().tan()
+                        );
+                    }
+                    None => {
+                        let _ = writeln!(s, "{}", r.limit.message);
+                    }
+                }
+                s
+            });
+        }
+    };
+    if a.azimuth.is_some() {
+        return Err(Fail(
+            "--azimuth applies to 3D models; a 2D tilt goes towards --direction +x or -x".into(),
+        ));
+    }
+    let st = input.structure_of(model, None)?;
     let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver)?;
     a.draw.with(&a.forces).emit_tilt(&r, &input.path)?;
     a.out.emit(&r, || {

@@ -29,6 +29,14 @@ pub fn read_model(path: &Path) -> Result<Model, IoError> {
     parse_model(&text).map_err(|e| IoError(format!("{}: {}", path.display(), e.0)))
 }
 
+/// Read a JSON model of either dimension (3D when its blocks have `vertices`).
+pub fn read_any_model(path: &Path) -> Result<voussoir::model3d::AnyModel, IoError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| IoError(format!("cannot read {}: {e}", path.display())))?;
+    voussoir::model3d::AnyModel::from_json(&text)
+        .map_err(|e| IoError(format!("{}: invalid model JSON: {e}", path.display())))
+}
+
 /// Parse a JSON model (unknown fields are rejected).
 pub fn parse_model(text: &str) -> Result<Model, IoError> {
     serde_json::from_str::<Model>(text).map_err(|e| IoError(format!("invalid model JSON: {e}")))

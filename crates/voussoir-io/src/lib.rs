@@ -5,4 +5,4 @@ pub mod draw;
 pub mod dxf;
 pub mod files;
 
-pub use files::{read_model, write_all_or_nothing, write_atomic, IoError};
+pub use files::{read_any_model, read_model, write_all_or_nothing, write_atomic, IoError};

@@ -44,7 +44,7 @@ fn paper_arch_spreading() -> SettlementResult {
         ..ArchSpec::default()
     })
     .unwrap();
-    move_support(&mut m, "right", [0.01, 0.0, 0.0]).unwrap();
+    move_support(&mut m, "right", &[0.01, 0.0, 0.0]).unwrap();
     settle(&structure(&m), &SolverOptions::default()).unwrap()
 }
 
@@ -537,7 +537,7 @@ fn paper_arch_capacity_curve_png() {
         ..ArchSpec::default()
     })
     .unwrap();
-    move_support(&mut m, "right", [0.02, 0.0, 0.0]).unwrap();
+    move_support(&mut m, "right", &[0.02, 0.0, 0.0]).unwrap();
     let r = capacity(
         &structure(&m),
         &CapacityOptions {

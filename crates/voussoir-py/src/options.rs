@@ -70,7 +70,7 @@ impl Settle {
                     )))
                 }
             };
-            move_support(model, name, motion)?;
+            move_support(model, name, &motion)?;
         }
         if let Some(p) = &self.profile {
             // The profile arrives as the JSON of `Profile` (python/voussoir/_options.py parses

@@ -34,6 +34,7 @@ pub trait Dim: Copy + Clone + Debug + Default + Send + Sync + 'static {
         + Debug
         + PartialEq
         + AsRef<[f64]>
+        + AsMut<[f64]>
         + Send
         + Sync
         + serde::Serialize

@@ -13,8 +13,8 @@
 //! a compressive normal force `p_n,k ≥ 0` on `b` along `+n` and a shear `p_t,k` along `+t` give
 //! block resultants `Nᵀ p_n + Tᵀ p_t`, so that equilibrium reads `F + Nᵀ p_n + Tᵀ p_t = 0`.
 
-use crate::dim::{Dim, Two};
-use crate::structure::{Body, Structure};
+use crate::dim::Dim;
+use crate::structure::{Assembly, Body};
 use sprs::{CsMat, TriMat};
 
 /// A collocation point in the global numbering: joint index and point index in the joint.
@@ -40,6 +40,40 @@ pub struct JointLaw {
 }
 
 impl JointLaw {
+    /// The law of a joint between blocks of materials `mats` (one for a block–support joint):
+    /// the weakest friction, strength and cohesion of the two; cohesion as a force per point,
+    /// `c · area / points`, where `area` is the joint's contact area (2D: length × width).
+    pub fn between(
+        mats: &[&crate::model::Material],
+        depth: f64,
+        width: f64,
+        area: f64,
+        points: usize,
+    ) -> JointLaw {
+        let min = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(x), Some(y)) => Some(x.min(y)),
+            (x, None) => x,
+            (None, y) => y,
+        };
+        let mut law = JointLaw {
+            friction: None,
+            cohesion: 0.0,
+            strength: None,
+            depth,
+            width,
+        };
+        let mut cohesion = f64::INFINITY;
+        for m in mats {
+            law.friction = min(law.friction, m.friction);
+            law.strength = min(law.strength, m.compressive_strength);
+            cohesion = cohesion.min(m.cohesion);
+        }
+        if !mats.is_empty() && law.friction.is_some() {
+            law.cohesion = cohesion * area / points.max(1) as f64;
+        }
+        law
+    }
+
     /// Largest normal force a joint can carry, f_c · w · t (kN).
     pub fn max_normal_force(&self) -> Option<f64> {
         self.strength.map(|f| f * self.width * self.depth)
@@ -113,40 +147,10 @@ pub struct KinematicMap {
 }
 
 impl KinematicMap {
-    /// The map of a (2D) structure: its joints in contact-frame form, assembled by
-    /// [`KinematicMap::assemble`].
-    pub fn new(st: &Structure) -> KinematicMap {
-        let bodies = ContactBodies::<Two> {
-            blocks: st.blocks.iter().map(|b| b.centroid).collect(),
-            supports: st
-                .supports
-                .iter()
-                .map(|s| (s.centroid, s.motion.to_vec()))
-                .collect(),
-        };
-        let joints: Vec<ContactJoint<Two>> = st
-            .joints
-            .iter()
-            .map(|joint| {
-                let t = joint.tangent();
-                let mid = joint.midpoint();
-                ContactJoint {
-                    a: joint.a,
-                    b: joint.b,
-                    normal: joint.normal,
-                    tangents: Two::tangents(joint.normal),
-                    points: joint.points.iter().map(|p| (p.x, p.gap)).collect(),
-                    bilateral: joint.bilateral,
-                    law: joint_law(st, joint),
-                    along: joint
-                        .points
-                        .iter()
-                        .map(|p| (p.x[0] - mid[0]) * t[0] + (p.x[1] - mid[1]) * t[1])
-                        .collect(),
-                }
-            })
-            .collect();
-        KinematicMap::assemble(&bodies, &joints)
+    /// The map of a structure (either dimension): its joints in contact-frame form,
+    /// assembled by [`KinematicMap::assemble`].
+    pub fn new<S: Assembly>(st: &S) -> KinematicMap {
+        st.kinematic_map()
     }
 
     /// Assemble the opening and sliding rows from contact frames only: each point's position,
@@ -295,35 +299,4 @@ impl KinematicMap {
         }
         f
     }
-}
-
-fn joint_law(st: &Structure, joint: &crate::structure::Joint) -> JointLaw {
-    let mut law = JointLaw {
-        friction: None,
-        cohesion: 0.0,
-        strength: None,
-        depth: joint.length,
-        width: joint.width,
-    };
-    let mut cohesion = f64::INFINITY;
-    let mut any = false;
-    for b in [joint.a, joint.b] {
-        if let Body::Block(i) = b {
-            let m = &st.blocks[i].material;
-            any = true;
-            let min = |a: Option<f64>, b: Option<f64>| match (a, b) {
-                (Some(x), Some(y)) => Some(x.min(y)),
-                (x, None) => x,
-                (None, y) => y,
-            };
-            law.friction = min(law.friction, m.friction);
-            law.strength = min(law.strength, m.compressive_strength);
-            cohesion = cohesion.min(m.cohesion);
-        }
-    }
-    if any && law.friction.is_some() {
-        let npts = joint.points.len().max(1) as f64;
-        law.cohesion = cohesion * joint.length * joint.width / npts;
-    }
-    law
 }

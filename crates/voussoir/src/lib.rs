@@ -40,6 +40,7 @@ pub mod error;
 pub mod generate;
 pub mod generate_facade;
 pub mod geometry;
+pub mod geometry3d;
 pub mod lp;
 pub mod model;
 pub mod model3d;
@@ -52,4 +53,4 @@ pub mod sweep;
 
 pub use error::{Error, Result};
 pub use model::Model;
-pub use structure::{BuildOptions, Structure};
+pub use structure::{Assembly, BuildOptions, Structure, Structure3d};

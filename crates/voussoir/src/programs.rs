@@ -150,6 +150,9 @@ fn friction_rows(
     pt: &[Option<usize>],
 ) {
     let nt = map.tangents_per_point;
+    if nt > 1 && map.friction_facets == 0 {
+        return; // the exact cone instead ([`friction_cones`])
+    }
     let directions: Vec<(Vec<f64>, f64)> = if nt == 1 {
         vec![(vec![1.0], 1.0), (vec![-1.0], 1.0)]
     } else {
@@ -361,6 +364,48 @@ pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64])
         }
     }
     fp
+}
+
+/// [`limit_force_program`] with the exact friction cone `‖p_t‖ ≤ μ p_n + c` at every point of
+/// a frictional 3D joint (a second-order cone each, Clarabel) instead of the inscribed
+/// pyramid, and the exact crushing domain of [`limit_force_program_conic`] in 2D.
+pub fn limit_force_program_exact(map: &KinematicMap, dead: &[f64], live: &[f64]) -> ForceProgram {
+    let mut m = map.clone();
+    if m.tangents_per_point > 1 {
+        m.friction_facets = 0;
+    }
+    let mut fp = limit_force_program_conic(&m, dead, live);
+    if m.tangents_per_point > 1 {
+        friction_cones(&m, &mut fp);
+    }
+    fp
+}
+
+/// The exact Coulomb cones of a 3D force program: `‖(p_t1, p_t2)‖ ≤ μ p_n + c`, as the slacks
+/// `s = b − a·x` of three rows (see [`crate::lp::Cone3`]).
+fn friction_cones(map: &KinematicMap, fp: &mut ForceProgram) {
+    let nt = map.tangents_per_point;
+    for k in 0..map.num_points() {
+        let law = &map.laws[map.points[k].joint];
+        let (Some(mu), Some(cn)) = (law.friction, fp.pn[k]) else {
+            continue;
+        };
+        let (Some(t1), Some(t2)) = (fp.pt[k * nt], fp.pt[k * nt + 1]) else {
+            continue;
+        };
+        if map.bilateral[k] {
+            continue;
+        }
+        let (bound, slope) = match &map.shear_limits {
+            Some(lim) => (lim[k].max(0.0), 0.0),
+            None => (law.cohesion, mu),
+        };
+        fp.cones.push([
+            (vec![(cn, -slope)], bound),
+            (vec![(t1, -1.0)], 0.0),
+            (vec![(t2, -1.0)], 0.0),
+        ]);
+    }
 }
 
 /// A mechanism on which the live loads do no work and the dead loads do positive work (a ray of

@@ -7,6 +7,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::Model;
+use crate::model3d::Model3d;
 use serde::{Deserialize, Serialize};
 
 /// A vertical settlement profile along x.
@@ -83,57 +84,111 @@ impl Profile {
     }
 }
 
-/// Add a profile's motion to every support of `model` (by centroid).
-pub fn apply_profile(model: &mut Model, profile: &Profile) -> Result<()> {
+/// The supports of a model of either dimension, as the settlement inputs see them.
+pub trait ModelSupports {
+    /// Values of a support motion (3 in 2D, 6 in 3D).
+    const MOTION: usize;
+    /// Index of the vertical translation and of the rotation in the vertical x plane, and the
+    /// sign that turns a profile's slope `dv/dx` into that rotation.
+    const VERTICAL: (usize, usize, f64);
+    fn support_names(&self) -> Vec<&str>;
+    fn motion_mut(&mut self, i: usize) -> &mut [f64];
+    fn set_fixed(&mut self, i: usize);
+    /// x of the support's centroid (`None` for a shape too broken to have one; the model's
+    /// validation names it later).
+    fn centroid_x(&self, i: usize) -> Option<f64>;
+}
+
+impl ModelSupports for Model {
+    const MOTION: usize = 3;
+    const VERTICAL: (usize, usize, f64) = (1, 2, 1.0);
+    fn support_names(&self) -> Vec<&str> {
+        self.supports.iter().map(|s| s.name.as_str()).collect()
+    }
+    fn motion_mut(&mut self, i: usize) -> &mut [f64] {
+        &mut self.supports[i].motion
+    }
+    fn set_fixed(&mut self, i: usize) {
+        self.supports[i].connection = crate::model::Connection::Fixed;
+    }
+    fn centroid_x(&self, i: usize) -> Option<f64> {
+        let p = &self.supports[i].polygon;
+        (p.len() >= 3).then(|| crate::geometry::area_centroid(p).1[0])
+    }
+}
+
+impl ModelSupports for Model3d {
+    const MOTION: usize = 6;
+    // w(x) = w0 + s·x is the rigid motion with rotation θy = −s about the centroid.
+    const VERTICAL: (usize, usize, f64) = (2, 4, -1.0);
+    fn support_names(&self) -> Vec<&str> {
+        self.supports.iter().map(|s| s.name.as_str()).collect()
+    }
+    fn motion_mut(&mut self, i: usize) -> &mut [f64] {
+        &mut self.supports[i].motion
+    }
+    fn set_fixed(&mut self, i: usize) {
+        self.supports[i].connection = crate::model::Connection::Fixed;
+    }
+    fn centroid_x(&self, i: usize) -> Option<f64> {
+        let s = &self.supports[i];
+        crate::geometry3d::clean_polyhedron("support", &s.vertices, &s.faces, 1e-12)
+            .ok()
+            .map(|p| p.centroid[0])
+    }
+}
+
+/// Apply a vertical settlement profile along x to every support (by its centroid): vertical
+/// translation `v(c_x)` and the rotation of slope `dv/dx`.
+pub fn apply_profile<M: ModelSupports>(model: &mut M, profile: &Profile) -> Result<()> {
     profile.validate()?;
-    for s in model.supports.iter_mut() {
-        if s.polygon.len() < 3 {
+    let (tv, rv, sign) = M::VERTICAL;
+    for i in 0..model.support_names().len() {
+        let Some(cx) = model.centroid_x(i) else {
             continue;
-        }
-        let (_, c) = crate::geometry::area_centroid(&s.polygon);
-        let (v, slope) = profile.eval(c[0]);
-        s.motion[1] += v;
-        s.motion[2] += slope;
+        };
+        let (v, slope) = profile.eval(cx);
+        let m = model.motion_mut(i);
+        m[tv] += v;
+        m[rv] += sign * slope;
     }
     Ok(())
 }
 
-/// Set the motion of support `name` (θ in radians).
-pub fn move_support(model: &mut Model, name: &str, motion: [f64; 3]) -> Result<()> {
+fn support_index<M: ModelSupports>(model: &M, name: &str) -> Result<usize> {
+    let names = model.support_names();
+    names.iter().position(|s| *s == name).ok_or_else(|| {
+        Error::Request(format!(
+            "no support named '{name}' (the model has: {})",
+            names.join(", ")
+        ))
+    })
+}
+
+/// Prescribe the motion of support `name` (`M::MOTION` values).
+pub fn move_support<M: ModelSupports>(model: &mut M, name: &str, motion: &[f64]) -> Result<()> {
     if !motion.iter().all(|x| x.is_finite()) {
         return Err(Error::Request(format!(
             "motion of support '{name}' is not finite"
         )));
     }
-    let known = || {
-        model
-            .supports
-            .iter()
-            .map(|s| s.name.clone())
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    match model.supports.iter().position(|s| s.name == name) {
-        Some(i) => {
-            model.supports[i].motion = motion;
-            Ok(())
-        }
-        None => Err(Error::Request(format!(
-            "no support named '{name}' (the model has: {})",
-            known()
-        ))),
+    if motion.len() != M::MOTION {
+        return Err(Error::Request(format!(
+            "motion of support '{name}' needs {} values, got {}",
+            M::MOTION,
+            motion.len()
+        )));
     }
+    let i = support_index(model, name)?;
+    model.motion_mut(i).copy_from_slice(motion);
+    Ok(())
 }
 
 /// Declare support `name` fixed (bilateral).
-pub fn fix_support(model: &mut Model, name: &str) -> Result<()> {
-    match model.supports.iter_mut().find(|s| s.name == name) {
-        Some(s) => {
-            s.connection = crate::model::Connection::Fixed;
-            Ok(())
-        }
-        None => Err(Error::Request(format!("no support named '{name}'"))),
-    }
+pub fn fix_support<M: ModelSupports>(model: &mut M, name: &str) -> Result<()> {
+    let i = support_index(model, name)?;
+    model.set_fixed(i);
+    Ok(())
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! Capacity after a settlement: limit analysis on the deformed geometry (paper, Section 6,
 //! Figs 10 and 12; targets and tolerances from `shared/reference/paper-cases.md`).
 
+use voussoir::Assembly;
 use voussoir::analysis::capacity::{capacity, CapacityOptions};
 use voussoir::analysis::limit::solve_limit;
 use voussoir::analysis::settlement::SettlementPath;

@@ -3,6 +3,7 @@
 //! (round trips), the ±20 % noise bound of a one-parameter least-absolute fit, and rigid-body
 //! motions (which no crack depends on).
 
+use voussoir::Assembly;
 use voussoir::analysis::identify::{
     identify, Component, Crack, IdentifyOptions, IdentifyResult, IdentifyStatus, Observations,
     Unknown, Unobserved, Width,

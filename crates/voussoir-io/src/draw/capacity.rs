@@ -23,7 +23,9 @@ pub enum LinearFitText {
 }
 
 /// See [`LinearFitText`]; `None` without a fit (fewer than two valid points).
-pub fn linear_fit_text(r: &CapacityResult) -> Option<LinearFitText> {
+pub fn linear_fit_text<D: voussoir::result::Spatial>(
+    r: &CapacityResult<D>,
+) -> Option<LinearFitText> {
     let f = r.linear_fit.as_ref()?;
     let dev = human(100.0 * f.max_relative_deviation, 3);
     if f.max_relative_deviation <= LINEAR_FIT_TOLERANCE {

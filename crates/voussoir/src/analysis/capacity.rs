@@ -51,8 +51,8 @@ use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
 pub use crate::result::capacity::*;
-use crate::result::{report, Geometry};
-use crate::structure::Structure;
+use crate::result::report;
+use crate::structure::Assembly;
 use crate::structure::OPEN_TOLERANCE;
 
 /// Options of the capacity analysis.
@@ -89,7 +89,7 @@ impl Default for CapacityOptions {
 
 /// Open points whose opening rate under mechanism `d` is negative: the joints whose settlement
 /// cracks the mechanism would close.
-pub fn closing_joints(st: &Structure, map: &KinematicMap, d: &[f64]) -> Vec<usize> {
+pub fn closing_joints<S: Assembly>(st: &S, map: &KinematicMap, d: &[f64]) -> Vec<usize> {
     if d.is_empty() {
         return vec![];
     }
@@ -121,7 +121,7 @@ fn signed_lambda(s: &LimitSolution) -> f64 {
 pub const MAX_STEPS: usize = 100_000;
 
 /// Capacity curve λ(s) after the settlement prescribed by the supports' motions.
-pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult> {
+pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityResult<S::D>> {
     if opts.steps == 0 || opts.steps > MAX_STEPS {
         return Err(Error::Request(format!(
             "steps {}: a capacity curve takes between 1 and {MAX_STEPS} steps",
@@ -138,14 +138,11 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
     }
     let path = SettlementPath::new(st, &opts.solver)?;
     let smax = path.max_settlement;
-    let direction: Vec<SupportDirection> = path
-        .unit
-        .supports
-        .iter()
-        .filter(|s| s.motion.iter().any(|&x| x != 0.0))
-        .map(|s| SupportDirection {
-            support: s.name.clone(),
-            motion: s.motion,
+    let direction: Vec<SupportDirection> = (0..path.unit.num_supports())
+        .filter(|&k| path.unit.support_motion(k).iter().any(|&x| x != 0.0))
+        .map(|k| SupportDirection {
+            support: path.unit.support_name(k).to_string(),
+            motion: path.unit.support_motion(k).to_vec(),
         })
         .collect();
     if path.status != SettlementStatus::Mechanism {
@@ -163,7 +160,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
             mechanisms: vec![],
             solves: 0,
             iterations: 0,
-            geometry: Geometry::of(st),
+            geometry: st.shapes(),
         });
     }
     let umap = KinematicMap::new(&path.unit);
@@ -277,7 +274,7 @@ pub fn capacity(st: &Structure, opts: &CapacityOptions) -> Result<CapacityResult
         mechanisms,
         solves,
         iterations,
-        geometry: Geometry::of(st),
+        geometry: st.shapes(),
     })
 }
 
@@ -333,7 +330,7 @@ fn illinois(
     })
 }
 
-fn fit(curve: &[CapacityPoint]) -> Option<LinearFit> {
+fn fit<D: crate::result::Spatial>(curve: &[CapacityPoint<D>]) -> Option<LinearFit> {
     let pts: Vec<(f64, f64)> = curve
         .iter()
         .filter(|p| p.settlement > 0.0 && p.valid)

@@ -35,7 +35,7 @@ use crate::programs_identify::{
     decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole,
 };
 use crate::settlement_input::Profile;
-use crate::structure::Structure;
+use crate::structure::{Assembly, Structure};
 use serde::{Deserialize, Serialize};
 
 /// Default measurement tolerance of a crack width (m): 0.1 mm, a crack gauge's resolution.

@@ -48,7 +48,7 @@ use crate::lp::SolverOptions;
 use crate::model::Point;
 pub use crate::result::incremental::*;
 use crate::result::{report, Geometry};
-use crate::structure::Structure;
+use crate::structure::{Assembly, Structure};
 use crate::structure::OPEN_TOLERANCE;
 
 impl Control {

@@ -9,8 +9,8 @@ use crate::error::{Error, Result};
 use crate::lp::{self, LpSolution, LpStatus, SolverInfo, SolverOptions};
 use crate::programs::{self, ForceProgram};
 pub use crate::result::limit::*;
-use crate::result::{report, Geometry};
-use crate::structure::Structure;
+use crate::result::report;
+use crate::structure::Assembly;
 use serde::{Deserialize, Serialize};
 
 /// The raw vectors of a limit analysis, for the analyses built on top of it.
@@ -30,8 +30,8 @@ pub struct LimitSolution {
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
-pub fn solve_limit(
-    st: &Structure,
+pub fn solve_limit<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
@@ -39,8 +39,8 @@ pub fn solve_limit(
 }
 
 /// The static program of `st`, solved: the solution and the program.
-fn solve_static(
-    st: &Structure,
+fn solve_static<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<(LimitSolution, ForceProgram)> {
@@ -54,8 +54,8 @@ fn solve_static(
 /// alone ([`with_least_multiplier`]). The analyses that deform a structure along a settlement
 /// or a mechanism (capacity, incremental) ask for the collapse multiplier only: a displaced
 /// structure is routinely held by its live load there.
-pub fn solve_limit_checked(
-    st: &Structure,
+pub fn solve_limit_checked<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
@@ -97,7 +97,7 @@ fn with_least_multiplier(
 pub const LEAST_TOLERANCE: f64 = 1e-9;
 
 /// Dead and live load vectors; an error if there is no live load.
-fn load_vectors(st: &Structure) -> Result<(Vec<f64>, Vec<f64>)> {
+fn load_vectors<S: Assembly>(st: &S) -> Result<(Vec<f64>, Vec<f64>)> {
     if !st.has_live_loads() {
         return Err(Error::Request(
             "limit analysis needs live loads (the model has none)".into(),
@@ -108,13 +108,13 @@ fn load_vectors(st: &Structure) -> Result<(Vec<f64>, Vec<f64>)> {
 
 /// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
 /// its inscribed polygon. Without finite compressive strength this is the same problem.
-pub fn solve_limit_conic(
-    st: &Structure,
+pub fn solve_limit_conic<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
     let (dead, live) = load_vectors(st)?;
-    let fp = programs::limit_force_program_conic(map, &dead, &live);
+    let fp = programs::limit_force_program_exact(map, &dead, &live);
     let o = SolverOptions {
         feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
         ..*opts
@@ -196,12 +196,12 @@ pub const MIN_FACETS: usize = 2;
 pub const MAX_FACETS: usize = 4096;
 
 /// Limit analysis with a choice of crushing model and number of facets.
-pub fn limit_with(
-    st: &Structure,
+pub fn limit_with<S: Assembly>(
+    st: &S,
     opts: &SolverOptions,
     crushing: Crushing,
     facets: usize,
-) -> Result<LimitResult> {
+) -> Result<LimitResult<S::D>> {
     if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
         return Err(Error::Request(format!(
             "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
@@ -217,14 +217,18 @@ pub fn limit_with(
 }
 
 /// Limit analysis of a structure: collapse multiplier, mechanism, forces, thrust line.
-pub fn limit(st: &Structure, opts: &SolverOptions) -> Result<LimitResult> {
+pub fn limit<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<LimitResult<S::D>> {
     let map = KinematicMap::new(st);
     let s = solve_limit_checked(st, &map, opts)?;
     Ok(limit_result(st, &map, &s))
 }
 
 /// Turn raw vectors into the reported result.
-pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> LimitResult {
+pub fn limit_result<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    s: &LimitSolution,
+) -> LimitResult<S::D> {
     let d = if s.mechanism.is_empty() {
         vec![0.0; map.num_dofs]
     } else {
@@ -280,7 +284,7 @@ pub fn limit_result(st: &Structure, map: &KinematicMap, s: &LimitSolution) -> Li
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,
-        geometry: Geometry::of(st),
+        geometry: st.shapes(),
     }
 }
 
@@ -310,7 +314,7 @@ impl WarmLimit {
     }
 
     /// Limit analysis of `st` (same meaning as [`solve_limit`]).
-    pub fn solve(&mut self, st: &Structure, map: &KinematicMap) -> Result<LimitSolution> {
+    pub fn solve<S: Assembly>(&mut self, st: &S, map: &KinematicMap) -> Result<LimitSolution> {
         self.solves += 1;
         // Joint laws (friction, crushing) give gapped points roles of their own in the force
         // program: those structures are solved from scratch.

@@ -22,8 +22,8 @@ use crate::error::{Error, Result};
 use crate::lp::{self, LpStatus, SolverOptions};
 use crate::programs::{self, ForceProgram};
 pub use crate::result::settlement::*;
-use crate::result::{report, Geometry};
-use crate::structure::Structure;
+use crate::result::report;
+use crate::structure::{Assembly, Structure};
 use serde::{Deserialize, Serialize};
 
 /// Raw vectors of a settlement analysis.
@@ -59,8 +59,8 @@ impl SettlementSolution {
 }
 
 /// Solve both LPs.
-pub fn solve_settlement(
-    st: &Structure,
+pub fn solve_settlement<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<SettlementSolution> {
@@ -100,17 +100,17 @@ pub fn solve_settlement(
 }
 
 /// Settlement analysis of a structure whose supports carry their prescribed motions.
-pub fn settle(st: &Structure, opts: &SolverOptions) -> Result<SettlementResult> {
+pub fn settle<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<SettlementResult<S::D>> {
     let map = KinematicMap::new(st);
     let s = solve_settlement(st, &map, opts)?;
     Ok(settlement_result(st, &map, &s))
 }
 
-pub fn settlement_result(
-    st: &Structure,
+pub fn settlement_result<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     s: &SettlementSolution,
-) -> SettlementResult {
+) -> SettlementResult<S::D> {
     if s.status != SettlementStatus::Mechanism {
         return SettlementResult {
             status: s.status,
@@ -125,17 +125,13 @@ pub fn settlement_result(
             hinges: vec![],
             thrust_line: vec![],
             reactions: vec![],
-            geometry: Geometry::of(st),
+            geometry: st.shapes(),
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
     // Scale for the gap: total dead load times the largest prescribed motion.
     let wtot: f64 = st.load_vector(false).iter().map(|f| f.abs()).sum();
-    let umax = st
-        .supports
-        .iter()
-        .flat_map(|sp| sp.motion.iter())
-        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let umax = largest_support_motion(st);
     let floor = (1e-9 * wtot * umax).max(1e-300);
     let gap = (s.primal - s.dual).abs() / s.primal.abs().max(s.dual.abs()).max(floor);
     let gap = if gap.is_nan() { f64::INFINITY } else { gap };
@@ -177,7 +173,7 @@ pub fn settlement_result(
         hinges: rep.hinges,
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
-        geometry: Geometry::of(st),
+        geometry: st.shapes(),
     }
 }
 
@@ -233,8 +229,8 @@ pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
 /// mechanism from its row duals (`d = −y`: HiGHS's duals of `min cᵀx, A x = b` satisfy
 /// `c − Aᵀy ≥ 0`, which for `d = −y` reads `N d + g_n ≥ 0`, `T d + g_t = 0`). The primal value is
 /// recomputed as the dead loads' work on that mechanism, not copied from the solver.
-pub fn settlement_from_force_solution(
-    st: &Structure,
+pub fn settlement_from_force_solution<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     fp: &ForceProgram,
     sol: &lp::LpSolution,
@@ -267,8 +263,8 @@ pub fn settlement_from_force_solution(
 }
 
 /// Settlement analysis in the chosen form.
-pub fn solve_settlement_with(
-    st: &Structure,
+pub fn solve_settlement_with<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
     form: SettlementForm,
@@ -290,18 +286,14 @@ pub fn solve_settlement_with(
 /// The reported result of a solution, with the mechanism's admissibility checked: a mechanism
 /// read from duals that violates the joint constraints by more than 1e-6 of the largest
 /// prescribed motion fails the certificate.
-pub fn settlement_result_checked(
-    st: &Structure,
+pub fn settlement_result_checked<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     s: &SettlementSolution,
-) -> SettlementResult {
+) -> SettlementResult<S::D> {
     let mut r = settlement_result(st, map, s);
     if s.status == SettlementStatus::Mechanism {
-        let umax = st
-            .supports
-            .iter()
-            .flat_map(|sp| sp.motion.iter())
-            .fold(0.0f64, |m, x| m.max(x.abs()));
+        let umax = largest_support_motion(st);
         let v = kinematic_violation(map, &s.mechanism);
         if v > 1e-6 * umax.max(1e-300) {
             if let Some(c) = r.certificate.as_mut() {
@@ -317,11 +309,11 @@ pub fn settlement_result_checked(
 }
 
 /// [`settle`] in the chosen form.
-pub fn settle_with(
-    st: &Structure,
+pub fn settle_with<S: Assembly>(
+    st: &S,
     opts: &SolverOptions,
     form: SettlementForm,
-) -> Result<SettlementResult> {
+) -> Result<SettlementResult<S::D>> {
     let map = KinematicMap::new(st);
     let s = solve_settlement_with(st, &map, opts, form)?;
     Ok(settlement_result_checked(st, &map, &s))
@@ -329,9 +321,9 @@ pub fn settle_with(
 
 /// The settlement path: the structure with unit support motions, its settlement mechanism and
 /// openings, from which every deformed structure is made.
-pub struct SettlementPath {
+pub struct SettlementPath<S: Assembly = Structure> {
     /// The structure with its support motions divided by `max_settlement`.
-    pub unit: Structure,
+    pub unit: S,
     pub max_settlement: f64,
     pub status: SettlementStatus,
     /// Settlement mechanism per unit settlement (empty unless `status` is a mechanism).
@@ -340,18 +332,16 @@ pub struct SettlementPath {
     open_tol: f64,
 }
 
-impl SettlementPath {
-    pub fn new(st: &Structure, solver: &SolverOptions) -> Result<SettlementPath> {
+impl<S: Assembly> SettlementPath<S> {
+    pub fn new(st: &S, solver: &SolverOptions) -> Result<SettlementPath<S>> {
         let mag = st.settlement_magnitude();
         if !(mag.is_finite() && mag > 0.0) {
             return Err(Error::Request(
                 "capacity analysis needs a settlement: no support has a prescribed motion".into(),
             ));
         }
-        let motions: Vec<[f64; 3]> = st
-            .supports
-            .iter()
-            .map(|s| s.motion.map(|x| x / mag))
+        let motions: Vec<Vec<f64>> = (0..st.num_supports())
+            .map(|s| st.support_motion(s).iter().map(|x| x / mag).collect())
             .collect();
         let unit = st.with_support_motions(&motions);
         let map = KinematicMap::new(&unit);
@@ -372,19 +362,16 @@ impl SettlementPath {
     }
 
     /// The structure after a settlement `s` (m). `s = 0` returns the undeformed structure as is.
-    pub fn deformed(&self, s: f64) -> Structure {
-        if s == 0.0 || self.mechanism.is_empty() {
-            let mut st = self.unit.clone();
-            for sp in st.supports.iter_mut() {
-                sp.motion = [0.0; 3];
-            }
-            return st;
-        }
-        let mut st =
+    pub fn deformed(&self, s: f64) -> S {
+        let mut st = if s == 0.0 || self.mechanism.is_empty() {
+            self.unit.clone()
+        } else {
             self.unit
-                .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol);
-        for sp in st.supports.iter_mut() {
-            sp.motion = [0.0; 3];
+                .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol)
+        };
+        let still = vec![0.0; <S::D as crate::dim::Dim>::DOFS];
+        for k in 0..st.num_supports() {
+            st.set_support_motion(k, &still);
         }
         st
     }
@@ -392,4 +379,11 @@ impl SettlementPath {
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// The largest component of any support's prescribed motion.
+fn largest_support_motion<S: Assembly>(st: &S) -> f64 {
+    (0..st.num_supports())
+        .flat_map(|k| st.support_motion(k).iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()))
 }

@@ -41,7 +41,7 @@ pub struct CapacityMechanism<D: Spatial = Two> {
 pub struct SupportDirection {
     pub support: String,
     /// `[u, v, θ]` per metre of settlement (θ in radians).
-    pub motion: [f64; 3],
+    pub motion: Vec<f64>,
 }
 
 /// Overall outcome.

@@ -22,9 +22,9 @@ pub mod spatial;
 
 pub use spatial::{PlanarMotion, PlanarPoint, PlanarWrench, Spatial};
 
-use crate::dim::Two;
-use crate::discretize::KinematicMap;
-use crate::structure::{Body, Structure};
+use crate::dim::{Dim, Two};
+use crate::discretize::{ContactJoint, KinematicMap};
+use crate::structure::{Assembly, Body, Structure};
 use serde::{Deserialize, Serialize};
 
 /// A body as named in results: a block index (number) or a support name (string).
@@ -239,116 +239,152 @@ fn max_abs(v: &[f64]) -> f64 {
 }
 
 /// Everything about joints and reactions that a mechanism `d` and forces `p` imply.
-pub struct JointReport {
-    pub blocks: Vec<BlockMotion>,
-    pub joints: Vec<JointResult>,
-    pub hinges: Vec<Hinge>,
-    pub thrust_line: Vec<ThrustPoint>,
-    pub reactions: Vec<Reaction>,
+pub struct JointReport<D: Spatial = Two> {
+    pub blocks: Vec<BlockMotion<D>>,
+    pub joints: Vec<JointResult<D>>,
+    pub hinges: Vec<Hinge<D>>,
+    pub thrust_line: Vec<ThrustPoint<D>>,
+    pub reactions: Vec<Reaction<D>>,
     pub openings: Vec<f64>,
 }
 
 /// Build joints, hinges, thrust line and reactions from block motions `d` (with the prescribed
-/// support motions scaled by `support_scale`) and point forces.
-pub fn report(
-    st: &Structure,
+/// support motions scaled by `support_scale`) and point forces, in either dimension.
+///
+/// A joint is a *hinge* when some of its points open and some stay closed; its closed points
+/// are the hinge's points (one in 2D; in 3D one point is a pivot, two or more a hinge line).
+/// The centre of pressure is the force-weighted mean of the points; the eccentricity its
+/// offset from the joint's midpoint along each tangent.
+pub fn report<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     d: &[f64],
     support_scale: f64,
     pn: &[f64],
     pt: &[f64],
-) -> JointReport {
+) -> JointReport<S::D> {
+    let (nd, nt) = (<S::D as Dim>::DOFS, <S::D as Dim>::TANGENTS);
     let (open, slide) = map.jumps(d, support_scale);
     let mscale = max_abs(&open).max(max_abs(&slide)).max(1e-300);
     let fscale = max_abs(pn).max(max_abs(pt)).max(1e-300);
     let open_tol = 1e-7 * mscale;
     let dscale = max_abs(d).max(1e-300);
-    let blocks = (0..st.blocks.len())
+    let blocks = (0..st.num_blocks())
         .map(|i| {
-            BlockMotion::planar(
-                i,
-                clean(d[3 * i], dscale),
-                clean(d[3 * i + 1], dscale),
-                clean(d[3 * i + 2], dscale),
-            )
+            let m: Vec<f64> = d[nd * i..nd * (i + 1)]
+                .iter()
+                .map(|&x| clean(x, dscale))
+                .collect();
+            BlockMotion {
+                id: i,
+                motion: S::D::motion(&m),
+            }
         })
         .collect();
-    let mut joints = Vec::with_capacity(st.joints.len());
+    let contact = st.contact_joints();
+    let mut joints = Vec::with_capacity(contact.len());
     let mut hinges = Vec::new();
     let mut thrust_line = Vec::new();
-    for (j, joint) in st.joints.iter().enumerate() {
+    for (j, joint) in contact.iter().enumerate() {
         let range = map.joint_start[j]..map.joint_start[j + 1];
-        let t = joint.tangent();
-        let mid = joint.midpoint();
-        let (mut nf, mut sf, mut mom, mut cx, mut cy) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        let mut points: Vec<PointResult> = Vec::new();
-        let (mut n_open, mut n_closed, mut sliding) = (0, 0, false);
+        let ts = joint.tangents.as_ref();
+        let npts = joint.points.len().max(1) as f64;
+        let mut mid = vec![0.0; <S::D as Dim>::N];
+        for (x, _) in &joint.points {
+            for (m, c) in mid.iter_mut().zip(x.as_ref()) {
+                *m += c;
+            }
+        }
+        let mid: Vec<f64> = mid.iter().map(|m| m / npts).collect();
+        let mut nf = 0.0;
+        let mut sf = [0.0f64; 2];
+        let mut mom = [0.0f64; 2];
+        let mut centre = [0.0f64; 3];
+        let mut points: Vec<PointResult<S::D>> = Vec::new();
+        let mut closed = Vec::new();
+        let (mut n_open, mut sliding) = (0, false);
         for k in range {
-            let p = joint.points[map.points[k].index];
+            let (x, gap) = joint.points[map.points[k].index];
             let o = clean(open[k], mscale);
-            let s = clean(slide[k], mscale);
-            if o > open_tol || p.gap > 0.0 {
+            let mut s = [0.0f64; 2];
+            for (m, sm) in s.iter_mut().enumerate().take(nt) {
+                *sm = clean(slide[k * nt + m], mscale);
+                sliding |= sm.abs() > open_tol;
+            }
+            if o > open_tol || gap > 0.0 {
                 n_open += 1;
             } else {
-                n_closed += 1;
+                closed.push(x);
             }
-            sliding |= s.abs() > open_tol;
-            let (fn_, fs) = (clean(pn[k], fscale), clean(pt[k], fscale));
+            let fn_ = clean(pn[k], fscale);
+            let mut fs = [0.0f64; 2];
+            for (m, f) in fs.iter_mut().enumerate().take(nt) {
+                *f = clean(pt[k * nt + m], fscale);
+                sf[m] += *f;
+            }
             nf += fn_;
-            sf += fs;
-            mom += fn_ * ((p.x[0] - mid[0]) * t[0] + (p.x[1] - mid[1]) * t[1]);
-            cx += fn_ * p.x[0];
-            cy += fn_ * p.x[1];
+            let xs = x.as_ref();
+            for (m, t) in ts.iter().enumerate() {
+                let arm: f64 = xs
+                    .iter()
+                    .zip(&mid)
+                    .zip(t.as_ref())
+                    .map(|((a, b), e)| (a - b) * e)
+                    .sum();
+                mom[m] += fn_ * arm;
+            }
+            for (c, xc) in centre.iter_mut().zip(xs) {
+                *c += fn_ * xc;
+            }
             points.push(PointResult {
-                position: PlanarPoint {
-                    x: p.x[0],
-                    y: p.x[1],
-                },
+                position: S::D::position(x),
                 opening: o,
-                sliding: s,
+                sliding: S::D::tangential(&s[..nt]),
                 normal_force: fn_,
-                shear_force: fs,
-                gap: p.gap,
+                shear_force: S::D::tangential(&fs[..nt]),
+                gap,
             });
         }
         let state = if sliding {
             JointState::Sliding
         } else if n_open == 0 {
             JointState::Closed
-        } else if n_closed == 0 {
+        } else if closed.is_empty() {
             JointState::Open
         } else {
             JointState::Hinge
         };
         if state == JointState::Hinge {
-            // The hinge is the closed point (the one with the smallest opening).
-            if let Some(p) = points.iter().min_by(|a, b| a.opening.total_cmp(&b.opening)) {
+            for x in closed {
                 hinges.push(Hinge {
                     joint: j,
-                    at: PlanarPoint { x: p.x, y: p.y },
+                    at: S::D::position(x),
                 });
             }
         }
         let eccentricity = if nf > 1e-9 * fscale {
+            let mut c = joint.points[0].0;
+            for (ci, v) in c.as_mut().iter_mut().zip(&centre) {
+                *ci = v / nf;
+            }
             thrust_line.push(ThrustPoint {
                 joint: j,
-                at: PlanarPoint {
-                    x: cx / nf,
-                    y: cy / nf,
-                },
+                at: S::D::position(c),
             });
-            Some(mom / nf)
+            let e: Vec<f64> = mom[..nt].iter().map(|m| m / nf).collect();
+            Some(S::D::tangential(&e))
         } else {
             None
         };
+        let sfc: Vec<f64> = sf[..nt].iter().map(|v| clean(*v, fscale)).collect();
         joints.push(JointResult {
             id: j,
-            a: BodyName::of(st, joint.a),
-            b: BodyName::of(st, joint.b),
+            a: st.body_name(joint.a),
+            b: st.body_name(joint.b),
             normal: joint.normal,
             points,
             normal_force: clean(nf, fscale),
-            shear_force: clean(sf, fscale),
+            shear_force: S::D::tangential(&sfc),
             eccentricity,
             state,
             compressed_depth: map.laws[j]
@@ -356,7 +392,7 @@ pub fn report(
                 .map(|f| clean(nf, fscale).max(0.0) / (f * map.laws[j].width)),
         });
     }
-    let reactions = reactions(st, map, pn, pt);
+    let reactions = reactions_of(st, &contact, map, pn, pt);
     JointReport {
         blocks,
         joints,
@@ -367,27 +403,58 @@ pub fn report(
     }
 }
 
-/// Reactions: force of each support on the structure and moment about the support centroid.
-pub fn reactions(st: &Structure, map: &KinematicMap, pn: &[f64], pt: &[f64]) -> Vec<Reaction> {
-    let mut acc = vec![[0.0f64; 3]; st.supports.len()];
+/// Reactions: force of each support on the structure and moment about the support's reference
+/// point (the generalised force of the point forces on the support's DOFs, [`Dim::dof_row`]).
+pub fn reactions<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    pn: &[f64],
+    pt: &[f64],
+) -> Vec<Reaction<S::D>> {
+    reactions_of(st, &st.contact_joints(), map, pn, pt)
+}
+
+fn reactions_of<S: Assembly>(
+    st: &S,
+    contact: &[ContactJoint<S::D>],
+    map: &KinematicMap,
+    pn: &[f64],
+    pt: &[f64],
+) -> Vec<Reaction<S::D>> {
+    let (nd, nt, n) = (
+        <S::D as Dim>::DOFS,
+        <S::D as Dim>::TANGENTS,
+        <S::D as Dim>::N,
+    );
+    let centres = st.contact_bodies().supports;
+    let mut acc = vec![vec![0.0f64; nd]; st.num_supports()];
+    let mut row = [0.0f64; 6];
     for (k, pr) in map.points.iter().enumerate() {
-        let joint = &st.joints[pr.joint];
-        let t = joint.tangent();
-        let x = joint.points[pr.index].x;
+        let joint = &contact[pr.joint];
+        let x = joint.points[pr.index].0;
         // Force on b along +n and +t; on a the opposite.
-        let f = [
-            pn[k] * joint.normal[0] + pt[k] * t[0],
-            pn[k] * joint.normal[1] + pt[k] * t[1],
-        ];
+        let mut f = joint.normal;
+        for (fi, ni) in f.as_mut().iter_mut().zip(joint.normal.as_ref()) {
+            *fi = pn[k] * ni;
+        }
+        for (m, t) in joint.tangents.as_ref().iter().enumerate() {
+            for (fi, ti) in f.as_mut().iter_mut().zip(t.as_ref()) {
+                *fi += pt[k * nt + m] * ti;
+            }
+        }
         for (body, sign) in [(joint.a, 1.0), (joint.b, -1.0)] {
             // The support is `body`; the structure is the other side, which receives +f if the
             // support is a, −f if the support is b.
             if let Body::Support(s) = body {
-                let c = st.supports[s].centroid;
-                let r = [sign * f[0], sign * f[1]];
-                acc[s][0] += r[0];
-                acc[s][1] += r[1];
-                acc[s][2] += (x[0] - c[0]) * r[1] - (x[1] - c[1]) * r[0];
+                let c = centres[s].0;
+                let mut r = f;
+                for v in r.as_mut()[..n].iter_mut() {
+                    *v *= sign;
+                }
+                S::D::dof_row(S::D::sub(x, c), r, &mut row[..nd]);
+                for (a, v) in acc[s].iter_mut().zip(&row[..nd]) {
+                    *a += v;
+                }
             }
         }
     }
@@ -396,18 +463,14 @@ pub fn reactions(st: &Structure, map: &KinematicMap, pn: &[f64], pt: &[f64]) -> 
         .flat_map(|a| a.iter())
         .fold(0.0f64, |m, x| m.max(x.abs()))
         .max(1e-300);
-    st.supports
-        .iter()
-        .zip(acc)
-        .map(|(s, a)| Reaction {
-            support: s.name.clone(),
-            wrench: PlanarWrench {
-                fx: clean(a[0], scale),
-                fy: clean(a[1], scale),
-                m: clean(a[2], scale),
-                cx: s.centroid[0],
-                cy: s.centroid[1],
-            },
+    acc.into_iter()
+        .enumerate()
+        .map(|(s, a)| {
+            let a: Vec<f64> = a.iter().map(|v| clean(*v, scale)).collect();
+            Reaction {
+                support: st.support_name(s).to_string(),
+                wrench: S::D::wrench(&a, centres[s].0),
+            }
         })
         .collect()
 }

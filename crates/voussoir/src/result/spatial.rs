@@ -32,6 +32,10 @@ pub trait Spatial: Dim {
     fn tangential(values: &[f64]) -> Self::Tangential;
     /// Force `f` and moment `m` (`Dim::DOFS` values: force then moment) about `c`.
     fn wrench(fm: &[f64], c: Self::Vector) -> Self::Wrench;
+    /// The coordinates of a position.
+    fn coords(p: &Self::Position) -> Vec<f64>;
+    /// The components of a wrench with their names and units, for summaries.
+    fn wrench_components(w: &Self::Wrench) -> Vec<(&'static str, f64, &'static str)>;
 }
 
 /// A 2D block motion: `(u, v)` m and `θ` rad (counter-clockwise).
@@ -147,6 +151,12 @@ impl Spatial for Two {
     fn tangential(v: &[f64]) -> f64 {
         v[0]
     }
+    fn coords(p: &PlanarPoint) -> Vec<f64> {
+        vec![p.x, p.y]
+    }
+    fn wrench_components(w: &PlanarWrench) -> Vec<(&'static str, f64, &'static str)> {
+        vec![("fx", w.fx, "kN"), ("fy", w.fy, "kN"), ("m", w.m, "kN·m")]
+    }
     fn wrench(fm: &[f64], c: [f64; 2]) -> PlanarWrench {
         PlanarWrench {
             fx: fm[0],
@@ -184,6 +194,19 @@ impl Spatial for Three {
     }
     fn tangential(v: &[f64]) -> [f64; 2] {
         [v[0], v[1]]
+    }
+    fn coords(p: &SpatialPoint) -> Vec<f64> {
+        vec![p.x, p.y, p.z]
+    }
+    fn wrench_components(w: &SpatialWrench) -> Vec<(&'static str, f64, &'static str)> {
+        vec![
+            ("fx", w.fx, "kN"),
+            ("fy", w.fy, "kN"),
+            ("fz", w.fz, "kN"),
+            ("mx", w.mx, "kN·m"),
+            ("my", w.my, "kN·m"),
+            ("mz", w.mz, "kN·m"),
+        ]
     }
     fn wrench(fm: &[f64], c: [f64; 3]) -> SpatialWrench {
         SpatialWrench {

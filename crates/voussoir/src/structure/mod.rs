@@ -4,11 +4,17 @@
 //! [`Structure::deformed`] moves it by a finite rigid motion per block and returns a new one:
 //! deformation is a geometry operation, so every analysis runs unchanged on a deformed structure.
 
+pub mod assembly;
 pub mod deform;
+pub mod solid;
+pub use assembly::Assembly;
+pub use solid::Structure3d;
 pub use deform::OPEN_TOLERANCE;
 
 use crate::error::{model_err, Result};
 use crate::geometry::{self, area_centroid, bbox, RigidMotion};
+use crate::dim::{Dim, Two};
+use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
 use crate::model::{Connection, Load, Material, Model, Per, Point};
 use serde::{Deserialize, Serialize};
 
@@ -184,12 +190,7 @@ impl Structure {
                 ];
             }
         }
-        let rel = opts.tolerance.or(model.tolerance).unwrap_or(1e-7);
-        if !(rel.is_finite() && rel > 0.0 && rel < 0.1) {
-            return model_err(format!(
-                "tolerance {rel} must be a positive number below 0.1"
-            ));
-        }
+        let rel = relative_tolerance(opts.tolerance.or(model.tolerance))?;
         let diag = (all[2] - all[0]).hypot(all[3] - all[1]);
         let tol = rel
             * if diag.is_finite() && diag > 0.0 {
@@ -198,22 +199,7 @@ impl Structure {
                 1.0
             };
 
-        for (name, m) in &model.materials {
-            let ok = m.unit_weight.is_finite()
-                && m.unit_weight >= 0.0
-                && m.width.is_finite()
-                && m.width > 0.0
-                && m.compressive_strength
-                    .is_none_or(|f| f.is_finite() && f > 0.0)
-                && m.friction.is_none_or(|f| f.is_finite() && f >= 0.0)
-                && m.cohesion.is_finite()
-                && m.cohesion >= 0.0;
-            if !ok {
-                return model_err(format!(
-                    "material '{name}': unit_weight ≥ 0, width > 0, compressive_strength > 0, friction ≥ 0 and cohesion ≥ 0 must be finite numbers"
-                ));
-            }
-        }
+        check_materials(&model.materials)?;
 
         let mut blocks = Vec::with_capacity(model.blocks.len());
         for (i, b) in model.blocks.iter().enumerate() {
@@ -237,17 +223,12 @@ impl Structure {
         let mut supports = Vec::with_capacity(model.supports.len());
         for (i, s) in model.supports.iter().enumerate() {
             let what = format!("support '{}'", s.name);
-            if s.name.is_empty() {
-                return model_err(format!("support {i} has an empty name"));
-            }
-            if model.supports[..i].iter().any(|t| t.name == s.name) {
-                return model_err(format!("{what}: name used twice"));
-            }
-            if !s.motion.iter().all(|x| x.is_finite()) {
-                return model_err(format!(
-                    "{what}: motion has a value that is not a finite number"
-                ));
-            }
+            check_support(
+                i,
+                &s.name,
+                model.supports[..i].iter().map(|t| t.name.as_str()),
+                &s.motion,
+            )?;
             let polygon = clean_polygon(&what, &s.polygon, tol)?;
             let (_, centroid) = area_centroid(&polygon);
             supports.push(SupportGeom {
@@ -458,13 +439,122 @@ impl Structure {
             .any(|l| l.live && (l.force[0] != 0.0 || l.force[1] != 0.0))
     }
 
-    /// A copy with the supports' prescribed motions replaced.
-    pub fn with_support_motions(&self, motions: &[[f64; 3]]) -> Structure {
-        let mut s = self.clone();
-        for (sp, m) in s.supports.iter_mut().zip(motions) {
-            sp.motion = *m;
+}
+
+impl Assembly for Structure {
+    type D = Two;
+
+    fn num_blocks(&self) -> usize {
+        self.blocks.len()
+    }
+    fn num_supports(&self) -> usize {
+        self.supports.len()
+    }
+    fn num_joints(&self) -> usize {
+        self.joints.len()
+    }
+    fn joint_bodies(&self, j: usize) -> (Body, Body) {
+        (self.joints[j].a, self.joints[j].b)
+    }
+    fn support_name(&self, s: usize) -> &str {
+        &self.supports[s].name
+    }
+    fn support_motion(&self, s: usize) -> &[f64] {
+        &self.supports[s].motion
+    }
+    fn set_support_motion(&mut self, s: usize, motion: &[f64]) {
+        self.supports[s].motion.copy_from_slice(&motion[..3]);
+    }
+
+    fn contact_bodies(&self) -> ContactBodies<Two> {
+        ContactBodies {
+            blocks: self.blocks.iter().map(|b| b.centroid).collect(),
+            supports: self
+                .supports
+                .iter()
+                .map(|s| (s.centroid, s.motion.to_vec()))
+                .collect(),
         }
-        s
+    }
+
+    fn contact_joints(&self) -> Vec<ContactJoint<Two>> {
+        self.joints
+            .iter()
+            .map(|joint| {
+                let t = joint.tangent();
+                let mid = joint.midpoint();
+                let mats: Vec<&Material> = [joint.a, joint.b]
+                    .iter()
+                    .filter_map(|b| match b {
+                        Body::Block(i) => Some(&self.blocks[*i].material),
+                        Body::Support(_) => None,
+                    })
+                    .collect();
+                ContactJoint {
+                    a: joint.a,
+                    b: joint.b,
+                    normal: joint.normal,
+                    tangents: Two::tangents(joint.normal),
+                    points: joint.points.iter().map(|p| (p.x, p.gap)).collect(),
+                    bilateral: joint.bilateral,
+                    law: JointLaw::between(
+                        &mats,
+                        joint.length,
+                        joint.width,
+                        joint.length * joint.width,
+                        joint.points.len(),
+                    ),
+                    along: joint
+                        .points
+                        .iter()
+                        .map(|p| (p.x[0] - mid[0]) * t[0] + (p.x[1] - mid[1]) * t[1])
+                        .collect(),
+                }
+            })
+            .collect()
+    }
+
+    fn load_vector(&self, live: bool) -> Vec<f64> {
+        Structure::load_vector(self, live)
+    }
+    fn has_live_loads(&self) -> bool {
+        Structure::has_live_loads(self)
+    }
+
+    fn with_weight_as_live_load(&self, direction: Point) -> Result<Structure> {
+        let mut s = self.clone();
+        s.loads.retain(|l| !l.live);
+        let live: Vec<AppliedLoad> = s
+            .blocks
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.weight > 0.0)
+            .map(|(i, b)| AppliedLoad {
+                block: i,
+                at: b.centroid,
+                force: [direction[0] * b.weight, direction[1] * b.weight],
+                live: true,
+            })
+            .collect();
+        if live.is_empty() {
+            return Err(crate::error::Error::Request(
+                "tilt analysis needs blocks with weight".into(),
+            ));
+        }
+        s.loads.extend(live);
+        Ok(s)
+    }
+
+    fn shapes(&self) -> crate::result::Geometry {
+        crate::result::Geometry::of(self)
+    }
+
+    fn settlement_magnitude(&self) -> f64 {
+        Structure::settlement_magnitude(self)
+    }
+
+    fn release_fixed(&mut self) {
+        Structure::release_fixed(self)
     }
 
     /// Move every block by the finite rigid motion `s·d_i` and every support by `s·motion`;
@@ -472,7 +562,7 @@ impl Structure {
     /// their gap `s·opening` (`openings[j][k]` for point `k` of joint `j`). Points whose gap
     /// exceeds `gap_tol` stay in the structure with that gap (they carry no force until they
     /// close); joints move with their bodies; loads move with their blocks (directions kept).
-    pub fn deformed(&self, d: &[f64], s: f64, openings: &[Vec<f64>], gap_tol: f64) -> Structure {
+    fn deformed(&self, d: &[f64], s: f64, openings: &[Vec<f64>], gap_tol: f64) -> Structure {
         let motion = |b: Body| -> RigidMotion {
             match b {
                 Body::Block(i) => RigidMotion::scaled(
@@ -522,6 +612,61 @@ impl Structure {
         }
         out
     }
+}
+
+/// The relative geometric tolerance asked for (default 1e-7), checked.
+pub(crate) fn relative_tolerance(asked: Option<f64>) -> Result<f64> {
+    let rel = asked.unwrap_or(1e-7);
+    if !(rel.is_finite() && rel > 0.0 && rel < 0.1) {
+        return model_err(format!(
+            "tolerance {rel} must be a positive number below 0.1"
+        ));
+    }
+    Ok(rel)
+}
+
+/// Every material's values are finite and in range.
+pub(crate) fn check_materials(
+    materials: &std::collections::BTreeMap<String, Material>,
+) -> Result<()> {
+    for (name, m) in materials {
+        let ok = m.unit_weight.is_finite()
+        && m.unit_weight >= 0.0
+        && m.width.is_finite()
+        && m.width > 0.0
+        && m.compressive_strength
+            .is_none_or(|f| f.is_finite() && f > 0.0)
+        && m.friction.is_none_or(|f| f.is_finite() && f >= 0.0)
+        && m.cohesion.is_finite()
+        && m.cohesion >= 0.0;
+        if !ok {
+        return model_err(format!(
+            "material '{name}': unit_weight ≥ 0, width > 0, compressive_strength > 0, friction ≥ 0 and cohesion ≥ 0 must be finite numbers"
+        ));
+        }
+    }
+    Ok(())
+}
+
+/// A support's name is non-empty and unique, its motion finite.
+pub(crate) fn check_support<'a>(
+    i: usize,
+    name: &str,
+    mut earlier: impl Iterator<Item = &'a str>,
+    motion: &[f64],
+) -> Result<()> {
+    if name.is_empty() {
+        return model_err(format!("support {i} has an empty name"));
+    }
+    if earlier.any(|t| t == name) {
+        return model_err(format!("support '{name}': name used twice"));
+    }
+    if !motion.iter().all(|x| x.is_finite()) {
+        return model_err(format!(
+            "support '{name}': motion has a value that is not a finite number"
+        ));
+    }
+    Ok(())
 }
 
 fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {

@@ -22,6 +22,9 @@
 //!
 //! Numbers are written with fixed precision: the same result gives the same bytes.
 
+// `!(x > 0.0)` is how this module rejects NaN along with non-positive values (as in `draw`).
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::draw::scene::{
     auto_scale, wrap, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE, THRUST,
 };
@@ -279,10 +282,11 @@ fn overlap(a: &[[f64; 2]], b: &[[f64; 2]], tol: f64) -> bool {
                 continue;
             }
             let proj = |s: &[[f64; 2]]| {
-                s.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-                    let x = (v[0] * n[0] + v[1] * n[1]) / l;
-                    (lo.min(x), hi.max(x))
-                })
+                s.iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                        let x = (v[0] * n[0] + v[1] * n[1]) / l;
+                        (lo.min(x), hi.max(x))
+                    })
             };
             let (a0, a1) = proj(a);
             let (b0, b1) = proj(b);
@@ -369,7 +373,14 @@ fn split_segment(
                 cam.px(at(k as f64 / pieces as f64)),
             );
             let out = if cur { &mut *hid } else { &mut *vis };
-            let _ = write!(out, "M{} {}L{} {}", num(p[0]), num(p[1]), num(q[0]), num(q[1]));
+            let _ = write!(
+                out,
+                "M{} {}L{} {}",
+                num(p[0]),
+                num(p[1]),
+                num(q[0]),
+                num(q[1])
+            );
             start = k;
             cur = next;
         }
@@ -391,7 +402,7 @@ fn paint_order(faces: &[Face], eps: f64) -> Vec<usize> {
             .then(faces[a].body.cmp(&faces[b].body))
             .then(faces[a].index.cmp(&faces[b].index))
     });
-    if n > PAIRWISE_LIMIT || n < 2 {
+    if !(2..=PAIRWISE_LIMIT).contains(&n) {
         return order;
     }
     // rank[i]: position of face i in the depth order.
@@ -404,7 +415,11 @@ fn paint_order(faces: &[Face], eps: f64) -> Vec<usize> {
     let mut indeg = vec![0usize; n];
     // Sweep in x to skip pairs whose boxes are apart.
     let mut by_x: Vec<usize> = (0..n).collect();
-    by_x.sort_by(|&a, &b| faces[a].bbox[0].total_cmp(&faces[b].bbox[0]).then(a.cmp(&b)));
+    by_x.sort_by(|&a, &b| {
+        faces[a].bbox[0]
+            .total_cmp(&faces[b].bbox[0])
+            .then(a.cmp(&b))
+    });
     for (ia, &a) in by_x.iter().enumerate() {
         for &b in &by_x[ia + 1..] {
             if faces[b].bbox[0] >= faces[a].bbox[2] {
@@ -511,7 +526,10 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     }
     let (size, origin) = if lo[0] <= hi[0] {
         (
-            (0..3).map(|c| hi[c] - lo[c]).fold(0.0f64, f64::max).max(1e-9),
+            (0..3)
+                .map(|c| hi[c] - lo[c])
+                .fold(0.0f64, f64::max)
+                .max(1e-9),
             [
                 (lo[0] + hi[0]) / 2.0,
                 (lo[1] + hi[1]) / 2.0,
@@ -523,7 +541,8 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     };
 
     // Largest small displacement and rotation.
-    let all_motions: Vec<(&[V3], (V3, [f64; 6]))> = g
+    type BodyMotion<'b> = (&'b [V3], (V3, [f64; 6]));
+    let all_motions: Vec<BodyMotion> = g
         .blocks
         .iter()
         .zip(&motions.blocks)
@@ -545,7 +564,10 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         body_dmax.push(m);
         dmax = dmax.max(m);
     }
-    let moving: Vec<bool> = body_dmax.iter().map(|&m| dmax > 0.0 && m > 1e-9 * dmax).collect();
+    let moving: Vec<bool> = body_dmax
+        .iter()
+        .map(|&m| dmax > 0.0 && m > 1e-9 * dmax)
+        .collect();
     let tmax = all_motions
         .iter()
         .zip(&moving)
@@ -573,7 +595,10 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
             let s = &g.supports[i - nb];
             (s.vertices.as_slice(), s.faces.as_slice())
         } else {
-            (g.blocks[i].vertices.as_slice(), g.blocks[i].faces.as_slice())
+            (
+                g.blocks[i].vertices.as_slice(),
+                g.blocks[i].faces.as_slice(),
+            )
         };
         let mv = moving[i] && has_motion;
         let colour = if support {
@@ -814,7 +839,14 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
             }
             for (a, c) in edges {
                 let (p, q) = (cam.px(b.vertices[a]), cam.px(b.vertices[c]));
-                let _ = write!(d, "M{} {}L{} {}", num(p[0]), num(p[1]), num(q[0]), num(q[1]));
+                let _ = write!(
+                    d,
+                    "M{} {}L{} {}",
+                    num(p[0]),
+                    num(p[1]),
+                    num(q[0]),
+                    num(q[1])
+                );
             }
         }
         if !d.is_empty() {
@@ -828,7 +860,10 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
 
     // Faces, far to near.
     let light = {
-        let l = add(add(vscale(right, -0.45), vscale(up, 0.6)), vscale(toward, 0.66));
+        let l = add(
+            add(vscale(right, -0.45), vscale(up, 0.6)),
+            vscale(toward, 0.66),
+        );
         vscale(l, 1.0 / norm(l))
     };
     let _ = writeln!(
@@ -910,7 +945,11 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
             for k in 0..edges {
                 let k1 = (k + 1) % m;
                 let mid = vscale(add(add(wa[k], wa[k1]), add(wb[k], wb[k1])), 0.25);
-                let target = if hidden_at(mid) { &mut wedge_h } else { &mut wedge };
+                let target = if hidden_at(mid) {
+                    &mut wedge_h
+                } else {
+                    &mut wedge
+                };
                 polygon_path(
                     target,
                     [cam.px(wa[k]), cam.px(wa[k1]), cam.px(wb[k1]), cam.px(wb[k])],
@@ -985,7 +1024,11 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
                 num(q[0]),
                 num(q[1]),
                 num(dot_r),
-                if hidden_at(w) { " opacity=\"0.35\"" } else { "" }
+                if hidden_at(w) {
+                    " opacity=\"0.35\""
+                } else {
+                    ""
+                }
             );
         }
         if n_thrust > 0 {
@@ -1041,7 +1084,11 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
                     num(q[0]),
                     num(q[1]),
                     num(hinge_r),
-                    if hidden_at(*p) { " opacity=\"0.35\"" } else { "" }
+                    if hidden_at(*p) {
+                        " opacity=\"0.35\""
+                    } else {
+                        ""
+                    }
                 );
             }
         }
@@ -1081,7 +1128,11 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         let base = [width - margin - 34.0, title_h + margin + draw_h - 6.0];
         let len = 24.0;
         let mut s = String::new();
-        for (axis, name) in [([1.0, 0.0, 0.0], "x"), ([0.0, 1.0, 0.0], "y"), ([0.0, 0.0, 1.0], "z")] {
+        for (axis, name) in [
+            ([1.0, 0.0, 0.0], "x"),
+            ([0.0, 1.0, 0.0], "y"),
+            ([0.0, 0.0, 1.0], "z"),
+        ] {
             let v = [dot(axis, right), -dot(axis, up)];
             let l = v[0].hypot(v[1]);
             if l < 0.15 {
@@ -1099,7 +1150,10 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
             let tip = [base[0] + len * v[0], base[1] + len * v[1]];
             let (mut sh, mut hd) = (String::new(), String::new());
             arrow(&mut sh, &mut hd, base, tip, 6.0);
-            let lab = [base[0] + (len + 9.0) * v[0] / l.max(1e-9) * l.min(1.0), base[1] + (len + 9.0) * v[1] / l.max(1e-9) * l.min(1.0)];
+            let lab = [
+                base[0] + (len + 9.0) * v[0] / l.max(1e-9) * l.min(1.0),
+                base[1] + (len + 9.0) * v[1] / l.max(1e-9) * l.min(1.0),
+            ];
             let _ = write!(
                 s,
                 "<path d=\"{sh}\" stroke=\"#555555\" stroke-width=\"1.2\" fill=\"none\"/><path d=\"{hd}\" fill=\"#555555\"/><text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\" text-anchor=\"middle\">{name}</text>",
@@ -1152,16 +1206,28 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
             put(&mut o, &format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke=\"{CRACK}\" stroke-width=\"1.5\"/>"), "crack (joint not closed)");
         }
         if n_thrust > 0 {
-            put(&mut o, &format!("<circle cx=\"11\" cy=\"0\" r=\"3.5\" fill=\"{THRUST}\"/>"), "centre of pressure");
+            put(
+                &mut o,
+                &format!("<circle cx=\"11\" cy=\"0\" r=\"3.5\" fill=\"{THRUST}\"/>"),
+                "centre of pressure",
+            );
         }
         let arrow_sym = |c: &str| {
             format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
         };
         if n_live > 0 {
-            put(&mut o, &arrow_sym(LOAD), &format!("live load × λ (largest {} kN)", human(live_max, 3)));
+            put(
+                &mut o,
+                &arrow_sym(LOAD),
+                &format!("live load × λ (largest {} kN)", human(live_max, 3)),
+            );
         }
         if n_dead > 0 {
-            put(&mut o, &arrow_sym("#555555"), &format!("dead load (largest {} kN)", human(dead_max, 3)));
+            put(
+                &mut o,
+                &arrow_sym("#555555"),
+                &format!("dead load (largest {} kN)", human(dead_max, 3)),
+            );
         }
         // Second row: scale bar (lengths in the picture plane), displacement scale, view.
         let y2 = y + 24.0;

@@ -440,7 +440,12 @@ mod tests {
 
     #[test]
     fn tangents_are_orthonormal_and_right_handed() {
-        for n in [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0], [0.6, 0.0, 0.8], [1.0, 2.0, -2.0]] {
+        for n in [
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, -1.0],
+            [0.6, 0.0, 0.8],
+            [1.0, 2.0, -2.0],
+        ] {
             let (t1, t2) = tangents(n);
             let nn = scale(n, 1.0 / norm(n));
             let c = cross(t1, t2);

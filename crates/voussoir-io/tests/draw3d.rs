@@ -34,8 +34,9 @@ fn svg_is_byte_identical_across_runs() {
     assert!(a.deformed && a.scale > 0.0);
     // The SVG parses and has the title, both blocks and the crack.
     let doc = roxmltree::Document::parse(&a.svg).unwrap();
-    assert!(doc.descendants().any(|n| n.has_tag_name("title")
-        && n.text() == Some("Settlement mechanism")));
+    assert!(doc
+        .descendants()
+        .any(|n| n.has_tag_name("title") && n.text() == Some("Settlement mechanism")));
     assert!(a.svg.contains("data-block=\"0\"") && a.svg.contains("data-block=\"1\""));
     assert!(a.svg.contains("class=\"cracks\""));
     assert!(a.svg.contains("class=\"hinge-lines\""));
@@ -91,8 +92,8 @@ fn behind_model(moving_in_front: bool) -> SettlementResult<Three> {
             v[c] += shift[c];
         }
     }
-    for c in 0..3 {
-        r.geometry.centroids[far][c] += shift[c];
+    for (c, d) in r.geometry.centroids[far].iter_mut().zip(shift) {
+        *c += d;
     }
     r.blocks[1].motion = SpatialMotion {
         u: 0.0,
@@ -136,9 +137,15 @@ fn the_nearer_block_is_painted_on_top() {
         assert!((p[0] - q[0]).abs() < 1e-6 && (p[1] - q[1]).abs() < 1e-6);
         let c = pixel(&img, p);
         if moving_in_front {
-            assert!(warm(c), "the near block (moving, coloured) should be on top: {c:?}");
+            assert!(
+                warm(c),
+                "the near block (moving, coloured) should be on top: {c:?}"
+            );
         } else {
-            assert!(grey(c), "the near block (at rest, grey) should be on top: {c:?}");
+            assert!(
+                grey(c),
+                "the near block (at rest, grey) should be on top: {c:?}"
+            );
         }
         // The two cases differ only in which block is nearer: index order plays no part.
     }

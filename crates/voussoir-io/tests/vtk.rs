@@ -71,7 +71,11 @@ fn blocks_read_back_with_the_rigid_displacement_of_each_vertex() {
     assert_eq!(&pts[3 * k..3 * k + 3], &[1.0, 1.0, 2.0]);
     let want = [0.004, 0.0, -0.010];
     for c in 0..3 {
-        assert!(close(disp[3 * k + c], want[c]), "{:?}", &disp[3 * k..3 * k + 3]);
+        assert!(
+            close(disp[3 * k + c], want[c]),
+            "{:?}",
+            &disp[3 * k..3 * k + 3]
+        );
     }
     // Vertex 0 of block 0, (0, 0, 0): r = (−0.5, −0.5, −0.5), θ × r = (−0.001, 0, 0.001),
     // displacement (0, 0, −0.008): 2 mm above the base, which settles by 10 mm.
@@ -81,7 +85,14 @@ fn blocks_read_back_with_the_rigid_displacement_of_each_vertex() {
     }
     // Cell data: block ids, translations and rotations per face.
     let (_, block) = array(&piece.data.cell, "block");
-    assert_eq!(block, [0.0; 6].iter().chain(&[1.0; 6]).copied().collect::<Vec<_>>());
+    assert_eq!(
+        block,
+        [0.0; 6]
+            .iter()
+            .chain(&[1.0; 6])
+            .copied()
+            .collect::<Vec<_>>()
+    );
     let (nc, tr) = array(&piece.data.cell, "translation");
     assert_eq!(nc, 3);
     assert_eq!(&tr[3 * 6..3 * 6 + 3], &[0.003, 0.0, -0.009]);
@@ -143,7 +154,9 @@ fn cracks_are_the_joints_that_are_not_closed() {
     let (conn, _) = cells(&piece);
     for k in 0..4 {
         let (a, b) = (conn[k] as usize, conn[(k + 1) % 4] as usize);
-        let d: f64 = (0..3).map(|c| (pts[3 * a + c] - pts[3 * b + c]).powi(2)).sum();
+        let d: f64 = (0..3)
+            .map(|c| (pts[3 * a + c] - pts[3 * b + c]).powi(2))
+            .sum();
         assert!(close(d, 1.0), "edge {k}: {d}");
     }
 }

@@ -190,7 +190,9 @@ fn corrupt_shapes_are_an_error() {
 #[ignore]
 fn write_pictures_for_inspection() {
     let r = fixture();
+    // `cargo test --release -p voussoir-io --test draw3d -- --ignored` to look at the picture.
     let (png, d) = draw3d_png(&r, &Draw3dOptions::default()).unwrap();
+    std::fs::create_dir_all("/tmp/io3d").unwrap();
     std::fs::write("/tmp/io3d/two_cubes.png", png).unwrap();
     std::fs::write("/tmp/io3d/two_cubes.svg", d.svg).unwrap();
 }

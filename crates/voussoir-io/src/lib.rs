@@ -1,8 +1,12 @@
 //! File formats and drawings for voussoir: JSON models and results, atomic output files.
-//! (DXF import, SVG/PNG drawings and HTML reports live in their own modules.)
+//! (DXF import, SVG/PNG drawings and HTML reports live in their own modules; 3D results are
+//! written to VTK by [`vtk`] and drawn in axonometry by [`draw3d`].)
 
 pub mod draw;
+pub mod draw3d;
 pub mod dxf;
 pub mod files;
+pub mod result3d;
+pub mod vtk;
 
 pub use files::{read_any_model, read_model, write_all_or_nothing, write_atomic, IoError};

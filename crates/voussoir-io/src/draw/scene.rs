@@ -145,7 +145,7 @@ impl<'a> Scene<'a> {
 
 /// A line of text broken at spaces into lines at most `max` pixels wide (at font size `size`);
 /// a word longer than `max` stays whole.
-fn wrap(line: &str, size: f64, max: f64) -> Vec<String> {
+pub(crate) fn wrap(line: &str, size: f64, max: f64) -> Vec<String> {
     let mut out = Vec::new();
     let mut cur = String::new();
     for w in line.split(' ') {
@@ -319,16 +319,16 @@ pub struct Drawing {
 }
 
 // Colours: calm, print-friendly, distinguishable in grey scale by shape as well as hue.
-const STONE: &str = "#e3dccb";
-const STILL: &str = "#d9d6cf";
-const EDGE: &str = "#3a3a3a";
-const FAINT: &str = "#a8a8a8";
-const CRACK: &str = "#d7301f";
-const THRUST: &str = "#1f5fbf";
-const LOAD: &str = "#7b2d8e";
-const FORCE: &str = "#1a9850";
-const HINGE: &str = "#111111";
-const PALETTE: [&str; 8] = [
+pub(crate) const STONE: &str = "#e3dccb";
+pub(crate) const STILL: &str = "#d9d6cf";
+pub(crate) const EDGE: &str = "#3a3a3a";
+pub(crate) const FAINT: &str = "#a8a8a8";
+pub(crate) const CRACK: &str = "#d7301f";
+pub(crate) const THRUST: &str = "#1f5fbf";
+pub(crate) const LOAD: &str = "#7b2d8e";
+pub(crate) const FORCE: &str = "#1a9850";
+pub(crate) const HINGE: &str = "#111111";
+pub(crate) const PALETTE: [&str; 8] = [
     "#f6c97f", "#9ecae1", "#b5dba0", "#f4a582", "#c9b8e0", "#f2e394", "#8fd3c8", "#e7b3cf",
 ];
 

@@ -1,0 +1,1337 @@
+//! Drawings of 3D results: the deformed structure in an orthographic view (axonometric by
+//! default; plan and front elevation on request) over the undeformed outline, with hinges,
+//! opened cracks, centres of pressure, loads, a title, a legend and a scale bar in the style
+//! of the 2D drawings ([`crate::draw::scene`]). PNG is the same SVG rendered by
+//! [`crate::draw::png`].
+//!
+//! - **View.** The default camera looks from azimuth −35°, elevation 30°: the direction from the
+//!   model to the camera is `(sin az · cos el, −cos az · cos el, sin el)`, azimuth measured from
+//!   the front (−y) counter-clockwise seen from above, so −35° looks from the front-left and
+//!   above (the front, left and top faces of a box are seen), z up on the page.
+//! - **Deformation.** Each body is moved by the finite rigid motion whose small motion is the
+//!   result's (translation `s·u` of its centroid and rotation by the angle `s·|θ|` about `θ`), so
+//!   blocks stay undistorted; `s` is chosen as in 2D ([`crate::draw::scene::auto_scale`]: the
+//!   largest displacement drawn is about 7 % of the model's size) unless given.
+//! - **Shading.** Faces are filled with their block's colour (a macro-block's colour as in 2D)
+//!   times a Lambert factor `0.64 + 0.36 · max(0, n·l)` for a light fixed relative to the camera
+//!   (from the upper left, behind the viewer), so faces read as solids whatever the view.
+//! - **Hidden faces.** Back faces are culled; the visible faces are ordered far to near by the
+//!   mean depth of their vertices, then every pair whose pictures overlap is ordered by a plane
+//!   test (the one wholly behind the other's plane is drawn first) and the faces are sorted
+//!   topologically (ties and cycles broken by the depth order, so the result is deterministic).
+//!
+//! Numbers are written with fixed precision: the same result gives the same bytes.
+
+// `!(x > 0.0)` is how this module rejects NaN along with non-positive values (as in `draw`).
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use crate::draw::scene::{
+    auto_scale, wrap, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE, THRUST,
+};
+use crate::draw::svg::{arrow, esc, human, nice, num, polygon_path, text_width, FONT};
+use crate::draw::MotionUnits;
+use crate::result3d::{
+    add, cross, dot, norm, polygon_order, scale as vscale, small_displacement, sub, validate,
+    Motions, Result3d, V3,
+};
+use crate::IoError;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+use voussoir::result::JointState;
+
+/// Which way the camera looks.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum View {
+    /// Orthographic view from azimuth and elevation in degrees (see the module documentation).
+    Axonometric { azimuth: f64, elevation: f64 },
+    /// Seen from above: x right, y up the page.
+    Plan,
+    /// Seen from the front (−y): x right, z up the page.
+    Elevation,
+}
+
+impl Default for View {
+    fn default() -> Self {
+        View::Axonometric {
+            azimuth: -35.0,
+            elevation: 30.0,
+        }
+    }
+}
+
+impl View {
+    /// `(right, up, toward the camera)`: an orthonormal, right-handed triple.
+    fn basis(&self) -> (V3, V3, V3) {
+        match *self {
+            View::Plan => ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
+            View::Elevation => ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]),
+            View::Axonometric { azimuth, elevation } => {
+                let az = if azimuth.is_finite() { azimuth } else { -35.0 };
+                // Elevations of ±90° would make "up" undefined: seen from (almost) above.
+                let el = if elevation.is_finite() {
+                    elevation.clamp(-89.0, 89.0)
+                } else {
+                    30.0
+                };
+                let (az, el) = (az.to_radians(), el.to_radians());
+                let e = [az.sin() * el.cos(), -az.cos() * el.cos(), el.sin()];
+                let r = cross([-e[0], -e[1], -e[2]], [0.0, 0.0, 1.0]);
+                let r = vscale(r, 1.0 / norm(r));
+                let u = cross(e, r);
+                (r, u, e)
+            }
+        }
+    }
+
+    fn describe(&self) -> String {
+        match *self {
+            View::Plan => "plan (seen from above)".to_string(),
+            View::Elevation => "front elevation (seen from −y)".to_string(),
+            View::Axonometric { azimuth, elevation } => format!(
+                "axonometric view: azimuth {}°, elevation {}°",
+                human(azimuth, 3),
+                human(elevation, 3)
+            ),
+        }
+    }
+}
+
+/// The world → pixel map of a drawing: orthographic projection on `(right, up)`,
+/// `px = (ox + k·(x·right), oy − k·(x·up))`; `depth = x·toward` grows toward the viewer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    pub right: V3,
+    pub up: V3,
+    pub toward: V3,
+    /// Pixels per metre.
+    pub k: f64,
+    pub ox: f64,
+    pub oy: f64,
+}
+
+impl Camera {
+    /// Pixel position (SVG units) of world point `p`.
+    pub fn px(&self, p: V3) -> [f64; 2] {
+        [
+            self.ox + self.k * dot(p, self.right),
+            self.oy - self.k * dot(p, self.up),
+        ]
+    }
+    /// Distance toward the viewer.
+    pub fn depth(&self, p: V3) -> f64 {
+        dot(p, self.toward)
+    }
+}
+
+/// How to draw a 3D result.
+#[derive(Clone, Debug)]
+pub struct Draw3dOptions {
+    pub view: View,
+    /// Displacement scale factor; `None`: automatic (as in 2D).
+    pub scale: Option<f64>,
+    /// Width of the figure in pixels.
+    pub width: f64,
+    /// Largest height of the drawing area in pixels.
+    pub max_height: f64,
+    /// Draw the deformed configuration (when the result has motions).
+    pub deformed: bool,
+    /// Draw the undeformed edges, thin and grey, behind the deformed solids.
+    pub undeformed: bool,
+    pub supports: bool,
+    pub hinges: bool,
+    pub cracks: bool,
+    /// Centres of pressure (the thrust points) as dots.
+    pub thrust_points: bool,
+    pub live_loads: bool,
+    pub dead_loads: bool,
+    pub legend: bool,
+    /// Prefix for element ids (the hatch pattern), unique per figure in one HTML page.
+    pub id: String,
+}
+
+impl Default for Draw3dOptions {
+    fn default() -> Self {
+        Draw3dOptions {
+            view: View::default(),
+            scale: None,
+            width: 1000.0,
+            max_height: 700.0,
+            deformed: true,
+            undeformed: true,
+            supports: true,
+            hinges: true,
+            cracks: true,
+            thrust_points: true,
+            live_loads: true,
+            dead_loads: false,
+            legend: true,
+            id: "v3".to_string(),
+        }
+    }
+}
+
+/// A finished 3D drawing.
+#[derive(Clone, Debug)]
+pub struct Drawing3d {
+    pub svg: String,
+    pub width: f64,
+    pub height: f64,
+    /// The displacement scale factor used (0 when nothing moves).
+    pub scale: f64,
+    /// Where world points land (undeformed positions; a block's points move with it).
+    pub camera: Camera,
+    /// Whether a deformed configuration was drawn.
+    pub deformed: bool,
+}
+
+/// A finite rigid motion: `x ↦ c + t + R (x − c)`.
+#[derive(Clone, Copy)]
+struct Rigid {
+    c: V3,
+    t: V3,
+    /// Unit axis and angle.
+    axis: V3,
+    angle: f64,
+}
+
+impl Rigid {
+    fn new(c: V3, d: &[f64; 6], s: f64) -> Rigid {
+        let th = [s * d[3], s * d[4], s * d[5]];
+        let angle = norm(th);
+        let axis = if angle > 0.0 {
+            vscale(th, 1.0 / angle)
+        } else {
+            [0.0, 0.0, 1.0]
+        };
+        Rigid {
+            c,
+            t: [s * d[0], s * d[1], s * d[2]],
+            axis,
+            angle,
+        }
+    }
+    fn rotate(&self, v: V3) -> V3 {
+        if self.angle == 0.0 {
+            return v;
+        }
+        let (sn, cs) = self.angle.sin_cos();
+        let k = self.axis;
+        add(
+            add(vscale(v, cs), vscale(cross(k, v), sn)),
+            vscale(k, dot(k, v) * (1.0 - cs)),
+        )
+    }
+    fn apply(&self, x: V3) -> V3 {
+        add(add(self.c, self.t), self.rotate(sub(x, self.c)))
+    }
+}
+
+/// One body (block or support) as drawn.
+struct Body<'a> {
+    vertices: &'a [V3],
+    faces: &'a [Vec<usize>],
+    support: bool,
+    moving: bool,
+    /// Fill colour (blocks) — supports are hatched.
+    colour: &'static str,
+    motion: Rigid,
+}
+
+/// A visible face, projected.
+struct Face {
+    body: usize,
+    index: usize,
+    /// Deformed world vertices and their pixels.
+    world: Vec<V3>,
+    px: Vec<[f64; 2]>,
+    /// Unit outward normal (deformed), toward the viewer.
+    normal: V3,
+    depth: f64,
+    bbox: [f64; 4],
+}
+
+/// `#rrggbb` scaled by `f` (≤ 1 darkens).
+fn shade(hex: &str, f: f64) -> String {
+    let h = hex.trim_start_matches('#');
+    let c = |i: usize| u8::from_str_radix(h.get(i..i + 2).unwrap_or("80"), 16).unwrap_or(128);
+    let s = |v: u8| ((v as f64 * f).round().clamp(0.0, 255.0)) as u8;
+    format!("#{:02x}{:02x}{:02x}", s(c(0)), s(c(2)), s(c(4)))
+}
+
+/// Newell's normal of a polygon (not normalised; zero for a degenerate one).
+fn newell(p: &[V3]) -> V3 {
+    let mut n = [0.0; 3];
+    for i in 0..p.len() {
+        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    n
+}
+
+/// Whether two projected polygons overlap by more than `tol` pixels (separating axes of their
+/// edges; exact for convex faces, conservative otherwise).
+fn overlap(a: &[[f64; 2]], b: &[[f64; 2]], tol: f64) -> bool {
+    for poly in [a, b] {
+        for i in 0..poly.len() {
+            let (p, q) = (poly[i], poly[(i + 1) % poly.len()]);
+            let n = [q[1] - p[1], p[0] - q[0]];
+            let l = n[0].hypot(n[1]);
+            if !(l > 1e-12) {
+                continue;
+            }
+            let proj = |s: &[[f64; 2]]| {
+                s.iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                        let x = (v[0] * n[0] + v[1] * n[1]) / l;
+                        (lo.min(x), hi.max(x))
+                    })
+            };
+            let (a0, a1) = proj(a);
+            let (b0, b1) = proj(b);
+            if a1 <= b0 + tol || b1 <= a0 + tol {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Signed distances of `pts` from the plane of `f` (positive toward the viewer).
+fn side(f: &Face, pts: &[V3], eps: f64) -> (bool, bool) {
+    let mut behind = true;
+    let mut front = true;
+    for p in pts {
+        let s = dot(f.normal, sub(*p, f.world[0]));
+        if s > eps {
+            behind = false;
+        }
+        if s < -eps {
+            front = false;
+        }
+    }
+    (behind, front)
+}
+
+/// Whether pixel `q` is inside polygon `poly` (even–odd rule).
+fn inside(poly: &[[f64; 2]], q: [f64; 2]) -> bool {
+    let mut c = false;
+    let n = poly.len();
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + n - 1) % n]);
+        if (a[1] > q[1]) != (b[1] > q[1]) {
+            let x = a[0] + (q[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if q[0] < x {
+                c = !c;
+            }
+        }
+    }
+    c
+}
+
+/// Whether the (deformed) world point `p` is hidden by a face nearer the camera than `p` by
+/// more than `eps` along the line of sight.
+fn hidden(faces: &[Face], cam: &Camera, p: V3, eps: f64) -> bool {
+    let q = cam.px(p);
+    faces.iter().any(|f| {
+        if q[0] < f.bbox[0] || q[0] > f.bbox[2] || q[1] < f.bbox[1] || q[1] > f.bbox[3] {
+            return false;
+        }
+        let ne = dot(f.normal, cam.toward);
+        if !(ne > 1e-9) {
+            return false;
+        }
+        // The line of sight p + t·toward meets the face's plane at t.
+        let t = -dot(f.normal, sub(p, f.world[0])) / ne;
+        t > eps && inside(&f.px, q)
+    })
+}
+
+/// Path data of segment `a`–`b` (world points, deformed) split into pieces that are visible
+/// and pieces that are hidden, appended to `vis` and `hid`.
+#[allow(clippy::too_many_arguments)]
+fn split_segment(
+    vis: &mut String,
+    hid: &mut String,
+    faces: &[Face],
+    cam: &Camera,
+    a: V3,
+    b: V3,
+    eps: f64,
+    pieces: usize,
+) {
+    let at = |t: f64| add(a, vscale(sub(b, a), t));
+    let mut start = 0;
+    let state = |k: usize| hidden(faces, cam, at((k as f64 + 0.5) / pieces as f64), eps);
+    let mut cur = state(0);
+    for k in 1..=pieces {
+        let next = if k < pieces { state(k) } else { !cur };
+        if next != cur || k == pieces {
+            let (p, q) = (
+                cam.px(at(start as f64 / pieces as f64)),
+                cam.px(at(k as f64 / pieces as f64)),
+            );
+            let out = if cur { &mut *hid } else { &mut *vis };
+            let _ = write!(
+                out,
+                "M{} {}L{} {}",
+                num(p[0]),
+                num(p[1]),
+                num(q[0]),
+                num(q[1])
+            );
+            start = k;
+            cur = next;
+        }
+    }
+}
+
+/// Above this many visible faces only the depth order is used (the pairwise test is
+/// quadratic).
+const PAIRWISE_LIMIT: usize = 6000;
+
+/// Order the faces for painting: far to near.
+fn paint_order(faces: &[Face], eps: f64) -> Vec<usize> {
+    let n = faces.len();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| {
+        faces[a]
+            .depth
+            .total_cmp(&faces[b].depth)
+            .then(faces[a].body.cmp(&faces[b].body))
+            .then(faces[a].index.cmp(&faces[b].index))
+    });
+    if !(2..=PAIRWISE_LIMIT).contains(&n) {
+        return order;
+    }
+    // rank[i]: position of face i in the depth order.
+    let mut rank = vec![0; n];
+    for (r, &i) in order.iter().enumerate() {
+        rank[i] = r;
+    }
+    // Edges "a before b" between overlapping faces, from the plane tests.
+    let mut succ: Vec<Vec<usize>> = vec![Vec::new(); n];
+    let mut indeg = vec![0usize; n];
+    // Sweep in x to skip pairs whose boxes are apart.
+    let mut by_x: Vec<usize> = (0..n).collect();
+    by_x.sort_by(|&a, &b| {
+        faces[a].bbox[0]
+            .total_cmp(&faces[b].bbox[0])
+            .then(a.cmp(&b))
+    });
+    for (ia, &a) in by_x.iter().enumerate() {
+        for &b in &by_x[ia + 1..] {
+            if faces[b].bbox[0] >= faces[a].bbox[2] {
+                break;
+            }
+            let (fa, fb) = (&faces[a], &faces[b]);
+            if fa.body == fb.body
+                || fb.bbox[1] >= fa.bbox[3]
+                || fa.bbox[1] >= fb.bbox[3]
+                || !overlap(&fa.px, &fb.px, 0.5)
+            {
+                continue;
+            }
+            let (a_behind_b, a_front_b) = side(fb, &fa.world, eps);
+            let (b_behind_a, b_front_a) = side(fa, &fb.world, eps);
+            let a_first = a_behind_b || b_front_a;
+            let b_first = b_behind_a || a_front_b;
+            let (first, second) = match (a_first, b_first) {
+                (true, false) => (a, b),
+                (false, true) => (b, a),
+                _ => continue,
+            };
+            succ[first].push(second);
+            indeg[second] += 1;
+        }
+    }
+    // Kahn's algorithm, always taking the ready face that is farthest in the depth order; on a
+    // cycle, the farthest remaining face.
+    let mut ready: BTreeSet<usize> = (0..n).filter(|&i| indeg[i] == 0).map(|i| rank[i]).collect();
+    let mut done = vec![false; n];
+    let mut out = Vec::with_capacity(n);
+    let mut next_far = 0; // scan position in `order` for cycle breaking
+    while out.len() < n {
+        let i = if let Some(&r) = ready.iter().next() {
+            ready.remove(&r);
+            order[r]
+        } else {
+            while done[order[next_far]] {
+                next_far += 1;
+            }
+            order[next_far]
+        };
+        if done[i] {
+            continue;
+        }
+        done[i] = true;
+        out.push(i);
+        for &j in &succ[i] {
+            if indeg[j] > 0 {
+                indeg[j] -= 1;
+                if indeg[j] == 0 && !done[j] {
+                    ready.insert(rank[j]);
+                }
+            }
+        }
+    }
+    out
+}
+
+struct Bbox([f64; 4]);
+impl Bbox {
+    fn new() -> Self {
+        Bbox([
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ])
+    }
+    fn add(&mut self, p: [f64; 2]) {
+        if p[0].is_finite() && p[1].is_finite() {
+            self.0[0] = self.0[0].min(p[0]);
+            self.0[1] = self.0[1].min(p[1]);
+            self.0[2] = self.0[2].max(p[0]);
+            self.0[3] = self.0[3].max(p[1]);
+        }
+    }
+    fn valid(&self) -> bool {
+        self.0[0] <= self.0[2] && self.0[1] <= self.0[3]
+    }
+}
+
+/// Draw a 3D result as SVG.
+pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Drawing3d, IoError> {
+    validate(r)?;
+    let g = r.shapes();
+    let motions = Motions::of(r);
+    let nb = g.blocks.len();
+    let show_supports = opts.supports;
+
+    // Size of the model.
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let all_vertices = g
+        .blocks
+        .iter()
+        .flat_map(|b| b.vertices.iter())
+        .chain(g.supports.iter().flat_map(|s| s.vertices.iter()));
+    for v in all_vertices {
+        for c in 0..3 {
+            lo[c] = lo[c].min(v[c]);
+            hi[c] = hi[c].max(v[c]);
+        }
+    }
+    let (size, origin) = if lo[0] <= hi[0] {
+        (
+            (0..3)
+                .map(|c| hi[c] - lo[c])
+                .fold(0.0f64, f64::max)
+                .max(1e-9),
+            [
+                (lo[0] + hi[0]) / 2.0,
+                (lo[1] + hi[1]) / 2.0,
+                (lo[2] + hi[2]) / 2.0,
+            ],
+        )
+    } else {
+        (1.0, [0.0; 3])
+    };
+
+    // Largest small displacement and rotation.
+    type BodyMotion<'b> = (&'b [V3], (V3, [f64; 6]));
+    let all_motions: Vec<BodyMotion> = g
+        .blocks
+        .iter()
+        .zip(&motions.blocks)
+        .map(|(b, m)| (b.vertices.as_slice(), *m))
+        .chain(
+            g.supports
+                .iter()
+                .zip(&motions.supports)
+                .map(|(s, m)| (s.vertices.as_slice(), *m)),
+        )
+        .collect();
+    let mut dmax = 0.0f64;
+    let mut body_dmax = Vec::with_capacity(all_motions.len());
+    for (vs, (c, d)) in &all_motions {
+        let m = vs
+            .iter()
+            .map(|v| norm(small_displacement(*c, d, *v)))
+            .fold(0.0f64, f64::max);
+        body_dmax.push(m);
+        dmax = dmax.max(m);
+    }
+    let moving: Vec<bool> = body_dmax
+        .iter()
+        .map(|&m| dmax > 0.0 && m > 1e-9 * dmax)
+        .collect();
+    let tmax = all_motions
+        .iter()
+        .zip(&moving)
+        .filter(|(_, &mv)| mv)
+        .map(|((_, (_, d)), _)| norm([d[3], d[4], d[5]]))
+        .fold(0.0f64, f64::max);
+    let has_motion = opts.deformed && moving.iter().any(|&m| m);
+    let scale = if has_motion {
+        match opts.scale {
+            Some(s) if s.is_finite() && s >= 0.0 => s,
+            _ => auto_scale(dmax, tmax, size),
+        }
+    } else {
+        0.0
+    };
+
+    // Colours: one per macro-block (the same rigid field), as in 2D.
+    let tq = tmax.max(1e-300);
+    let uq = dmax.max(1e-300);
+    let mut colour_of: BTreeMap<(i64, i64, i64, i64, i64, i64), usize> = BTreeMap::new();
+    let mut bodies: Vec<Body> = Vec::with_capacity(all_motions.len());
+    for (i, (_, (c, d))) in all_motions.iter().enumerate() {
+        let support = i >= nb;
+        let (vertices, faces) = if support {
+            let s = &g.supports[i - nb];
+            (s.vertices.as_slice(), s.faces.as_slice())
+        } else {
+            (
+                g.blocks[i].vertices.as_slice(),
+                g.blocks[i].faces.as_slice(),
+            )
+        };
+        let mv = moving[i] && has_motion;
+        let colour = if support {
+            STILL
+        } else if !has_motion {
+            STONE
+        } else if !mv {
+            STILL
+        } else {
+            let w = small_displacement(*c, d, origin);
+            let q = |x: f64, r: f64| ((x / r) * 1e7).round() as i64;
+            let key = (
+                q(w[0], uq),
+                q(w[1], uq),
+                q(w[2], uq),
+                q(d[3], tq),
+                q(d[4], tq),
+                q(d[5], tq),
+            );
+            let n = colour_of.len();
+            PALETTE[*colour_of.entry(key).or_insert(n) % PALETTE.len()]
+        };
+        bodies.push(Body {
+            vertices,
+            faces,
+            support,
+            moving: mv,
+            colour,
+            motion: Rigid::new(*c, d, if mv { scale } else { 0.0 }),
+        });
+    }
+    let moved = |body: usize, p: V3| -> V3 { bodies[body].motion.apply(p) };
+    let drawn = |i: usize| show_supports || !bodies[i].support;
+
+    // Loads: (block, point, vector in metres of drawing, live).
+    let live_max = g
+        .loads
+        .iter()
+        .filter(|l| l.live)
+        .fold(0.0f64, |m, l| m.max(norm([l.fx, l.fy, l.fz])));
+    let dead_max = g
+        .loads
+        .iter()
+        .filter(|l| !l.live)
+        .fold(0.0f64, |m, l| m.max(norm([l.fx, l.fy, l.fz])));
+    let arrow_len = 0.09 * size;
+    let mut loads: Vec<(usize, V3, V3, bool)> = Vec::new();
+    for l in &g.loads {
+        let (show, fmax) = if l.live {
+            (opts.live_loads && r.live_loads(), live_max)
+        } else {
+            (opts.dead_loads, dead_max)
+        };
+        let f = norm([l.fx, l.fy, l.fz]);
+        let at = [l.x, l.y, l.z];
+        if !show || !(f > 0.0) || !(fmax > 0.0) || l.block >= nb || !crate::result3d::finite(at) {
+            continue;
+        }
+        let len = arrow_len * (f / fmax).max(0.25);
+        loads.push((l.block, at, vscale([l.fx, l.fy, l.fz], len / f), l.live));
+    }
+
+    // Camera basis and extent of everything drawn (in camera units).
+    let (right, up, toward) = opts.view.basis();
+    let cam0 = Camera {
+        right,
+        up,
+        toward,
+        k: 1.0,
+        ox: 0.0,
+        oy: 0.0,
+    };
+    let mut bb = Bbox::new();
+    for (i, b) in bodies.iter().enumerate() {
+        if !drawn(i) {
+            continue;
+        }
+        for v in b.vertices {
+            bb.add(cam0.px(moved(i, *v)));
+            if has_motion && opts.undeformed {
+                bb.add(cam0.px(*v));
+            }
+        }
+    }
+    for (blk, at, d, _) in &loads {
+        let t = moved(*blk, *at);
+        bb.add(cam0.px(t));
+        bb.add(cam0.px(sub(t, *d)));
+    }
+    if !bb.valid() {
+        bb = Bbox([0.0, -1.0, 1.0, 0.0]);
+    }
+    let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
+
+    // Layout (as in 2D).
+    let width = if opts.width.is_finite() && opts.width >= 200.0 {
+        opts.width
+    } else {
+        1000.0
+    };
+    let max_h = if opts.max_height.is_finite() && opts.max_height >= 100.0 {
+        opts.max_height
+    } else {
+        700.0
+    };
+    let margin = 28.0;
+    let info: Vec<String> = r
+        .info()
+        .iter()
+        .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
+        .collect();
+    let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
+    let legend_h = if opts.legend { 58.0 } else { 8.0 };
+    let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
+    let (draw_w, draw_h) = (bw * k, bh * k);
+    let height = (title_h + margin + draw_h + margin + legend_h).ceil();
+    // cam0.px gives (x·right, −x·up): bb.0[1] is the top.
+    let cam = Camera {
+        right,
+        up,
+        toward,
+        k,
+        ox: (width - draw_w) / 2.0 - k * bb.0[0],
+        oy: title_h + margin - k * bb.0[1],
+    };
+    let mean_size = if nb > 0 {
+        let vol: f64 = g
+            .blocks
+            .iter()
+            .map(|b| {
+                let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+                for v in &b.vertices {
+                    for c in 0..3 {
+                        lo[c] = lo[c].min(v[c]);
+                        hi[c] = hi[c].max(v[c]);
+                    }
+                }
+                if lo[0] <= hi[0] {
+                    (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])
+                } else {
+                    0.0
+                }
+            })
+            .sum();
+        (vol / nb as f64).cbrt().max(1e-9)
+    } else {
+        size / 10.0
+    };
+    let stroke = (0.012 * mean_size * k).clamp(0.35, 1.1);
+    let hinge_r = (0.06 * mean_size * k).clamp(2.5, 5.5);
+
+    // Visible faces (deformed), with their depth and picture.
+    let mut faces: Vec<Face> = Vec::new();
+    for (bi, b) in bodies.iter().enumerate() {
+        if !drawn(bi) {
+            continue;
+        }
+        let verts: Vec<V3> = b.vertices.iter().map(|v| moved(bi, *v)).collect();
+        for (fi, f) in b.faces.iter().enumerate() {
+            let world: Vec<V3> = f.iter().map(|&i| verts[i]).collect();
+            let n = newell(&world);
+            let ln = norm(n);
+            if !(ln > 0.0) {
+                continue;
+            }
+            let n = vscale(n, 1.0 / ln);
+            if dot(n, toward) <= 1e-9 {
+                continue;
+            }
+            let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
+            let mut fb = Bbox::new();
+            for p in &px {
+                fb.add(*p);
+            }
+            let depth = world.iter().map(|p| cam.depth(*p)).sum::<f64>() / world.len() as f64;
+            faces.push(Face {
+                body: bi,
+                index: fi,
+                world,
+                px,
+                normal: n,
+                depth,
+                bbox: fb.0,
+            });
+        }
+    }
+    let order = paint_order(&faces, 1e-7 * size);
+
+    let id = esc(&opts.id);
+    let mut o = String::with_capacity(4096 + 160 * faces.len());
+    let _ = writeln!(
+        o,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\">",
+        w = num(width),
+        h = num(height)
+    );
+    let title = r.title();
+    let _ = writeln!(o, "<title>{}</title>", esc(&title));
+    let _ = writeln!(
+        o,
+        "<defs><pattern id=\"{id}-hatch\" patternUnits=\"userSpaceOnUse\" width=\"7\" height=\"7\" patternTransform=\"rotate(45)\"><rect width=\"7\" height=\"7\" fill=\"#ffffff\"/><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"7\" stroke=\"#444444\" stroke-width=\"1.6\"/></pattern></defs>"
+    );
+    let _ = writeln!(
+        o,
+        "<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
+        num(width),
+        num(height)
+    );
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"30\" font-size=\"19\" fill=\"#111111\">{}</text>",
+        num(margin),
+        esc(&title)
+    );
+    for (i, line) in info.iter().enumerate() {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"13\" fill=\"#444444\">{}</text>",
+            num(margin),
+            num(52.0 + 19.0 * i as f64),
+            esc(line)
+        );
+    }
+
+    // Undeformed edges, faint, behind the solids.
+    if has_motion && opts.undeformed {
+        let mut d = String::new();
+        for (bi, b) in bodies.iter().enumerate() {
+            if !drawn(bi) || !b.moving {
+                continue;
+            }
+            let mut edges = BTreeSet::new();
+            for f in b.faces {
+                for k in 0..f.len() {
+                    let (a, c) = (f[k], f[(k + 1) % f.len()]);
+                    edges.insert((a.min(c), a.max(c)));
+                }
+            }
+            for (a, c) in edges {
+                let (p, q) = (cam.px(b.vertices[a]), cam.px(b.vertices[c]));
+                let _ = write!(
+                    d,
+                    "M{} {}L{} {}",
+                    num(p[0]),
+                    num(p[1]),
+                    num(q[0]),
+                    num(q[1])
+                );
+            }
+        }
+        if !d.is_empty() {
+            let _ = writeln!(
+                o,
+                "<path class=\"undeformed\" d=\"{d}\" fill=\"none\" stroke=\"{FAINT}\" stroke-width=\"{}\" stroke-dasharray=\"4 3\"/>",
+                num((stroke * 0.9).max(0.5))
+            );
+        }
+    }
+
+    // Faces, far to near.
+    let light = {
+        let l = add(
+            add(vscale(right, -0.45), vscale(up, 0.6)),
+            vscale(toward, 0.66),
+        );
+        vscale(l, 1.0 / norm(l))
+    };
+    let _ = writeln!(
+        o,
+        "<g class=\"solids\" stroke=\"{EDGE}\" stroke-width=\"{}\" stroke-linejoin=\"round\">",
+        num(stroke)
+    );
+    for &fi in &order {
+        let f = &faces[fi];
+        let lambert = 0.64 + 0.36 * dot(f.normal, light).max(0.0);
+        let mut d = String::new();
+        polygon_path(&mut d, f.px.iter().copied());
+        let b = &bodies[f.body];
+        if b.support {
+            let _ = writeln!(
+                o,
+                "<path class=\"support\" d=\"{d}\" fill=\"url(#{id}-hatch)\"/><path d=\"{d}\" fill=\"#000000\" fill-opacity=\"{}\" stroke=\"none\"/>",
+                crate::draw::svg::fmt_fixed(0.55 * (1.0 - lambert), 3)
+            );
+        } else {
+            let _ = writeln!(
+                o,
+                "<path class=\"block\" data-block=\"{}\" d=\"{d}\" fill=\"{}\"/>",
+                f.body,
+                shade(b.colour, lambert)
+            );
+        }
+    }
+    o.push_str("</g>\n");
+
+    let joint_by_id: BTreeMap<usize, &voussoir::result::JointResult<voussoir::dim::Three>> =
+        r.joints().iter().map(|j| (j.id, j)).collect();
+    let body_index = |b: &voussoir::result::BodyName| -> Option<usize> {
+        match b {
+            voussoir::result::BodyName::Block(i) if *i < nb => Some(*i),
+            voussoir::result::BodyName::Block(_) => None,
+            voussoir::result::BodyName::Support(s) => {
+                g.supports.iter().position(|x| &x.name == s).map(|k| nb + k)
+            }
+        }
+    };
+    // A point carried by body a of joint `j` (unmoved if the joint is unknown).
+    let carried = |joint: usize, p: V3| -> V3 {
+        match joint_by_id.get(&joint).and_then(|j| body_index(&j.a)) {
+            Some(a) => moved(a, p),
+            None => p,
+        }
+    };
+
+    // Markers hidden behind a face by more than this (m along the line of sight) are drawn
+    // faint: a hinge point is carried by one body and lies on the other's faces, which the
+    // finite motions of the drawing separate by second-order amounts.
+    let hide_eps = 0.03 * mean_size;
+    let hidden_at = |p: V3| hidden(&faces, &cam, p, hide_eps);
+
+    // Opened cracks: the joint's polygon on both sides and the wedge between them; the parts
+    // behind solids faint.
+    let mut n_cracks = 0;
+    if opts.cracks {
+        let (mut wedge, mut wedge_h) = (String::new(), String::new());
+        let (mut outline, mut outline_h) = (String::new(), String::new());
+        for j in r.joints() {
+            if j.state == JointState::Closed || j.points.len() < 2 {
+                continue;
+            }
+            let (Some(a), Some(b)) = (body_index(&j.a), body_index(&j.b)) else {
+                continue;
+            };
+            let pts: Vec<V3> = j.points.iter().map(|p| [p.x, p.y, p.z]).collect();
+            if pts.iter().any(|p| !crate::result3d::finite(*p)) {
+                continue;
+            }
+            let ord = polygon_order(&pts, j.normal);
+            let wa: Vec<V3> = ord.iter().map(|&k| moved(a, pts[k])).collect();
+            let wb: Vec<V3> = ord.iter().map(|&k| moved(b, pts[k])).collect();
+            n_cracks += 1;
+            let m = ord.len();
+            let edges = if m == 2 { 1 } else { m };
+            for k in 0..edges {
+                let k1 = (k + 1) % m;
+                let mid = vscale(add(add(wa[k], wa[k1]), add(wb[k], wb[k1])), 0.25);
+                let target = if hidden_at(mid) {
+                    &mut wedge_h
+                } else {
+                    &mut wedge
+                };
+                polygon_path(
+                    target,
+                    [cam.px(wa[k]), cam.px(wa[k1]), cam.px(wb[k1]), cam.px(wb[k])],
+                );
+                for w in [&wa, &wb] {
+                    split_segment(
+                        &mut outline,
+                        &mut outline_h,
+                        &faces,
+                        &cam,
+                        w[k],
+                        w[k1],
+                        hide_eps,
+                        12,
+                    );
+                }
+            }
+        }
+        if n_cracks > 0 {
+            let sw = num((stroke * 1.8).clamp(1.2, 2.0));
+            let _ = writeln!(
+                o,
+                "<g class=\"cracks\" stroke=\"{CRACK}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"><path class=\"hidden\" d=\"{wedge_h}\" fill=\"{CRACK}\" fill-opacity=\"0.15\" stroke=\"none\"/><path class=\"hidden\" d=\"{outline_h}\" fill=\"none\" stroke-opacity=\"0.4\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/><path d=\"{wedge}\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke-width=\"0.6\"/><path d=\"{outline}\" fill=\"none\" stroke-width=\"{sw}\"/></g>"
+            );
+        }
+    }
+
+    // Loads.
+    let head = (0.018 * width).clamp(6.0, 11.0);
+    let sw = (stroke * 1.6).clamp(1.0, 1.8);
+    let mut n_live = 0;
+    let mut n_dead = 0;
+    for (live, colour, class) in [(false, "#555555", "dead-loads"), (true, LOAD, "live-loads")] {
+        let (mut sh, mut hd) = (String::new(), String::new());
+        for (blk, at, d, l) in &loads {
+            if *l != live {
+                continue;
+            }
+            let t = moved(*blk, *at);
+            arrow(&mut sh, &mut hd, cam.px(sub(t, *d)), cam.px(t), head);
+            if live {
+                n_live += 1;
+            } else {
+                n_dead += 1;
+            }
+        }
+        if !sh.is_empty() || !hd.is_empty() {
+            let _ = writeln!(
+                o,
+                "<g class=\"{class}\" stroke=\"{colour}\" fill=\"{colour}\" stroke-width=\"{}\"><path d=\"{sh}\" fill=\"none\"/><path d=\"{hd}\" stroke=\"none\"/></g>",
+                num(sw)
+            );
+        }
+    }
+
+    // Centres of pressure.
+    let mut n_thrust = 0;
+    if opts.thrust_points && !r.thrust_line().is_empty() {
+        let dot_r = (hinge_r * 0.55).max(1.8);
+        let mut dots = String::new();
+        for t in r.thrust_line() {
+            let p = [t.x, t.y, t.z];
+            if !crate::result3d::finite(p) {
+                continue;
+            }
+            let w = carried(t.joint, p);
+            let q = cam.px(w);
+            n_thrust += 1;
+            let _ = writeln!(
+                dots,
+                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"{}/>",
+                num(q[0]),
+                num(q[1]),
+                num(dot_r),
+                if hidden_at(w) {
+                    " opacity=\"0.35\""
+                } else {
+                    ""
+                }
+            );
+        }
+        if n_thrust > 0 {
+            let _ = writeln!(
+                o,
+                "<g class=\"pressure-centres\" fill=\"{THRUST}\" stroke=\"#ffffff\" stroke-width=\"0.8\">\n{dots}</g>"
+            );
+        }
+    }
+
+    // Hinges: points, and hinge lines where a joint has two or more.
+    let mut n_hinges = 0;
+    if opts.hinges && !r.hinges().is_empty() {
+        let mut by_joint: BTreeMap<usize, Vec<V3>> = BTreeMap::new();
+        for h in r.hinges() {
+            let p = [h.x, h.y, h.z];
+            if crate::result3d::finite(p) {
+                by_joint.entry(h.joint).or_default().push(p);
+            }
+        }
+        let (mut lines, mut lines_h) = (String::new(), String::new());
+        let mut dots = String::new();
+        for (&j, pts) in &by_joint {
+            let w: Vec<V3> = pts.iter().map(|p| carried(j, *p)).collect();
+            if w.len() >= 2 {
+                // The two points farthest apart (first pair on ties).
+                let mut best = (0, 1, -1.0);
+                for a in 0..pts.len() {
+                    for b in a + 1..pts.len() {
+                        let d = norm(sub(pts[a], pts[b]));
+                        if d > best.2 {
+                            best = (a, b, d);
+                        }
+                    }
+                }
+                split_segment(
+                    &mut lines,
+                    &mut lines_h,
+                    &faces,
+                    &cam,
+                    w[best.0],
+                    w[best.1],
+                    hide_eps,
+                    24,
+                );
+            }
+            for p in &w {
+                n_hinges += 1;
+                let q = cam.px(*p);
+                let _ = writeln!(
+                    dots,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"{}/>",
+                    num(q[0]),
+                    num(q[1]),
+                    num(hinge_r),
+                    if hidden_at(*p) {
+                        " opacity=\"0.35\""
+                    } else {
+                        ""
+                    }
+                );
+            }
+        }
+        let lw = num((hinge_r * 0.75).clamp(2.0, 3.5));
+        if !lines_h.is_empty() {
+            let _ = writeln!(
+                o,
+                "<path class=\"hinge-lines hidden\" d=\"{lines_h}\" fill=\"none\" stroke=\"{HINGE}\" stroke-opacity=\"0.35\" stroke-width=\"{lw}\" stroke-dasharray=\"5 4\"/>"
+            );
+        }
+        if !lines.is_empty() {
+            let _ = writeln!(
+                o,
+                "<path class=\"hinge-lines\" d=\"{lines}\" fill=\"none\" stroke=\"{HINGE}\" stroke-width=\"{lw}\" stroke-linecap=\"round\"/>"
+            );
+        }
+        if n_hinges > 0 {
+            let _ = writeln!(
+                o,
+                "<g class=\"hinges\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"{}\">\n{dots}</g>",
+                num((hinge_r * 0.3).clamp(0.8, 1.5))
+            );
+        }
+    }
+
+    if bodies.is_empty() {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"14\" fill=\"#888888\" text-anchor=\"middle\">(no blocks to draw)</text>",
+            num(width / 2.0),
+            num(title_h + margin + draw_h / 2.0)
+        );
+    }
+
+    // Axes: a small triad in the lower right corner of the drawing area.
+    {
+        let base = [width - margin - 34.0, title_h + margin + draw_h - 6.0];
+        let len = 24.0;
+        let mut s = String::new();
+        for (axis, name) in [
+            ([1.0, 0.0, 0.0], "x"),
+            ([0.0, 1.0, 0.0], "y"),
+            ([0.0, 0.0, 1.0], "z"),
+        ] {
+            let v = [dot(axis, right), -dot(axis, up)];
+            let l = v[0].hypot(v[1]);
+            if l < 0.15 {
+                // Seen end-on: a dot.
+                let _ = write!(
+                    s,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"2\" fill=\"#555555\"/><text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\">{name}</text>",
+                    num(base[0]),
+                    num(base[1]),
+                    num(base[0] + 4.0),
+                    num(base[1] + 12.0)
+                );
+                continue;
+            }
+            let tip = [base[0] + len * v[0], base[1] + len * v[1]];
+            let (mut sh, mut hd) = (String::new(), String::new());
+            arrow(&mut sh, &mut hd, base, tip, 6.0);
+            let lab = [
+                base[0] + (len + 9.0) * v[0] / l.max(1e-9) * l.min(1.0),
+                base[1] + (len + 9.0) * v[1] / l.max(1e-9) * l.min(1.0),
+            ];
+            let _ = write!(
+                s,
+                "<path d=\"{sh}\" stroke=\"#555555\" stroke-width=\"1.2\" fill=\"none\"/><path d=\"{hd}\" fill=\"#555555\"/><text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\" text-anchor=\"middle\">{name}</text>",
+                num(lab[0]),
+                num(lab[1] + 4.0)
+            );
+        }
+        let _ = writeln!(o, "<g class=\"axes\">{s}</g>");
+    }
+
+    if opts.legend {
+        let fs = 12.5;
+        let top = height - legend_h;
+        let y = top + 16.0;
+        let _ = writeln!(
+            o,
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#dddddd\" stroke-width=\"1\"/>",
+            num(margin),
+            num(top),
+            num(width - margin),
+            num(top)
+        );
+        let mut x = margin;
+        let mut put = |o: &mut String, symbol: &str, label: &str| {
+            let _ = writeln!(
+                o,
+                "<g transform=\"translate({} {})\">{symbol}</g>",
+                num(x),
+                num(y)
+            );
+            let _ = writeln!(
+                o,
+                "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
+                num(x + 28.0),
+                num(y + 4.5),
+                esc(label)
+            );
+            x += 28.0 + text_width(label, fs) + 22.0;
+        };
+        if has_motion && opts.undeformed {
+            put(&mut o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed");
+        }
+        if show_supports && !g.supports.is_empty() {
+            put(&mut o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support");
+        }
+        if n_hinges > 0 {
+            put(&mut o, &format!("<path d=\"M1 4L21 -4\" stroke=\"{HINGE}\" stroke-width=\"2.5\" stroke-linecap=\"round\"/><circle cx=\"11\" cy=\"0\" r=\"4.5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge (point, line)");
+        }
+        if n_cracks > 0 {
+            put(&mut o, &format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke=\"{CRACK}\" stroke-width=\"1.5\"/>"), "crack (joint not closed)");
+        }
+        if n_thrust > 0 {
+            put(
+                &mut o,
+                &format!("<circle cx=\"11\" cy=\"0\" r=\"3.5\" fill=\"{THRUST}\"/>"),
+                "centre of pressure",
+            );
+        }
+        let arrow_sym = |c: &str| {
+            format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
+        };
+        if n_live > 0 {
+            put(
+                &mut o,
+                &arrow_sym(LOAD),
+                &format!("live load × λ (largest {} kN)", human(live_max, 3)),
+            );
+        }
+        if n_dead > 0 {
+            put(
+                &mut o,
+                &arrow_sym("#555555"),
+                &format!("dead load (largest {} kN)", human(dead_max, 3)),
+            );
+        }
+        // Second row: scale bar (lengths in the picture plane), displacement scale, view.
+        let y2 = y + 24.0;
+        let bar_m = nice(0.18 * size, true);
+        let bar_px = bar_m * k;
+        let bx = margin;
+        let _ = writeln!(
+            o,
+            "<g stroke=\"#333333\" stroke-width=\"1.2\"><path d=\"M{x0} {ya}L{x0} {yb}M{x0} {y2}L{x1} {y2}M{x1} {ya}L{x1} {yb}\" fill=\"none\"/></g>",
+            x0 = num(bx),
+            x1 = num(bx + bar_px),
+            y2 = num(y2),
+            ya = num(y2 - 4.0),
+            yb = num(y2 + 4.0)
+        );
+        let bar_label = if bar_m >= 1.0 {
+            format!("{} m", human(bar_m, 3))
+        } else {
+            format!("{} cm", human(bar_m * 100.0, 3))
+        };
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
+            num(bx + bar_px + 8.0),
+            num(y2 + 4.5),
+            esc(&bar_label)
+        );
+        let mut tx = bx + bar_px + 8.0 + text_width(&bar_label, fs) + 30.0;
+        if has_motion {
+            let text = match r.units() {
+                MotionUnits::Metres => format!("displacements drawn × {}", human(scale, 4)),
+                MotionUnits::Normalised => format!(
+                    "mechanism drawn × {} (normalised: live loads do unit work)",
+                    human(scale, 4)
+                ),
+            };
+            let _ = writeln!(
+                o,
+                "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
+                num(tx),
+                num(y2 + 4.5),
+                esc(&text)
+            );
+            tx += text_width(&text, fs) + 30.0;
+        }
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#777777\">{}</text>",
+            num(tx),
+            num(y2 + 4.5),
+            esc(&opts.view.describe())
+        );
+    }
+    o.push_str("</svg>\n");
+    Ok(Drawing3d {
+        svg: o,
+        width,
+        height,
+        scale,
+        camera: cam,
+        deformed: has_motion,
+    })
+}
+
+/// The drawing as PNG ([`crate::draw::PNG_ZOOM`] pixels per SVG pixel), with the drawing used.
+pub fn draw3d_png(
+    r: &(impl Result3d + ?Sized),
+    opts: &Draw3dOptions,
+) -> Result<(Vec<u8>, Drawing3d), IoError> {
+    let d = draw3d(r, opts)?;
+    let png = crate::draw::svg_to_png(&d.svg, crate::draw::PNG_ZOOM)?;
+    Ok((png, d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_view_looks_from_front_left_above() {
+        let (r, u, e) = View::default().basis();
+        // Right-handed orthonormal triple.
+        let c = cross(r, u);
+        assert!(norm(sub(c, e)) < 1e-12);
+        assert!((norm(r) - 1.0).abs() < 1e-12 && dot(r, u).abs() < 1e-12);
+        // The camera is in front (−y), to the left (−x) and above (+z).
+        assert!(e[0] < 0.0 && e[1] < 0.0 && e[2] > 0.0);
+        // z is up on the page.
+        assert!(u[2] > 0.0 && r[2].abs() < 1e-12);
+    }
+
+    #[test]
+    fn finite_rotation_keeps_distances() {
+        let m = Rigid::new([0.5, 0.5, 0.5], &[0.1, 0.0, 0.0, 0.3, -0.2, 0.4], 1.0);
+        let (a, b) = (m.apply([0.0, 0.0, 0.0]), m.apply([1.0, 1.0, 1.0]));
+        assert!((norm(sub(a, b)) - 3f64.sqrt()).abs() < 1e-12);
+        // The centroid moves by the translation.
+        let c = m.apply([0.5, 0.5, 0.5]);
+        assert!(norm(sub(c, [0.6, 0.5, 0.5])) < 1e-12);
+    }
+
+    #[test]
+    fn shading_darkens_hex_colours() {
+        assert_eq!(shade("#ffffff", 0.5), "#808080");
+        assert_eq!(shade("#f6c97f", 1.0), "#f6c97f");
+    }
+}

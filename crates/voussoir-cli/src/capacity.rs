@@ -63,6 +63,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     };
     match input.load_any()? {
         AnyModel::Planar(model) => {
+            a.draw.check_2d()?;
             let st = input.structure_of(model, Some(&motion))?;
             let r = capacity(&st, &opts)?;
             a.draw.emit_capacity(&r, &input.path)?;

@@ -37,6 +37,22 @@ pub struct DrawArgs {
     /// Title of the drawing (default: by analysis).
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
+    /// 3D models: write the result for ParaView: `.vtu` (the blocks, with their displacement
+    /// and rotation) or `.vtm` (a multiblock of blocks, contact points, cracked interfaces and
+    /// supports, written beside it as FILE_blocks.vtu, …).
+    #[arg(long, value_name = "FILE")]
+    pub vtk: Option<PathBuf>,
+    /// 3D models: the view of --svg/--png: axonometric (default), plan or elevation (from −y).
+    #[arg(long, value_enum, value_name = "VIEW")]
+    pub view: Option<ViewArg>,
+}
+
+/// The view of a 3D drawing.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewArg {
+    Axonometric,
+    Plan,
+    Elevation,
 }
 
 // `--forces`: only on the commands whose figure is the structure (limit, settle, tilt).
@@ -57,12 +73,69 @@ impl DrawArgs {
         }
     }
 
-    /// Drawing flags on a 3D model: refused in one line until 3D drawings exist.
-    pub fn refuse_3d(&self) -> Result<(), Fail> {
-        if self.any() {
+    /// Flags that draw 3D results only, refused on a 2D one (before any work).
+    pub fn check_2d(&self) -> Result<(), Fail> {
+        if self.vtk.is_some() || self.view.is_some() {
             return Err(Fail(
-                "--svg, --png and --report draw 2D results only; for a 3D model write the JSON result (-o)".into(),
+                "--vtk and --view apply to 3D models (this model is 2D)".into(),
             ));
+        }
+        Ok(())
+    }
+
+    /// Flags on a 3D result whose figure is a curve (capacity): only the VTK-less JSON for now.
+    pub fn refuse_3d(&self) -> Result<(), Fail> {
+        if self.any() || self.vtk.is_some() {
+            return Err(Fail(
+                "--svg, --png, --report and --vtk draw the structure of a limit, settle or tilt result; a 3D capacity curve is written as JSON (-o)".into(),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The SVG/PNG axonometric drawing and the VTK files of a 3D result.
+    pub fn emit_3d(&self, r: &impl voussoir_io::result3d::Result3d) -> Result<(), Fail> {
+        if self.report.is_some() {
+            return Err(Fail(
+                "--report: the HTML report of a 3D result is not available yet (use --svg/--png and --vtk)".into(),
+            ));
+        }
+        if self.svg.is_some() || self.png.is_some() {
+            use voussoir_io::draw3d::{draw3d, Draw3dOptions, View};
+            let view = match self.view {
+                None | Some(ViewArg::Axonometric) => View::default(),
+                Some(ViewArg::Plan) => View::Plan,
+                Some(ViewArg::Elevation) => View::Elevation,
+            };
+            let opts = Draw3dOptions {
+                view,
+                scale: self.scale,
+                title: self.title.clone(),
+                ..Draw3dOptions::default()
+            };
+            let d = draw3d(r, &opts)?;
+            write_drawing(&d.svg, self.svg.as_deref(), self.png.as_deref())?;
+        }
+        if let Some(path) = &self.vtk {
+            let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+            match ext {
+                "vtu" => crate::outputs::stage(path, &voussoir_io::vtk::blocks_vtu(r)?)?,
+                "vtm" => {
+                    let name = path.file_name().and_then(|n| n.to_str()).ok_or_else(|| {
+                        Fail(format!("--vtk {}: not a file name", path.display()))
+                    })?;
+                    let dir = path.parent().unwrap_or(Path::new(""));
+                    for (file, bytes) in voussoir_io::vtk::multiblock(r, name, true)? {
+                        crate::outputs::stage(&dir.join(file), &bytes)?;
+                    }
+                }
+                _ => {
+                    return Err(Fail(format!(
+                        "--vtk {}: the file must end in .vtu (blocks) or .vtm (blocks, contacts, cracks, supports)",
+                        path.display()
+                    )))
+                }
+            }
         }
         Ok(())
     }

@@ -70,13 +70,13 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
     let c = a.resolve()?;
     match c.input.load_any()? {
         AnyModel::Planar(model) => {
+            a.draw.check_2d()?;
             let st = c.input.structure_of(model, None)?;
             let r = limit_with(&st, &c.input.solver, c.crushing, c.facets)?;
             a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
-            a.draw.refuse_3d()?;
             if c.crushing == Crushing::Conic || a.facets.is_some() {
                 return Err(Fail(
                     "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),
@@ -89,6 +89,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 Crushing::Linear
             };
             let r = limit_with(&st, &c.input.solver, cone, DEFAULT_FACETS)?;
+            a.draw.emit_3d(&r)?;
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }
     }

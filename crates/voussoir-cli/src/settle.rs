@@ -46,6 +46,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         AnyModel::Planar(m) => m,
         AnyModel::Spatial(m) => return run3d(&a, &c, m),
     };
+    a.draw.check_2d()?;
     c.motion.apply(&mut model)?;
     // The model is validated first, so that a bad model is named before a missing motion.
     let st = voussoir::Structure::new(&model, c.input.build)?;
@@ -64,7 +65,6 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
 }
 
 fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
-    a.draw.refuse_3d()?;
     c.motion.apply(&mut model)?;
     let st = voussoir::Structure3d::new(&model, c.input.build)?;
     for w in model.warnings() {
@@ -84,5 +84,6 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         SettlementForm::Both => settle(&st, &c.input.solver)?,
         form => settle_with(&st, &c.input.solver, form)?,
     };
+    a.draw.emit_3d(&r)?;
     a.out.emit(&r, || common::settle_summary(&st, &r))
 }

@@ -55,7 +55,6 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
     let model = match input.load_any()? {
         AnyModel::Planar(m) => m,
         AnyModel::Spatial(m) => {
-            a.draw.refuse_3d()?;
             let st = input.structure3d(m, None)?;
             let az = a.azimuth.unwrap_or(0.0);
             let r = if input.exact_friction_cone {
@@ -63,6 +62,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
             } else {
                 voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver)?
             };
+            a.draw.emit_3d(&r.limit)?;
             return a.out.emit(&r, || {
                 let mut s = String::new();
                 let _ = writeln!(s, "{}", crate::common::structure_line(&st));
@@ -87,6 +87,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
             "--azimuth applies to 3D models; a 2D tilt goes towards --direction +x or -x".into(),
         ));
     }
+    a.draw.check_2d()?;
     let st = input.structure_of(model, None)?;
     let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver)?;
     a.draw.with(&a.forces).emit_tilt(&r, &input.path)?;

@@ -147,6 +147,8 @@ pub struct Draw3dOptions {
     pub legend: bool,
     /// Prefix for element ids (the hatch pattern), unique per figure in one HTML page.
     pub id: String,
+    /// Title of the figure (default: by analysis).
+    pub title: Option<String>,
 }
 
 impl Default for Draw3dOptions {
@@ -166,6 +168,7 @@ impl Default for Draw3dOptions {
             dead_loads: false,
             legend: true,
             id: "v3".to_string(),
+            title: None,
         }
     }
 }
@@ -795,7 +798,7 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         w = num(width),
         h = num(height)
     );
-    let title = r.title();
+    let title = opts.title.clone().unwrap_or_else(|| r.title());
     let _ = writeln!(o, "<title>{}</title>", esc(&title));
     let _ = writeln!(
         o,

@@ -40,6 +40,7 @@ pub mod error;
 pub mod generate;
 pub mod generate_facade;
 pub mod geometry;
+pub mod geometry3d;
 pub mod lp;
 pub mod model;
 pub mod model3d;

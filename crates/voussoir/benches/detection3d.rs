@@ -6,8 +6,11 @@
 use std::time::Instant;
 use voussoir::geometry3d::{clean_polyhedron, detect_interfaces3, find_overlap3, Solid};
 
+/// A polyhedron as given: vertices and faces.
+type Raw = (Vec<[f64; 3]>, Vec<Vec<usize>>);
+
 /// Vertices and faces of the box [lo, hi] (faces counter-clockwise seen from outside).
-fn cuboid(lo: [f64; 3], hi: [f64; 3]) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
+fn cuboid(lo: [f64; 3], hi: [f64; 3]) -> Raw {
     let v = vec![
         [lo[0], lo[1], lo[2]],
         [hi[0], lo[1], lo[2]],
@@ -31,8 +34,11 @@ fn cuboid(lo: [f64; 3], hi: [f64; 3]) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
 
 /// A running-bond wall: `courses` × `units` bricks of `l × d × h`, odd courses shifted by l/2,
 /// on a ground slab (body 0).
-fn wall(courses: usize, units: usize, [l, d, h]: [f64; 3]) -> Vec<(Vec<[f64; 3]>, Vec<Vec<usize>>)> {
-    let mut out = vec![cuboid([-l, -d, -h], [(units as f64 + 1.0) * l, 2.0 * d, 0.0])];
+fn wall(courses: usize, units: usize, [l, d, h]: [f64; 3]) -> Vec<Raw> {
+    let mut out = vec![cuboid(
+        [-l, -d, -h],
+        [(units as f64 + 1.0) * l, 2.0 * d, 0.0],
+    )];
     for k in 0..courses {
         let shift = if k % 2 == 1 { 0.5 * l } else { 0.0 };
         for i in 0..units {
@@ -48,9 +54,11 @@ fn peak_memory_mb() -> f64 {
     std::fs::read_to_string("/proc/self/status")
         .ok()
         .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM:"))
-                .and_then(|l| l.split_whitespace().nth(1).and_then(|x| x.parse::<f64>().ok()))
+            s.lines().find(|l| l.starts_with("VmHWM:")).and_then(|l| {
+                l.split_whitespace()
+                    .nth(1)
+                    .and_then(|x| x.parse::<f64>().ok())
+            })
         })
         .map_or(f64::NAN, |kb| kb / 1024.0)
 }
@@ -63,7 +71,14 @@ fn main() {
     let unit = [0.25, 0.12, 0.055];
     for (courses, units) in [(112, 224), (158, 317), (224, 447)] {
         let raw = wall(courses, units, unit);
-        let tol = 1e-7 * 60.0; // 1e-7 of the model's size, as the model's default
+        // 1e-7 of the model's bounding-box diagonal (the 3D model's default tolerance).
+        let all: Vec<[f64; 3]> = raw.iter().flat_map(|(v, _)| v.iter().copied()).collect();
+        let b = voussoir::geometry3d::bbox3(&all);
+        let tol = 1e-7
+            * (0..3)
+                .map(|k| (b[1][k] - b[0][k]).powi(2))
+                .sum::<f64>()
+                .sqrt();
         let t0 = Instant::now();
         let solids: Vec<Solid> = raw
             .iter()

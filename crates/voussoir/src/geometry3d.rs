@@ -22,7 +22,9 @@ use crate::error::{model_err, Result};
 use crate::geometry::{point_segment_distance, signed_area, strictly_inside};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
-use i_overlay::float::single::SingleFloatOverlay;
+use i_overlay::core::solver::Solver;
+use i_overlay::float::overlay::{FloatOverlay, OverlayOptions};
+use rayon::prelude::*;
 use std::collections::HashMap;
 
 type V3 = [f64; 3];
@@ -66,6 +68,12 @@ pub struct Solid {
     pub faces: Vec<Vec<usize>>,
     pub volume: f64,
     pub centroid: [f64; 3],
+}
+
+/// `a > b`, false when either is NaN (so `!exceeds(a, b)` rejects NaN).
+#[inline]
+fn exceeds(a: f64, b: f64) -> bool {
+    a.partial_cmp(&b) == Some(std::cmp::Ordering::Greater)
 }
 
 /// Twice the vector area of a face (Newell's normal: Σ (vᵢ − v₀) × (vᵢ₊₁ − v₀), which is exact
@@ -167,8 +175,8 @@ pub fn clean_polyhedron(
         let (nvec, c) = newell(vertices, f);
         let twice = norm3(nvec);
         let diam = face_diameter(vertices, f);
-        // `!(a > b)` rather than `a <= b`: NaN (from overflowing coordinates) is degenerate too.
-        if !(0.5 * twice > tol * diam) {
+        // NaN (from overflowing coordinates) is degenerate too.
+        if !exceeds(0.5 * twice, tol * diam) {
             return model_err(format!("{what}: face {k} is degenerate (zero area)"));
         }
         surface += 0.5 * twice;
@@ -239,7 +247,7 @@ pub fn clean_polyhedron(
         }
     }
     let volume = vol6 / 6.0;
-    if !(volume.abs() > tol * surface) {
+    if !exceeds(volume.abs(), tol * surface) {
         return model_err(format!("{what}: the polyhedron has zero volume"));
     }
     // Σ V_t (a + b + c)/4 / Σ V_t, with V_t = v6/6: the sixths cancel.
@@ -353,7 +361,7 @@ pub fn detect_interfaces3(bodies: &[&Solid], tol: f64) -> Vec<Interface3> {
             }
             let (nvec, c) = newell(&s.vertices, f);
             let l = norm3(nvec);
-            if !(l > 0.0) {
+            if !exceeds(l, 0.0) {
                 continue;
             }
             let diam = face_diameter(&s.vertices, f);
@@ -410,8 +418,9 @@ pub fn detect_interfaces3(bodies: &[&Solid], tol: f64) -> Vec<Interface3> {
         .collect();
     order.sort_unstable();
 
-    // Candidate pairs of facing faces: (a, b, plane id, face of a, face of b) as face records.
-    let mut cands: Vec<(u32, u32, u32, u32, u32)> = Vec::new();
+    // Candidate pairs of facing faces: [a, b, plane id, side of a, face of a, face of b], the
+    // faces as face-record indices.
+    let mut cands: Vec<[u32; 6]> = Vec::new();
     let mut plane_id = 0u32;
     let mut i = 0;
     while i < order.len() {
@@ -453,9 +462,18 @@ pub fn detect_interfaces3(bodies: &[&Solid], tol: f64) -> Vec<Interface3> {
             while b < by_offset.len() && by_offset[b].0 - by_offset[b - 1].0 <= dtol {
                 b += 1;
             }
-            if b - a > 1 {
+            // A plane with faces on both sides (e.g. not a wall's face plane).
+            let both = {
+                let s0 = dot3(faces[by_offset[a].1 as usize].n, nbar) >= 0.0;
+                by_offset[a + 1..b]
+                    .iter()
+                    .any(|x| (dot3(faces[x.1 as usize].n, nbar) >= 0.0) != s0)
+            };
+            if both {
                 let plane: Vec<u32> = by_offset[a..b].iter().map(|x| x.1).collect();
-                pair_in_plane(bodies, &faces, &plane, nbar, origin, tol, size, plane_id, &mut cands);
+                pair_in_plane(
+                    bodies, &faces, &plane, nbar, origin, tol, size, plane_id, &mut cands,
+                );
                 plane_id += 1;
             }
             a = b;
@@ -464,47 +482,72 @@ pub fn detect_interfaces3(bodies: &[&Solid], tol: f64) -> Vec<Interface3> {
     cands.sort_unstable();
     cands.dedup();
 
-    // One polygon intersection per (a, b, plane, side of a).
-    let mut out: Vec<Interface3> = Vec::new();
-    let mut fa: Vec<u32> = Vec::new();
-    let mut fb: Vec<u32> = Vec::new();
+    // One polygon intersection per (a, b, plane, side of a): the groups' faces, flat.
+    struct Group {
+        a: u32,
+        b: u32,
+        fa: std::ops::Range<usize>,
+        fb: std::ops::Range<usize>,
+    }
+    let mut groups: Vec<Group> = Vec::new();
+    let (mut flat_a, mut flat_b): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
     let mut i = 0;
     while i < cands.len() {
-        let key = (cands[i].0, cands[i].1, cands[i].2);
-        let n0 = faces[cands[i].3 as usize].n;
-        fa.clear();
-        fb.clear();
-        let mut j = i;
-        while j < cands.len() && (cands[j].0, cands[j].1, cands[j].2) == key {
-            // Same side of `a` as the group's first face (a body with faces on both sides of
-            // one plane would be flat there; its other side forms its own group below).
-            if dot3(faces[cands[j].3 as usize].n, n0) > 0.0 {
-                fa.push(cands[j].3);
-                fb.push(cands[j].4);
-            }
+        let key = &cands[i][..4];
+        let mut j = i + 1;
+        while j < cands.len() && &cands[j][..4] == key {
             j += 1;
         }
-        let rest: Vec<(u32, u32, u32, u32, u32)> = cands[i..j]
-            .iter()
-            .filter(|c| dot3(faces[c.3 as usize].n, n0) <= 0.0)
-            .copied()
-            .collect();
-        fa.sort_unstable();
-        fa.dedup();
-        fb.sort_unstable();
-        fb.dedup();
-        intersect_group(bodies, &faces, key.0 as usize, key.1 as usize, &fa, &fb, tol, &mut out);
-        if !rest.is_empty() {
-            let mut ra: Vec<u32> = rest.iter().map(|c| c.3).collect();
-            let mut rb: Vec<u32> = rest.iter().map(|c| c.4).collect();
-            ra.sort_unstable();
-            ra.dedup();
-            rb.sort_unstable();
-            rb.dedup();
-            intersect_group(bodies, &faces, key.0 as usize, key.1 as usize, &ra, &rb, tol, &mut out);
+        let (sa, sb) = (flat_a.len(), flat_b.len());
+        // Faces of a are sorted within the group; those of b are sorted here.
+        for c in &cands[i..j] {
+            if flat_a.len() == sa || flat_a[flat_a.len() - 1] != c[4] {
+                flat_a.push(c[4]);
+            }
         }
+        flat_b.extend(cands[i..j].iter().map(|c| c[5]));
+        flat_b[sb..].sort_unstable();
+        let mut w = sb;
+        for r in sb..flat_b.len() {
+            if w == sb || flat_b[w - 1] != flat_b[r] {
+                flat_b[w] = flat_b[r];
+                w += 1;
+            }
+        }
+        flat_b.truncate(w);
+        groups.push(Group {
+            a: cands[i][0],
+            b: cands[i][1],
+            fa: sa..flat_a.len(),
+            fb: sb..flat_b.len(),
+        });
         i = j;
     }
+    // Groups are independent: clip them in parallel (rayon), each worker reusing one overlay
+    // engine (its buffers) across its groups; the result is sorted below, so the order in
+    // which workers finish does not matter.
+    let mut out: Vec<Interface3> = groups
+        .par_chunks(256)
+        .map_init(
+            || FloatOverlay::<P2, i64>::new_empty(OverlayOptions::default(), Solver::default(), 64),
+            |ov, chunk| {
+                let mut out = Vec::new();
+                for g in chunk {
+                    intersect_group(
+                        bodies,
+                        &faces,
+                        (g.a as usize, g.b as usize),
+                        (&flat_a[g.fa.clone()], &flat_b[g.fb.clone()]),
+                        tol,
+                        ov,
+                        &mut out,
+                    );
+                }
+                out
+            },
+        )
+        .flatten_iter()
+        .collect();
     out.sort_by(|x, y| {
         (x.a, x.b).cmp(&(y.a, y.b)).then_with(|| {
             for (p, q) in x.polygon.iter().zip(&y.polygon) {
@@ -533,7 +576,7 @@ fn pair_in_plane(
     tol: f64,
     size: f64,
     plane_id: u32,
-    cands: &mut Vec<(u32, u32, u32, u32, u32)>,
+    cands: &mut Vec<[u32; 6]>,
 ) {
     let (u, v) = plane_frame(nbar);
     // 2D boxes of the projected faces, grown by tol.
@@ -542,7 +585,12 @@ fn pair_in_plane(
         .map(|&k| {
             let f = &faces[k as usize];
             let s = bodies[f.body as usize];
-            let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+            let mut b = [
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NEG_INFINITY,
+            ];
             for &vi in &s.faces[f.face as usize] {
                 let r = sub3(s.vertices[vi], origin);
                 let (x, y) = (dot3(r, u), dot3(r, v));
@@ -553,8 +601,20 @@ fn pair_in_plane(
         .collect();
     let m = plane.len();
     let all = boxes.iter().fold(
-        [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY],
-        |a, b| [a[0].min(b[0]), a[1].min(b[1]), a[2].max(b[2]), a[3].max(b[3])],
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |a, b| {
+            [
+                a[0].min(b[0]),
+                a[1].min(b[1]),
+                a[2].max(b[2]),
+                a[3].max(b[3]),
+            ]
+        },
     );
     // Cell: the mean face extent, enlarged if the grid would have more than 4m + 16 cells.
     let mean = boxes
@@ -607,7 +667,11 @@ fn pair_in_plane(
                 if norm3(add3(fp.n, fq.n)) > ang {
                     continue;
                 }
-                let (small, big) = if fp.diam <= fq.diam { (fp, fq) } else { (fq, fp) };
+                let (small, big) = if fp.diam <= fq.diam {
+                    (fp, fq)
+                } else {
+                    (fq, fp)
+                };
                 if dot3(big.n, sub3(small.c, big.c)).abs() > tol {
                     continue;
                 }
@@ -616,13 +680,16 @@ fn pair_in_plane(
                 } else {
                     (plane[lq], plane[lp])
                 };
-                cands.push((
+                // The side of a's face (a body flat at this plane may have faces on both).
+                let side = u32::from(dot3(faces[ka as usize].n, nbar) >= 0.0);
+                cands.push([
                     faces[ka as usize].body,
                     faces[kb as usize].body,
                     plane_id,
+                    side,
                     ka,
                     kb,
-                ));
+                ]);
             }
         }
         i = j;
@@ -631,15 +698,13 @@ fn pair_in_plane(
 
 /// Intersect the faces `fa` of body `a` with the faces `fb` of body `b` (one plane, facing) and
 /// push one interface per connected region.
-#[allow(clippy::too_many_arguments)]
 fn intersect_group(
     bodies: &[&Solid],
     faces: &[FaceRec],
-    a: usize,
-    b: usize,
-    fa: &[u32],
-    fb: &[u32],
+    (a, b): (usize, usize),
+    (fa, fb): (&[u32], &[u32]),
     tol: f64,
+    ov: &mut FloatOverlay<P2, i64>,
     out: &mut Vec<Interface3>,
 ) {
     if fa.is_empty() || fb.is_empty() {
@@ -665,7 +730,8 @@ fn intersect_group(
     };
     let subj: Vec<Vec<P2>> = fa.iter().map(|&k| project(k)).collect();
     let clip: Vec<Vec<P2>> = fb.iter().map(|&k| project(k)).collect();
-    let shapes = subj.overlay_as::<i64>(&clip, OverlayRule::Intersect, FillRule::NonZero);
+    ov.reinit_with_subj_and_clip(&subj, &clip);
+    let shapes = ov.overlay(OverlayRule::Intersect, FillRule::NonZero);
     for shape in shapes {
         let Some(outer) = shape.first() else { continue };
         let ring = clean_ring(outer, tol);
@@ -679,7 +745,7 @@ fn intersect_group(
                 (q[0] - p[0]).hypot(q[1] - p[1])
             })
             .sum();
-        if !(area > 0.5 * tol * perimeter) {
+        if !exceeds(area, 0.5 * tol * perimeter) {
             continue;
         }
         let mut polygon: Vec<V3> = ring
@@ -750,7 +816,7 @@ impl QFace {
     fn new(s: &Solid, f: &[usize]) -> Option<QFace> {
         let (nvec, c) = newell(&s.vertices, f);
         let l = norm3(nvec);
-        if !(l > 0.0) {
+        if !exceeds(l, 0.0) {
             return None;
         }
         let n = scale3(nvec, 1.0 / l);
@@ -762,7 +828,13 @@ impl QFace {
                 [dot3(r, u), dot3(r, v)]
             })
             .collect();
-        Some(QFace { n, o: c, u, v, poly })
+        Some(QFace {
+            n,
+            o: c,
+            u,
+            v,
+            poly,
+        })
     }
     fn height(&self, q: V3) -> f64 {
         dot3(self.n, sub3(q, self.o))
@@ -801,10 +873,9 @@ impl QFace {
     /// else the middle of the widest interval of a horizontal line through the mean.
     fn interior_point(&self, tol: f64) -> Option<V3> {
         let k = self.poly.len();
-        let c = self
-            .poly
-            .iter()
-            .fold([0.0, 0.0], |s, p| [s[0] + p[0] / k as f64, s[1] + p[1] / k as f64]);
+        let c = self.poly.iter().fold([0.0, 0.0], |s, p| {
+            [s[0] + p[0] / k as f64, s[1] + p[1] / k as f64]
+        });
         if strictly_inside(c, &self.poly, tol) {
             return Some(self.lift(c));
         }
@@ -866,13 +937,7 @@ impl QBody {
                 faces.push(q);
             }
         }
-        probes.extend(
-            s.vertices
-                .iter()
-                .zip(&used)
-                .filter(|x| *x.1)
-                .map(|x| *x.0),
-        );
+        probes.extend(s.vertices.iter().zip(&used).filter(|x| *x.1).map(|x| *x.0));
         let bbox = bbox3_iter(probes.iter().copied());
         let mut body = QBody {
             faces,
@@ -979,12 +1044,7 @@ pub fn find_overlap3(
     }
     let mid = ext.len() / 2;
     let (_, &mut median, _) = ext.select_nth_unstable_by(mid, f64::total_cmp);
-    let all = bbox3_iter(
-        boxes
-            .iter()
-            .filter(|b| valid(b))
-            .flat_map(|b| [b[0], b[1]]),
-    );
+    let all = bbox3_iter(boxes.iter().filter(|b| valid(b)).flat_map(|b| [b[0], b[1]]));
     let mut hc = median.max(tol).max(f64::MIN_POSITIVE);
     // Keep the number of (cell, body) entries linear: grow the cell while a few huge bodies
     // would cover more than 16 cells per body on average.
@@ -994,7 +1054,10 @@ pub fn find_overlap3(
             .filter(|b| valid(b))
             .map(|b| {
                 (0..3)
-                    .map(|k| ((b[1][k] - all[0][k]) / hc).floor() - ((b[0][k] - all[0][k]) / hc).floor() + 1.0)
+                    .map(|k| {
+                        ((b[1][k] - all[0][k]) / hc).floor() - ((b[0][k] - all[0][k]) / hc).floor()
+                            + 1.0
+                    })
                     .product::<f64>()
             })
             .sum()
@@ -1082,7 +1145,15 @@ mod tests {
     #[test]
     fn clean_ring_drops_collinear_and_duplicates() {
         let r = clean_ring(
-            &[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [2.0, 1.0], [0.0, 1.0], [0.0, 0.5]],
+            &[
+                [0.0, 0.0],
+                [1.0, 0.0],
+                [2.0, 0.0],
+                [2.0, 1.0],
+                [2.0, 1.0],
+                [0.0, 1.0],
+                [0.0, 0.5],
+            ],
             1e-9,
         );
         assert_eq!(r, vec![[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]);
@@ -1090,7 +1161,12 @@ mod tests {
 
     #[test]
     fn frame_is_right_handed() {
-        for n in [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0], [0.6, 0.0, 0.8], [0.0, -1.0, 0.0]] {
+        for n in [
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, -1.0],
+            [0.6, 0.0, 0.8],
+            [0.0, -1.0, 0.0],
+        ] {
             let (u, v) = plane_frame(n);
             let w = cross3(u, v);
             assert!(norm3(sub3(w, n)) < 1e-15, "{n:?}");

@@ -48,7 +48,10 @@ fn cuboid(lo: [f64; 3], hi: [f64; 3]) -> Solid {
 fn prism_raw(base: &[[f64; 3]], ext: [f64; 3]) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
     let n = base.len();
     let mut v = base.to_vec();
-    v.extend(base.iter().map(|p| [p[0] + ext[0], p[1] + ext[1], p[2] + ext[2]]));
+    v.extend(
+        base.iter()
+            .map(|p| [p[0] + ext[0], p[1] + ext[1], p[2] + ext[2]]),
+    );
     let mut f = vec![(0..n).rev().collect::<Vec<_>>(), (n..2 * n).collect()];
     for i in 0..n {
         let j = (i + 1) % n;
@@ -116,7 +119,12 @@ fn l_shaped_prism_volume_and_centroid() {
 #[test]
 fn tetrahedron_volume_and_centroid() {
     // Corner tetrahedron with legs a, b, c = 1, 2, 3: V = abc/6 = 1, centroid (a, b, c)/4.
-    let v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0]];
+    let v = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 2.0, 0.0],
+        [0.0, 0.0, 3.0],
+    ];
     let f = vec![vec![0, 2, 1], vec![0, 1, 3], vec![0, 3, 2], vec![1, 2, 3]];
     let t = clean_polyhedron("tet", &v, &f, TOL).unwrap();
     assert!(close(t.volume, 1.0, 1e-12));
@@ -127,7 +135,10 @@ fn tetrahedron_volume_and_centroid() {
 #[test]
 fn inward_cube_is_turned_outward() {
     let (v, f) = cuboid_raw([0.0; 3], [1.0; 3]);
-    let inward: Vec<Vec<usize>> = f.iter().map(|g| g.iter().rev().copied().collect()).collect();
+    let inward: Vec<Vec<usize>> = f
+        .iter()
+        .map(|g| g.iter().rev().copied().collect())
+        .collect();
     let c = clean_polyhedron("block 0", &v, &inward, TOL).unwrap();
     assert!(close(c.volume, 1.0, 1e-12));
     assert!(close3(c.centroid, [0.5; 3], 1e-12));
@@ -156,12 +167,18 @@ fn each_validation_error_names_the_block() {
     let mut w = v.clone();
     w[2][1] = f64::NAN;
     let m = model_error(&w, &f);
-    assert_eq!(m, "block 7: vertex 2 has a coordinate that is not a finite number");
+    assert_eq!(
+        m,
+        "block 7: vertex 2 has a coordinate that is not a finite number"
+    );
 
     let mut g = f.clone();
     g[1][2] = 9;
     let m = model_error(&v, &g);
-    assert_eq!(m, "block 7: face 1 refers to vertex 9, but there are only 8 vertices");
+    assert_eq!(
+        m,
+        "block 7: face 1 refers to vertex 9, but there are only 8 vertices"
+    );
 
     let mut g = f.clone();
     g[3] = vec![1, 2];
@@ -193,7 +210,8 @@ fn each_validation_error_names_the_block() {
 
     let m = model_error(&v, &f[..5]);
     assert!(
-        m.starts_with("block 7: the surface is open (edge ") && m.ends_with("belongs to no other face)"),
+        m.starts_with("block 7: the surface is open (edge ")
+            && m.ends_with("belongs to no other face)"),
         "{m}"
     );
 
@@ -201,7 +219,10 @@ fn each_validation_error_names_the_block() {
     let mut g = f.clone();
     g.push(vec![0, 1, 2, 3]);
     let m = model_error(&v, &g);
-    assert_eq!(m, "block 7: the surface is not manifold (edge 0–1 is shared by faces 0, 2, 6)");
+    assert_eq!(
+        m,
+        "block 7: the surface is not manifold (edge 0–1 is shared by faces 0, 2, 6)"
+    );
 
     // One face turned round: it runs along its edges in the same direction as its neighbours.
     let mut g = f.clone();
@@ -214,7 +235,12 @@ fn each_validation_error_names_the_block() {
 
     // A flat "pillow": a square covered by two triangles on top and two (along the other
     // diagonal) below; closed, manifold, consistently oriented, but of zero volume.
-    let sq = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+    let sq = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
     let g = vec![vec![0, 1, 2], vec![0, 2, 3], vec![0, 3, 1], vec![1, 3, 2]];
     let m = model_error(&sq, &g);
     assert_eq!(m, "block 7: the polyhedron has zero volume");
@@ -225,7 +251,10 @@ fn support_names_appear_too() {
     let (v, f) = cuboid_raw([0.0; 3], [1.0; 3]);
     let e = clean_polyhedron("support 'left'", &v, &f[..5], TOL).unwrap_err();
     let s = e.to_string();
-    assert!(s.starts_with("invalid model: support 'left': the surface is open"), "{s}");
+    assert!(
+        s.starts_with("invalid model: support 'left': the surface is open"),
+        "{s}"
+    );
     assert!(!s.contains('\n'));
 }
 
@@ -247,7 +276,12 @@ fn stacked_boxes_with_offset_share_the_overlap_rectangle() {
     assert!(close3(i.normal, [0.0, 0.0, 1.0], 1e-12));
     assert!(close(i.area, 0.42, 1e-12));
     // Counter-clockwise about +z from the lexicographically smallest corner.
-    let want = [[0.3, 0.4, 1.0], [1.0, 0.4, 1.0], [1.0, 1.0, 1.0], [0.3, 1.0, 1.0]];
+    let want = [
+        [0.3, 0.4, 1.0],
+        [1.0, 0.4, 1.0],
+        [1.0, 1.0, 1.0],
+        [0.3, 1.0, 1.0],
+    ];
     assert_eq!(i.polygon.len(), 4);
     for (p, q) in i.polygon.iter().zip(&want) {
         assert!(close3(*p, *q, 1e-12), "{:?}", i.polygon);
@@ -260,7 +294,12 @@ fn stacked_boxes_with_offset_share_the_overlap_rectangle() {
     assert_eq!((i.a, i.b), (0, 1));
     assert!(close3(i.normal, [0.0, 0.0, -1.0], 1e-12));
     assert!(close(i.area, 0.42, 1e-12));
-    let want = [[0.3, 0.4, 1.0], [0.3, 1.0, 1.0], [1.0, 1.0, 1.0], [1.0, 0.4, 1.0]];
+    let want = [
+        [0.3, 0.4, 1.0],
+        [0.3, 1.0, 1.0],
+        [1.0, 1.0, 1.0],
+        [1.0, 0.4, 1.0],
+    ];
     for (p, q) in i.polygon.iter().zip(&want) {
         assert!(close3(*p, *q, 1e-12), "{:?}", i.polygon);
     }
@@ -322,14 +361,28 @@ fn non_convex_faces_intersect_exactly() {
     // [0,1]×[1,2] ∪ [2,3]×[0,1]: two unit squares meeting only at no point → two interfaces.
     let l = |p: [f64; 2]| [p[0], p[1], 0.0];
     let lower = prism(
-        &[[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]].map(l),
+        &[
+            [0.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ]
+        .map(l),
         [0.0, 0.0, 1.0],
     );
-    let upper_base: Vec<[f64; 3]> =
-        [[3.0, 2.0], [0.0, 2.0], [0.0, 1.0], [2.0, 1.0], [2.0, 0.0], [3.0, 0.0]]
-            .iter()
-            .map(|p| [p[0], p[1], 1.0])
-            .collect();
+    let upper_base: Vec<[f64; 3]> = [
+        [3.0, 2.0],
+        [0.0, 2.0],
+        [0.0, 1.0],
+        [2.0, 1.0],
+        [2.0, 0.0],
+        [3.0, 0.0],
+    ]
+    .iter()
+    .map(|p| [p[0], p[1], 1.0])
+    .collect();
     let upper = prism(&upper_base, [0.0, 0.0, 1.0]);
     let ifs = detect_interfaces3(&[&lower, &upper], TOL);
     assert_eq!(ifs.len(), 2, "{ifs:?}");
@@ -401,12 +454,18 @@ fn overlap_check() {
     let none = |_: usize, _: usize| false;
     assert_eq!(find_overlap3(&[&a, &b], TOL, &none), Some((0, 1)));
     assert_eq!(find_overlap3(&[&a, &on_top, &side], TOL, &none), None);
-    assert_eq!(find_overlap3(&[&on_top, &a, &small], TOL, &none), Some((1, 2)));
+    assert_eq!(
+        find_overlap3(&[&on_top, &a, &small], TOL, &none),
+        Some((1, 2))
+    );
     // Identical bodies: no vertex, edge midpoint or face point is strictly inside the other;
     // the interior point is.
     assert_eq!(find_overlap3(&[&side, &a, &a], TOL, &none), Some((1, 2)));
     // The caller may skip pairs (support–support).
-    assert_eq!(find_overlap3(&[&a, &b], TOL, &|i, j| (i, j) == (0, 1)), None);
+    assert_eq!(
+        find_overlap3(&[&a, &b], TOL, &|i, j| (i, j) == (0, 1)),
+        None
+    );
     // A cross: two bars through each other, no vertex of either inside the other.
     let bar_x = cuboid([-1.0, 0.4, 0.4], [2.0, 0.6, 0.6]);
     let bar_y = cuboid([0.4, -1.0, 0.45], [0.6, 2.0, 0.55]);
@@ -442,7 +501,10 @@ fn bbox_of_points() {
 /// `courses` × `units` bricks `l × d × h`, odd courses shifted by l/2, on a ground slab
 /// (body 0) wider than the wall.
 fn running_bond(courses: usize, units: usize, [l, d, h]: [f64; 3]) -> Vec<Solid> {
-    let mut out = vec![cuboid([-l, -d, -h], [(units as f64 + 1.0) * l, 2.0 * d, 0.0])];
+    let mut out = vec![cuboid(
+        [-l, -d, -h],
+        [(units as f64 + 1.0) * l, 2.0 * d, 0.0],
+    )];
     for k in 0..courses {
         let shift = if k % 2 == 1 { 0.5 * l } else { 0.0 };
         for i in 0..units {

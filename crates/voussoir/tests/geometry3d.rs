@@ -488,6 +488,25 @@ fn overlap_check() {
     assert_eq!(find_overlap3(&[&u, &through], TOL, &none), None);
     let too_tall = cuboid([1.0, -2.0, 0.0], [2.0, 1.0, 1.2]);
     assert_eq!(find_overlap3(&[&u, &too_tall], TOL, &none), Some((0, 1)));
+    // Two identical non-convex bodies: the interior point (found through a face's interior
+    // point, here by the scanline since the U's vertex mean lies in its opening) is inside.
+    assert_eq!(find_overlap3(&[&u, &u], TOL, &none), Some((0, 1)));
+}
+
+#[test]
+fn touching_non_box_bodies_do_not_overlap() {
+    // The cube cut along x + z = 1: bounding boxes overlap, the halves only touch.
+    let lower = prism_xz(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], 1.0);
+    let upper = prism_xz(&[[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], 1.0);
+    let none = |_: usize, _: usize| false;
+    assert_eq!(find_overlap3(&[&lower, &upper], TOL, &none), None);
+    // The upper half pushed 1 cm into the lower one (along −x): overlap.
+    let pushed = prism_xz(&[[0.99, 0.0], [0.99, 1.0], [-0.01, 1.0]], 1.0);
+    assert_eq!(find_overlap3(&[&lower, &pushed], TOL, &none), Some((0, 1)));
+    // Pulled 1 cm away (along +x): neither overlap nor contact.
+    let pulled = prism_xz(&[[1.01, 0.0], [1.01, 1.0], [0.01, 1.0]], 1.0);
+    assert_eq!(find_overlap3(&[&lower, &pulled], TOL, &none), None);
+    assert!(detect_interfaces3(&[&lower, &pulled], TOL).is_empty());
 }
 
 #[test]

@@ -734,11 +734,16 @@ fn intersect_group(
     let shapes = ov.overlay(OverlayRule::Intersect, FillRule::NonZero);
     for shape in shapes {
         let Some(outer) = shape.first() else { continue };
-        let ring = clean_ring(outer, tol);
+        let mut ring = clean_ring(outer, tol);
         if ring.len() < 3 {
             continue;
         }
-        let area = signed_area(&ring);
+        // i_overlay returns outer rings counter-clockwise; made sure of, not assumed.
+        let mut area = signed_area(&ring);
+        if area < 0.0 {
+            ring.reverse();
+            area = -area;
+        }
         let perimeter: f64 = (0..ring.len())
             .map(|i| {
                 let (p, q) = (ring[i], ring[(i + 1) % ring.len()]);

@@ -306,6 +306,27 @@ fn stacked_boxes_with_offset_share_the_overlap_rectangle() {
 }
 
 #[test]
+fn face_split_into_triangles_gives_one_interface() {
+    // A's top split along its diagonal into two triangles; B = [0.2,1.2]×[0.3,1.3]×[1,2] on it:
+    // one interface, the rectangle [0.2,1]×[0.3,1] (area 0.8·0.7 = 0.56), the points where the
+    // diagonal crosses its sides dropped as collinear.
+    let (v, mut f) = cuboid_raw([0.0; 3], [1.0; 3]);
+    f[1] = vec![4, 5, 6];
+    f.push(vec![4, 6, 7]);
+    let a = clean_polyhedron("block 0", &v, &f, TOL).unwrap();
+    assert!(close(a.volume, 1.0, 1e-12));
+    let b = cuboid([0.2, 0.3, 1.0], [1.2, 1.3, 2.0]);
+    let ifs = detect_interfaces3(&[&a, &b], TOL);
+    assert_eq!(ifs.len(), 1);
+    assert!(close(ifs[0].area, 0.56, 1e-12));
+    let want = [[0.2, 0.3, 1.0], [1.0, 0.3, 1.0], [1.0, 1.0, 1.0], [0.2, 1.0, 1.0]];
+    assert_eq!(ifs[0].polygon.len(), 4, "{:?}", ifs[0].polygon);
+    for (p, q) in ifs[0].polygon.iter().zip(&want) {
+        assert!(close3(*p, *q, 1e-12), "{:?}", ifs[0].polygon);
+    }
+}
+
+#[test]
 fn block_on_two_supports() {
     // Supports [0,1] and [2,3] in x; the block [0.5,2.5]×[0,1]×[0,0.5] rests on 0.5 m of each.
     let s1 = cuboid([0.0, 0.0, -1.0], [1.0, 1.0, 0.0]);

@@ -319,7 +319,12 @@ fn face_split_into_triangles_gives_one_interface() {
     let ifs = detect_interfaces3(&[&a, &b], TOL);
     assert_eq!(ifs.len(), 1);
     assert!(close(ifs[0].area, 0.56, 1e-12));
-    let want = [[0.2, 0.3, 1.0], [1.0, 0.3, 1.0], [1.0, 1.0, 1.0], [0.2, 1.0, 1.0]];
+    let want = [
+        [0.2, 0.3, 1.0],
+        [1.0, 0.3, 1.0],
+        [1.0, 1.0, 1.0],
+        [0.2, 1.0, 1.0],
+    ];
     assert_eq!(ifs[0].polygon.len(), 4, "{:?}", ifs[0].polygon);
     for (p, q) in ifs[0].polygon.iter().zip(&want) {
         assert!(close3(*p, *q, 1e-12), "{:?}", ifs[0].polygon);

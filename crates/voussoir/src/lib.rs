@@ -39,6 +39,7 @@ pub mod duality;
 pub mod error;
 pub mod generate;
 pub mod generate_facade;
+pub mod generate3d;
 pub mod geometry;
 pub mod lp;
 pub mod model;

@@ -216,9 +216,7 @@ fn section(what: &str, given: &[Point]) -> Result<Section> {
         q.reverse();
     }
     let edge = (0..given.len())
-        .map(|k| {
-            (k < n).then(|| if reversed { (2 * n - 2 - k) % n } else { k })
-        })
+        .map(|k| (k < n).then(|| if reversed { (2 * n - 2 - k) % n } else { k }))
         .collect();
     Ok(Section { poly: q, edge })
 }
@@ -646,7 +644,10 @@ pub fn dome(s: &DomeSpec) -> Result<Model3d> {
         s.unit_weight.is_finite() && s.unit_weight >= 0.0,
         "unit weight must be ≥ 0",
     )?;
-    req(s.crown_load.is_finite(), "crown load must be a finite number")?;
+    req(
+        s.crown_load.is_finite(),
+        "crown load must be a finite number",
+    )?;
     let ri = match s.radius_at {
         RadiusAt::Intrados => s.radius,
         RadiusAt::Centreline => s.radius - s.thickness / 2.0,
@@ -829,7 +830,7 @@ fn cos_sin_deg(a: f64) -> (f64, f64) {
     } else if r == 270.0 {
         (0.0, -1.0)
     } else {
-        let (s, c) = r.to_radians().sin_cos();
+        let (s, c) = a.to_radians().sin_cos();
         (c, s)
     }
 }
@@ -1048,7 +1049,11 @@ pub fn walls(s: &WallsSpec) -> Result<Model3d> {
             main.push(blocks.len());
             blocks.push(cuboid(x, [0.0, t], z).block());
         }
-        let ret = if through { lay(t, r, t, l) } else { lay(0.0, r, 0.0, l) };
+        let ret = if through {
+            lay(t, r, t, l)
+        } else {
+            lay(0.0, r, 0.0, l)
+        };
         let mut returns = Vec::new();
         if s.plan != Plan::I {
             returns.push([0.0, t]);

@@ -222,7 +222,11 @@ fn extrude_maps_a_counter_clockwise_rotation_to_minus_theta_about_y() {
         for y in [0.0, 2.0] {
             let w = [s3.motion[3], s3.motion[4], s3.motion[5]];
             let q3 = rotate([p[0], y, p[1]], c3, w);
-            let q3 = [q3[0] + s3.motion[0], q3[1] + s3.motion[1], q3[2] + s3.motion[2]];
+            let q3 = [
+                q3[0] + s3.motion[0],
+                q3[1] + s3.motion[1],
+                q3[2] + s3.motion[2],
+            ];
             assert!(
                 (q3[0] - q2[0]).abs() < 1e-12
                     && (q3[2] - q2[1]).abs() < 1e-12
@@ -254,7 +258,10 @@ fn extrude_keeps_the_load_per_metre() {
     let mut faces = 0.0;
     for (list, sum) in [(&m3.loads.dead, &mut dead), (&m3.loads.live, &mut live)] {
         for l in list.iter() {
-            if let Load3d::Point { block, at, force, .. } = l {
+            if let Load3d::Point {
+                block, at, force, ..
+            } = l
+            {
                 let r = *block as f64;
                 assert!((at[1] - (r + 0.5) * depth / rings as f64).abs() < 1e-12);
                 for k in 0..3 {
@@ -268,7 +275,13 @@ fn extrude_keeps_the_load_per_metre() {
     assert!((live[2] / depth - 1.0 / w).abs() < 1e-12);
     // Edge load → face load on the face swept by the given (clockwise) edge 1, top at z = 2.
     for l in &m3.loads.live {
-        if let Load3d::Face { block, face, q, per } = l {
+        if let Load3d::Face {
+            block,
+            face,
+            q,
+            per,
+        } = l
+        {
             assert_eq!((*q, *per), (4.0, PerArea::Area));
             let b = &m3.blocks[*block];
             let f = &b.faces[*face];
@@ -300,15 +313,24 @@ fn extrude_keeps_the_load_per_metre() {
         extrude(&m2, 1.0, 2, Bond::Running),
         Err(Error::Request(_))
     ));
-    assert!(matches!(extrude(&m2, 0.0, 2, Bond::Stack), Err(Error::Request(_))));
-    assert!(matches!(extrude(&m2, 1.0, 0, Bond::Stack), Err(Error::Request(_))));
+    assert!(matches!(
+        extrude(&m2, 0.0, 2, Bond::Stack),
+        Err(Error::Request(_))
+    ));
+    assert!(matches!(
+        extrude(&m2, 1.0, 0, Bond::Stack),
+        Err(Error::Request(_))
+    ));
     assert!(matches!(
         extrude(&m2, 1.0, usize::MAX, Bond::Stack),
         Err(Error::Request(_))
     ));
     let mut bad = m2.clone();
     bad.blocks[0].polygon[1][0] = f64::NAN;
-    assert!(matches!(extrude(&bad, 1.0, 1, Bond::Stack), Err(Error::Model(_))));
+    assert!(matches!(
+        extrude(&bad, 1.0, 1, Bond::Stack),
+        Err(Error::Model(_))
+    ));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -393,7 +415,12 @@ fn vault_live_load_per_metre_matches_the_arch() {
             let mut total = 0.0;
             for l in &m.loads.live {
                 match l {
-                    Load3d::Face { block, face, q, per } => {
+                    Load3d::Face {
+                        block,
+                        face,
+                        q,
+                        per,
+                    } => {
                         assert_eq!(*per, PerArea::Horizontal);
                         let b = &m.blocks[*block];
                         let nz = area_vector(&b.vertices, &b.faces[*face])[2];
@@ -454,7 +481,12 @@ fn dome_volume_closed_form_and_convergence_to_the_hemisphere() {
         (RadiusAt::Centreline, 3.8),
         (RadiusAt::Extrados, 3.6),
     ] {
-        for (alpha_deg, oculus) in [(90.0, None), (90.0, Some(15.0)), (60.0, None), (60.0, Some(20.0))] {
+        for (alpha_deg, oculus) in [
+            (90.0, None),
+            (90.0, Some(15.0)),
+            (60.0, None),
+            (60.0, Some(20.0)),
+        ] {
             let (nc, n) = (5, 12);
             let s = DomeSpec {
                 radius: r,
@@ -462,7 +494,7 @@ fn dome_volume_closed_form_and_convergence_to_the_hemisphere() {
                 thickness: t,
                 courses: nc,
                 segments: n,
-                half_angle: (alpha_deg as f64).to_radians(),
+                half_angle: f64::to_radians(alpha_deg),
                 oculus: oculus.map(|o: f64| o.to_radians()),
                 ..DomeSpec::default()
             };
@@ -470,8 +502,15 @@ fn dome_volume_closed_form_and_convergence_to_the_hemisphere() {
             let v = total_volume(&m);
             let top = oculus.unwrap_or(0.0_f64).to_radians();
             let expect = faceted_dome(ri, ri + t, &latitudes(s.half_angle, top, nc), n);
-            assert!(rel(v, expect) < 1e-12, "{at:?} {alpha_deg} {oculus:?}: {v} vs {expect}");
-            let nb = if oculus.is_some() { nc * n } else { (nc - 1) * n + 1 };
+            assert!(
+                rel(v, expect) < 1e-12,
+                "{at:?} {alpha_deg} {oculus:?}: {v} vs {expect}"
+            );
+            let nb = if oculus.is_some() {
+                nc * n
+            } else {
+                (nc - 1) * n + 1
+            };
             assert_eq!(m.blocks.len(), nb);
             assert_eq!(m.supports.len(), n);
         }
@@ -498,7 +537,10 @@ fn dome_volume_closed_form_and_convergence_to_the_hemisphere() {
         let e = rel(v, smooth);
         let lead = 11.0 * PI * PI / 48.0 / (nc * nc) as f64;
         if nc >= 8 {
-            assert!(rel(e, lead) < 0.02, "N = {nc}: error {e} vs leading term {lead}");
+            assert!(
+                rel(e, lead) < 0.02,
+                "N = {nc}: error {e} vs leading term {lead}"
+            );
         }
         errs.push(e);
     }
@@ -541,10 +583,14 @@ fn dome_supports_fit_the_first_course_and_the_hemisphere_springs_level() {
                         let mut fs = seq(&b.vertices, f);
                         fs.reverse();
                         fs.len() == gs.len()
-                            && (0..fs.len()).any(|sh| (0..fs.len()).all(|i| fs[(i + sh) % fs.len()] == gs[i]))
+                            && (0..fs.len())
+                                .any(|sh| (0..fs.len()).all(|i| fs[(i + sh) % fs.len()] == gs[i]))
                     })
                 });
-                assert!(found, "support base{j} does not meet block {j} face to face");
+                assert!(
+                    found,
+                    "support base{j} does not meet block {j} face to face"
+                );
                 // Hemisphere: the springing bed is the plane z = 0 exactly; the support is below.
                 assert!(sup.vertices.iter().all(|p| p[2] <= 0.0));
                 assert_eq!(sup.vertices.iter().filter(|p| p[2] == 0.0).count(), 4);
@@ -563,13 +609,35 @@ fn dome_supports_fit_the_first_course_and_the_hemisphere_springs_level() {
     }
     // Bad flags are requests, not panics.
     for s in [
-        DomeSpec { segments: 2, ..DomeSpec::default() },
-        DomeSpec { courses: 0, ..DomeSpec::default() },
-        DomeSpec { oculus: Some(PI / 2.0), ..DomeSpec::default() },
-        DomeSpec { half_angle: 2.0, ..DomeSpec::default() },
-        DomeSpec { thickness: 6.0, radius_at: RadiusAt::Extrados, ..DomeSpec::default() },
-        DomeSpec { radius: f64::NAN, ..DomeSpec::default() },
-        DomeSpec { segments: usize::MAX, ..DomeSpec::default() },
+        DomeSpec {
+            segments: 2,
+            ..DomeSpec::default()
+        },
+        DomeSpec {
+            courses: 0,
+            ..DomeSpec::default()
+        },
+        DomeSpec {
+            oculus: Some(PI / 2.0),
+            ..DomeSpec::default()
+        },
+        DomeSpec {
+            half_angle: 2.0,
+            ..DomeSpec::default()
+        },
+        DomeSpec {
+            thickness: 6.0,
+            radius_at: RadiusAt::Extrados,
+            ..DomeSpec::default()
+        },
+        DomeSpec {
+            radius: f64::NAN,
+            ..DomeSpec::default()
+        },
+        DomeSpec {
+            segments: usize::MAX,
+            ..DomeSpec::default()
+        },
     ] {
         assert!(matches!(dome(&s), Err(Error::Request(_))), "{s:?}");
     }
@@ -594,7 +662,10 @@ fn block_volume_centroid_and_load() {
     assert!(xmax > b / 2.0, "the base is wider than the box");
     assert_eq!(m.materials["default"].unit_weight, 20.0);
     match &m.loads.live[..] {
-        [Load3d::Body { coefficients, blocks: None }] => {
+        [Load3d::Body {
+            coefficients,
+            blocks: None,
+        }] => {
             let a = 30f64.to_radians();
             assert!((coefficients[0] - a.cos()).abs() < 1e-15);
             assert!((coefficients[1] - a.sin()).abs() < 1e-15);
@@ -603,9 +674,17 @@ fn block_volume_centroid_and_load() {
         l => panic!("{l:?}"),
     }
     let m = block([1.0, 1.0, 1.0], -270.0, 18.0).unwrap();
-    assert!(matches!(&m.loads.live[0], Load3d::Body { coefficients, .. } if *coefficients == [0.0, 1.0, 0.0]));
-    assert!(matches!(block([1.0, 0.0, 1.0], 0.0, 18.0), Err(Error::Request(_))));
-    assert!(matches!(block([1.0, 1.0, 1.0], f64::INFINITY, 18.0), Err(Error::Request(_))));
+    assert!(
+        matches!(&m.loads.live[0], Load3d::Body { coefficients, .. } if *coefficients == [0.0, 1.0, 0.0])
+    );
+    assert!(matches!(
+        block([1.0, 0.0, 1.0], 0.0, 18.0),
+        Err(Error::Request(_))
+    ));
+    assert!(matches!(
+        block([1.0, 1.0, 1.0], f64::INFINITY, 18.0),
+        Err(Error::Request(_))
+    ));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -662,7 +741,10 @@ fn walls_brick_counts_and_volumes_by_hand() {
         for i in 0..boxes.len() {
             for j in i + 1..boxes.len() {
                 let inter = (0..3)
-                    .map(|k| (boxes[i][k][1].min(boxes[j][k][1]) - boxes[i][k][0].max(boxes[j][k][0])).max(0.0))
+                    .map(|k| {
+                        (boxes[i][k][1].min(boxes[j][k][1]) - boxes[i][k][0].max(boxes[j][k][0]))
+                            .max(0.0)
+                    })
                     .product::<f64>();
                 assert!(inter < 1e-12, "{plan:?}: bricks {i} and {j} overlap");
             }
@@ -678,7 +760,10 @@ fn walls_brick_counts_and_volumes_by_hand() {
         };
         for c in 0..courses - 1 {
             for x in heads(c) {
-                assert!(heads(c + 1).iter().all(|y| (x - y).abs() > 0.1), "{plan:?} course {c}");
+                assert!(
+                    heads(c + 1).iter().all(|y| (x - y).abs() > 0.1),
+                    "{plan:?} course {c}"
+                );
             }
         }
         // Corners: the main wall runs through in even courses, the return in odd ones.
@@ -695,9 +780,14 @@ fn walls_brick_counts_and_volumes_by_hand() {
             }
         }
         // Live load: W·[0, 1, 0] on the main wall's bricks: those of y-extent [0, t].
-        let main: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i][1] == [0.0, t]).collect();
+        let main: Vec<usize> = (0..boxes.len())
+            .filter(|&i| boxes[i][1] == [0.0, t])
+            .collect();
         match &m.loads.live[..] {
-            [Load3d::Body { coefficients, blocks: Some(b) }] => {
+            [Load3d::Body {
+                coefficients,
+                blocks: Some(b),
+            }] => {
                 assert_eq!(*coefficients, [0.0, 1.0, 0.0]);
                 assert_eq!(b, &main);
             }
@@ -712,13 +802,33 @@ fn walls_brick_counts_and_volumes_by_hand() {
         ..WallsSpec::default()
     })
     .unwrap();
-    assert!(matches!(&all.loads.live[..], [Load3d::Body { blocks: None, .. }]));
+    assert!(matches!(
+        &all.loads.live[..],
+        [Load3d::Body { blocks: None, .. }]
+    ));
     for s in [
-        WallsSpec { plan: Plan::U, length: 0.3, ..WallsSpec::default() },
-        WallsSpec { plan: Plan::L, return_length: 0.1, ..WallsSpec::default() },
-        WallsSpec { courses: 0, ..WallsSpec::default() },
-        WallsSpec { height: -1.0, ..WallsSpec::default() },
-        WallsSpec { units: usize::MAX, ..WallsSpec::default() },
+        WallsSpec {
+            plan: Plan::U,
+            length: 0.3,
+            ..WallsSpec::default()
+        },
+        WallsSpec {
+            plan: Plan::L,
+            return_length: 0.1,
+            ..WallsSpec::default()
+        },
+        WallsSpec {
+            courses: 0,
+            ..WallsSpec::default()
+        },
+        WallsSpec {
+            height: -1.0,
+            ..WallsSpec::default()
+        },
+        WallsSpec {
+            units: usize::MAX,
+            ..WallsSpec::default()
+        },
     ] {
         assert!(matches!(walls(&s), Err(Error::Request(_))), "{s:?}");
     }

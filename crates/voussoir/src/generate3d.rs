@@ -412,6 +412,10 @@ fn extrude_rings(ring_models: &[&Model], depth: f64, description: String) -> Res
 pub fn extrude(model: &Model, depth: f64, rings: usize, bond: Bond) -> Result<Model3d> {
     req(rings >= 1, "rings must be at least 1")?;
     req(
+        rings <= MAX_BLOCKS,
+        &format!("rings must be at most {MAX_BLOCKS}"),
+    )?;
+    req(
         bond == Bond::Stack,
         "extrude: a running bond needs the generator's own geometry (use `gen vault --bond running`); an arbitrary 2D model extrudes with --bond stack",
     )?;
@@ -535,11 +539,11 @@ pub fn vault(spec: &ArchSpec, depth: f64, rings: usize, bond: Bond) -> Result<Mo
         depth.is_finite() && depth > 0.0,
         "depth must be a positive number of metres",
     )?;
-    let plain = generate::arch(spec)?;
     count_ok(
         "the vault",
         (spec.voussoirs.saturating_add(1)).checked_mul(rings),
     )?;
+    let plain = generate::arch(spec)?;
     let describe = |b: &str| {
         format!(
             "barrel vault: {}; depth {depth} m in {rings} ring(s), {b} bond",
@@ -1020,10 +1024,16 @@ pub fn walls(s: &WallsSpec) -> Result<Model3d> {
             "walls: the thickness must be smaller than the length",
         )?;
     }
-    count_ok(
-        "the walls",
-        s.courses
-            .checked_mul(s.units.saturating_mul(2).saturating_add(8)),
+    // Bricks per course at most: units + 2 along the main wall, r/ℓ + 3 per return.
+    let returns = match s.plan {
+        Plan::I => 0.0,
+        Plan::L => 1.0,
+        Plan::U => 2.0,
+    };
+    let estimate = s.courses as f64 * (s.units as f64 + 2.0 + returns * (r / l + 3.0));
+    req(
+        estimate <= MAX_BLOCKS as f64,
+        &format!("the walls would have more than {MAX_BLOCKS} blocks"),
     )?;
     let hc = s.height / s.courses as f64;
     let mut blocks = Vec::new();
@@ -1081,13 +1091,13 @@ pub fn walls(s: &WallsSpec) -> Result<Model3d> {
         }],
     };
     let plan = match s.plan {
-        Plan::I => "I (free-standing)",
-        Plan::L => "L",
-        Plan::U => "U",
+        Plan::I => "I (free-standing)".to_string(),
+        Plan::L => format!("L (return {r} m)"),
+        Plan::U => format!("U (returns {r} m)"),
     };
     Ok(Model3d {
         description: format!(
-            "brick walls, plan {plan}, length {big_l} m, returns {r} m, height {} m, thickness {t} m, {} courses of {} units; live load W·[0, 1, 0] on {:?}",
+            "brick walls, plan {plan}, length {big_l} m, height {} m, thickness {t} m, {} courses of {} units; live load W·[0, 1, 0] on {:?}",
             s.height, s.courses, s.units, s.live
         ),
         materials: materials(s.unit_weight),

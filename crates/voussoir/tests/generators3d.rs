@@ -325,6 +325,22 @@ fn extrude_keeps_the_load_per_metre() {
         extrude(&m2, 1.0, usize::MAX, Bond::Stack),
         Err(Error::Request(_))
     ));
+    let empty = Model {
+        blocks: vec![],
+        ..m2.clone()
+    };
+    assert!(matches!(
+        extrude(&empty, 1.0, usize::MAX, Bond::Stack),
+        Err(Error::Request(_))
+    ));
+    let huge = ArchSpec {
+        voussoirs: usize::MAX / 2,
+        ..ArchSpec::default()
+    };
+    assert!(matches!(
+        vault(&huge, 1.0, 1, Bond::Running),
+        Err(Error::Request(_))
+    ));
     let mut bad = m2.clone();
     bad.blocks[0].polygon[1][0] = f64::NAN;
     assert!(matches!(
@@ -827,6 +843,11 @@ fn walls_brick_counts_and_volumes_by_hand() {
         },
         WallsSpec {
             units: usize::MAX,
+            ..WallsSpec::default()
+        },
+        WallsSpec {
+            plan: Plan::U,
+            return_length: 1e12,
             ..WallsSpec::default()
         },
     ] {

@@ -370,8 +370,8 @@ fn extrude_rings(ring_models: &[&Model], depth: f64, description: String) -> Res
     }
     let nb_total = blocks.len();
     for (key, c, mut list) in bodies {
+        // Sorted, not deduplicated: a block listed twice in 2D is loaded twice there too.
         list.sort_unstable();
-        list.dedup();
         let which = (list.len() != nb_total || (0..nb_total).any(|i| list[i] != i)).then_some(list);
         let load = Load3d::Body {
             coefficients: c,

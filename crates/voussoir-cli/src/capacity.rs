@@ -72,6 +72,10 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         AnyModel::Spatial(model) => {
             a.draw.refuse_3d()?;
             let st = input.structure3d(model, Some(&motion))?;
+            let opts = CapacityOptions {
+                solver: input.solver3d,
+                ..opts
+            };
             let r = capacity(&st, &opts)?;
             a.out.emit(&r, || summary(&st, &r))
         }

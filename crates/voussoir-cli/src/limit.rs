@@ -88,7 +88,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
             } else {
                 Crushing::Linear
             };
-            let r = limit_with(&st, &c.input.solver, cone, DEFAULT_FACETS)?;
+            let r = limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?;
             a.draw.emit_3d(&r)?;
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }

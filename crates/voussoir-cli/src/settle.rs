@@ -81,8 +81,8 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         ));
     }
     let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver)?,
-        form => settle_with(&st, &c.input.solver, form)?,
+        SettlementForm::Both => settle(&st, &c.input.solver3d)?,
+        form => settle_with(&st, &c.input.solver3d, form)?,
     };
     a.draw.emit_3d(&r)?;
     a.out.emit(&r, || common::settle_summary(&st, &r))

@@ -58,9 +58,9 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
             let st = input.structure3d(m, None)?;
             let az = a.azimuth.unwrap_or(0.0);
             let r = if input.exact_friction_cone {
-                voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &input.solver)?
+                voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &input.solver3d)?
             } else {
-                voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver)?
+                voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver3d)?
             };
             a.draw.emit_3d(&r.limit)?;
             return a.out.emit(&r, || {

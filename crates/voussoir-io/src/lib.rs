@@ -6,6 +6,7 @@ pub mod draw;
 pub mod draw3d;
 pub mod dxf;
 pub mod files;
+pub mod mesh;
 pub mod result3d;
 pub mod vtk;
 

@@ -6,6 +6,8 @@ use std::path::PathBuf;
 use voussoir::generate::{
     self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec,
 };
+use voussoir::generate3d::{self, Bond, DomeSpec, Plan, WallsLive, WallsSpec};
+use voussoir::model3d::Model3d;
 use voussoir::Model;
 
 #[derive(Subcommand)]
@@ -21,6 +23,18 @@ pub enum Gen {
     /// church façade, 22 m × 19 m), meshed as a grid or a running bond on segments f0, f1, ….
     #[command(alias = "façade")]
     Facade(FacadeArgs),
+    /// 3D: a barrel vault, the arch of `gen arch` (every arch flag) extruded along +y over
+    /// --depth in --rings rings, stack or running bond; supports `left` and `right`.
+    Vault(VaultArgs),
+    /// 3D: a hemispherical or segmental dome of --courses × --segments blocks with planar faces,
+    /// closed by a cap or open (--oculus), on supports base0 … base{segments-1}.
+    Dome(DomeArgs),
+    /// 3D: one box b×d×h on a support `base`, with a horizontal live load equal to its weight
+    /// along --azimuth.
+    Block(BlockArgs),
+    /// 3D: brick walls in running bond, plan I, L or U with bonded corners, on a support
+    /// `ground`; live load W·[0, 1, 0] (out of plane) on the main wall.
+    Walls(WallsArgs),
 }
 
 #[derive(Args)]
@@ -194,15 +208,26 @@ pub struct WallArgs {
 }
 
 fn write(model: &Model, out: &Output) -> Result<(), Fail> {
+    write_json(model, model.blocks.len(), model.supports.len(), out)
+}
+
+fn write3d(model: &Model3d, out: &Output) -> Result<(), Fail> {
+    write_json(model, model.blocks.len(), model.supports.len(), out)
+}
+
+fn write_json<T: serde::Serialize>(
+    model: &T,
+    blocks: usize,
+    supports: usize,
+    out: &Output,
+) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(model)?;
     match &out.output {
         Some(p) => {
             crate::outputs::stage(p, json.as_bytes())?;
             eprintln!(
-                "wrote {} ({} blocks, {} supports)",
-                p.display(),
-                model.blocks.len(),
-                model.supports.len()
+                "wrote {} ({blocks} blocks, {supports} supports)",
+                p.display()
             );
         }
         None => crate::common::out(&json),
@@ -210,32 +235,109 @@ fn write(model: &Model, out: &Output) -> Result<(), Fail> {
     Ok(())
 }
 
+impl ArchArgs {
+    fn spec(&self) -> ArchSpec {
+        let shape = match self.shape {
+            ShapeArg::Semicircular => ArchShape::Semicircular,
+            ShapeArg::Segmental => ArchShape::Segmental {
+                half_angle: self.half_angle.to_radians(),
+            },
+            ShapeArg::Pointed => ArchShape::Pointed {
+                offset: self.offset,
+            },
+        };
+        ArchSpec {
+            shape,
+            radius: self.radius,
+            radius_at: self.radius_at.into(),
+            thickness: self.thickness,
+            voussoirs: self.voussoirs,
+            unit_weight: self.unit_weight,
+            width: self.width,
+            live: self.live.into(),
+            live_load: self.live_load,
+        }
+    }
+}
+
+impl From<RadiusAtArg> for RadiusAt {
+    fn from(r: RadiusAtArg) -> Self {
+        match r {
+            RadiusAtArg::Intrados => RadiusAt::Intrados,
+            RadiusAtArg::Centreline => RadiusAt::Centreline,
+            RadiusAtArg::Extrados => RadiusAt::Extrados,
+        }
+    }
+}
+
+/// Comma-separated numbers of flag `flag`, exactly `n` of them (`what` names them).
+fn numbers(flag: &str, text: &str, n: usize, what: &str) -> Result<Vec<f64>, Fail> {
+    let v: Vec<f64> = text
+        .split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| Fail(format!("{flag} {text}: expected {what}")))?;
+    if v.len() != n {
+        return Err(Fail(format!("{flag} {text}: expected {what}")));
+    }
+    Ok(v)
+}
+
 pub fn run(g: Gen) -> Result<(), Fail> {
     match g {
         Gen::Arch(a) => {
-            let shape = match a.shape {
-                ShapeArg::Semicircular => ArchShape::Semicircular,
-                ShapeArg::Segmental => ArchShape::Segmental {
-                    half_angle: a.half_angle.to_radians(),
-                },
-                ShapeArg::Pointed => ArchShape::Pointed { offset: a.offset },
-            };
-            let m = generate::arch(&ArchSpec {
-                shape,
-                radius: a.radius,
-                radius_at: match a.radius_at {
-                    RadiusAtArg::Intrados => RadiusAt::Intrados,
-                    RadiusAtArg::Centreline => RadiusAt::Centreline,
-                    RadiusAtArg::Extrados => RadiusAt::Extrados,
-                },
-                thickness: a.thickness,
-                voussoirs: a.voussoirs,
-                unit_weight: a.unit_weight,
-                width: a.width,
-                live: a.live.into(),
-                live_load: a.live_load,
-            })?;
+            let m = generate::arch(&a.spec())?;
             write(&m, &a.out)
+        }
+        Gen::Vault(v) => {
+            if v.arch.width != 1.0 {
+                return Err(Fail(
+                    "--width does not apply to `gen vault`: its depth along y is --depth".into(),
+                ));
+            }
+            let m = generate3d::vault(&v.arch.spec(), v.depth, v.rings, v.bond.into())?;
+            write3d(&m, &v.arch.out)
+        }
+        Gen::Dome(d) => {
+            let m = generate3d::dome(&DomeSpec {
+                radius: d.radius,
+                radius_at: d.radius_at.into(),
+                thickness: d.thickness,
+                courses: d.courses,
+                segments: d.segments,
+                half_angle: d.half_angle.to_radians(),
+                oculus: d.oculus.map(f64::to_radians),
+                unit_weight: d.unit_weight,
+                crown_load: d.crown_load,
+            })?;
+            write3d(&m, &d.out)
+        }
+        Gen::Block(b) => {
+            let v = numbers("--size", &b.size, 3, "B,D,H in metres")?;
+            let m = generate3d::block([v[0], v[1], v[2]], b.azimuth, b.unit_weight)?;
+            write3d(&m, &b.out)
+        }
+        Gen::Walls(w) => {
+            let m = generate3d::walls(&WallsSpec {
+                plan: match w.plan {
+                    PlanArg::I => Plan::I,
+                    PlanArg::L => Plan::L,
+                    PlanArg::U => Plan::U,
+                },
+                length: w.length,
+                return_length: w.return_length,
+                height: w.height,
+                thickness: w.thickness,
+                courses: w.courses,
+                units: w.units,
+                unit_weight: w.unit_weight,
+                live: match w.live {
+                    WallsLiveArg::None => WallsLive::None,
+                    WallsLiveArg::Main => WallsLive::Main,
+                    WallsLiveArg::All => WallsLive::All,
+                },
+            })?;
+            write3d(&m, &w.out)
         }
         Gen::Lintel(l) => {
             let m = generate::lintel(&LintelSpec {
@@ -391,4 +493,148 @@ impl FacadeArgs {
         }
         Ok(s)
     }
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum BondArg {
+    /// Every ring is the same arch: joints straight through the depth.
+    #[value(alias = "stacked")]
+    Stack,
+    /// Odd rings have their joints shifted by half a voussoir (half-voussoirs at the springings).
+    #[value(alias = "runningbond", alias = "running-bond", alias = "staggered")]
+    Running,
+}
+impl From<BondArg> for Bond {
+    fn from(b: BondArg) -> Self {
+        match b {
+            BondArg::Stack => Bond::Stack,
+            BondArg::Running => Bond::Running,
+        }
+    }
+}
+
+#[derive(Args)]
+pub struct VaultArgs {
+    #[command(flatten)]
+    pub arch: ArchArgs,
+    /// Length of the vault along y in m (the arch is in the plane x, z).
+    #[arg(long, default_value_t = 1.0, value_name = "M")]
+    pub depth: f64,
+    /// Number of rings of voussoirs along the depth.
+    #[arg(long, default_value_t = 1)]
+    pub rings: usize,
+    /// How the rings are bonded.
+    #[arg(long, value_enum, ignore_case = true, default_value = "stack")]
+    pub bond: BondArg,
+}
+
+#[derive(Args)]
+pub struct DomeArgs {
+    /// Radius of the sphere in m (where: see --radius-at); the centre is the origin.
+    #[arg(long, default_value_t = 5.0, value_name = "M")]
+    pub radius: f64,
+    /// Where the radius is measured.
+    #[arg(long, value_enum, ignore_case = true, default_value = "intrados")]
+    pub radius_at: RadiusAtArg,
+    /// Shell thickness in m.
+    #[arg(long, default_value_t = 0.3, value_name = "M")]
+    pub thickness: f64,
+    /// Courses (rings of blocks) from the springing to the crown; without --oculus the last
+    /// one is the cap, a single block.
+    #[arg(long, default_value_t = 8)]
+    pub courses: usize,
+    /// Blocks per course (meridian divisions).
+    #[arg(long, default_value_t = 16)]
+    pub segments: usize,
+    /// Springing half-angle from the vertical axis in degrees (90: hemisphere; less: segmental).
+    #[arg(long, default_value_t = 90.0, value_name = "DEG")]
+    pub half_angle: f64,
+    /// Oculus half-angle from the vertical axis in degrees (absent: closed by a cap).
+    #[arg(long, value_name = "DEG")]
+    pub oculus: Option<f64>,
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0, value_name = "KN_M3")]
+    pub unit_weight: f64,
+    /// Live vertical load at the crown in kN (downwards; with an oculus, shared by the top
+    /// course's blocks). 0: no live load.
+    #[arg(long, default_value_t = 0.0, value_name = "KN")]
+    pub crown_load: f64,
+    #[command(flatten)]
+    pub out: Output,
+}
+
+#[derive(Args)]
+pub struct BlockArgs {
+    /// Box size B,D,H in m along x, y, z.
+    #[arg(long, default_value = "1,1,2", value_name = "B,D,H")]
+    pub size: String,
+    /// Direction of the horizontal live load, degrees from +x towards +y.
+    #[arg(
+        long,
+        default_value_t = 0.0,
+        value_name = "DEG",
+        allow_negative_numbers = true
+    )]
+    pub azimuth: f64,
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0, value_name = "KN_M3")]
+    pub unit_weight: f64,
+    #[command(flatten)]
+    pub out: Output,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum PlanArg {
+    /// A free-standing straight wall along x.
+    #[value(alias = "i", alias = "straight")]
+    I,
+    /// The main wall and a return along +y at its left end (x = 0).
+    #[value(alias = "l")]
+    L,
+    /// The main wall and returns along +y at both ends.
+    #[value(alias = "u")]
+    U,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum WallsLiveArg {
+    /// No live load.
+    None,
+    /// W·[0, 1, 0] on the main wall's blocks.
+    Main,
+    /// W·[0, 1, 0] on every block.
+    All,
+}
+
+#[derive(Args)]
+pub struct WallsArgs {
+    /// Plan: I (straight), L (one return) or U (two returns).
+    #[arg(long, value_enum, ignore_case = true, default_value = "I")]
+    pub plan: PlanArg,
+    /// Length of the main wall along x in m (outer dimension).
+    #[arg(long, default_value_t = 2.0, value_name = "M")]
+    pub length: f64,
+    /// Length of each return along +y in m, from the main wall's outer face (plans L, U).
+    #[arg(long, default_value_t = 1.0, value_name = "M")]
+    pub return_length: f64,
+    /// Height in m.
+    #[arg(long, default_value_t = 1.2, value_name = "M")]
+    pub height: f64,
+    /// Thickness (one brick) in m.
+    #[arg(long, default_value_t = 0.2, value_name = "M")]
+    pub thickness: f64,
+    /// Number of courses.
+    #[arg(long, default_value_t = 6)]
+    pub courses: usize,
+    /// Bricks per course along the main wall (brick length = length / units).
+    #[arg(long, default_value_t = 5)]
+    pub units: usize,
+    /// Unit weight γ in kN/m³.
+    #[arg(long, default_value_t = 18.0, value_name = "KN_M3")]
+    pub unit_weight: f64,
+    /// Live load: W·[0, 1, 0] (out of plane) on the main wall, on every block, or none.
+    #[arg(long, value_enum, ignore_case = true, default_value = "main")]
+    pub live: WallsLiveArg,
+    #[command(flatten)]
+    pub out: Output,
 }

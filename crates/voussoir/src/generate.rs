@@ -130,8 +130,9 @@ fn springing_support(name: &str, p_in: Point, p_out: Point, dir: Point, depth: f
     }
 }
 
-/// Generate an arch on two supports named `left` and `right`.
-pub fn arch(s: &ArchSpec) -> Result<Model> {
+/// The joints of the arch `s` from left to right as (intrados point, extrados point), and the
+/// intrados radius, after validating `s` (the 3D vault generator uses them too).
+pub(crate) fn arch_joints(s: &ArchSpec) -> Result<(Vec<(Point, Point)>, f64)> {
     req(
         s.radius.is_finite() && s.radius > 0.0,
         "arch radius must be positive",
@@ -214,6 +215,13 @@ pub fn arch(s: &ArchSpec) -> Result<Model> {
             }
         }
     }
+    Ok((joints, ri))
+}
+
+/// Generate an arch on two supports named `left` and `right`.
+pub fn arch(s: &ArchSpec) -> Result<Model> {
+    let (joints, ri) = arch_joints(s)?;
+    let n = s.voussoirs;
     let mut blocks = Vec::with_capacity(n);
     let mut live = Vec::new();
     for k in 0..n {

@@ -38,6 +38,7 @@ pub mod discretize;
 pub mod duality;
 pub mod error;
 pub mod generate;
+pub mod generate3d;
 pub mod generate_facade;
 pub mod geometry;
 pub mod geometry3d;

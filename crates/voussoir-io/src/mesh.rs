@@ -241,7 +241,12 @@ pub fn parse_ply(bytes: &[u8], opts: &MeshOptions, file: &str) -> Result<(Model3
     let mut reader = std::io::Cursor::new(bytes);
     let ply = parser
         .read_ply(&mut reader)
-        .map_err(|e| IoError(format!("not a readable PLY file ({e})")))?;
+        .map_err(|e| {
+            // The parser's message spans several lines (with a dump of the expected tokens).
+            let text = e.to_string();
+            let first = text.lines().next().unwrap_or("").trim().to_string();
+            IoError(format!("not a readable PLY file ({first})"))
+        })?;
     let scalar = |p: &Property| -> Option<f64> {
         Some(match *p {
             Property::Char(x) => x as f64,

@@ -14,8 +14,9 @@
 //! 4. coplanar faces that share edges (a triangulated rectangle, a fan) are merged back into one
 //!    polygon face, because interfaces between blocks are found on whole faces; a vertex left in
 //!    the middle of a straight edge between two merged faces is removed;
-//! 5. the polyhedron is validated by the library's 3D geometry (planarity, self-intersection)
-//!    under the body's own name.
+//! 5. the surface must not intersect itself (an edge through a face it does not touch);
+//! 6. the polyhedron is validated by the library's 3D geometry (planarity, degenerate faces,
+//!    volume) under the body's own name.
 //!
 //! Every error is one line naming the OBJ object or PLY part.
 
@@ -616,6 +617,20 @@ fn clean_body(b: &RawBody, what: &str, weld_tol: f64, plane_tol: f64) -> Result<
     }
     let faces_read = b.faces.len();
     let (verts, faces) = merge_coplanar(verts, faces, plane_tol);
+    if let Some((e, f)) = self_intersection(&verts, &faces, plane_tol) {
+        return err(format!(
+            "the surface intersects itself: the edge {}–{} passes through the face with corners {} (a block must be a simple closed surface)",
+            fmt_point(verts[e.0]),
+            fmt_point(verts[e.1]),
+            faces[f]
+                .iter()
+                .take(4)
+                .map(|&i| fmt_point(verts[i]))
+                .collect::<Vec<_>>()
+                .join(", ")
+                + if faces[f].len() > 4 { ", …" } else { "" }
+        ));
+    }
     Ok(CleanBody {
         vertices: verts,
         faces,
@@ -623,6 +638,110 @@ fn clean_body(b: &RawBody, what: &str, weld_tol: f64, plane_tol: f64) -> Result<
         faces_read,
         notes,
     })
+}
+
+/// An edge that passes through the inside of a face it does not touch, if any: the surface
+/// intersects itself. (Two closed polyhedral surfaces' faces intersect improperly only where an
+/// edge of one crosses the other; touching and coplanar overlaps within `tol` are not
+/// reported.) Broad phase: faces sorted by the low x of their bounding boxes, each edge tested
+/// against the faces whose x-range meets its own; exact test: the edge's ends strictly on both
+/// sides of the face's plane (beyond `tol`), the crossing point inside the face polygon and
+/// farther than `tol` from its outline.
+fn self_intersection(v: &[V3], faces: &[Vec<usize>], tol: f64) -> Option<((usize, usize), usize)> {
+    struct F {
+        lo: V3,
+        hi: V3,
+        n: V3,
+        p0: V3,
+        k: usize,
+    }
+    let mut fs: Vec<F> = faces
+        .iter()
+        .enumerate()
+        .map(|(k, f)| {
+            let pts: Vec<V3> = f.iter().map(|&i| v[i]).collect();
+            let [lo, hi] = voussoir::geometry3d::bbox3(&pts);
+            let n = newell(v, f);
+            let l = norm(n);
+            F {
+                lo,
+                hi,
+                n: if l > 0.0 { [n[0] / l, n[1] / l, n[2] / l] } else { [0.0; 3] },
+                p0: pts[0],
+                k,
+            }
+        })
+        .collect();
+    fs.sort_by(|a, b| a.lo[0].total_cmp(&b.lo[0]).then(a.k.cmp(&b.k)));
+    let mut edges: Vec<(usize, usize)> = faces
+        .iter()
+        .flat_map(|f| (0..f.len()).map(move |k| (f[k], f[(k + 1) % f.len()])))
+        .filter(|(a, b)| a < b)
+        .collect();
+    edges.sort_unstable();
+    for &(a, b) in &edges {
+        let (pa, pb) = (v[a], v[b]);
+        let elo = [pa[0].min(pb[0]), pa[1].min(pb[1]), pa[2].min(pb[2])];
+        let ehi = [pa[0].max(pb[0]), pa[1].max(pb[1]), pa[2].max(pb[2])];
+        let end = fs.partition_point(|f| f.lo[0] <= ehi[0] + tol);
+        for f in &fs[..end] {
+            if f.hi[0] < elo[0] - tol
+                || (0..3).any(|c| f.hi[c] < elo[c] - tol || f.lo[c] > ehi[c] + tol)
+            {
+                continue;
+            }
+            let face = &faces[f.k];
+            if face.contains(&a) || face.contains(&b) || f.n == [0.0; 3] {
+                continue;
+            }
+            let (da, db) = (dot(sub(pa, f.p0), f.n), dot(sub(pb, f.p0), f.n));
+            if !((da > tol && db < -tol) || (da < -tol && db > tol)) {
+                continue;
+            }
+            let t = da / (da - db);
+            let x = [
+                pa[0] + (pb[0] - pa[0]) * t,
+                pa[1] + (pb[1] - pa[1]) * t,
+                pa[2] + (pb[2] - pa[2]) * t,
+            ];
+            if inside_face(v, face, f.n, x, tol) {
+                return Some(((a, b), f.k));
+            }
+        }
+    }
+    None
+}
+
+/// Whether `x` (in the face's plane) is inside the polygon `face` of normal `n`, farther than
+/// `tol` from its outline (crossing number in the plane of the two largest components of `n`).
+fn inside_face(v: &[V3], face: &[usize], n: V3, x: V3, tol: f64) -> bool {
+    let drop = (0..3)
+        .max_by(|&i, &j| n[i].abs().total_cmp(&n[j].abs()))
+        .unwrap_or(2);
+    let (i, j) = match drop {
+        0 => (1, 2),
+        1 => (2, 0),
+        _ => (0, 1),
+    };
+    let mut inside = false;
+    for k in 0..face.len() {
+        let (p, q) = (v[face[k]], v[face[(k + 1) % face.len()]]);
+        // Distance from x to the edge pq (in 3D).
+        let d = sub(q, p);
+        let dd = dot(d, d);
+        let t = if dd > 0.0 { (dot(sub(x, p), d) / dd).clamp(0.0, 1.0) } else { 0.0 };
+        let c = [p[0] + d[0] * t, p[1] + d[1] * t, p[2] + d[2] * t];
+        if norm(sub(x, c)) <= tol {
+            return false;
+        }
+        if (p[j] > x[j]) != (q[j] > x[j]) {
+            let xi = p[i] + (x[j] - p[j]) / (q[j] - p[j]) * (q[i] - p[i]);
+            if x[i] < xi {
+                inside = !inside;
+            }
+        }
+    }
+    inside
 }
 
 fn fmt_point(p: V3) -> String {
@@ -1092,6 +1211,29 @@ mod tests {
         let (w, map) = weld(&v, 1e-8);
         assert_eq!(w.len(), 2);
         assert_eq!(map, vec![0, 0, 1]);
+    }
+
+    #[test]
+    fn a_cube_with_a_corner_pushed_through_its_base_intersects_itself() {
+        let (mut v, f) = cube([0.0; 3], 1.0);
+        let b = RawBody {
+            name: "c".into(),
+            vertices: v.clone(),
+            faces: f.clone(),
+        };
+        assert!(clean_body(&b, "c", 1e-9, 1e-9).is_ok());
+        // Corner 7 (1, 1, 1) moved below the base z = 0: its edges cross the base.
+        v[7] = [0.35, 0.4, -0.6];
+        let b = RawBody {
+            name: "folded".into(),
+            vertices: v,
+            faces: f,
+        };
+        let e = clean_body(&b, "OBJ object 'folded'", 1e-9, 1e-9).err().unwrap().0;
+        assert!(
+            e.starts_with("OBJ object 'folded': the surface intersects itself"),
+            "{e}"
+        );
     }
 
     #[test]

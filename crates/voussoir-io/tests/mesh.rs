@@ -172,6 +172,17 @@ fn non_manifold_mesh_names_the_object() {
 }
 
 #[test]
+fn self_intersecting_mesh_names_the_object() {
+    let e = read_mesh(&fixture("selfintersecting.obj"), &MeshOptions::default()).unwrap_err();
+    let msg = e.to_string();
+    assert!(!msg.contains('\n'));
+    assert!(
+        msg.contains("OBJ object 'folded': the surface intersects itself"),
+        "{msg}"
+    );
+}
+
+#[test]
 fn supports_by_name_and_prefix_and_bad_names() {
     let path = fixture("tower.obj");
     // The bottom box as a second support: two supports, two blocks.

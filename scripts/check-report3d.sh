@@ -35,7 +35,8 @@ if [ ${#need[@]} -gt 0 ]; then
   fi
 fi
 
-nice -n 10 cargo build --release -q -p voussoir-cli -p voussoir-io --example report3d
+nice -n 10 cargo build --release -q -p voussoir-cli
+nice -n 10 cargo build --release -q -p voussoir-io --example report3d
 ex=target/release/examples/report3d
 vault=crates/voussoir-io/tests/fixtures/vault3d.json
 $ex "$vault" "$out/vault-limit.html"

@@ -5,8 +5,8 @@
 use crate::common::Fail;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
-use voussoir::model3d::AnyModel;
 use std::sync::Mutex;
+use voussoir::model3d::AnyModel;
 use voussoir::{BuildOptions, Model, Structure, Structure3d};
 use voussoir_io::dxf::{read_dxf, DxfOptions, ImportLive, ImportReport, Units};
 use voussoir_io::mesh::{is_mesh, read_mesh, MeshOptions, MeshReport};
@@ -180,11 +180,20 @@ impl DxfArgs {
     /// a `.dxf`, OBJ/PLY flags unless it is a `.obj`/`.ply`, any import flag for JSON.
     pub fn refuse_foreign(&self, path: &Path) -> Result<(), Fail> {
         let (flag, what) = if voussoir_io::dxf::is_dxf(path) {
-            (self.mesh.given(), "OBJ/PLY meshes only, and this is a DXF drawing")
+            (
+                self.mesh.given(),
+                "OBJ/PLY meshes only, and this is a DXF drawing",
+            )
         } else if is_mesh(path) {
-            (self.dxf_given(), "DXF drawings only, and it is not a .dxf file")
+            (
+                self.dxf_given(),
+                "DXF drawings only, and it is not a .dxf file",
+            )
         } else {
-            (self.given(), "imported DXF drawings and OBJ/PLY meshes only")
+            (
+                self.given(),
+                "imported DXF drawings and OBJ/PLY meshes only",
+            )
         };
         match flag {
             Some(f) => Err(Fail(format!("{f} applies to {what}: {}", path.display()))),
@@ -364,10 +373,7 @@ pub fn export(a: ExportArgs) -> Result<(), Fail> {
     a.dxf.check()?;
     a.dxf.refuse_foreign(&a.model)?;
     if let Some(p) = &a.output {
-        if !p
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("obj"))
-        {
+        if !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj")) {
             return Err(Fail(format!(
                 "{}: export writes Wavefront OBJ; name the output .obj",
                 p.display()

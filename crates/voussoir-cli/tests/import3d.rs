@@ -30,7 +30,11 @@ fn tmpdir(name: &str) -> PathBuf {
 
 fn ok(args: &[&str]) -> String {
     let o = run(args);
-    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
@@ -59,12 +63,18 @@ fn import_export_and_direct_analysis_agree() {
     let json = d.join("tower.json");
     let obj = d.join("tower.obj");
     let json2 = d.join("tower2.json");
-    let (js, ob, js2) = (json.to_str().unwrap(), obj.to_str().unwrap(), json2.to_str().unwrap());
+    let (js, ob, js2) = (
+        json.to_str().unwrap(),
+        obj.to_str().unwrap(),
+        json2.to_str().unwrap(),
+    );
     ok(&["import", &fixture("tower.obj"), "-o", js]);
     ok(&["export", js, "-o", ob]);
     ok(&["import", ob, "-o", js2]);
-    let a: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
-    let b: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json2).unwrap()).unwrap();
+    let a: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let b: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json2).unwrap()).unwrap();
     assert_eq!(a["blocks"], b["blocks"]);
     assert_eq!(a["supports"], b["supports"]);
     for m in [js, js2, ob, &fixture("tower.obj")] {
@@ -86,16 +96,42 @@ fn flags_and_failures_are_one_line_and_write_nothing() {
     let d = tmpdir("fail");
     let out = d.join("x.json");
     let o = out.to_str().unwrap();
-    fails(&["import", &fixture("open.obj"), "-o", o], &["OBJ object 'cracked_box'", "open"]);
-    fails(&["import", &fixture("nonmanifold.obj"), "-o", o], &["OBJ object 'bowtie'"]);
-    fails(&["import", &fixture("selfintersecting.obj"), "-o", o], &["OBJ object 'folded'"]);
+    fails(
+        &["import", &fixture("open.obj"), "-o", o],
+        &["OBJ object 'cracked_box'", "open"],
+    );
+    fails(
+        &["import", &fixture("nonmanifold.obj"), "-o", o],
+        &["OBJ object 'bowtie'"],
+    );
+    fails(
+        &["import", &fixture("selfintersecting.obj"), "-o", o],
+        &["OBJ object 'folded'"],
+    );
     assert!(!out.exists(), "a failed import wrote its output");
     // OBJ/PLY flags with a JSON model or a DXF flag with a mesh.
     let d2 = tmpdir("flags");
     let js = d2.join("t.json");
     ok(&["import", &fixture("tower.obj"), "-o", js.to_str().unwrap()]);
-    fails(&["limit", js.to_str().unwrap(), "--weld", "1e-6"], &["--weld"]);
-    fails(&["limit", &fixture("tower.obj"), "--dxf-width", "2"], &["--dxf-width", "DXF"]);
-    fails(&["limit", &fixture("tower.obj"), "--supports", "nope"], &["'nope'"]);
-    fails(&["export", js.to_str().unwrap(), "-o", d2.join("t.ply").to_str().unwrap()], &[".obj"]);
+    fails(
+        &["limit", js.to_str().unwrap(), "--weld", "1e-6"],
+        &["--weld"],
+    );
+    fails(
+        &["limit", &fixture("tower.obj"), "--dxf-width", "2"],
+        &["--dxf-width", "DXF"],
+    );
+    fails(
+        &["limit", &fixture("tower.obj"), "--supports", "nope"],
+        &["'nope'"],
+    );
+    fails(
+        &[
+            "export",
+            js.to_str().unwrap(),
+            "-o",
+            d2.join("t.ply").to_str().unwrap(),
+        ],
+        &[".obj"],
+    );
 }

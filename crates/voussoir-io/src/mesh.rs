@@ -126,15 +126,14 @@ impl MeshReport {
 
 /// Whether `path` is read as a mesh (`.obj` or `.ply`, any case).
 pub fn is_mesh(path: &Path) -> bool {
-    path.extension().is_some_and(|e| {
-        e.eq_ignore_ascii_case("obj") || e.eq_ignore_ascii_case("ply")
-    })
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("obj") || e.eq_ignore_ascii_case("ply"))
 }
 
 /// Read an OBJ or PLY file (by extension) as a 3D model.
 pub fn read_mesh(path: &Path, opts: &MeshOptions) -> Result<(Model3d, MeshReport), IoError> {
-    let bytes = std::fs::read(path)
-        .map_err(|e| IoError(format!("cannot read {}: {e}", path.display())))?;
+    let bytes =
+        std::fs::read(path).map_err(|e| IoError(format!("cannot read {}: {e}", path.display())))?;
     let file = path
         .file_name()
         .map(|f| f.to_string_lossy().into_owned())
@@ -161,20 +160,22 @@ struct RawBody {
 /// Read OBJ text: each object (`o`) or group (`g`) is a body; parts of one name (a `usemtl`
 /// splits an object) are joined. A file without any `o`/`g` is split into its connected parts
 /// like a PLY.
-pub fn parse_obj(bytes: &[u8], opts: &MeshOptions, file: &str) -> Result<(Model3d, MeshReport), IoError> {
+pub fn parse_obj(
+    bytes: &[u8],
+    opts: &MeshOptions,
+    file: &str,
+) -> Result<(Model3d, MeshReport), IoError> {
     let load = tobj::LoadOptions {
         single_index: true,
         triangulate: false,
         ignore_points: true,
         ignore_lines: true,
-        ..Default::default()
     };
     let mut reader = std::io::Cursor::new(bytes);
     // Materials are not used: the loader for `mtllib` files reports them missing.
-    let (models, _) = tobj::load_obj_buf(&mut reader, &load, |_| {
-        Err(tobj::LoadError::OpenFileFailed)
-    })
-    .map_err(|e| IoError(format!("not a readable OBJ file ({e})")))?;
+    let (models, _) =
+        tobj::load_obj_buf(&mut reader, &load, |_| Err(tobj::LoadError::OpenFileFailed))
+            .map_err(|e| IoError(format!("not a readable OBJ file ({e})")))?;
     let mut bodies: Vec<RawBody> = Vec::new();
     let mut by_name: BTreeMap<String, usize> = BTreeMap::new();
     for m in &models {
@@ -209,8 +210,11 @@ pub fn parse_obj(bytes: &[u8], opts: &MeshOptions, file: &str) -> Result<(Model3
             let b = &mut bodies[k];
             let off = b.vertices.len();
             b.vertices.extend(pos);
-            b.faces
-                .extend(faces.into_iter().map(|f| f.into_iter().map(|i| i + off).collect()));
+            b.faces.extend(
+                faces
+                    .into_iter()
+                    .map(|f| f.into_iter().map(|i| i + off).collect()),
+            );
         } else {
             by_name.insert(m.name.clone(), bodies.len());
             bodies.push(RawBody {
@@ -229,25 +233,33 @@ pub fn parse_obj(bytes: &[u8], opts: &MeshOptions, file: &str) -> Result<(Model3
     } else {
         bodies
     };
-    build_model(bodies, opts, if unnamed { "OBJ part" } else { "OBJ object" }, "OBJ", file)
+    build_model(
+        bodies,
+        opts,
+        if unnamed { "OBJ part" } else { "OBJ object" },
+        "OBJ",
+        file,
+    )
 }
 
 /// Read a PLY file (ASCII or binary): the `vertex` element's `x, y, z` and the `face` element's
 /// `vertex_indices` (or `vertex_index`). Each set of faces connected through shared vertex
 /// indices is a body `part_K` (K from 0, in the order of their first face).
-pub fn parse_ply(bytes: &[u8], opts: &MeshOptions, file: &str) -> Result<(Model3d, MeshReport), IoError> {
+pub fn parse_ply(
+    bytes: &[u8],
+    opts: &MeshOptions,
+    file: &str,
+) -> Result<(Model3d, MeshReport), IoError> {
     use ply_rs_bw::parser::Parser;
     use ply_rs_bw::ply::{DefaultElement, Property};
     let parser = Parser::<DefaultElement>::new();
     let mut reader = std::io::Cursor::new(bytes);
-    let ply = parser
-        .read_ply(&mut reader)
-        .map_err(|e| {
-            // The parser's message spans several lines (with a dump of the expected tokens).
-            let text = e.to_string();
-            let first = text.lines().next().unwrap_or("").trim().to_string();
-            IoError(format!("not a readable PLY file ({first})"))
-        })?;
+    let ply = parser.read_ply(&mut reader).map_err(|e| {
+        // The parser's message spans several lines (with a dump of the expected tokens).
+        let text = e.to_string();
+        let first = text.lines().next().unwrap_or("").trim().to_string();
+        IoError(format!("not a readable PLY file ({first})"))
+    })?;
     let scalar = |p: &Property| -> Option<f64> {
         Some(match *p {
             Property::Char(x) => x as f64,
@@ -311,7 +323,13 @@ pub fn parse_ply(bytes: &[u8], opts: &MeshOptions, file: &str) -> Result<(Model3
     if faces.is_empty() {
         return Err(IoError("the PLY file has no faces".into()));
     }
-    build_model(split_parts(&vertices, &faces), opts, "PLY part", "PLY", file)
+    build_model(
+        split_parts(&vertices, &faces),
+        opts,
+        "PLY part",
+        "PLY",
+        file,
+    )
 }
 
 /// Split faces into sets connected through shared vertex indices: bodies `part_K`.
@@ -324,7 +342,9 @@ fn split_parts(vertices: &[Point3], faces: &[Vec<usize>]) -> Vec<RawBody> {
     }
     // Parts in the order of their first face; vertices in the order of first use.
     let mut part_of_root: HashMap<usize, usize> = HashMap::new();
-    let mut parts: Vec<(Vec<Point3>, Vec<Vec<usize>>, HashMap<usize, usize>)> = Vec::new();
+    // Per part: vertices, faces, and the map from file index to part index.
+    type Part = (Vec<Point3>, Vec<Vec<usize>>, HashMap<usize, usize>);
+    let mut parts: Vec<Part> = Vec::new();
     for f in faces {
         let Some(&first) = f.first() else { continue };
         let root = uf.find(first);
@@ -469,9 +489,18 @@ struct CleanBody {
     notes: Vec<String>,
 }
 
-fn clean_body(b: &RawBody, what: &str, weld_tol: f64, plane_tol: f64) -> Result<CleanBody, IoError> {
+fn clean_body(
+    b: &RawBody,
+    what: &str,
+    weld_tol: f64,
+    plane_tol: f64,
+) -> Result<CleanBody, IoError> {
     let err = |m: String| Err(IoError(format!("{what}: {m}")));
-    if let Some(k) = b.vertices.iter().position(|p| p.iter().any(|x| !x.is_finite())) {
+    if let Some(k) = b
+        .vertices
+        .iter()
+        .position(|p| p.iter().any(|x| !x.is_finite()))
+    {
         return err(format!("vertex {k} is not a finite point"));
     }
     let (verts, map) = weld(&b.vertices, weld_tol);
@@ -599,7 +628,9 @@ fn clean_body(b: &RawBody, what: &str, weld_tol: f64, plane_tol: f64) -> Result<
         let [lo, hi] = voussoir::geometry3d::bbox3(&verts);
         norm(sub(hi, lo))
     };
-    if !(vol6.abs() > 6.0 * (plane_tol * diag * diag).max(f64::MIN_POSITIVE)) {
+    // Written so that a NaN volume counts as none.
+    let encloses = vol6.abs() > 6.0 * (plane_tol * diag * diag).max(f64::MIN_POSITIVE);
+    if !encloses {
         return err("encloses no volume".into());
     }
     if vol6 < 0.0 {
@@ -666,7 +697,11 @@ fn self_intersection(v: &[V3], faces: &[Vec<usize>], tol: f64) -> Option<((usize
             F {
                 lo,
                 hi,
-                n: if l > 0.0 { [n[0] / l, n[1] / l, n[2] / l] } else { [0.0; 3] },
+                n: if l > 0.0 {
+                    [n[0] / l, n[1] / l, n[2] / l]
+                } else {
+                    [0.0; 3]
+                },
                 p0: pts[0],
                 k,
             }
@@ -729,7 +764,11 @@ fn inside_face(v: &[V3], face: &[usize], n: V3, x: V3, tol: f64) -> bool {
         // Distance from x to the edge pq (in 3D).
         let d = sub(q, p);
         let dd = dot(d, d);
-        let t = if dd > 0.0 { (dot(sub(x, p), d) / dd).clamp(0.0, 1.0) } else { 0.0 };
+        let t = if dd > 0.0 {
+            (dot(sub(x, p), d) / dd).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
         let c = [p[0] + d[0] * t, p[1] + d[1] * t, p[2] + d[2] * t];
         if norm(sub(x, c)) <= tol {
             return false;
@@ -750,7 +789,11 @@ fn fmt_point(p: V3) -> String {
 fn fmt_num(x: f64) -> String {
     let s = format!("{:.6}", x);
     let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".into() } else { s.into() }
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
 }
 
 /// Merge faces that share edges and lie in one plane (within `tol`, measured from the plane of
@@ -793,11 +836,16 @@ fn merge_coplanar(verts: Vec<V3>, faces: Vec<Vec<usize>>, tol: f64) -> (Vec<V3>,
             let fv = &faces[f];
             for k in 0..fv.len() {
                 let (a, c) = (fv[k], fv[(k + 1) % fv.len()]);
-                let Some(&h) = directed.get(&(c, a)) else { continue };
+                let Some(&h) = directed.get(&(c, a)) else {
+                    continue;
+                };
                 if group[h] != usize::MAX || dot(normals[h], n0) <= 0.0 {
                     continue;
                 }
-                if faces[h].iter().all(|&i| dot(sub(verts[i], p0), n0).abs() <= tol) {
+                if faces[h]
+                    .iter()
+                    .all(|&i| dot(sub(verts[i], p0), n0).abs() <= tol)
+                {
                     group[h] = g;
                     members.push(h);
                     q.push_back(h);
@@ -826,7 +874,11 @@ fn merge_coplanar(verts: Vec<V3>, faces: Vec<Vec<usize>>, tol: f64) -> (Vec<V3>,
     }
     let straight = |f: &[usize], k: usize| {
         let n = f.len();
-        let (p, x, q) = (verts[f[(k + n - 1) % n]], verts[f[k]], verts[f[(k + 1) % n]]);
+        let (p, x, q) = (
+            verts[f[(k + n - 1) % n]],
+            verts[f[k]],
+            verts[f[(k + 1) % n]],
+        );
         let (d1, d2) = (sub(x, p), sub(q, x));
         dot(d1, d2) > 0.0 && norm(cross(d1, d2)) <= tol * norm(sub(q, p))
     };
@@ -938,7 +990,11 @@ fn build_model(
     let default_tol = DEFAULT_REL_TOLERANCE * diag;
     let weld_tol = match opts.weld {
         Some(w) if w.is_finite() && w > 0.0 => w,
-        Some(w) => return Err(IoError(format!("weld tolerance {w}: must be a finite number > 0"))),
+        Some(w) => {
+            return Err(IoError(format!(
+                "weld tolerance {w}: must be a finite number > 0"
+            )))
+        }
         None => default_tol,
     };
     // Faces are merged within the tolerance the model will be validated with.
@@ -964,7 +1020,12 @@ fn build_model(
     // Supports.
     let names: Vec<&str> = bodies.iter().map(|b| b.name.as_str()).collect();
     let list = |v: &[&str]| {
-        let mut s = v.iter().take(8).map(|n| format!("'{n}'")).collect::<Vec<_>>().join(", ");
+        let mut s = v
+            .iter()
+            .take(8)
+            .map(|n| format!("'{n}'"))
+            .collect::<Vec<_>>()
+            .join(", ");
         if v.len() > 8 {
             s.push_str(", …");
         }
@@ -1017,7 +1078,11 @@ fn build_model(
             let zmin = lo[2];
             let ground = GROUND_REL_TOLERANCE * diag;
             for (k, c) in cleaned.iter().enumerate() {
-                let low = c.vertices.iter().map(|p| p[2]).fold(f64::INFINITY, f64::min);
+                let low = c
+                    .vertices
+                    .iter()
+                    .map(|p| p[2])
+                    .fold(f64::INFINITY, f64::min);
                 is_support[k] = low <= zmin + ground;
             }
             report.support_rule = format!("standing on the ground plane z = {}", fmt_num(zmin));
@@ -1040,7 +1105,11 @@ fn build_model(
         let source = format!("{kind} '{}'", b.name);
         if *sup {
             let name = b.name[strip..].to_string();
-            let name = if name.is_empty() { b.name.clone() } else { name };
+            let name = if name.is_empty() {
+                b.name.clone()
+            } else {
+                name
+            };
             if supports.iter().any(|s| s.name == name) {
                 return Err(IoError(format!(
                     "two supports are named '{name}': support names must be unique"
@@ -1131,7 +1200,12 @@ pub fn model_to_obj(m: &Model3d) -> String {
             .chars()
             .map(|c| if c.is_whitespace() { '_' } else { c })
             .collect();
-        body(&mut s, &format!("{SUPPORT_PREFIX}{name}"), &sp.vertices, &sp.faces);
+        body(
+            &mut s,
+            &format!("{SUPPORT_PREFIX}{name}"),
+            &sp.vertices,
+            &sp.faces,
+        );
     }
     s
 }
@@ -1144,7 +1218,9 @@ pub fn check_exportable(m: &Model3d) -> Result<(), IoError> {
         }
         for (fi, face) in f.iter().enumerate() {
             if face.len() < 3 {
-                return Err(IoError(format!("{what}: face {fi} has fewer than 3 vertices")));
+                return Err(IoError(format!(
+                    "{what}: face {fi} has fewer than 3 vertices"
+                )));
             }
             if let Some(i) = face.iter().find(|&&i| i >= v.len()) {
                 return Err(IoError(format!(
@@ -1229,7 +1305,10 @@ mod tests {
             vertices: v,
             faces: f,
         };
-        let e = clean_body(&b, "OBJ object 'folded'", 1e-9, 1e-9).err().unwrap().0;
+        let e = clean_body(&b, "OBJ object 'folded'", 1e-9, 1e-9)
+            .err()
+            .unwrap()
+            .0;
         assert!(
             e.starts_with("OBJ object 'folded': the surface intersects itself"),
             "{e}"

@@ -297,10 +297,7 @@ fn body_json(
     o.insert("f".into(), json!(faces));
     o.insert("t".into(), Value::Array(tris));
     o.insert("c".into(), v3(c));
-    o.insert(
-        "m".into(),
-        Value::Array(m.iter().map(|&x| n9(x)).collect()),
-    );
+    o.insert("m".into(), Value::Array(m.iter().map(|&x| n9(x)).collect()));
     o
 }
 

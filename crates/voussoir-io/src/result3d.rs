@@ -185,13 +185,25 @@ impl Result3d for SettlementResult<Three> {
     fn key_numbers(&self) -> Vec<(String, String)> {
         let mut k = vec![("status".to_string(), self.status.sentence().to_string())];
         if let Some(m) = support_motion_text(&self.geometry) {
-            k.push(("support motion".to_string(), m.replace("prescribed support motion: ", "")));
+            k.push((
+                "support motion".to_string(),
+                m.replace("prescribed support motion: ", ""),
+            ));
         }
         match &self.certificate {
             Some(c) => {
-                k.push(("primal (work of the dead loads, kN·m)".to_string(), num6(Some(c.primal))));
-                k.push(("dual (work of the reactions, kN·m)".to_string(), num6(Some(c.dual))));
-                k.push(("relative duality gap".to_string(), num6(Some(c.relative_gap))));
+                k.push((
+                    "primal (work of the dead loads, kN·m)".to_string(),
+                    num6(Some(c.primal)),
+                ));
+                k.push((
+                    "dual (work of the reactions, kN·m)".to_string(),
+                    num6(Some(c.dual)),
+                ));
+                k.push((
+                    "relative duality gap".to_string(),
+                    num6(Some(c.relative_gap)),
+                ));
                 k.push(("complementarity".to_string(), num6(Some(c.complementarity))));
                 k.push((
                     "equilibrium residual".to_string(),

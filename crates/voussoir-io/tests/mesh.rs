@@ -44,7 +44,11 @@ fn triangulated_tower_merges_faces_and_overturns_at_b_over_nh() {
     assert_eq!(m.supports[0].name, "base");
     assert_eq!(
         rep.block_sources,
-        ["OBJ object 'tower_1'", "OBJ object 'tower_2'", "OBJ object 'tower_3'"]
+        [
+            "OBJ object 'tower_1'",
+            "OBJ object 'tower_2'",
+            "OBJ object 'tower_3'"
+        ]
     );
     // Every triangulated box is back to 6 quadrilaterals on 8 vertices: the fan's centre and the
     // mid-edge vertex are gone (the latter was on a straight edge between two merged faces).
@@ -120,16 +124,20 @@ fn obj_export_round_trips() {
     }
     assert!((l1 - l2).abs() < 1e-12, "{l1} vs {l2}");
     // Exporting again gives the same bytes.
-    assert_eq!(model_to_obj(&m2).lines().skip(2).collect::<Vec<_>>(), text.lines().skip(2).collect::<Vec<_>>());
+    assert_eq!(
+        model_to_obj(&m2).lines().skip(2).collect::<Vec<_>>(),
+        text.lines().skip(2).collect::<Vec<_>>()
+    );
 }
 
 /// A generated model (the vault fixture, written as JSON with quadrilateral faces) round-trips
 /// through OBJ too: same vertices and faces, same λ.
 #[test]
 fn json_model_round_trips_through_obj() {
-    let text =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/vault3d.json"))
-            .unwrap();
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/vault3d.json"),
+    )
+    .unwrap();
     let voussoir::model3d::AnyModel::Spatial(m) =
         voussoir::model3d::AnyModel::from_json(&text).unwrap()
     else {
@@ -205,18 +213,27 @@ fn supports_by_name_and_prefix_and_bad_names() {
         ..Default::default()
     };
     let msg = read_mesh(&path, &o).unwrap_err().to_string();
-    assert!(msg.contains("no OBJ object is named 'nope'") && msg.contains("'tower_2'"), "{msg}");
+    assert!(
+        msg.contains("no OBJ object is named 'nope'") && msg.contains("'tower_2'"),
+        "{msg}"
+    );
 }
 
 #[test]
 fn garbage_is_refused_in_one_line() {
     let o = MeshOptions::default();
     for (bytes, ply) in [
-        (&b"ply\nformat ascii 1.0\nelement vertex 2\nend_header\n1 2\n"[..], true),
+        (
+            &b"ply\nformat ascii 1.0\nelement vertex 2\nend_header\n1 2\n"[..],
+            true,
+        ),
         (&b"not a ply"[..], true),
         (&b"v 0 0 0\nf 1 2 3\n"[..], false),
         (&b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"[..], false),
-        (&b"v nan 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n"[..], false),
+        (
+            &b"v nan 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n"[..],
+            false,
+        ),
         (&b""[..], false),
     ] {
         let r = if ply {

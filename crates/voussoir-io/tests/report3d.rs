@@ -31,18 +31,32 @@ fn data(html: &str) -> serde_json::Value {
 }
 
 fn no_network(html: &str) {
-    for bad in ["<script src", "<link", "@import", "fetch(", "XMLHttpRequest", "<iframe", "<img", "src="] {
+    for bad in [
+        "<script src",
+        "<link",
+        "@import",
+        "fetch(",
+        "XMLHttpRequest",
+        "<iframe",
+        "<img",
+        "src=",
+    ] {
         assert!(!html.contains(bad), "the report contains {bad}");
     }
     // `url(` only for the SVG's own patterns (`url(#id)`).
     for (k, _) in html.match_indices("url(") {
-        assert!(html[k..].starts_with("url(#"), "{}", &html[k..(k + 40).min(html.len())]);
+        assert!(
+            html[k..].starts_with("url(#"),
+            "{}",
+            &html[k..(k + 40).min(html.len())]
+        );
     }
     // The only addresses are XML namespaces of the inline SVG, which are names, not fetches.
     for (k, _) in html.match_indices("http") {
         let tail = &html[k..(k + 40).min(html.len())];
         assert!(
-            tail.starts_with("http://www.w3.org/2000/svg") || tail.starts_with("http://www.w3.org/1999/xlink"),
+            tail.starts_with("http://www.w3.org/2000/svg")
+                || tail.starts_with("http://www.w3.org/1999/xlink"),
             "network address in the report: {tail}"
         );
     }
@@ -64,7 +78,12 @@ fn limit_report_is_deterministic_offline_and_carries_the_blocks() {
     // λ in the key numbers, as printed with 6 significant digits.
     let l = r.load_multiplier.unwrap();
     let shown = voussoir_io::draw::svg::human(l, 6);
-    assert!(a.contains(&format!("<th>collapse load multiplier λ</th><td>{shown}</td>")), "{shown}");
+    assert!(
+        a.contains(&format!(
+            "<th>collapse load multiplier λ</th><td>{shown}</td>"
+        )),
+        "{shown}"
+    );
 
     let d = data(&a);
     let blocks = d["blocks"].as_array().unwrap();
@@ -80,7 +99,11 @@ fn limit_report_is_deterministic_offline_and_carries_the_blocks() {
         let c = &r.geometry.centroids[i];
         for k in 0..3 {
             let x = b["c"][k].as_f64().unwrap();
-            assert!((x - c[k]).abs() <= 1e-8 * (1.0 + c[k].abs()), "block {i}: {x} vs {}", c[k]);
+            assert!(
+                (x - c[k]).abs() <= 1e-8 * (1.0 + c[k].abs()),
+                "block {i}: {x} vs {}",
+                c[k]
+            );
         }
         if let Some(m) = r.blocks.iter().find(|m| m.id == i) {
             let u = b["m"][0].as_f64().unwrap();
@@ -93,8 +116,12 @@ fn limit_report_is_deterministic_offline_and_carries_the_blocks() {
         .iter()
         .filter(|j| j.state != voussoir::result::JointState::Closed)
         .count();
-    assert!(cracked >= 3, "a 3D arch mechanism opens at least three joints, found {cracked}");
-    let table = &a[a.find("<h2>Cracked joints</h2>").unwrap()..a.find("<h2>Static drawing</h2>").unwrap()];
+    assert!(
+        cracked >= 3,
+        "a 3D arch mechanism opens at least three joints, found {cracked}"
+    );
+    let table =
+        &a[a.find("<h2>Cracked joints</h2>").unwrap()..a.find("<h2>Static drawing</h2>").unwrap()];
     assert_eq!(table.matches("<tr><td>").count(), cracked);
 }
 
@@ -105,19 +132,31 @@ fn settlement_report_shows_the_certificate() {
     let html = report3d_html(&r, "", "settlement3d_two_cubes.json").unwrap();
     no_network(&html);
     assert!(html.contains("<title>Settlement mechanism</title>"));
-    let c = r.certificate.as_ref().expect("the fixture has a certificate");
+    let c = r
+        .certificate
+        .as_ref()
+        .expect("the fixture has a certificate");
     for (name, v) in [
         ("primal (work of the dead loads, kN·m)", c.primal),
         ("dual (work of the reactions, kN·m)", c.dual),
         ("relative duality gap", c.relative_gap),
     ] {
-        let row = format!("<th>{name}</th><td>{}</td>", voussoir_io::draw::svg::human(v, 6));
+        let row = format!(
+            "<th>{name}</th><td>{}</td>",
+            voussoir_io::draw::svg::human(v, 6)
+        );
         assert!(html.contains(&row), "missing {row}");
     }
     let d = data(&html);
-    assert_eq!(d["blocks"].as_array().unwrap().len(), r.geometry.blocks.len());
+    assert_eq!(
+        d["blocks"].as_array().unwrap().len(),
+        r.geometry.blocks.len()
+    );
     assert_eq!(d["units"], "metres");
-    assert_eq!(html, report3d_html(&r, "", "settlement3d_two_cubes.json").unwrap());
+    assert_eq!(
+        html,
+        report3d_html(&r, "", "settlement3d_two_cubes.json").unwrap()
+    );
 }
 
 #[test]

@@ -128,12 +128,9 @@ pub fn report3d_html(
             let c = cp
                 .get(&j.id)
                 .map(|p| {
-                    format!(
-                        "({}, {}, {})",
-                        human(p[0], 4),
-                        human(p[1], 4),
-                        human(p[2], 4)
-                    )
+                    // Round-off below a nanometre is shown as 0, not as 2.2e-16.
+                    let c = |x: f64| human(if x.abs() < 1e-9 { 0.0 } else { x }, 4);
+                    format!("({}, {}, {})", c(p[0]), c(p[1]), c(p[2]))
                 })
                 .unwrap_or_else(|| "—".into());
             let _ = writeln!(

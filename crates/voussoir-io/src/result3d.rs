@@ -119,7 +119,7 @@ impl Result3d for LimitResult<Three> {
         ];
         if self.least_load_multiplier.is_some() {
             k.push((
-                "least load multiplier".to_string(),
+                "least multiplier in equilibrium (≤ 0: stands under the dead loads)".to_string(),
                 num6(self.least_load_multiplier),
             ));
         }

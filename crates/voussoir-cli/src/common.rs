@@ -37,8 +37,8 @@ impl From<voussoir_io::IoError> for Fail {
 #[derive(Args, Clone, Debug)]
 #[command(next_help_heading = "Model input")]
 pub struct ModelArgs {
-    /// The model: a JSON file (see README, "Model format") or a DXF drawing (`.dxf`, read with
-    /// the "DXF import" flags below).
+    /// The model: a JSON file (see README, "Model format"), a DXF drawing (`.dxf`, read with
+    /// the "DXF import" flags below) or an OBJ/PLY mesh (3D, "OBJ/PLY import" flags).
     pub model: PathBuf,
     /// Geometric tolerance for joint detection, relative to the model's size (dimensionless;
     /// default 1e-7).
@@ -345,14 +345,7 @@ impl ModelArgs {
             }
         }
         check_materials(self.friction, self.compressive_strength)?;
-        if !voussoir_io::dxf::is_dxf(&self.model) {
-            if let Some(flag) = self.dxf.given() {
-                return Err(Fail(format!(
-                    "{flag} applies to DXF drawings only, and {} is not a .dxf file",
-                    self.model.display()
-                )));
-            }
-        }
+        self.dxf.refuse_foreign(&self.model)?;
         self.dxf.check()?;
         if let Some(k) = self.friction_facets {
             if !FRICTION_FACETS.contains(&k) {
@@ -457,7 +450,8 @@ impl Input {
         if let Some(s) = motion {
             s.apply(&mut model)?;
         }
-        let mut st = Structure3d::new(&model, self.build)?;
+        let mut st = Structure3d::new(&model, self.build)
+            .map_err(|e| Fail(crate::import::annotate_mesh(&e.to_string())))?;
         if let Some(k) = self.friction_facets {
             st.friction_facets = k;
         }

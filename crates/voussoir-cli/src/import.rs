@@ -1,12 +1,15 @@
-//! `voussoir import`: a DXF drawing to a JSON model; and the DXF flags every model-reading
-//! command accepts, so that a `.dxf` can be analysed directly.
+//! `voussoir import`: a DXF drawing (2D) or an OBJ/PLY mesh (3D) to a JSON model; `voussoir
+//! export`: a 3D model to OBJ; and the DXF and OBJ/PLY flags every model-reading command
+//! accepts, so that a `.dxf`, `.obj` or `.ply` can be analysed directly.
 
 use crate::common::Fail;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 use voussoir::model3d::AnyModel;
-use voussoir::{BuildOptions, Model, Structure};
+use voussoir::{BuildOptions, Model, Structure, Structure3d};
 use voussoir_io::dxf::{read_dxf, DxfOptions, ImportLive, ImportReport, Units};
+use voussoir_io::mesh::{is_mesh, read_mesh, MeshOptions, MeshReport};
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnitsArg {
@@ -41,15 +44,16 @@ pub enum DxfLiveArg {
     Horizontal,
 }
 
-// How to read a `.dxf` model. Refused with a JSON model (a JSON model carries its own units,
-// weights and supports).
+// How to read a `.dxf` model (and, flattened in, a `.obj`/`.ply` one). Refused with a JSON
+// model (a JSON model carries its own units, weights and supports).
 #[derive(Args, Clone, Debug, Default)]
 #[command(next_help_heading = "DXF import")]
 pub struct DxfArgs {
-    /// Drawing units (default: the drawing's $INSUNITS, which must then be mm, cm or m).
+    /// Units of the drawing or mesh (DXF default: the drawing's $INSUNITS, which must then be
+    /// mm, cm or m; OBJ/PLY default: m).
     #[arg(long, value_enum, ignore_case = true)]
     pub units: Option<UnitsArg>,
-    /// Unit weight γ of the blocks in kN/m³ [default: 18].
+    /// Unit weight γ of the blocks in kN/m³, DXF or OBJ/PLY [default: 18].
     #[arg(long, value_name = "KN_M3")]
     pub unit_weight: Option<f64>,
     /// Out-of-plane width of the blocks in m [default: 1].
@@ -68,6 +72,55 @@ pub struct DxfArgs {
     /// Live load added to the model (drawings carry none) [default: horizontal].
     #[arg(long = "dxf-live", value_enum, ignore_case = true)]
     pub live: Option<DxfLiveArg>,
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+}
+
+// How to read a `.obj` or `.ply` model (3D). `--units` and `--unit-weight` are shared with DXF.
+#[derive(Args, Clone, Debug, Default)]
+#[command(next_help_heading = "OBJ/PLY import")]
+pub struct MeshArgs {
+    /// Bodies that are supports: OBJ object/group names, PLY parts `part_K` (comma-separated,
+    /// repeatable). Default: objects named `support_…` (as `voussoir export` writes them), else
+    /// every body standing on the ground plane (the model's lowest z).
+    #[arg(long = "supports", value_name = "NAME,…", value_delimiter = ',')]
+    pub supports: Vec<String>,
+    /// Bodies whose name starts with PREFIX are supports.
+    #[arg(long = "support-prefix", value_name = "PREFIX")]
+    pub support_prefix: Option<String>,
+    /// Vertices of a body closer than this are welded, in metres (absolute, after --units)
+    /// [default: 1e-7 of the model's bounding-box diagonal].
+    #[arg(long, value_name = "M")]
+    pub weld: Option<f64>,
+    /// Live load added to the model (meshes carry none) [default: horizontal].
+    #[arg(long = "mesh-live", value_enum, ignore_case = true)]
+    pub live: Option<DxfLiveArg>,
+}
+
+impl MeshArgs {
+    /// The first OBJ/PLY-only flag given, if any.
+    pub fn given(&self) -> Option<&'static str> {
+        [
+            (!self.supports.is_empty(), "--supports"),
+            (self.support_prefix.is_some(), "--support-prefix"),
+            (self.weld.is_some(), "--weld"),
+            (self.live.is_some(), "--mesh-live"),
+        ]
+        .into_iter()
+        .find(|(given, _)| *given)
+        .map(|(_, flag)| flag)
+    }
+}
+
+/// The report of the last mesh read, to name OBJ objects in later errors about "block N".
+static MESH_REPORT: Mutex<Option<MeshReport>> = Mutex::new(None);
+
+/// `msg` with the OBJ object or PLY part of every "block N" it names, if a mesh was read.
+pub fn annotate_mesh(msg: &str) -> String {
+    match MESH_REPORT.lock().ok().as_ref().and_then(|r| r.as_ref()) {
+        Some(rep) => rep.annotate(msg),
+        None => msg.to_string(),
+    }
 }
 
 impl DxfArgs {
@@ -91,11 +144,66 @@ impl DxfArgs {
         }
     }
 
-    /// The first DXF flag given on the command line, if any (to refuse it for a JSON model).
+    pub fn mesh_options(&self) -> MeshOptions {
+        let d = MeshOptions::default();
+        MeshOptions {
+            units: match self.units {
+                Some(UnitsArg::Mm) => Units::Mm,
+                Some(UnitsArg::Cm) => Units::Cm,
+                Some(UnitsArg::M) | None => Units::M,
+            },
+            unit_weight: self.unit_weight.unwrap_or(d.unit_weight),
+            supports: self.mesh.supports.clone(),
+            support_prefix: self.mesh.support_prefix.clone(),
+            weld: self.mesh.weld,
+            live: match self.mesh.live.unwrap_or_default() {
+                DxfLiveArg::None => ImportLive::None,
+                DxfLiveArg::Horizontal => ImportLive::Horizontal,
+            },
+        }
+    }
+
+    /// The first import flag given on the command line, if any (to refuse it for a JSON model).
     pub fn given(&self) -> Option<&'static str> {
         [
             (self.units.is_some(), "--units"),
             (self.unit_weight.is_some(), "--unit-weight"),
+        ]
+        .into_iter()
+        .find(|(given, _)| *given)
+        .map(|(_, flag)| flag)
+        .or_else(|| self.dxf_given())
+        .or_else(|| self.mesh.given())
+    }
+
+    /// Refuse the flags that do not apply to the format of `path`: DXF-only flags unless it is
+    /// a `.dxf`, OBJ/PLY flags unless it is a `.obj`/`.ply`, any import flag for JSON.
+    pub fn refuse_foreign(&self, path: &Path) -> Result<(), Fail> {
+        let (flag, what) = if voussoir_io::dxf::is_dxf(path) {
+            (
+                self.mesh.given(),
+                "OBJ/PLY meshes only, and this is a DXF drawing",
+            )
+        } else if is_mesh(path) {
+            (
+                self.dxf_given(),
+                "DXF drawings only, and it is not a .dxf file",
+            )
+        } else {
+            (
+                self.given(),
+                "imported DXF drawings and OBJ/PLY meshes only",
+            )
+        };
+        match flag {
+            Some(f) => Err(Fail(format!("{f} applies to {what}: {}", path.display()))),
+            None => Ok(()),
+        }
+    }
+
+    /// The first DXF-only flag given.
+    fn dxf_given(&self) -> Option<&'static str> {
+        [
             (self.dxf_width.is_some(), "--dxf-width"),
             (!self.support_layers.is_empty(), "--support-layer"),
             (!self.support_handles.is_empty(), "--support-handle"),
@@ -113,6 +221,7 @@ impl DxfArgs {
             ("--unit-weight", self.unit_weight),
             ("--dxf-width", self.dxf_width),
             ("--merge-tolerance", self.merge_tolerance),
+            ("--weld", self.mesh.weld),
         ] {
             if let Some(x) = v {
                 if !(x.is_finite() && x > 0.0) {
@@ -135,12 +244,22 @@ impl DxfArgs {
         }
     }
 
-    /// Read `path` as a model of either dimension: DXF (2D) by extension, JSON otherwise.
+    /// Read `path` as a model of either dimension: DXF (2D) or OBJ/PLY (3D) by extension, JSON
+    /// otherwise.
     pub fn read_any(&self, path: &Path) -> Result<(AnyModel, Option<ImportReport>), Fail> {
         crate::outputs::input(path);
         if voussoir_io::dxf::is_dxf(path) {
             let (m, rep) = read_dxf(path, &self.options())?;
             Ok((AnyModel::Planar(m), Some(rep)))
+        } else if is_mesh(path) {
+            let (m, rep) = read_mesh(path, &self.mesh_options())?;
+            for n in &rep.notes {
+                eprintln!("note: {n}");
+            }
+            if let Ok(mut slot) = MESH_REPORT.lock() {
+                *slot = Some(rep);
+            }
+            Ok((AnyModel::Spatial(m), None))
         } else {
             Ok((voussoir_io::read_any_model(path)?, None))
         }
@@ -161,10 +280,10 @@ pub fn structure_of(
 
 #[derive(Args)]
 pub struct ImportArgs {
-    /// The drawing: closed LWPOLYLINE/POLYLINE entities are the blocks.
+    /// The drawing or mesh: a .dxf (closed LWPOLYLINE/POLYLINE entities are the 2D blocks), a
+    /// .obj (each object or group is a 3D block) or a .ply (each connected closed part is a 3D
+    /// block).
     pub drawing: PathBuf,
-    #[command(flatten)]
-    pub dxf: DxfArgs,
     /// Geometric tolerance of the validation run after import, relative to the drawing's size
     /// (dimensionless; default 1e-7).
     #[arg(long, value_name = "REL")]
@@ -172,10 +291,23 @@ pub struct ImportArgs {
     /// Where to write the model JSON (stdout if absent).
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<PathBuf>,
+    // Last: the flattened groups set the help heading of what follows them.
+    #[command(flatten)]
+    pub dxf: DxfArgs,
 }
 
 pub fn run(a: ImportArgs) -> Result<(), Fail> {
     a.dxf.check()?;
+    if !voussoir_io::dxf::is_dxf(&a.drawing) && !is_mesh(&a.drawing) {
+        return Err(Fail(format!(
+            "{}: import reads .dxf drawings and .obj/.ply meshes (a JSON model needs no import)",
+            a.drawing.display()
+        )));
+    }
+    a.dxf.refuse_foreign(&a.drawing)?;
+    if is_mesh(&a.drawing) {
+        return run_mesh(a);
+    }
     let (model, rep) = read_dxf(&a.drawing, &a.dxf.options())?;
     // Validate now (overlaps, isolated blocks), so that a bad drawing fails at import.
     let st = structure_of(
@@ -194,5 +326,79 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     for n in &rep.notes {
         eprintln!("note: {n}");
     }
+    Ok(())
+}
+
+/// `voussoir import model.obj|model.ply`: read, validate (overlaps and isolated blocks are
+/// found now, named by OBJ object), write the JSON model.
+fn run_mesh(a: ImportArgs) -> Result<(), Fail> {
+    crate::outputs::input(&a.drawing);
+    let (model, rep) = read_mesh(&a.drawing, &a.dxf.mesh_options())?;
+    let st = Structure3d::new(
+        &model,
+        BuildOptions {
+            tolerance: a.tolerance,
+        },
+    )
+    .map_err(|e| Fail(rep.annotate(&e.to_string())))?;
+    let json = voussoir_io::files::to_json(&model)?;
+    match &a.output {
+        Some(p) => crate::outputs::stage(p, json.as_bytes())?,
+        None => print!("{json}"),
+    }
+    eprintln!("{}; {} joints", rep.summary(), st.joints.len());
+    for n in &rep.notes {
+        eprintln!("note: {n}");
+    }
+    for w in model.warnings() {
+        eprintln!("warning: {w}");
+    }
+    Ok(())
+}
+
+#[derive(Args)]
+pub struct ExportArgs {
+    /// The 3D model: JSON (or .obj/.ply, read with the OBJ/PLY import flags).
+    pub model: PathBuf,
+    /// Where to write the OBJ (stdout if absent): each block the object `block_i`, each support
+    /// `support_NAME`; coordinates in metres, written exactly.
+    #[arg(short = 'o', long = "output", value_name = "FILE.obj")]
+    pub output: Option<PathBuf>,
+    #[command(flatten)]
+    pub dxf: DxfArgs,
+}
+
+/// `voussoir export model.json -o model.obj`.
+pub fn export(a: ExportArgs) -> Result<(), Fail> {
+    a.dxf.check()?;
+    a.dxf.refuse_foreign(&a.model)?;
+    if let Some(p) = &a.output {
+        if !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj")) {
+            return Err(Fail(format!(
+                "{}: export writes Wavefront OBJ; name the output .obj",
+                p.display()
+            )));
+        }
+    }
+    let model = match a.dxf.read_any(&a.model)?.0 {
+        AnyModel::Spatial(m) => m,
+        AnyModel::Planar(_) => {
+            return Err(Fail(format!(
+                "{} is a 2D model: export writes 3D models (blocks with vertices and faces) as OBJ",
+                a.model.display()
+            )))
+        }
+    };
+    voussoir_io::mesh::check_exportable(&model)?;
+    let obj = voussoir_io::mesh::model_to_obj(&model);
+    match &a.output {
+        Some(p) => crate::outputs::stage(p, obj.as_bytes())?,
+        None => print!("{obj}"),
+    }
+    eprintln!(
+        "{} blocks, {} supports written as OBJ objects (materials, loads and support motions are not part of OBJ)",
+        model.blocks.len(),
+        model.supports.len()
+    );
     Ok(())
 }

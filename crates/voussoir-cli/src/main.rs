@@ -41,8 +41,12 @@ enum Command {
     /// Generate a model (arch, lintel, wall, facade) as JSON.
     #[command(subcommand)]
     Gen(gen::Gen),
-    /// Import a DXF drawing (closed polylines = blocks) as a JSON model.
+    /// Import a DXF drawing (closed polylines = 2D blocks) or an OBJ/PLY mesh (closed meshes =
+    /// 3D blocks) as a JSON model.
     Import(import::ImportArgs),
+    /// Export a 3D model as Wavefront OBJ (each block the object `block_i`, each support
+    /// `support_NAME`), for Blender, Rhino, MeshLab; `voussoir import` reads it back.
+    Export(import::ExportArgs),
     /// Classic limit analysis: collapse load multiplier λ of the live loads and the mechanism.
     Limit(limit::LimitArgs),
     /// Settlement analysis: mechanism (crack pattern) and contact forces for prescribed support
@@ -77,6 +81,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
     match cli.command {
         Command::Gen(g) => gen::run(g),
         Command::Import(a) => import::run(a),
+        Command::Export(a) => import::export(a),
         Command::Sweep(a) => sweep::run(a),
         Command::Merge(a) => sweep::merge(a),
         Command::Bench(a) => bench::run(a),

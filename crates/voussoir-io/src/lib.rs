@@ -6,6 +6,8 @@ pub mod draw;
 pub mod draw3d;
 pub mod dxf;
 pub mod files;
+pub mod mesh;
+pub mod report3d;
 pub mod result3d;
 pub mod vtk;
 

@@ -30,6 +30,22 @@ pub trait Result3d {
     fn title(&self) -> String;
     /// Key numbers, one line each, printed under the title.
     fn info(&self) -> Vec<String>;
+    /// Key numbers as (name, value) rows for reports: status, λ or the settlement certificate
+    /// (primal, dual, gap). Default: the [`Result3d::info`] lines.
+    fn key_numbers(&self) -> Vec<(String, String)> {
+        self.info()
+            .into_iter()
+            .map(|l| (String::new(), l))
+            .collect()
+    }
+}
+
+/// A number for a report table: up to 6 significant digits, or "—" when absent or not finite.
+fn num6(x: Option<f64>) -> String {
+    match x {
+        Some(v) if v.is_finite() => crate::draw::svg::human(v, 6),
+        _ => "—".to_string(),
+    }
 }
 
 fn plural(n: usize, what: &str) -> String {
@@ -93,6 +109,31 @@ impl Result3d for LimitResult<Three> {
             _ => vec![self.message.clone()],
         }
     }
+    fn key_numbers(&self) -> Vec<(String, String)> {
+        let mut k = vec![
+            ("status".to_string(), self.status.sentence().to_string()),
+            (
+                "collapse load multiplier λ".to_string(),
+                num6(self.load_multiplier),
+            ),
+        ];
+        if self.least_load_multiplier.is_some() {
+            k.push((
+                "least multiplier in equilibrium (≤ 0: stands under the dead loads)".to_string(),
+                num6(self.least_load_multiplier),
+            ));
+        }
+        k.push((
+            "work of the dead loads (normalised mechanism)".to_string(),
+            num6(self.work_dead_loads),
+        ));
+        k.push((
+            "work of the live loads (normalised mechanism)".to_string(),
+            num6(self.work_live_loads),
+        ));
+        k.push(("cracked joints".to_string(), crack_summary(&self.joints)));
+        k
+    }
 }
 
 impl Result3d for SettlementResult<Three> {
@@ -140,6 +181,43 @@ impl Result3d for SettlementResult<Three> {
         }
         info.push(line);
         info
+    }
+    fn key_numbers(&self) -> Vec<(String, String)> {
+        let mut k = vec![("status".to_string(), self.status.sentence().to_string())];
+        if let Some(m) = support_motion_text(&self.geometry) {
+            k.push((
+                "support motion".to_string(),
+                m.replace("prescribed support motion: ", ""),
+            ));
+        }
+        match &self.certificate {
+            Some(c) => {
+                k.push((
+                    "primal (work of the dead loads, kN·m)".to_string(),
+                    num6(Some(c.primal)),
+                ));
+                k.push((
+                    "dual (work of the reactions, kN·m)".to_string(),
+                    num6(Some(c.dual)),
+                ));
+                k.push((
+                    "relative duality gap".to_string(),
+                    num6(Some(c.relative_gap)),
+                ));
+                k.push(("complementarity".to_string(), num6(Some(c.complementarity))));
+                k.push((
+                    "equilibrium residual".to_string(),
+                    num6(Some(c.equilibrium_residual)),
+                ));
+                k.push((
+                    "certificate".to_string(),
+                    if c.ok { "certified" } else { "NOT certified" }.to_string(),
+                ));
+            }
+            None => k.push(("certificate".to_string(), self.message.clone())),
+        }
+        k.push(("cracked joints".to_string(), crack_summary(&self.joints)));
+        k
     }
 }
 

@@ -50,8 +50,11 @@ pub struct DrawArgs {
 /// The view of a 3D drawing.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ViewArg {
+    /// Seen from azimuth −35°, elevation 30° (front left, above).
     Axonometric,
+    /// Seen from above: x right, y up the page.
     Plan,
+    /// Seen from the front (−y): x right, z up the page.
     Elevation,
 }
 
@@ -94,11 +97,15 @@ impl DrawArgs {
     }
 
     /// The SVG/PNG axonometric drawing and the VTK files of a 3D result.
-    pub fn emit_3d(&self, r: &impl voussoir_io::result3d::Result3d) -> Result<(), Fail> {
-        if self.report.is_some() {
-            return Err(Fail(
-                "--report: the HTML report of a 3D result is not available yet (use --svg/--png and --vtk)".into(),
-            ));
+    pub fn emit_3d(
+        &self,
+        r: &impl voussoir_io::result3d::Result3d,
+        source: &Path,
+    ) -> Result<(), Fail> {
+        if let Some(path) = &self.report {
+            let title = self.title.clone().unwrap_or_else(|| r.title());
+            let html = voussoir_io::report3d::report3d_html(r, &title, &source.display().to_string())?;
+            crate::outputs::stage(path, html.as_bytes())?;
         }
         if self.svg.is_some() || self.png.is_some() {
             use voussoir_io::draw3d::{draw3d, Draw3dOptions, View};

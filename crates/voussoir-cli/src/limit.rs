@@ -89,7 +89,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 Crushing::Linear
             };
             let r = limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?;
-            a.draw.emit_3d(&r)?;
+            a.draw.emit_3d(&r, &c.input.path)?;
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }
     }

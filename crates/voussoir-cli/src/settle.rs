@@ -84,6 +84,6 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         SettlementForm::Both => settle(&st, &c.input.solver3d)?,
         form => settle_with(&st, &c.input.solver3d, form)?,
     };
-    a.draw.emit_3d(&r)?;
+    a.draw.emit_3d(&r, &c.input.path)?;
     a.out.emit(&r, || common::settle_summary(&st, &r))
 }

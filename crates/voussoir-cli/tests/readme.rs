@@ -67,7 +67,7 @@ fn outputs(line: &str) -> Vec<String> {
     let mut out = Vec::new();
     for w in words.windows(2) {
         if [
-            "-o", "--output", "--png", "--svg", "--report", "--jsonl", "--csv", ">",
+            "-o", "--output", "--png", "--svg", "--report", "--jsonl", "--csv", "--vtk", ">",
         ]
         .contains(&w[0])
         {
@@ -138,6 +138,11 @@ fn gitignore_covers_out() -> bool {
 fn readme_example_session_runs_as_written_into_an_ignored_folder() {
     assert!(gitignore_covers_out(), ".gitignore must cover out/");
     run_example("README.md", "session");
+}
+
+#[test]
+fn readme_3d_example_runs_as_written() {
+    run_example("README.md", "3d");
 }
 
 #[test]

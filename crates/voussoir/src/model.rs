@@ -226,22 +226,32 @@ impl Model {
         friction: Option<f64>,
         compressive_strength: Option<f64>,
     ) {
-        if friction.is_none() && compressive_strength.is_none() {
-            return;
-        }
-        self.materials.entry("default".to_string()).or_default();
-        for mat in self.materials.values_mut() {
-            if friction.is_some() {
-                mat.friction = friction;
-            }
-            if compressive_strength.is_some() {
-                mat.compressive_strength = compressive_strength;
-            }
-        }
+        override_joint_laws(&mut self.materials, friction, compressive_strength);
     }
 
     /// Index of the support named `name`.
     pub fn support_index(&self, name: &str) -> Option<usize> {
         self.supports.iter().position(|s| s.name == name)
+    }
+}
+
+/// Give every material of `materials` (the implicit `"default"` included) the friction μ and/or
+/// the compressive strength f_c given; `None` leaves the values (2D and 3D models alike).
+pub fn override_joint_laws(
+    materials: &mut BTreeMap<String, Material>,
+    friction: Option<f64>,
+    compressive_strength: Option<f64>,
+) {
+    if friction.is_none() && compressive_strength.is_none() {
+        return;
+    }
+    materials.entry("default".to_string()).or_default();
+    for mat in materials.values_mut() {
+        if friction.is_some() {
+            mat.friction = friction;
+        }
+        if compressive_strength.is_some() {
+            mat.compressive_strength = compressive_strength;
+        }
     }
 }

@@ -193,18 +193,7 @@ impl Model3d {
         friction: Option<f64>,
         compressive_strength: Option<f64>,
     ) {
-        if friction.is_none() && compressive_strength.is_none() {
-            return;
-        }
-        self.materials.entry("default".to_string()).or_default();
-        for mat in self.materials.values_mut() {
-            if friction.is_some() {
-                mat.friction = friction;
-            }
-            if compressive_strength.is_some() {
-                mat.compressive_strength = compressive_strength;
-            }
-        }
+        crate::model::override_joint_laws(&mut self.materials, friction, compressive_strength);
     }
 }
 

@@ -164,8 +164,11 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         });
     }
     let umap = KinematicMap::new(&path.unit);
-    let zeros = vec![0.0; umap.num_points()];
-    let srep = report(&path.unit, &umap, &path.mechanism, 1.0, &zeros, &zeros);
+    let (pn0, pt0) = (
+        vec![0.0; umap.num_points()],
+        vec![0.0; umap.num_tangent_rows()],
+    );
+    let srep = report(&path.unit, &umap, &path.mechanism, 1.0, &pn0, &pt0);
 
     let mut warm = WarmLimit::new(&opts.solver, opts.hot_start);
     let mut curve = Vec::with_capacity(opts.steps + 1);

@@ -7,3 +7,5 @@ cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 cargo test --workspace --release --no-fail-fast "$@"
 ./scripts/test-python.sh
+# The 3D HTML report in headless Chromium: no script errors, the WebGL view drawn and rotating.
+./scripts/check-report3d.sh

@@ -215,12 +215,14 @@ impl AnyModel {
                 .and_then(|a| a.first())
                 .is_some_and(|b| b.get("vertices").is_some())
         };
+        // Parsed again from the text (not from the value) so that errors keep their line and
+        // column.
         if has_vertices("blocks") || has_vertices("supports") {
-            serde_json::from_value::<Model3d>(v)
+            serde_json::from_str::<Model3d>(text)
                 .map(AnyModel::Spatial)
                 .map_err(|e| e.to_string())
         } else {
-            serde_json::from_value::<crate::Model>(v)
+            serde_json::from_str::<crate::Model>(text)
                 .map(AnyModel::Planar)
                 .map_err(|e| e.to_string())
         }

@@ -5,12 +5,14 @@ use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use voussoir::analysis::{LimitResult, SettlementResult};
+use voussoir::lp::{Method, SolverOptions};
+use voussoir::model3d::{AnyModel, Model3d};
 use voussoir::result::{Hinge, Spatial};
+use voussoir::settlement_input::{
+    apply_profile, fix_support, move_support, ModelSupports, Profile,
+};
 use voussoir::structure::Body;
 use voussoir::Assembly;
-use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{apply_profile, fix_support, move_support, ModelSupports, Profile};
-use voussoir::model3d::{AnyModel, Model3d};
 use voussoir::{BuildOptions, Model, Structure, Structure3d};
 
 /// A failure: one line for the user.
@@ -242,7 +244,11 @@ impl SettleArgs {
                         .or_else(|| signed_length(t).map(|v| (v, true)))
                 })
                 .collect::<Option<_>>()
-                .ok_or_else(|| Fail(format!("--move {m}: the lengths and angles must be numbers")))?;
+                .ok_or_else(|| {
+                    Fail(format!(
+                        "--move {m}: the lengths and angles must be numbers"
+                    ))
+                })?;
             if nums.iter().any(|(x, _)| !x.is_finite()) {
                 return Err(Fail(format!("--move {m}: every value must be finite")));
             }
@@ -434,9 +440,7 @@ impl Input {
         let mut m = self.dxf.read_any(&self.path)?.0;
         match &mut m {
             AnyModel::Planar(p) => p.override_joint_laws(self.friction, self.compressive_strength),
-            AnyModel::Spatial(s) => {
-                s.override_joint_laws(self.friction, self.compressive_strength)
-            }
+            AnyModel::Spatial(s) => s.override_joint_laws(self.friction, self.compressive_strength),
         }
         Ok(m)
     }
@@ -474,7 +478,11 @@ impl Input {
     }
 
     /// A loaded 2D model with a support motion, validated and discretised.
-    pub fn structure_of(&self, mut model: Model, motion: Option<&Motion>) -> Result<Structure, Fail> {
+    pub fn structure_of(
+        &self,
+        mut model: Model,
+        motion: Option<&Motion>,
+    ) -> Result<Structure, Fail> {
         if self.friction_facets.is_some() || self.exact_friction_cone {
             return Err(Fail(
                 "--friction-facets and --friction-cone apply to 3D models (a 2D joint's friction is exact)".into(),

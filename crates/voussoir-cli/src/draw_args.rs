@@ -104,7 +104,8 @@ impl DrawArgs {
     ) -> Result<(), Fail> {
         if let Some(path) = &self.report {
             let title = self.title.clone().unwrap_or_else(|| r.title());
-            let html = voussoir_io::report3d::report3d_html(r, &title, &source.display().to_string())?;
+            let html =
+                voussoir_io::report3d::report3d_html(r, &title, &source.display().to_string())?;
             crate::outputs::stage(path, html.as_bytes())?;
         }
         if self.svg.is_some() || self.png.is_some() {

@@ -49,7 +49,9 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
     };
     if let Some(az) = a.azimuth {
         if !az.is_finite() {
-            return Err(Fail(format!("--azimuth {az}: must be a finite number of degrees")));
+            return Err(Fail(format!(
+                "--azimuth {az}: must be a finite number of degrees"
+            )));
         }
     }
     let model = match input.load_any()? {

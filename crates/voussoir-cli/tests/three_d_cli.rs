@@ -41,7 +41,12 @@ fn array(attrs: &[Attribute], name: &str) -> Vec<f64> {
 #[test]
 fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
     let d = tmpdir("vtk");
-    run(&d, &["gen", "vault", "--live", "full", "--rings", "2", "-o", "v.json"]);
+    run(
+        &d,
+        &[
+            "gen", "vault", "--live", "full", "--rings", "2", "-o", "v.json",
+        ],
+    );
     run(&d, &["limit", "v.json", "--vtk", "v.vtu", "-o", "r.json"]);
     run(&d, &["limit", "v.json", "--vtk", "m.vtm"]);
     let r = json(&d.join("r.json"));
@@ -55,7 +60,10 @@ fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
     let piece = pieces[0].clone().into_loaded_piece_data(None).unwrap();
     // One polygon cell per block face, a `block` id per cell: every block is there.
     let ids = array(&piece.data.cell, "block");
-    let faces: usize = shapes.iter().map(|s| s["faces"].as_array().unwrap().len()).sum();
+    let faces: usize = shapes
+        .iter()
+        .map(|s| s["faces"].as_array().unwrap().len())
+        .sum();
     assert_eq!(ids.len(), faces);
     let mut distinct: Vec<i64> = ids.iter().map(|x| *x as i64).collect();
     distinct.dedup();
@@ -67,7 +75,10 @@ fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
     let b = &blocks[40];
     for (k, key) in ["u", "v", "w"].iter().enumerate() {
         let want = b[*key].as_f64().unwrap();
-        assert!((tr[3 * cell + k] - want).abs() <= 1e-12 * want.abs().max(1.0), "{key}");
+        assert!(
+            (tr[3 * cell + k] - want).abs() <= 1e-12 * want.abs().max(1.0),
+            "{key}"
+        );
     }
     let pts: Vec<f64> = match &piece.points {
         vtkio::model::IOBuffer::F64(v) => v.clone(),
@@ -81,7 +92,11 @@ fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
         b["theta_y"].as_f64().unwrap(),
         b["theta_z"].as_f64().unwrap(),
     ];
-    let u = [b["u"].as_f64().unwrap(), b["v"].as_f64().unwrap(), b["w"].as_f64().unwrap()];
+    let u = [
+        b["u"].as_f64().unwrap(),
+        b["v"].as_f64().unwrap(),
+        b["w"].as_f64().unwrap(),
+    ];
     // The first vertex of block 40 in the VTK: find a point equal to the JSON's vertex 0.
     let v0: Vec<f64> = shapes[40]["vertices"][0]
         .as_array()
@@ -99,7 +114,12 @@ fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
         u[2] + theta[0] * r_[1] - theta[1] * r_[0],
     ];
     for k in 0..3 {
-        assert!((disp[3 * p + k] - want[k]).abs() < 1e-9, "{k}: {} vs {}", disp[3 * p + k], want[k]);
+        assert!(
+            (disp[3 * p + k] - want[k]).abs() < 1e-9,
+            "{k}: {} vs {}",
+            disp[3 * p + k],
+            want[k]
+        );
     }
     // The multiblock's contact part: the opening of one point equals the JSON's.
     let vtk = Vtk::import(d.join("m_contacts.vtu")).expect("vtkio reads the contacts");
@@ -112,7 +132,13 @@ fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
         .as_array()
         .unwrap()
         .iter()
-        .flat_map(|j| j["points"].as_array().unwrap().iter().map(|p| p["opening"].as_f64().unwrap()))
+        .flat_map(|j| {
+            j["points"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| p["opening"].as_f64().unwrap())
+        })
         .collect();
     assert_eq!(openings.len(), json_openings.len());
     let k = json_openings
@@ -123,7 +149,10 @@ fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
 }
 
 fn number(text: &str, after: &str) -> f64 {
-    let i = text.find(after).unwrap_or_else(|| panic!("'{after}' not in {text}")) + after.len();
+    let i = text
+        .find(after)
+        .unwrap_or_else(|| panic!("'{after}' not in {text}"))
+        + after.len();
     text[i..]
         .split(|c: char| c.is_whitespace() || c == ',' || c == ')')
         .find(|t| !t.is_empty())
@@ -135,13 +164,39 @@ fn number(text: &str, after: &str) -> f64 {
 #[test]
 fn generated_vault_and_dome_round_trip_through_obj() {
     let d = tmpdir("obj");
-    run(&d, &["gen", "vault", "--live", "left", "--rings", "2", "-o", "v.json"]);
-    run(&d, &[
-        "gen", "dome", "--courses", "6", "--segments", "12", "--thickness", "0.4", "--crown-load", "10",
-        "-o", "d.json",
-    ]);
+    run(
+        &d,
+        &[
+            "gen", "vault", "--live", "left", "--rings", "2", "-o", "v.json",
+        ],
+    );
+    run(
+        &d,
+        &[
+            "gen",
+            "dome",
+            "--courses",
+            "6",
+            "--segments",
+            "12",
+            "--thickness",
+            "0.4",
+            "--crown-load",
+            "10",
+            "-o",
+            "d.json",
+        ],
+    );
     for (model, mv) in [("v", "right=1cm,0,0"), ("d", "base0=0,0,-1cm")] {
-        run(&d, &["export", &format!("{model}.json"), "-o", &format!("{model}.obj")]);
+        run(
+            &d,
+            &[
+                "export",
+                &format!("{model}.json"),
+                "-o",
+                &format!("{model}.obj"),
+            ],
+        );
         // An OBJ carries no loads: compare the tilting-table analysis, whose live load (the
         // blocks' weights, horizontal) both models define alike.
         let a = run(&d, &["tilt", &format!("{model}.json"), "--azimuth", "30"]);
@@ -149,11 +204,40 @@ fn generated_vault_and_dome_round_trip_through_obj() {
         // Same blocks, joints (interfaces) and supports: the first summary line.
         assert_eq!(a.lines().next(), b.lines().next(), "{model}");
         let (la, lb) = (number(&a, "λ = "), number(&b, "λ = "));
-        assert!((la - lb).abs() <= 1e-6 * la.abs(), "{model}: λ {la} vs {lb}");
-        let a = run(&d, &["settle", &format!("{model}.json"), "--move", mv, "--friction", "0.6"]);
-        let b = run(&d, &["settle", &format!("{model}.obj"), "--move", mv, "--friction", "0.6"]);
-        let (wa, wb) = (number(&a, "work of dead loads "), number(&b, "work of dead loads "));
-        assert!((wa - wb).abs() <= 1e-6 * wa.abs().max(1e-9), "{model}: work {wa} vs {wb}");
+        assert!(
+            (la - lb).abs() <= 1e-6 * la.abs(),
+            "{model}: λ {la} vs {lb}"
+        );
+        let a = run(
+            &d,
+            &[
+                "settle",
+                &format!("{model}.json"),
+                "--move",
+                mv,
+                "--friction",
+                "0.6",
+            ],
+        );
+        let b = run(
+            &d,
+            &[
+                "settle",
+                &format!("{model}.obj"),
+                "--move",
+                mv,
+                "--friction",
+                "0.6",
+            ],
+        );
+        let (wa, wb) = (
+            number(&a, "work of dead loads "),
+            number(&b, "work of dead loads "),
+        );
+        assert!(
+            (wa - wb).abs() <= 1e-6 * wa.abs().max(1e-9),
+            "{model}: work {wa} vs {wb}"
+        );
     }
 }
 
@@ -163,20 +247,69 @@ fn a_vault_capacity_after_spreading_equals_the_arch_s() {
     // the 2D ones (finite rotations in 3D through the rotation vector's exponential map).
     let d = tmpdir("capacity");
     run(&d, &["gen", "arch", "--live", "full", "-o", "a.json"]);
-    run(&d, &["gen", "vault", "--live", "full", "--rings", "2", "-o", "v.json"]);
-    run(&d, &["capacity", "a.json", "--move", "right=2cm,0", "--steps", "10", "-o", "a.out.json"]);
-    run(&d, &["capacity", "v.json", "--move", "right=2cm,0,0", "--steps", "10", "-o", "v.out.json"]);
+    run(
+        &d,
+        &[
+            "gen", "vault", "--live", "full", "--rings", "2", "-o", "v.json",
+        ],
+    );
+    run(
+        &d,
+        &[
+            "capacity",
+            "a.json",
+            "--move",
+            "right=2cm,0",
+            "--steps",
+            "10",
+            "-o",
+            "a.out.json",
+        ],
+    );
+    run(
+        &d,
+        &[
+            "capacity",
+            "v.json",
+            "--move",
+            "right=2cm,0,0",
+            "--steps",
+            "10",
+            "-o",
+            "v.out.json",
+        ],
+    );
     let (a, v) = (json(&d.join("a.out.json")), json(&d.join("v.out.json")));
     let za = a["zero_capacity_settlement"].as_f64().unwrap();
     let zv = v["zero_capacity_settlement"].as_f64().unwrap();
     assert!((za - zv).abs() < 1e-5, "zero capacity 2D {za} vs 3D {zv}");
-    for (p, q) in a["curve"].as_array().unwrap().iter().zip(v["curve"].as_array().unwrap()) {
-        let (la, lv) = (p["load_multiplier"].as_f64().unwrap(), q["load_multiplier"].as_f64().unwrap());
+    for (p, q) in a["curve"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(v["curve"].as_array().unwrap())
+    {
+        let (la, lv) = (
+            p["load_multiplier"].as_f64().unwrap(),
+            q["load_multiplier"].as_f64().unwrap(),
+        );
         assert!((la - lv).abs() < 1e-6, "λ(s) 2D {la} vs 3D {lv}");
         assert_eq!(p["valid"], q["valid"]);
     }
     // Byte-identical output for the same input.
-    run(&d, &["capacity", "v.json", "--move", "right=2cm,0,0", "--steps", "10", "-o", "v2.out.json"]);
+    run(
+        &d,
+        &[
+            "capacity",
+            "v.json",
+            "--move",
+            "right=2cm,0,0",
+            "--steps",
+            "10",
+            "-o",
+            "v2.out.json",
+        ],
+    );
     assert_eq!(
         std::fs::read(d.join("v.out.json")).unwrap(),
         std::fs::read(d.join("v2.out.json")).unwrap()

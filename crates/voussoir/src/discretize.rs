@@ -332,7 +332,8 @@ impl CsrRows {
     fn push_row(&mut self, entries: &mut Vec<(usize, f64)>) {
         entries.sort_unstable_by_key(|e| e.0);
         for &(c, v) in entries.iter() {
-            if self.indices.len() > *self.indptr.last().unwrap() && self.indices.last() == Some(&c) {
+            if self.indices.len() > *self.indptr.last().unwrap() && self.indices.last() == Some(&c)
+            {
                 *self.data.last_mut().unwrap() += v;
             } else {
                 self.indices.push(c);
@@ -344,6 +345,11 @@ impl CsrRows {
     }
 
     fn finish(self, cols: usize) -> CsMat<f64> {
-        CsMat::new((self.indptr.len() - 1, cols), self.indptr, self.indices, self.data)
+        CsMat::new(
+            (self.indptr.len() - 1, cols),
+            self.indptr,
+            self.indices,
+            self.data,
+        )
     }
 }

@@ -1,7 +1,6 @@
 //! Capacity after a settlement: limit analysis on the deformed geometry (paper, Section 6,
 //! Figs 10 and 12; targets and tolerances from `shared/reference/paper-cases.md`).
 
-use voussoir::Assembly;
 use voussoir::analysis::capacity::{capacity, CapacityOptions};
 use voussoir::analysis::limit::solve_limit;
 use voussoir::analysis::settlement::SettlementPath;
@@ -10,6 +9,7 @@ use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
 use voussoir::lp::SolverOptions;
 use voussoir::model::Connection;
+use voussoir::Assembly;
 use voussoir::{BuildOptions, Error, Structure};
 
 /// The paper's arch (intrados radius 2.86 m, 0.33 m thick, 64 voussoirs) with the right

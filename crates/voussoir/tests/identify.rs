@@ -3,7 +3,6 @@
 //! (round trips), the ±20 % noise bound of a one-parameter least-absolute fit, and rigid-body
 //! motions (which no crack depends on).
 
-use voussoir::Assembly;
 use voussoir::analysis::identify::{
     identify, Component, Crack, IdentifyOptions, IdentifyResult, IdentifyStatus, Observations,
     Unknown, Unobserved, Width,
@@ -15,6 +14,7 @@ use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::SolverOptions;
 use voussoir::model::{Connection, Model};
 use voussoir::settlement_input::{apply_profile, Profile};
+use voussoir::Assembly;
 use voussoir::{BuildOptions, Structure};
 
 fn paper_arch() -> Model {

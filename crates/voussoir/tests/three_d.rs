@@ -102,18 +102,31 @@ fn a_box_overturns_at_the_closed_form_multiplier_at_every_azimuth() {
     for [b, d, h] in [[1.0, 1.0, 2.0], [0.4, 1.2, 3.0], [2.0, 0.5, 1.5]] {
         for deg in [0.0f64, 20.0, 45.0, 90.0, 135.0, 200.0, 290.0] {
             let t = deg.to_radians();
-            let st =
-                Structure3d::new(&box_on_base(b, d, h, vec![horizontal(t)]), BuildOptions::default())
-                    .unwrap();
+            let st = Structure3d::new(
+                &box_on_base(b, d, h, vec![horizontal(t)]),
+                BuildOptions::default(),
+            )
+            .unwrap();
             assert_eq!(st.joints.len(), 1);
             assert_eq!(st.joints[0].points.len(), 4);
-            let by_x = if t.cos().abs() > 1e-12 { b / (h * t.cos().abs()) } else { f64::INFINITY };
-            let by_y = if t.sin().abs() > 1e-12 { d / (h * t.sin().abs()) } else { f64::INFINITY };
+            let by_x = if t.cos().abs() > 1e-12 {
+                b / (h * t.cos().abs())
+            } else {
+                f64::INFINITY
+            };
+            let by_y = if t.sin().abs() > 1e-12 {
+                d / (h * t.sin().abs())
+            } else {
+                f64::INFINITY
+            };
             let want = by_x.min(by_y);
             let r = limit(&st, &opts()).unwrap();
             assert_eq!(r.status, LimitStatus::Collapse);
             let got = r.load_multiplier.unwrap();
-            assert!((got - want).abs() < 1e-9, "{b}×{d}×{h} at {deg}°: λ = {got}, closed form {want}");
+            assert!(
+                (got - want).abs() < 1e-9,
+                "{b}×{d}×{h} at {deg}°: λ = {got}, closed form {want}"
+            );
             // The mechanism is a rotation about a base edge (or corner): the block rises.
             assert_eq!(r.blocks.len(), 1);
             let m = &r.blocks[0];
@@ -138,7 +151,10 @@ fn tilting_table_slides_at_tan_alpha_equal_mu_with_the_exact_cone_and_within_the
     for deg in [0.0f64, 22.5, 37.0, 90.0, 150.0, 255.0] {
         let exact = tilt_azimuth_exact(&st, deg, &opts()).unwrap();
         let tan = exact.tilt_angle.unwrap().to_radians().tan();
-        assert!((tan - mu).abs() < 1e-6, "exact cone at {deg}°: tan α = {tan}");
+        assert!(
+            (tan - mu).abs() < 1e-6,
+            "exact cone at {deg}°: tan α = {tan}"
+        );
         for k in [4usize, 8, 16] {
             let mut s = st.clone();
             s.friction_facets = k;
@@ -173,7 +189,11 @@ fn wall(courses: usize, units: usize, [l, t, h]: [f64; 3]) -> Model3d {
     let len = units as f64 * l;
     model(
         blocks,
-        vec![support("ground", [-1.0, -1.0, -0.5], [len + 1.0, t + 1.0, 0.0])],
+        vec![support(
+            "ground",
+            [-1.0, -1.0, -0.5],
+            [len + 1.0, t + 1.0, 0.0],
+        )],
         vec![horizontal(std::f64::consts::FRAC_PI_2)],
     )
 }
@@ -194,8 +214,13 @@ fn a_free_standing_wall_overturns_out_of_plane_at_t_over_h() {
         // Every block turns the same way about the toe line y = t, z = 0: θx = −1/… the same
         // rotation for all (rigid overturning).
         let th: Vec<f64> = r.blocks.iter().map(|b| b.theta_x).collect();
-        assert!(th.iter().all(|x| (x - th[0]).abs() < 1e-9 * th[0].abs().max(1.0)));
-        assert!(th[0] < 0.0, "turning towards +y is a negative rotation about x");
+        assert!(th
+            .iter()
+            .all(|x| (x - th[0]).abs() < 1e-9 * th[0].abs().max(1.0)));
+        assert!(
+            th[0] < 0.0,
+            "turning towards +y is a negative rotation about x"
+        );
     }
 }
 
@@ -236,7 +261,10 @@ fn a_settling_base_carries_the_box_and_both_programs_agree() {
     // The base carries the weight: reaction fz = W, and nothing else but a moment… about the
     // base's centroid the weight line passes through it: all moments vanish.
     let re = &r.reactions[0];
-    assert!((re.fz - w).abs() < 1e-9 && re.fx.abs() < 1e-9 && re.my.abs() < 1e-9, "{re:?}");
+    assert!(
+        (re.fz - w).abs() < 1e-9 && re.fx.abs() < 1e-9 && re.my.abs() < 1e-9,
+        "{re:?}"
+    );
 }
 
 #[test]
@@ -244,8 +272,11 @@ fn limit_on_the_deformed_geometry_moves_blocks_by_finite_rotations() {
     // Rotate the box about its base edge x = b by a finite angle through `deform`: its vertices
     // must stay at their distances (a rigid motion), and its centroid must land where the
     // exact rotation puts it.
-    let st = Structure3d::new(&box_on_base(1.0, 1.0, 2.0, vec![horizontal(0.0)]), BuildOptions::default())
-        .unwrap();
+    let st = Structure3d::new(
+        &box_on_base(1.0, 1.0, 2.0, vec![horizontal(0.0)]),
+        BuildOptions::default(),
+    )
+    .unwrap();
     let r = limit(&st, &opts()).unwrap();
     let d: Vec<f64> = {
         let m = &r.blocks[0];
@@ -259,7 +290,10 @@ fn limit_on_the_deformed_geometry_moves_blocks_by_finite_rotations() {
     for i in 0..8 {
         for j in 0..8 {
             let dist = |v: &Vec<[f64; 3]>| {
-                ((v[i][0] - v[j][0]).powi(2) + (v[i][1] - v[j][1]).powi(2) + (v[i][2] - v[j][2]).powi(2)).sqrt()
+                ((v[i][0] - v[j][0]).powi(2)
+                    + (v[i][1] - v[j][1]).powi(2)
+                    + (v[i][2] - v[j][2]).powi(2))
+                .sqrt()
             };
             assert!((dist(v0) - dist(v1)).abs() < 1e-12);
         }
@@ -285,33 +319,53 @@ fn limit_on_the_deformed_geometry_moves_blocks_by_finite_rotations() {
 fn finite_strength_and_bad_polyhedra_are_refused_in_one_line() {
     let mut m = box_on_base(1.0, 1.0, 1.0, vec![horizontal(0.0)]);
     m.materials.get_mut("default").unwrap().compressive_strength = Some(1000.0);
-    let e = Structure3d::new(&m, BuildOptions::default()).unwrap_err().to_string();
+    let e = Structure3d::new(&m, BuildOptions::default())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("2D only") && !e.contains('\n'), "{e}");
     let mut m = box_on_base(1.0, 1.0, 1.0, vec![]);
     m.blocks[0].faces.pop();
-    let e = Structure3d::new(&m, BuildOptions::default()).unwrap_err().to_string();
+    let e = Structure3d::new(&m, BuildOptions::default())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("block 0") && !e.contains('\n'), "{e}");
     // A block floating above the base touches nothing.
     let m = model(
-        vec![block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([0.0, 0.0, 2.0], [1.0, 1.0, 3.0])],
+        vec![
+            block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]),
+            block([0.0, 0.0, 2.0], [1.0, 1.0, 3.0]),
+        ],
         vec![support("base", [-1.0, -1.0, -0.5], [2.0, 2.0, 0.0])],
         vec![],
     );
-    let e = Structure3d::new(&m, BuildOptions::default()).unwrap_err().to_string();
+    let e = Structure3d::new(&m, BuildOptions::default())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("block 1 touches nothing"), "{e}");
     // Overlapping blocks are named.
     let m = model(
-        vec![block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([0.5, 0.0, 0.0], [1.5, 1.0, 1.0])],
+        vec![
+            block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]),
+            block([0.5, 0.0, 0.0], [1.5, 1.0, 1.0]),
+        ],
         vec![support("base", [-1.0, -1.0, -0.5], [2.0, 2.0, 0.0])],
         vec![],
     );
-    let e = Structure3d::new(&m, BuildOptions::default()).unwrap_err().to_string();
+    let e = Structure3d::new(&m, BuildOptions::default())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("block 0 and block 1 overlap"), "{e}");
     // The exact friction cone needs Clarabel's cones; the option is the same path as the 2D
     // conic crushing model: without friction it is the plain limit analysis.
-    let st = Structure3d::new(&box_on_base(1.0, 1.0, 2.0, vec![horizontal(0.0)]), BuildOptions::default())
-        .unwrap();
+    let st = Structure3d::new(
+        &box_on_base(1.0, 1.0, 2.0, vec![horizontal(0.0)]),
+        BuildOptions::default(),
+    )
+    .unwrap();
     let a = limit(&st, &opts()).unwrap().load_multiplier.unwrap();
-    let b = limit_with(&st, &opts(), Crushing::Conic, 16).unwrap().load_multiplier.unwrap();
+    let b = limit_with(&st, &opts(), Crushing::Conic, 16)
+        .unwrap()
+        .load_multiplier
+        .unwrap();
     assert!((a - 0.5).abs() < 1e-9 && (b - 0.5).abs() < 1e-6, "{a} {b}");
 }

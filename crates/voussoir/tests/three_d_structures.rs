@@ -52,20 +52,34 @@ fn the_paper_arch_extruded_as_a_vault_gives_the_2d_multipliers_and_hinges() {
             let r = limit(&st, &SolverOptions::default()).unwrap();
             assert_eq!(r.status, LimitStatus::Collapse);
             let l = r.load_multiplier.unwrap();
-            assert!((l - l2).abs() < 1e-6, "{live:?} depth {depth}, {rings} rings: λ {l} vs 2D {l2}");
+            assert!(
+                (l - l2).abs() < 1e-6,
+                "{live:?} depth {depth}, {rings} rings: λ {l} vs 2D {l2}"
+            );
             // Each 2D hinge (x, y) appears as a hinge line at (x, ·, z = y) through the depth.
             let mut lines: Vec<(f64, f64)> = r.hinges.iter().map(|h| (h.x, h.z)).collect();
             lines.sort_by(|a, b| a.partial_cmp(b).unwrap());
             lines.dedup_by(|a, b| (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9);
-            assert_eq!(lines.len(), hinge_joints2.len(), "{live:?}: {lines:?} vs {hinge_joints2:?}");
+            assert_eq!(
+                lines.len(),
+                hinge_joints2.len(),
+                "{live:?}: {lines:?} vs {hinge_joints2:?}"
+            );
             for (a, b) in lines.iter().zip(&hinge_joints2) {
-                assert!((a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9, "{a:?} vs {b:?}");
+                assert!(
+                    (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9,
+                    "{a:?} vs {b:?}"
+                );
             }
         }
     }
     let l = |live| {
-        let st = Structure::new(&arch(&paper_arch(live)).unwrap(), BuildOptions::default()).unwrap();
-        limit(&st, &SolverOptions::default()).unwrap().load_multiplier.unwrap()
+        let st =
+            Structure::new(&arch(&paper_arch(live)).unwrap(), BuildOptions::default()).unwrap();
+        limit(&st, &SolverOptions::default())
+            .unwrap()
+            .load_multiplier
+            .unwrap()
     };
     assert!((l(LiveLoad::Full) - 0.4346).abs() < 5e-5 && (l(LiveLoad::Left) - 0.2189).abs() < 5e-5);
 }
@@ -83,7 +97,11 @@ fn a_spreading_vault_cracks_at_the_2d_hinges_with_the_2d_work_per_metre() {
     let w2 = r2.work_dead_loads.unwrap();
     let mut hinges2: Vec<usize> = r2.hinges.iter().map(|h| h.joint).collect();
     hinges2.sort();
-    for (depth, rings, bond) in [(1.0, 1, Bond::Stack), (1.5, 3, Bond::Stack), (1.0, 2, Bond::Running)] {
+    for (depth, rings, bond) in [
+        (1.0, 1, Bond::Stack),
+        (1.5, 3, Bond::Stack),
+        (1.0, 2, Bond::Running),
+    ] {
         let mut m = vault(&spec, depth, rings, bond).unwrap();
         move_support(&mut m, "right", &[0.01, 0.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
         if bond == Bond::Running {
@@ -122,7 +140,10 @@ fn a_spreading_vault_cracks_at_the_2d_hinges_with_the_2d_work_per_metre() {
         } else {
             // Running bond with friction: a spreading mechanism, certified; its work per metre
             // is within 10 % of the stack-bonded vault's (measured: 0.1102 against 0.1110).
-            assert!((per_metre - w2).abs() < 0.1 * w2, "running bond: {per_metre} vs {w2}");
+            assert!(
+                (per_metre - w2).abs() < 0.1 * w2,
+                "running bond: {per_metre} vs {w2}"
+            );
         }
     }
     assert_eq!(hinges2.len(), 3, "2D spreading: three hinges");
@@ -150,7 +171,11 @@ fn a_wall_bonded_to_returns_carries_more_than_the_free_wall() {
         (r.load_multiplier.unwrap(), r, st)
     };
     let (free, _, _) = lambda(Plan::I);
-    assert!((free - 0.2 / 1.2).abs() < 1e-6, "free wall λ = {free}, t/h = {}", 0.2 / 1.2);
+    assert!(
+        (free - 0.2 / 1.2).abs() < 1e-6,
+        "free wall λ = {free}, t/h = {}",
+        0.2 / 1.2
+    );
     let (l, rl, st_l) = lambda(Plan::L);
     let (u, _, _) = lambda(Plan::U);
     assert!(l > free * 1.05 && u >= l - 1e-9, "I {free}, L {l}, U {u}");
@@ -166,7 +191,11 @@ fn a_wall_bonded_to_returns_carries_more_than_the_free_wall() {
     assert!(scale > 0.0 && th.len() == st_l.num_blocks());
     for t in &th {
         for k in 0..3 {
-            assert!((t[k] - th[0][k]).abs() < 1e-7 * scale, "{t:?} vs {:?}", th[0]);
+            assert!(
+                (t[k] - th[0][k]).abs() < 1e-7 * scale,
+                "{t:?} vs {:?}",
+                th[0]
+            );
         }
     }
     assert!(rl.joints.iter().all(|j| j.state == JointState::Closed
@@ -240,13 +269,21 @@ fn a_dome_whose_support_sector_settles_is_certified_bridged_without_friction_and
     })
     .unwrap();
     for k in 0..4 {
-        move_support(&mut m, &format!("base{k}"), &[0.0, 0.0, -0.02, 0.0, 0.0, 0.0]).unwrap();
+        move_support(
+            &mut m,
+            &format!("base{k}"),
+            &[0.0, 0.0, -0.02, 0.0, 0.0, 0.0],
+        )
+        .unwrap();
     }
     let st = Structure3d::new(&m, BuildOptions::default()).unwrap();
     let r = settle(&st, &ipm()).unwrap();
     assert_eq!(r.status, SettlementStatus::Mechanism);
     let c = r.certificate.as_ref().unwrap();
-    assert!(c.ok && c.primal.abs() < 1e-9 && c.dual.abs() < 1e-9, "{c:?}");
+    assert!(
+        c.ok && c.primal.abs() < 1e-9 && c.dual.abs() < 1e-9,
+        "{c:?}"
+    );
     let open: Vec<&str> = r
         .joints
         .iter()
@@ -257,7 +294,13 @@ fn a_dome_whose_support_sector_settles_is_certified_bridged_without_friction_and
         })
         .collect();
     assert_eq!(open, ["base0", "base1", "base2", "base3"], "{open:?}");
-    assert_eq!(r.joints.iter().filter(|j| j.state != JointState::Closed).count(), 4);
+    assert_eq!(
+        r.joints
+            .iter()
+            .filter(|j| j.state != JointState::Closed)
+            .count(),
+        4
+    );
 
     m.materials.entry("default".into()).or_default().friction = Some(0.5);
     let st = Structure3d::new(&m, BuildOptions::default()).unwrap();
@@ -265,6 +308,10 @@ fn a_dome_whose_support_sector_settles_is_certified_bridged_without_friction_and
     let c = r.certificate.as_ref().unwrap();
     assert!(c.ok && c.relative_gap <= 1e-7, "{c:?}");
     assert!(r.work_dead_loads.unwrap() > 0.1, "{c:?}");
-    let cracked = r.joints.iter().filter(|j| j.state != JointState::Closed).count();
+    let cracked = r
+        .joints
+        .iter()
+        .filter(|j| j.state != JointState::Closed)
+        .count();
     assert!(cracked > 4, "{cracked}");
 }

@@ -48,8 +48,8 @@ use crate::lp::SolverOptions;
 use crate::model::Point;
 pub use crate::result::incremental::*;
 use crate::result::{report, Geometry};
-use crate::structure::{Assembly, Structure};
 use crate::structure::OPEN_TOLERANCE;
+use crate::structure::{Assembly, Structure};
 
 impl Control {
     /// A control point on `block`; `direction` is normalised.

@@ -21,8 +21,8 @@ use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, LpStatus, SolverOptions};
 use crate::programs::{self, ForceProgram};
-pub use crate::result::settlement::*;
 use crate::result::report;
+pub use crate::result::settlement::*;
 use crate::structure::{Assembly, Structure};
 use serde::{Deserialize, Serialize};
 

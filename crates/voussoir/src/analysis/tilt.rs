@@ -56,7 +56,9 @@ fn tilt_3d(
     exact: bool,
 ) -> Result<TiltResult<Three>> {
     if !azimuth.is_finite() {
-        return Err(Error::Request("tilt azimuth must be a finite number".into()));
+        return Err(Error::Request(
+            "tilt azimuth must be a finite number".into(),
+        ));
     }
     let a = azimuth.to_radians();
     let (tilt_angle, limit) = tilt_along(st, [a.cos(), a.sin(), 0.0], opts, exact)?;

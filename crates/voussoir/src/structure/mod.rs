@@ -8,13 +8,13 @@ pub mod assembly;
 pub mod deform;
 pub mod solid;
 pub use assembly::Assembly;
-pub use solid::Structure3d;
 pub use deform::OPEN_TOLERANCE;
+pub use solid::Structure3d;
 
-use crate::error::{model_err, Result};
-use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::dim::{Dim, Two};
 use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
+use crate::error::{model_err, Result};
+use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::model::{Connection, Load, Material, Model, Per, Point};
 use serde::{Deserialize, Serialize};
 
@@ -438,7 +438,6 @@ impl Structure {
             .iter()
             .any(|l| l.live && (l.force[0] != 0.0 || l.force[1] != 0.0))
     }
-
 }
 
 impl Assembly for Structure {
@@ -631,16 +630,16 @@ pub(crate) fn check_materials(
 ) -> Result<()> {
     for (name, m) in materials {
         let ok = m.unit_weight.is_finite()
-        && m.unit_weight >= 0.0
-        && m.width.is_finite()
-        && m.width > 0.0
-        && m.compressive_strength
-            .is_none_or(|f| f.is_finite() && f > 0.0)
-        && m.friction.is_none_or(|f| f.is_finite() && f >= 0.0)
-        && m.cohesion.is_finite()
-        && m.cohesion >= 0.0;
+            && m.unit_weight >= 0.0
+            && m.width.is_finite()
+            && m.width > 0.0
+            && m.compressive_strength
+                .is_none_or(|f| f.is_finite() && f > 0.0)
+            && m.friction.is_none_or(|f| f.is_finite() && f >= 0.0)
+            && m.cohesion.is_finite()
+            && m.cohesion >= 0.0;
         if !ok {
-        return model_err(format!(
+            return model_err(format!(
             "material '{name}': unit_weight ≥ 0, width > 0, compressive_strength > 0, friction ≥ 0 and cohesion ≥ 0 must be finite numbers"
         ));
         }

@@ -112,7 +112,12 @@ impl Structure3d {
             let d = Three::sub(hi, lo);
             Three::dot(d, d).sqrt()
         };
-        let tol = rel * if diag.is_finite() && diag > 0.0 { diag } else { 1.0 };
+        let tol = rel
+            * if diag.is_finite() && diag > 0.0 {
+                diag
+            } else {
+                1.0
+            };
         check_materials(&model.materials)?;
         if let Some((name, _)) = model
             .materials
@@ -430,8 +435,10 @@ impl Assembly for Structure3d {
     }
 
     fn kinematic_map(&self) -> crate::discretize::KinematicMap {
-        let mut map =
-            crate::discretize::KinematicMap::assemble(&self.contact_bodies(), &self.contact_joints());
+        let mut map = crate::discretize::KinematicMap::assemble(
+            &self.contact_bodies(),
+            &self.contact_joints(),
+        );
         map.friction_facets = self.friction_facets;
         map
     }
@@ -581,7 +588,10 @@ impl Assembly for Structure3d {
             shape.centroid = apply(c, &rot, t, shape.centroid);
         };
         for i in 0..out.blocks.len() {
-            move_solid(&mut out.blocks[i].shape, self.rigid_motion(Body::Block(i), d, s));
+            move_solid(
+                &mut out.blocks[i].shape,
+                self.rigid_motion(Body::Block(i), d, s),
+            );
         }
         for k in 0..out.supports.len() {
             move_solid(

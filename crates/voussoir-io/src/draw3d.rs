@@ -26,9 +26,9 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::draw::scene::{
-    auto_scale, wrap, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE, THRUST,
+    auto_scale, scale_bar, wrap, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE, THRUST,
 };
-use crate::draw::svg::{arrow, esc, human, nice, num, polygon_path, text_width, FONT};
+use crate::draw::svg::{arrow, esc, human, num, polygon_path, text_width, FONT};
 use crate::draw::MotionUnits;
 use crate::result3d::{
     add, cross, dot, norm, polygon_order, scale as vscale, small_displacement, sub, validate,
@@ -1234,31 +1234,9 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         }
         // Second row: scale bar (lengths in the picture plane), displacement scale, view.
         let y2 = y + 24.0;
-        let bar_m = nice(0.18 * size, true);
-        let bar_px = bar_m * k;
         let bx = margin;
-        let _ = writeln!(
-            o,
-            "<g stroke=\"#333333\" stroke-width=\"1.2\"><path d=\"M{x0} {ya}L{x0} {yb}M{x0} {y2}L{x1} {y2}M{x1} {ya}L{x1} {yb}\" fill=\"none\"/></g>",
-            x0 = num(bx),
-            x1 = num(bx + bar_px),
-            y2 = num(y2),
-            ya = num(y2 - 4.0),
-            yb = num(y2 + 4.0)
-        );
-        let bar_label = if bar_m >= 1.0 {
-            format!("{} m", human(bar_m, 3))
-        } else {
-            format!("{} cm", human(bar_m * 100.0, 3))
-        };
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
-            num(bx + bar_px + 8.0),
-            num(y2 + 4.5),
-            esc(&bar_label)
-        );
-        let mut tx = bx + bar_px + 8.0 + text_width(&bar_label, fs) + 30.0;
+        let bar_end = scale_bar(&mut o, bx, y2, size, k, fs);
+        let mut tx = bar_end + 30.0;
         if has_motion {
             let text = match r.units() {
                 MotionUnits::Metres => format!("displacements drawn × {}", human(scale, 4)),

@@ -130,24 +130,7 @@ impl ImportReport {
     /// Append the DXF entity to every "block N" that a message names, so that an error found
     /// later (an overlap, a block that touches nothing) points into the drawing.
     pub fn annotate(&self, msg: &str) -> String {
-        let mut out = String::with_capacity(msg.len() + 32);
-        let mut rest = msg;
-        while let Some(pos) = rest.find("block ") {
-            let (head, tail) = rest.split_at(pos + 6);
-            out.push_str(head);
-            let digits: String = tail.chars().take_while(|c| c.is_ascii_digit()).collect();
-            rest = &tail[digits.len()..];
-            out.push_str(&digits);
-            if let Some(e) = digits
-                .parse::<usize>()
-                .ok()
-                .and_then(|i| self.block_entities.get(i))
-            {
-                out.push_str(&format!(" ({e})"));
-            }
-        }
-        out.push_str(rest);
-        out
+        crate::dxf::annotate_blocks(msg, &self.block_entities)
     }
 
     /// One line: what was imported.
@@ -669,4 +652,23 @@ pub fn parse_dxf(
 pub fn is_dxf(path: &Path) -> bool {
     path.extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dxf"))
+}
+
+/// `msg` with `sources[N]` after every "block N" it names ("block 3 (LWPOLYLINE #12)"), so that
+/// an error found after import points into the file the model came from (DXF, OBJ, PLY).
+pub(crate) fn annotate_blocks(msg: &str, sources: &[String]) -> String {
+    let mut out = String::with_capacity(msg.len() + 32);
+    let mut rest = msg;
+    while let Some(pos) = rest.find("block ") {
+        let (head, tail) = rest.split_at(pos + 6);
+        out.push_str(head);
+        let digits: String = tail.chars().take_while(|c| c.is_ascii_digit()).collect();
+        rest = &tail[digits.len()..];
+        out.push_str(&digits);
+        if let Some(e) = digits.parse::<usize>().ok().and_then(|i| sources.get(i)) {
+            out.push_str(&format!(" ({e})"));
+        }
+    }
+    out.push_str(rest);
+    out
 }

@@ -88,24 +88,7 @@ pub struct MeshReport {
 impl MeshReport {
     /// `msg` with the source of every "block N" it mentions: "block 3 (OBJ object 'arch_3')".
     pub fn annotate(&self, msg: &str) -> String {
-        let mut out = String::with_capacity(msg.len() + 32);
-        let mut rest = msg;
-        while let Some(pos) = rest.find("block ") {
-            let (head, tail) = rest.split_at(pos + 6);
-            out.push_str(head);
-            let digits: String = tail.chars().take_while(|c| c.is_ascii_digit()).collect();
-            rest = &tail[digits.len()..];
-            out.push_str(&digits);
-            if let Some(e) = digits
-                .parse::<usize>()
-                .ok()
-                .and_then(|i| self.block_sources.get(i))
-            {
-                out.push_str(&format!(" ({e})"));
-            }
-        }
-        out.push_str(rest);
-        out
+        crate::dxf::annotate_blocks(msg, &self.block_sources)
     }
 
     /// One line: counts, supports, welding and face merging.

@@ -1338,30 +1338,8 @@ fn legend(
     }
     // Second row: scale bar and displacement scale.
     let y2 = y + 24.0;
-    let bar_m = nice(0.18 * size, true);
-    let bar_px = bar_m * k;
     let bx = margin;
-    let _ = writeln!(
-        o,
-        "<g stroke=\"#333333\" stroke-width=\"1.2\"><path d=\"M{x0} {ya}L{x0} {yb}M{x0} {y2}L{x1} {y2}M{x1} {ya}L{x1} {yb}\" fill=\"none\"/></g>",
-        x0 = num(bx),
-        x1 = num(bx + bar_px),
-        y2 = num(y2),
-        ya = num(y2 - 4.0),
-        yb = num(y2 + 4.0)
-    );
-    let bar_label = if bar_m >= 1.0 {
-        format!("{} m", human(bar_m, 3))
-    } else {
-        format!("{} cm", human(bar_m * 100.0, 3))
-    };
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
-        num(bx + bar_px + 8.0),
-        num(y2 + 4.5),
-        esc(&bar_label)
-    );
+    let bar_end = scale_bar(o, bx, y2, size, k, fs);
     if has_motion {
         let (lead, tail) = match units {
             MotionUnits::Metres => ("displacements drawn × ", String::new()),
@@ -1370,7 +1348,7 @@ fn legend(
                 " (normalised: live loads do unit work)".to_string(),
             ),
         };
-        let tx = bx + bar_px + 8.0 + text_width(&bar_label, fs) + 30.0;
+        let tx = bar_end + 30.0;
         let _ = writeln!(
             o,
             "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}<tspan class=\"scale-value\"{}>{}</tspan>{}</text>",
@@ -1444,4 +1422,34 @@ mod tests {
         assert_eq!(auto_scale(0.01, 0.01, 6.38), 10.0);
         assert_eq!(auto_scale(0.0, 0.0, 6.38), 1.0);
     }
+}
+
+/// The legend's scale bar at `(bx, y2)`: a bar of a round length near 18 % of the model's `size`
+/// (m) drawn at `k` pixels per metre, and its label; returns the x where the label ends.
+/// Shared by the 2D and the 3D drawings.
+pub(crate) fn scale_bar(o: &mut String, bx: f64, y2: f64, size: f64, k: f64, fs: f64) -> f64 {
+    let bar_m = nice(0.18 * size, true);
+    let bar_px = bar_m * k;
+    let _ = writeln!(
+    o,
+    "<g stroke=\"#333333\" stroke-width=\"1.2\"><path d=\"M{x0} {ya}L{x0} {yb}M{x0} {y2}L{x1} {y2}M{x1} {ya}L{x1} {yb}\" fill=\"none\"/></g>",
+    x0 = num(bx),
+    x1 = num(bx + bar_px),
+    y2 = num(y2),
+    ya = num(y2 - 4.0),
+    yb = num(y2 + 4.0)
+);
+    let bar_label = if bar_m >= 1.0 {
+        format!("{} m", human(bar_m, 3))
+    } else {
+        format!("{} cm", human(bar_m * 100.0, 3))
+    };
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
+        num(bx + bar_px + 8.0),
+        num(y2 + 4.5),
+        esc(&bar_label)
+    );
+    bx + bar_px + 8.0 + text_width(&bar_label, fs)
 }

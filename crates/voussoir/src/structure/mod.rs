@@ -647,6 +647,33 @@ pub(crate) fn check_materials(
     Ok(())
 }
 
+/// A load's block exists among the model's `nb` blocks (`what` names the load).
+pub(crate) fn check_load_block(what: &str, b: usize, nb: usize) -> Result<()> {
+    if b < nb {
+        Ok(())
+    } else {
+        model_err(format!(
+            "{what}: block {b} does not exist (the model has {nb} blocks)"
+        ))
+    }
+}
+
+/// The blocks a body load acts on (every block when the list is absent), each checked.
+pub(crate) fn body_load_blocks(
+    what: &str,
+    blocks: &Option<Vec<usize>>,
+    nb: usize,
+) -> Result<Vec<usize>> {
+    let list: Vec<usize> = match blocks {
+        Some(v) => v.clone(),
+        None => (0..nb).collect(),
+    };
+    for &b in &list {
+        check_load_block(what, b, nb)?;
+    }
+    Ok(list)
+}
+
 /// A support's name is non-empty and unique, its motion finite.
 pub(crate) fn check_support<'a>(
     i: usize,
@@ -687,18 +714,9 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
         let kind = if live { "live" } else { "dead" };
         for (n, l) in list.iter().enumerate() {
             let what = format!("{kind} load {n}");
-            let check_block = |b: usize| {
-                if b < nb {
-                    Ok(())
-                } else {
-                    model_err(format!(
-                        "{what}: block {b} does not exist (the model has {nb} blocks)"
-                    ))
-                }
-            };
             match l {
                 Load::Point { block, at, force } => {
-                    check_block(*block)?;
+                    check_load_block(&what, *block, nb)?;
                     if !finite(&[*at, *force]) {
                         return model_err(format!("{what}: a value is not a finite number"));
                     }
@@ -715,7 +733,7 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
                     q,
                     per,
                 } => {
-                    check_block(*block)?;
+                    check_load_block(&what, *block, nb)?;
                     let b = &st.blocks[*block];
                     // Edge numbering refers to the block's polygon as given; the polygon was
                     // possibly reversed, so find the edge by its end points.
@@ -746,12 +764,7 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
                     if !finite(&[*coefficients]) {
                         return model_err(format!("{what}: a coefficient is not a finite number"));
                     }
-                    let list: Vec<usize> = match blocks {
-                        Some(v) => v.clone(),
-                        None => (0..nb).collect(),
-                    };
-                    for b in list {
-                        check_block(b)?;
+                    for b in body_load_blocks(&what, blocks, nb)? {
                         let w = st.blocks[b].weight;
                         out.push(AppliedLoad {
                             block: b,

@@ -7,7 +7,10 @@
 //! `(u, v, w, θx, θy, θz)` at its centroid; each vertex of a contact polygon is a collocation
 //! point (an opening and two slips), so a joint carries torsion through its vertices.
 
-use super::{check_materials, check_support, relative_tolerance, Assembly, Body, BuildOptions};
+use super::{
+    body_load_blocks, check_load_block, check_materials, check_support, relative_tolerance,
+    Assembly, Body, BuildOptions,
+};
 use crate::dim::{cross3, Dim, Three};
 use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
 use crate::error::{model_err, Error, Result};
@@ -268,15 +271,6 @@ impl Structure3d {
             let kind = if live { "live" } else { "dead" };
             for (n, l) in list.iter().enumerate() {
                 let what = format!("{kind} load {n}");
-                let check_block = |b: usize| {
-                    if b < nb {
-                        Ok(())
-                    } else {
-                        model_err(format!(
-                            "{what}: block {b} does not exist (the model has {nb} blocks)"
-                        ))
-                    }
-                };
                 match l {
                     Load3d::Point {
                         block,
@@ -284,7 +278,7 @@ impl Structure3d {
                         force,
                         moment,
                     } => {
-                        check_block(*block)?;
+                        check_load_block(&what, *block, nb)?;
                         if !finite3(&[*at, *force, *moment]) {
                             return model_err(format!("{what}: a value is not a finite number"));
                         }
@@ -302,7 +296,7 @@ impl Structure3d {
                         q,
                         per,
                     } => {
-                        check_block(*block)?;
+                        check_load_block(&what, *block, nb)?;
                         let given = &model.blocks[*block];
                         let Some(f) = given.faces.get(*face) else {
                             return model_err(format!("{what}: block {block} has no face {face}"));
@@ -333,12 +327,7 @@ impl Structure3d {
                                 "{what}: a coefficient is not a finite number"
                             ));
                         }
-                        let list: Vec<usize> = match blocks {
-                            Some(v) => v.clone(),
-                            None => (0..nb).collect(),
-                        };
-                        for b in list {
-                            check_block(b)?;
+                        for b in body_load_blocks(&what, blocks, nb)? {
                             let w = self.blocks[b].weight;
                             out.push(AppliedLoad3d {
                                 block: b,

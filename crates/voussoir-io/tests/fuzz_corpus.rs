@@ -1,0 +1,104 @@
+//! The fuzz corpus replayed on stable: every file of `fuzz/corpus/<target>/` and of
+//! `fuzz/regressions/<target>/` (the crashes the fuzzer found, kept after their fix) goes
+//! through the code path of its fuzz target (`fuzz/src/lib.rs`, included here as it is), which
+//! panics on a panic inside voussoir or on an error that is not one line. An `Err` is fine.
+//! The corpus must be there: a missing or empty corpus folder fails the test.
+//! See docs/fuzzing.md.
+
+#[path = "../../../fuzz/src/lib.rs"]
+#[allow(dead_code)]
+mod targets;
+
+use std::path::{Path, PathBuf};
+
+fn fuzz_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz")
+}
+
+fn files(dir: &Path) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| p.is_file())
+        .collect();
+    v.sort();
+    v
+}
+
+/// Run `target` on every file of `dir`; the files that panicked, with the panic's message.
+fn replay(target: fn(&[u8]), dir: &Path) -> Vec<String> {
+    let mut failed = Vec::new();
+    for f in files(dir) {
+        let data = std::fs::read(&f).expect("readable corpus file");
+        if let Err(e) = std::panic::catch_unwind(|| target(&data)) {
+            let msg = e
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            failed.push(format!("{}: {msg}", f.display()));
+        }
+    }
+    failed
+}
+
+fn target(name: &str) -> fn(&[u8]) {
+    targets::TARGETS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .unwrap_or_else(|| panic!("no fuzz target {name}"))
+        .1
+}
+
+/// Replay the corpus (required, non-empty) and the regressions (if any) of one target.
+fn corpus(name: &str) {
+    let dir = fuzz_dir().join("corpus").join(name);
+    assert!(
+        dir.is_dir(),
+        "the fuzz corpus {} is missing (see docs/fuzzing.md)",
+        dir.display()
+    );
+    let n = files(&dir).len();
+    assert!(n > 0, "the fuzz corpus {} is empty", dir.display());
+    let mut failed = replay(target(name), &dir);
+    let crashes = fuzz_dir().join("regressions").join(name);
+    if crashes.is_dir() {
+        failed.extend(replay(target(name), &crashes));
+    }
+    assert!(
+        failed.is_empty(),
+        "{} of the {n} corpus files of '{name}' (and its regressions) panic:\n{}",
+        failed.len(),
+        failed.join("\n")
+    );
+}
+
+#[test]
+fn fuzz_corpus_model_replays_without_panic() {
+    corpus("model");
+}
+
+#[test]
+fn fuzz_corpus_dxf_replays_without_panic() {
+    corpus("dxf");
+}
+
+#[test]
+fn fuzz_corpus_mesh_replays_without_panic() {
+    corpus("mesh");
+}
+
+#[test]
+fn fuzz_corpus_motion_replays_without_panic() {
+    corpus("motion");
+}
+
+#[test]
+fn every_fuzz_target_has_a_corpus() {
+    for (name, _) in targets::TARGETS {
+        assert!(
+            fuzz_dir().join("corpus").join(name).is_dir(),
+            "fuzz target {name} has no corpus folder"
+        );
+    }
+}

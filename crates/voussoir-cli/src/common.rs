@@ -19,7 +19,8 @@ pub struct Fail(pub String);
 
 impl std::fmt::Display for Fail {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        // One line whatever names or values from the user it quotes.
+        f.write_str(&voussoir::error::one_line(&self.0))
     }
 }
 impl From<voussoir::Error> for Fail {

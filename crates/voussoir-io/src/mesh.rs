@@ -129,7 +129,7 @@ pub fn read_mesh(path: &Path, opts: &MeshOptions) -> Result<(Model3d, MeshReport
     } else {
         parse_obj(&bytes, opts, &file)
     };
-    r.map_err(|e| IoError(format!("{}: {}", path.display(), e.0)))
+    r.map_err(|e| IoError(format!("{}: {}", path.display(), e.0)).one_line())
 }
 
 /// A body as read: a name, vertices and faces (vertex index lists).
@@ -144,6 +144,14 @@ struct RawBody {
 /// splits an object) are joined. A file without any `o`/`g` is split into its connected parts
 /// like a PLY.
 pub fn parse_obj(
+    bytes: &[u8],
+    opts: &MeshOptions,
+    file: &str,
+) -> Result<(Model3d, MeshReport), IoError> {
+    parse_obj_inner(bytes, opts, file).map_err(IoError::one_line)
+}
+
+fn parse_obj_inner(
     bytes: &[u8],
     opts: &MeshOptions,
     file: &str,
@@ -229,6 +237,14 @@ pub fn parse_obj(
 /// `vertex_indices` (or `vertex_index`). Each set of faces connected through shared vertex
 /// indices is a body `part_K` (K from 0, in the order of their first face).
 pub fn parse_ply(
+    bytes: &[u8],
+    opts: &MeshOptions,
+    file: &str,
+) -> Result<(Model3d, MeshReport), IoError> {
+    parse_ply_inner(bytes, opts, file).map_err(IoError::one_line)
+}
+
+fn parse_ply_inner(
     bytes: &[u8],
     opts: &MeshOptions,
     file: &str,

@@ -36,6 +36,10 @@ pub struct Motion {
 /// One `--move NAME=u,v[,θ]` or `NAME=u,v,w[,θx,θy,θz]`: the support's name and the values
 /// (with whether each carried a length unit), 2, 3 or 6 finite numbers.
 pub fn parse_move(m: &str) -> Result<(String, Vec<(f64, bool)>), IoError> {
+    parse_move_inner(m).map_err(IoError::one_line)
+}
+
+fn parse_move_inner(m: &str) -> Result<(String, Vec<(f64, bool)>), IoError> {
     let (name, vals) = m.split_once('=').ok_or_else(|| {
         IoError(format!(
             "--move {m}: expected NAME=u,v[,θ] (2D) or NAME=u,v,w[,θx,θy,θz] (3D)"
@@ -71,6 +75,10 @@ pub fn parse_move(m: &str) -> Result<(String, Vec<(f64, bool)>), IoError> {
 /// Parse the command-line form of a settlement profile: `uniform:X0,X1,V`,
 /// `linear:X0,V0,X1,V1` or `table:X,V;X,V;…` (metres).
 pub fn parse_profile(s: &str) -> Result<Profile, IoError> {
+    parse_profile_inner(s).map_err(IoError::one_line)
+}
+
+fn parse_profile_inner(s: &str) -> Result<Profile, IoError> {
     let bad = || {
         IoError(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"))
     };
@@ -140,6 +148,10 @@ impl Motion {
     /// move is `u, v[, θ]`, in 3D `u, v, w[, θx, θy, θz]` (lengths in m or with a unit, angles
     /// in degrees).
     pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), IoError> {
+        self.apply_inner(model).map_err(IoError::one_line)
+    }
+
+    fn apply_inner<M: ModelSupports>(&self, model: &mut M) -> Result<(), IoError> {
         let lengths = M::MOTION / 2 + usize::from(M::MOTION == 3);
         for f in &self.fixed {
             fix_support(model, f)?;

@@ -102,3 +102,55 @@ fn every_fuzz_target_has_a_corpus() {
         );
     }
 }
+
+// ── One test per finding (docs/fuzzing.md, "Findings") ─────────────────────────────────────
+
+fn regression(target: &str, file: &str) -> Vec<u8> {
+    let p = fuzz_dir().join("regressions").join(target).join(file);
+    std::fs::read(&p).unwrap_or_else(|e| panic!("cannot read {}: {e}", p.display()))
+}
+
+#[test]
+fn dxf_bulge_of_a_near_full_circle_does_not_exhaust_memory() {
+    // A bulge of 776979 (359.9997° of arc) makes one voussoir of the LACT3 arch a polygon of
+    // radius ~10⁷ m; the overlap check's grid then needed ~10¹⁸ cells (out of memory).
+    let d = regression("dxf", "oom-bulge-near-full-circle-giant-block.dxf");
+    targets::dxf(&d);
+    let opts = voussoir_io::dxf::DxfOptions {
+        units: Some(voussoir_io::dxf::Units::Mm),
+        ..Default::default()
+    };
+    let (m, _) = voussoir_io::dxf::parse_dxf(&d, &opts, "t.dxf").expect("the drawing reads");
+    let e = voussoir::Structure::new(&m, voussoir::BuildOptions::default())
+        .expect_err("the giant arc overlaps its neighbours")
+        .to_string();
+    assert!(e.contains("overlap") && !e.contains('\n'), "{e}");
+}
+
+#[test]
+fn dxf_error_quoting_a_code_pair_with_a_line_break_is_one_line() {
+    // A binary DXF whose section name holds a line feed: the dxf crate's message quotes it.
+    let d = regression("dxf", "crash-binary-dxf-error-quotes-a-line-break.dxf");
+    targets::dxf(&d);
+    let e = voussoir_io::dxf::parse_dxf(&d, &Default::default(), "t.dxf")
+        .unwrap_err()
+        .0;
+    assert!(
+        e.starts_with("cannot read t.dxf as DXF: ")
+            && e.contains("0SECTION\\n4B")
+            && !e.contains('\n'),
+        "{e}"
+    );
+}
+
+#[test]
+fn json_unknown_field_with_a_line_break_is_named_on_one_line() {
+    // Found while fixing the one above: serde quotes an unknown field as written.
+    let text = r#"{"blocks": [], "supports": [], "a\nb": 1}"#;
+    targets::model(text.as_bytes());
+    let e = voussoir::model3d::AnyModel::from_json(text).unwrap_err();
+    assert!(
+        e.starts_with("unknown field `a\\nb`") && !e.contains('\n'),
+        "{e}"
+    );
+}

@@ -162,7 +162,25 @@ fn parse_obj_inner(
         ignore_points: true,
         ignore_lines: true,
     };
-    let mut reader = std::io::Cursor::new(bytes);
+    // Texture coordinates (`vt`) and normals (`vn`) are not used: they are dropped before
+    // tobj sees the file, which keeps it away from its unchecked arithmetic on their indices
+    // (`f 1/-11` with one `vt` overflows in tobj 4.0.5). A file that is not UTF-8 text fails
+    // as tobj would fail it.
+    let text = std::str::from_utf8(bytes).map_err(|_| {
+        IoError(format!(
+            "not a readable OBJ file ({})",
+            tobj::LoadError::ReadError
+        ))
+    })?;
+    let geometry: Vec<&str> = text
+        .split('\n')
+        .map(|l| match l.split_whitespace().next() {
+            Some("vt" | "vn") => "",
+            _ => l,
+        })
+        .collect();
+    let geometry = geometry.join("\n");
+    let mut reader = std::io::Cursor::new(geometry.as_bytes());
     // Materials are not used: the loader for `mtllib` files reports them missing.
     let (models, _) =
         tobj::load_obj_buf(&mut reader, &load, |_| Err(tobj::LoadError::OpenFileFailed))

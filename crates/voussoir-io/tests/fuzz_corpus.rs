@@ -154,3 +154,23 @@ fn json_unknown_field_with_a_line_break_is_named_on_one_line() {
         "{e}"
     );
 }
+
+#[test]
+fn obj_relative_texture_index_out_of_range_is_ignored_not_an_overflow() {
+    // `f 2/1/1 3/-11 7/1/1` with one `vt`: tobj 4.0.5 turns the relative index into a huge
+    // one and multiplies it unchecked (a panic with overflow checks, as in the fuzz build; in
+    // release "face texcoord index out of bounds", about data voussoir does not use). Texture
+    // coordinates are dropped before tobj: the file is judged on its geometry.
+    let d = regression(
+        "mesh",
+        "crash-obj-relative-texture-index-overflows-in-tobj.obj",
+    );
+    targets::mesh(&d);
+    let e = voussoir_io::mesh::parse_obj(&d, &Default::default(), "t.obj")
+        .unwrap_err()
+        .0;
+    assert!(
+        e.starts_with("OBJ object 'support_slab': not a manifold surface") && !e.contains('\n'),
+        "{e}"
+    );
+}

@@ -49,13 +49,13 @@ const PASSES: usize = 8;
 /// cosine 6·10⁻¹⁷ of a right angle — and do not steer the scaling.
 const ROUND_OFF: f64 = 1e-12;
 
-/// The power of two nearest to `x` (in the logarithm), within `2^±400`; 1 for zero, infinite
+/// The power of two nearest to `x` (in the logarithm), within `2^±1000`; 1 for zero, infinite
 /// or NaN values.
 fn pow2(x: f64) -> f64 {
     if !(x.is_finite() && x > 0.0) {
         return 1.0;
     }
-    let e = x.log2().round().clamp(-400.0, 400.0) as i32;
+    let e = x.log2().round().clamp(-1000.0, 1000.0) as i32;
     2f64.powi(e)
 }
 
@@ -247,7 +247,12 @@ mod tests {
             lp.add_column(b, 0.0, f64::INFINITY, [(r0, a), (r1, 3.0 * a)]);
             lp.add_column(b, 0.0, f64::INFINITY, [(r0, 2.0 * a), (r1, a)]);
             let s = solve(&lp, &SolverOptions::default()).unwrap();
-            assert_eq!(s.status, LpStatus::Optimal);
+            assert_eq!(
+                s.status,
+                LpStatus::Optimal,
+                "{e}: {:?}",
+                Scaling::of(&lp, &[])
+            );
             let rel = |v: f64, r: f64| ((v - r) / r).abs();
             assert!(
                 rel(s.x[0], 1.6) < 1e-12 && rel(s.x[1], 1.2) < 1e-12,

@@ -229,32 +229,44 @@ fn force_scale(map: &KinematicMap, loads: &[f64]) -> f64 {
         .sum()
 }
 
-/// Where the vertices of a joint's crushing polygon lie: `0` and `K` forces rising
-/// geometrically to the top `top = min(f_c·w·t, reach × scale)`, the lowest at `top / 4096` or
-/// `scale / 64`, whichever is higher (so the chords are fine where the joint forces are, about
-/// the loads' force `scale`, whatever f_c). Returns the vertices and whether the top is a cap
-/// below the crushing force.
+/// Where the vertices of a joint's crushing polygon lie, for `k` facets: at 0 and at forces
+/// rising geometrically from `low` to `top = min(f_c w t, reach × scale)` — where the joint
+/// forces are (about the loads' force `scale`), not spread evenly to the crushing force, so
+/// that as f_c → ∞ the polygon tends to the rigid `|M| ≤ N t/2` at any facet count. Between
+/// two vertices in the ratio `r` the chord cuts the eccentricity `t/2 − N/(2 f_c w)` by at
+/// most `(√r − 1)²/√r` of the crushing term itself; below `low = max(top / k², scale / 64)` by
+/// at most `low / (2 f_c w)`. When `top` is below f_c w t (returned `true`), a cap `N ≤ top`
+/// closes the polygon. When `top` is above the peak of the parabola `N = f_c w t / 2` (the
+/// largest moment a joint carries), the peak is the top of the geometric part and a quarter of
+/// the facets cover `[f_c w t / 2, top]` evenly.
 pub fn crushing_vertices(nmax: f64, scale: f64, reach: f64, k: usize) -> (Vec<f64>, bool) {
-    let top = if scale > 0.0 && reach * scale < nmax {
-        reach * scale
+    let k = k.max(1);
+    let capped = scale > 0.0 && reach * scale < nmax;
+    let end = if capped { reach * scale } else { nmax };
+    let (top, k_hi) = if nmax / 2.0 < end && k > 1 {
+        (nmax / 2.0, (k / 4).max(1).min(k - 1))
     } else {
-        nmax
+        (end, 0)
     };
-    let low = (top / 4096.0).max(scale / 64.0).min(top / k.max(1) as f64);
+    let k_lo = k - k_hi;
+    let low = (top / (k_lo * k_lo) as f64)
+        .max(scale / 64.0)
+        .min(top / k_lo as f64);
     let mut v = vec![0.0];
-    if k == 1 {
+    if k_lo == 1 {
         v.push(top);
     } else {
-        let ratio = (top / low).powf(1.0 / (k - 1) as f64);
-        v.extend((0..k).map(|i| {
-            if i + 1 == k {
+        let ratio = (top / low).powf(1.0 / (k_lo - 1) as f64);
+        v.extend((0..k_lo).map(|i| {
+            if i + 1 == k_lo {
                 top
             } else {
                 low * ratio.powi(i as i32)
             }
         }));
     }
-    (v, top < nmax)
+    v.extend((1..=k_hi).map(|i| top + (end - top) * i as f64 / k_hi as f64));
+    (v, capped)
 }
 
 /// Finite compressive strength: `|M| ≤ N (t/2 − N / (2 f_c w))` per joint (rectangular stress

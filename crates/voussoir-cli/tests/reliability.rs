@@ -227,3 +227,36 @@ fn symlinked_and_mode_600_outputs_keep_their_link_and_mode() {
         serde_json::from_str(&std::fs::read_to_string(&real).unwrap()).unwrap();
     assert!((v["load_multiplier"].as_f64().unwrap() - 0.434645).abs() < 1e-6);
 }
+
+/// A few tries of every class of `scripts/reliability.sh` (the script that writes
+/// docs/reliability.md): no panic, no wrong or silent answer, no partial file. Needs python3,
+/// which the script is written in.
+#[test]
+fn reliability_script_quick_subset_has_no_panic_wrong_answer_or_partial_file() {
+    if Command::new("python3").arg("--version").output().is_err() {
+        eprintln!("python3 not found: the reliability script is not run");
+        return;
+    }
+    let script = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scripts/reliability.sh");
+    let o = Command::new("bash")
+        .arg(script)
+        .arg("--quick")
+        .env("VOUSSOIR", env!("CARGO_BIN_EXE_voussoir"))
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{out}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let all = out.lines().find(|l| l.starts_with("| **all**")).unwrap();
+    // tried, clean error, accepted, warned, panic, wrong/silent, partial file
+    let n: Vec<u64> = all
+        .split('|')
+        .skip(2)
+        .filter_map(|c| c.trim().trim_matches('*').parse().ok())
+        .collect();
+    assert_eq!(n.len(), 7, "{all}");
+    assert!(n[0] >= 60 && n[4] == 0 && n[5] == 0 && n[6] == 0, "{out}");
+}

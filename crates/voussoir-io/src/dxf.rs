@@ -665,9 +665,14 @@ fn units_warning(
         return None;
     }
     let raw = median / units.scale();
+    // The plausible units that bring the median closest to a typical 0.3 m block.
     let better = [Units::Mm, Units::Cm, Units::M]
         .into_iter()
-        .find(|u| (lo..=hi).contains(&(raw * u.scale())) && *u != units);
+        .filter(|u| (lo..=hi).contains(&(raw * u.scale())) && *u != units)
+        .min_by(|a, b| {
+            let d = |u: &Units| (raw * u.scale() / 0.3).ln().abs();
+            d(a).total_cmp(&d(b))
+        });
     let hint = match better {
         Some(u) => format!("if it is drawn in {}, pass --units {}", u.name(), u.name()),
         None => "pass --units mm|cm|m if its coordinates are in other units".to_string(),

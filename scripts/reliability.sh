@@ -281,6 +281,7 @@ MISUSE = [
     ["incremental", "half.json", "--control", "0,319"],
     ["incremental", "half.json", "--control", "0,3.19", "--max", "5mm", "--step", "1e-12mm"],
     ["incremental", "half.json", "--control", "0,3.19", "--step", "0"],
+    ["incremental", "half.json", "--control", "0,3.19", "--max", "5m", "--step", "0.001mm"],
     ["incremental", "half.json", "--control", "0,3.19", "--max", "-1mm"],
     ["sweep", "dead.json", "--move", "right=0.01,0", "--samples", "100000000", "--jsonl", "sw.jsonl"],
     ["sweep", "dead.json", "--move", "right=0.01,0", "--steps", "100000000", "--jsonl", "sw.jsonl"],
@@ -502,6 +503,7 @@ Work that grows with a count given on the command line is bounded before any sol
 | `--facets` (crushing polygon) | 2 … 4,096 | one-line error |
 | `capacity --steps` | 1 … 100,000 | one-line error |
 | `incremental --max / --step` | at most 100,000 steps | one-line error |
+| `incremental --step` | at least 1e-10 of the structure's size (else the moved coordinates cannot record it) | one-line error |
 | `sweep` analyses | 1,000,000 per run (their records are kept in memory, about 1 kB each), 10⁹ in all | one-line error naming the number of `--shard`s needed |
 | incremental control point | within 2 % of the model's size from the nearest block | one-line error |
 | DXF block size with units from `$INSUNITS` | median block 5 mm … 20 m | one-line warning naming the units that fit |

@@ -151,11 +151,22 @@ fn huge_step_counts_and_sweep_sizes_are_refused_before_any_work() {
         "--control",
         "0,3.19",
         "--max",
+        "5m",
+        "--step",
+        "0.001mm",
+    ]));
+    assert!(e.contains("5000000 steps") && e.contains("100000"), "{e}");
+    let e = one_error_line(&run(&[
+        "incremental",
+        s(&half),
+        "--control",
+        "0,3.19",
+        "--max",
         "5mm",
         "--step",
         "1e-12mm",
     ]));
-    assert!(e.contains("steps") && e.contains("100000"), "{e}");
+    assert!(e.contains("too small for the geometry"), "{e}");
     let e = one_error_line(&run(&[
         "capacity",
         s(&m),

@@ -460,7 +460,8 @@ fn conic_crushing_is_robust_from_1e4_to_1e12_kpa() {
 }
 
 /// Regression: `--max 5mm --step 1e-12mm` ran 100,000 solves (minutes) before stopping; the
-/// step count is now checked before any work.
+/// step count is checked before any work, and a step too small for the coordinates to record
+/// (below 1e-10 of the structure's size) is refused.
 #[test]
 fn incremental_steps_beyond_the_bound_are_refused_before_any_work() {
     use voussoir::analysis::incremental::{incremental, Control, IncrementalOptions};
@@ -471,19 +472,27 @@ fn incremental_steps_beyond_the_bound_are_refused_before_any_work() {
     .unwrap();
     let st = Structure::new(&m, BuildOptions::default()).unwrap();
     let c = Control::nearest(&st, [0.0, 3.19], [1.0, 0.0]).unwrap();
-    let e = incremental(
-        &st,
-        &c,
-        &IncrementalOptions {
-            step: 5e-15,
-            max_displacement: 5e-3,
-            ..Default::default()
-        },
-    )
-    .unwrap_err();
-    let msg = e.to_string();
+    let run = |step: f64, max_displacement: f64| {
+        incremental(
+            &st,
+            &c,
+            &IncrementalOptions {
+                step,
+                max_displacement,
+                ..Default::default()
+            },
+        )
+        .unwrap_err()
+        .to_string()
+    };
+    let msg = run(1e-6, 5.0);
     assert!(
-        msg.contains("1000000000000 steps") && msg.contains("100000"),
+        msg.contains("5000000 steps") && msg.contains("100000"),
+        "{msg}"
+    );
+    let msg = run(5e-15, 5e-3);
+    assert!(
+        msg.contains("step 5.000e-15 m") && msg.contains("1e-10"),
         "{msg}"
     );
 }

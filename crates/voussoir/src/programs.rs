@@ -20,7 +20,7 @@
 //! | settlement, motion form (primal): `max F_D·d`, `N d + g_n ≥ 0`, `T d + g_t = 0` | (62)–(66) | [`settlement_motion_program`] |
 //! | limit analysis, static: `max λ`, `F_D + λF_L + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` | Remark 3 | [`limit_force_program`] (and [`limit_force_program_fixed_topology`] for warm-started sequences) |
 //! | limit analysis, kinematic: `F_L·d = 1`, `λ = −F_D·d` | Remark 3 | the row duals of the static program ([`crate::analysis::limit`]) |
-//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`] |
+//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`], [`settlement_force_program_conic`] |
 //! | a dead-load ray (no λ in equilibrium) | — | [`dead_load_ray_program`] |
 //!
 //! Every analysis, the benchmark and the sweeps call these builders; nothing else assembles a
@@ -336,15 +336,33 @@ pub fn limit_force_program_fixed_topology(
 }
 
 /// [`limit_force_program`] with the exact crushing domain: no inscribed chords; each joint of
-/// finite strength gets the two rotated cones
-/// ```text
-///   N² ≤ 2 f_c w · (N t/2 ∓ M)      ⇔      ‖(N, (r − f_c w)/√2)‖ ≤ (r + f_c w)/√2,  r = N t/2 ∓ M
-/// ```
-/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly.
+/// finite strength gets the two rotated cones of [`crushing_cones`].
 pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64]) -> ForceProgram {
     let mut m = map.clone();
     m.facets = 0;
     let mut fp = limit_force_program(&m, dead, live);
+    crushing_cones(map, &mut fp);
+    fp
+}
+
+/// [`settlement_force_program`] with the exact crushing domain of [`limit_force_program_conic`]
+/// instead of the inscribed polygon: `min g·p` over forces in equilibrium with the dead loads
+/// whose joint resultants lie in `|M| ≤ N (t/2 − N/(2 f_c w))`. Its mechanism is read from the
+/// equilibrium rows' duals (there is no LP dual to build).
+pub fn settlement_force_program_conic(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
+    let mut m = map.clone();
+    m.facets = 0;
+    let mut fp = settlement_force_program(&m, dead);
+    crushing_cones(map, &mut fp);
+    fp
+}
+
+/// The two rotated cones of every joint of finite strength, appended to `fp`:
+/// ```text
+///   N² ≤ 2 f_c w · (N t/2 ∓ M)      ⇔      ‖(N, (r − f_c w)/√2)‖ ≤ (r + f_c w)/√2,  r = N t/2 ∓ M
+/// ```
+/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly.
+fn crushing_cones(map: &KinematicMap, fp: &mut ForceProgram) {
     let r2 = std::f64::consts::SQRT_2;
     for (law, nmax, range) in crushing_joints(map) {
         let t = law.depth;
@@ -363,7 +381,6 @@ pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64])
                 .push([(r_row.clone(), fw / r2), (n_row, 0.0), (r_row, -fw / r2)]);
         }
     }
-    fp
 }
 
 /// [`limit_force_program`] with the exact friction cone `‖p_t‖ ≤ μ p_n + c` at every point of

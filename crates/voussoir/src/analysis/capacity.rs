@@ -45,7 +45,9 @@
 //! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
 
-use crate::analysis::limit::{LimitSolution, LimitStatus, WarmLimit};
+use crate::analysis::limit::{
+    check_facets, Crushing, LimitSolution, LimitStatus, WarmLimit, DEFAULT_FACETS,
+};
 use crate::analysis::settlement::{SettlementPath, SettlementStatus};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
@@ -71,6 +73,11 @@ pub struct CapacityOptions {
     /// condition); the analyses that follow it use unilateral contact at every support. Default
     /// true; false keeps the blocks tied to their fixed supports.
     pub release_fixed: bool,
+    /// Finite compressive strength: inscribed polygon (LPs) or the exact cone (Clarabel), in
+    /// the settlement and in every limit analysis of the curve.
+    pub crushing: Crushing,
+    /// Facets of the inscribed crushing polygon ([`Crushing::Linear`]).
+    pub facets: usize,
     pub solver: SolverOptions,
 }
 
@@ -82,6 +89,8 @@ impl Default for CapacityOptions {
             hot_start: true,
             mechanisms: true,
             release_fixed: true,
+            crushing: Crushing::Linear,
+            facets: DEFAULT_FACETS,
             solver: SolverOptions::default(),
         }
     }
@@ -136,7 +145,8 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             "capacity analysis needs live loads (the model has none)".into(),
         ));
     }
-    let path = SettlementPath::new(st, &opts.solver)?;
+    check_facets(opts.facets)?;
+    let path = SettlementPath::with_crushing(st, &opts.solver, opts.crushing, opts.facets)?;
     let smax = path.max_settlement;
     let direction: Vec<SupportDirection> = (0..path.unit.num_supports())
         .filter(|&k| path.unit.support_motion(k).iter().any(|&x| x != 0.0))
@@ -170,7 +180,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     );
     let srep = report(&path.unit, &umap, &path.mechanism, 1.0, &pn0, &pt0);
 
-    let mut warm = WarmLimit::new(&opts.solver, opts.hot_start);
+    let mut warm = WarmLimit::new(&opts.solver, opts.hot_start).with_crushing(opts.crushing);
     let mut curve = Vec::with_capacity(opts.steps + 1);
     let mut mechanisms = Vec::new();
     let mut values = Vec::with_capacity(opts.steps + 1);
@@ -181,7 +191,8 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         if opts.release_fixed {
             dst.release_fixed();
         }
-        let map = KinematicMap::new(&dst);
+        let mut map = KinematicMap::new(&dst);
+        map.facets = opts.facets;
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
         // columns, same options, no starting basis), so λ(0) is the plain limit analysis
         // exactly, and its basis starts the next step.
@@ -225,7 +236,8 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
                         if opts.release_fixed {
                             dst.release_fixed();
                         }
-                        let map = KinematicMap::new(&dst);
+                        let mut map = KinematicMap::new(&dst);
+                        map.facets = opts.facets;
                         Ok(signed_lambda(&w.solve(&dst, &map)?))
                     };
                     zero = Some(illinois(

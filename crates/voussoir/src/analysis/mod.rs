@@ -5,7 +5,7 @@ pub mod nonassociative;
 pub mod settlement;
 pub mod tilt;
 
-pub use limit::{limit, LimitResult, LimitStatus};
+pub use limit::{limit, Crushing, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};
 pub mod capacity;
 pub mod identify;

@@ -17,6 +17,7 @@
 //! Both LPs are homogeneous of degree one in the prescribed motions, so every displacement of
 //! the result is proportional to the settlement magnitude and the forces do not depend on it.
 
+use crate::analysis::limit::{check_facets, Crushing, DEFAULT_FACETS};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, LpStatus, SolverOptions};
@@ -97,6 +98,62 @@ pub fn solve_settlement<S: Assembly>(
         dual: dval,
         solver: opts.info(),
     })
+}
+
+/// The settlement analysis with the exact crushing domain (second-order cones; Clarabel)
+/// instead of its inscribed polygon ([`programs::settlement_force_program_conic`]). The forces
+/// come from the program's primal, the mechanism from its equilibrium duals; the value on the
+/// mechanism's side is the solver's dual objective, which includes the crushing dissipation
+/// (as the motion LP's optimum does with the polygon), so the duality gap still certifies the
+/// pair. Without finite strength it is the settlement LP solved by an interior point.
+pub fn solve_settlement_conic<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<SettlementSolution> {
+    let fp = programs::settlement_force_program_conic(map, &st.load_vector(false));
+    let o = SolverOptions {
+        feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
+        ..*opts
+    };
+    let sol = fp.solve(&o)?;
+    let solver = lp::SolverInfo {
+        solver: lp::cone_backend(&o).name().to_string(),
+        method: lp::Method::Clarabel,
+    };
+    let mut s = settlement_from_force_solution(st, map, &fp, &sol, solver);
+    if s.status == SettlementStatus::Mechanism && sol.dual_objective.is_finite() {
+        s.primal = sol.dual_objective;
+    }
+    Ok(s)
+}
+
+/// The settlement solution under a choice of crushing model: the inscribed polygon of
+/// `facets` chords (the LP pair) or the exact cone.
+pub fn solve_settlement_crushing<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+    crushing: Crushing,
+) -> Result<SettlementSolution> {
+    match crushing {
+        Crushing::Linear => solve_settlement(st, map, opts),
+        Crushing::Conic => solve_settlement_conic(st, map, opts),
+    }
+}
+
+/// [`settle`] with a choice of crushing model and facet count (as [`crate::analysis::limit::limit_with`]).
+pub fn settle_crushing<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    crushing: Crushing,
+    facets: usize,
+) -> Result<SettlementResult<S::D>> {
+    check_facets(facets)?;
+    let mut map = KinematicMap::new(st);
+    map.facets = facets;
+    let s = solve_settlement_crushing(st, &map, opts, crushing)?;
+    Ok(settlement_result(st, &map, &s))
 }
 
 /// Settlement analysis of a structure whose supports carry their prescribed motions.
@@ -334,6 +391,16 @@ pub struct SettlementPath<S: Assembly = Structure> {
 
 impl<S: Assembly> SettlementPath<S> {
     pub fn new(st: &S, solver: &SolverOptions) -> Result<SettlementPath<S>> {
+        Self::with_crushing(st, solver, Crushing::Linear, DEFAULT_FACETS)
+    }
+
+    /// [`SettlementPath::new`] with a choice of crushing model and facet count.
+    pub fn with_crushing(
+        st: &S,
+        solver: &SolverOptions,
+        crushing: Crushing,
+        facets: usize,
+    ) -> Result<SettlementPath<S>> {
         let mag = st.settlement_magnitude();
         if !(mag.is_finite() && mag > 0.0) {
             return Err(Error::Request(
@@ -344,8 +411,9 @@ impl<S: Assembly> SettlementPath<S> {
             .map(|s| st.support_motion(s).iter().map(|x| x / mag).collect())
             .collect();
         let unit = st.with_support_motions(&motions);
-        let map = KinematicMap::new(&unit);
-        let sol = solve_settlement(&unit, &map, solver)?;
+        let mut map = KinematicMap::new(&unit);
+        map.facets = facets;
+        let sol = solve_settlement_crushing(&unit, &map, solver, crushing)?;
         let (openings, open_tol) = if sol.status == SettlementStatus::Mechanism {
             unit.joint_openings(&map, &sol.mechanism, 1.0)
         } else {

@@ -70,6 +70,23 @@ impl ForceProgram {
         normal_cost: impl Fn(usize) -> f64,
         tangent_cost: impl Fn(usize) -> f64,
     ) -> ForceProgram {
+        Self::build(map, dead, live, direction, normal_cost, tangent_cost, false)
+    }
+
+    /// [`ForceProgram::new`]; with `closable_gaps` a point with a gap `Δ` (an existing crack)
+    /// is a unilateral contact that must first close: a normal force column (no shear: an open
+    /// crack slides freely) whose cost gains `Δ`, so that the motion program reads
+    /// `N d + g_n + Δ ≥ 0` (the paper's (42) and (58)). Without it such a point carries
+    /// nothing, as an infinitesimal mechanism cannot close a finite gap (limit analysis).
+    fn build(
+        map: &KinematicMap,
+        dead: &[f64],
+        live: Option<&[f64]>,
+        direction: Direction,
+        normal_cost: impl Fn(usize) -> f64,
+        tangent_cost: impl Fn(usize) -> f64,
+        closable_gaps: bool,
+    ) -> ForceProgram {
         let nt = map.tangents_per_point;
         let mut lp = LinearProgram::new(direction);
         for &f in dead {
@@ -84,6 +101,12 @@ impl ForceProgram {
             // A point with a gap carries nothing, except on a joint of finite strength, where its
             // column only places the stress block's resultant (see `crushing_rows`).
             let gapped = map.gap[k] > 0.0;
+            if gapped && closable_gaps && law.strength.is_none() && !map.bilateral[k] {
+                let row_n = KinematicMap::row(&map.normal, k);
+                pn.push(Some(c.add(normal_cost(k) + map.gap[k], 0.0, INF, row_n)));
+                pt.extend((0..nt).map(|_| None));
+                continue;
+            }
             if gapped && law.strength.is_none() {
                 pn.push(None);
                 pt.extend((0..nt).map(|_| None));
@@ -283,14 +306,18 @@ impl MotionProgram {
 /// The paper's (69)–(71), the force form of a settlement analysis: contact forces in
 /// equilibrium with the dead loads `dead` that minimise the work `g_nᵀp_n + g_tᵀp_t` of the
 /// forces on the moving supports.
+///
+/// Points with a gap (existing cracks) take part with their gap (see [`ForceProgram::build`]):
+/// the settlement is then a finite motion, and the result no longer scales with its magnitude.
 pub fn settlement_force_program(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
-    ForceProgram::new(
+    ForceProgram::build(
         map,
         dead,
         None,
         Direction::Minimise,
         |k| map.support_normal[k],
         |r| map.support_tangent[r],
+        true,
     )
 }
 

@@ -252,7 +252,7 @@ pub fn limit_result<S: Assembly>(
             Some(dot(st.load_vector(true))),
         )
     };
-    let message = match (s.status, s.lambda) {
+    let mut message = match (s.status, s.lambda) {
         (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
             "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",
             s.status.sentence(),
@@ -270,6 +270,15 @@ pub fn limit_result<S: Assembly>(
         ),
         (st_, _) => st_.sentence().to_string(),
     };
+    // Existing cracks carry nothing in limit analysis; a mechanism that would close one is
+    // not the structure's collapse (the crack closes first and then carries force).
+    let closing = crate::analysis::capacity::closing_joints(st, map, &s.mechanism);
+    if !closing.is_empty() {
+        message.push_str(&format!(
+            "; WARNING: the collapse mechanism closes the open crack of joint {} (limit analysis is not valid there: after that crack closes the structure carries more; use the incremental analysis)",
+            closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
+        ));
+    }
     LimitResult {
         status: s.status,
         message,

@@ -54,11 +54,17 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     a.draw.check()?;
     let input = a.model.resolve()?;
     let motion = a.settle.resolve()?;
-    let solver = input.solver;
+    let nonassociative = a.crushing.non_associative_settlement();
+    let solver = if nonassociative.is_some() {
+        crate::common::iteration_solver(&a.model, &input.solver)
+    } else {
+        input.solver
+    };
     let (crushing, facets) = a.crushing.resolve()?;
     let opts = CapacityOptions {
         crushing,
         facets,
+        nonassociative,
         steps: a.steps,
         hot_start: !a.cold,
         mechanisms: !a.no_mechanisms,
@@ -83,7 +89,11 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             }
             let st = input.structure3d(model, Some(&motion))?;
             let opts = CapacityOptions {
-                solver: input.solver3d,
+                solver: if nonassociative.is_some() {
+                    crate::common::iteration_solver(&a.model, &input.solver3d)
+                } else {
+                    input.solver3d
+                },
                 ..opts
             };
             let r = capacity(&st, &opts)?;

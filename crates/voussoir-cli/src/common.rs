@@ -107,7 +107,7 @@ pub enum CrushingArg {
 
 /// The finite-strength flags of `limit`, `settle` and `capacity`.
 #[derive(clap::Args, Clone, Copy, Debug)]
-#[command(next_help_heading = "Finite strength")]
+#[command(next_help_heading = "Joint laws")]
 pub struct CrushingArgs {
     /// Finite-strength (crushing) model; matters only where a compressive strength is given
     /// (--compressive-strength or the model's materials).
@@ -117,6 +117,11 @@ pub struct CrushingArgs {
     /// closer to the exact cone [default: 16].
     #[arg(long, value_name = "N")]
     pub facets: Option<usize>,
+    /// Non-associative Coulomb friction: joints slide without opening (no dilatancy), by the
+    /// fixed-point iteration on the normal forces (docs/joint-laws.md); its convergence is
+    /// reported. Matters only where friction is given (--friction or the model's materials).
+    #[arg(long)]
+    pub non_associative: bool,
 }
 
 impl CrushingArgs {
@@ -142,6 +147,21 @@ impl CrushingArgs {
             (_, None) => DEFAULT_FACETS,
         };
         Ok((crushing, facets))
+    }
+
+    /// The non-associative iteration's settings, when asked for.
+    pub fn non_associative(
+        &self,
+    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
+        self.non_associative.then(Default::default)
+    }
+
+    /// The same for a settlement or capacity analysis.
+    pub fn non_associative_settlement(
+        &self,
+    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
+        self.non_associative
+            .then(voussoir::analysis::nonassociative::NonAssociativeOptions::settlement)
     }
 
     /// Whether a finite-strength flag was given (refused in 3D).
@@ -733,5 +753,21 @@ mod tests {
         assert!(parse_profile("linear:0,0,0,1").is_err());
         assert!(parse_profile("table:0,0;1").is_err());
         assert!(parse_profile("wavy:1").is_err());
+    }
+}
+
+/// The solver of a non-associative settlement iteration: Clarabel's interior point unless
+/// --method says otherwise. Its solutions are the centres of the optimal faces, so the normal
+/// forces move smoothly from one iterate to the next, where a simplex jumps between vertices
+/// and the iteration wanders (measured on a 20 × 10 wall: docs/joint-laws.md). The tolerance is
+/// tightened so that every iterate is certified.
+pub fn iteration_solver(m: &ModelArgs, solver: &SolverOptions) -> SolverOptions {
+    if m.solver.method.is_some() {
+        return *solver;
+    }
+    SolverOptions {
+        method: voussoir::lp::Method::Clarabel,
+        feasibility_tolerance: solver.feasibility_tolerance.min(1e-10),
+        ..*solver
     }
 }

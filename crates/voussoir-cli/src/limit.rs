@@ -45,7 +45,22 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
             let st = c.input.structure_of(model, None)?;
-            let r = limit_with(&st, &c.input.solver, c.crushing, c.facets)?;
+            let r = match a.crushing.non_associative() {
+                Some(o) => {
+                    if c.crushing == Crushing::Conic {
+                        return Err(Fail(
+                            "--non-associative goes with --crushing linear (each iterate is an LP)"
+                                .into(),
+                        ));
+                    }
+                    voussoir::analysis::nonassociative::limit_nonassociative_result(
+                        &st,
+                        &c.input.solver,
+                        &o,
+                    )?
+                }
+                None => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
+            };
             a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }
@@ -61,7 +76,20 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
             } else {
                 Crushing::Linear
             };
-            let r = limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?;
+            let r = match a.crushing.non_associative() {
+                Some(o) if cone == Crushing::Linear => {
+                    voussoir::analysis::nonassociative::limit_nonassociative_result(
+                        &st,
+                        &c.input.solver3d,
+                        &o,
+                    )?
+                }
+                Some(_) => return Err(Fail(
+                    "--non-associative goes with the friction pyramid, not --friction-cone exact"
+                        .into(),
+                )),
+                None => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
+            };
             a.draw.emit_3d(&r, &c.input.path)?;
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }

@@ -6,6 +6,7 @@ use crate::common::{
 use crate::draw_args::DrawArgs;
 use clap::Args;
 use voussoir::analysis::limit::Crushing;
+use voussoir::analysis::nonassociative::settle_nonassociative;
 use voussoir::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
 use voussoir::model3d::{AnyModel, Model3d};
 
@@ -40,9 +41,12 @@ impl SettleCmdArgs {
     pub fn resolve(&self) -> Result<SettleConfig, Fail> {
         self.draw.check()?;
         let (crushing, facets) = self.crushing.resolve()?;
-        if self.crushing.given() && self.form.settlement_form.form() != SettlementForm::Both {
+        if (self.crushing.given() || self.crushing.non_associative)
+            && self.form.settlement_form.form() != SettlementForm::Both
+        {
             return Err(Fail(
-                "--crushing/--facets and --form force-only do not go together (the conic settlement already solves the force program only)".into(),
+                "--crushing, --facets and --non-associative go with --form both (the default)"
+                    .into(),
             ));
         }
         Ok(SettleConfig {
@@ -71,9 +75,18 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                 .into(),
         ));
     }
-    let r = match c.form {
-        SettlementForm::Both => settle_crushing(&st, &c.input.solver, c.crushing, c.facets)?,
-        form => settle_with(&st, &c.input.solver, form)?,
+    let r = match (c.form, a.crushing.non_associative_settlement()) {
+        (SettlementForm::Both, Some(o)) => settle_nonassociative(
+            &st,
+            &common::iteration_solver(&a.model, &c.input.solver),
+            c.crushing,
+            c.facets,
+            &o,
+        )?,
+        (SettlementForm::Both, None) => {
+            settle_crushing(&st, &c.input.solver, c.crushing, c.facets)?
+        }
+        (form, _) => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
     a.out.emit(&r, || common::settle_summary(&st, &r))
@@ -100,9 +113,16 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
                 .into(),
         ));
     }
-    let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver3d)?,
-        form => settle_with(&st, &c.input.solver3d, form)?,
+    let r = match (c.form, a.crushing.non_associative_settlement()) {
+        (SettlementForm::Both, Some(o)) => settle_nonassociative(
+            &st,
+            &common::iteration_solver(&a.model, &c.input.solver3d),
+            Crushing::Linear,
+            voussoir::analysis::limit::DEFAULT_FACETS,
+            &o,
+        )?,
+        (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
+        (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };
     a.draw.emit_3d(&r, &c.input.path)?;
     a.out.emit(&r, || common::settle_summary(&st, &r))

@@ -78,6 +78,9 @@ pub struct CapacityOptions {
     pub crushing: Crushing,
     /// Facets of the inscribed crushing polygon ([`Crushing::Linear`]).
     pub facets: usize,
+    /// Non-associative Coulomb friction in the settlement and in every limit analysis
+    /// (the fixed-point iteration of [`crate::analysis::nonassociative`]); None: associative.
+    pub nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
     pub solver: SolverOptions,
 }
 
@@ -91,6 +94,7 @@ impl Default for CapacityOptions {
             release_fixed: true,
             crushing: Crushing::Linear,
             facets: DEFAULT_FACETS,
+            nonassociative: None,
             solver: SolverOptions::default(),
         }
     }
@@ -146,7 +150,13 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         ));
     }
     check_facets(opts.facets)?;
-    let path = SettlementPath::with_crushing(st, &opts.solver, opts.crushing, opts.facets)?;
+    let path = SettlementPath::with_laws(
+        st,
+        &opts.solver,
+        opts.crushing,
+        opts.facets,
+        opts.nonassociative,
+    )?;
     let smax = path.max_settlement;
     let direction: Vec<SupportDirection> = (0..path.unit.num_supports())
         .filter(|&k| path.unit.support_motion(k).iter().any(|&x| x != 0.0))
@@ -181,7 +191,9 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     );
     let srep = report(&path.unit, &umap, &path.mechanism, 1.0, &pn0, &pt0);
 
-    let mut warm = WarmLimit::new(&opts.solver, opts.hot_start).with_crushing(opts.crushing);
+    let mut warm = WarmLimit::new(&opts.solver, opts.hot_start)
+        .with_crushing(opts.crushing)
+        .with_nonassociative(opts.nonassociative);
     let mut curve = Vec::with_capacity(opts.steps + 1);
     let mut mechanisms = Vec::new();
     let mut values = Vec::with_capacity(opts.steps + 1);
@@ -294,6 +306,12 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         ),
         (None, _) => format!("at no settlement: {}", curve[0].status.sentence()),
     };
+    if warm.unconverged > 0 {
+        message.push_str(&format!(
+            "; WARNING: the non-associative friction iteration did not converge in {} of {} limit analyses",
+            warm.unconverged, warm.solves
+        ));
+    }
     if let Some(c) = closed_at {
         message.push_str(&format!(
             "; the existing cracks close at a settlement of {:.4} cm",

@@ -301,6 +301,7 @@ pub fn limit_result<S: Assembly>(
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,
+        friction_iteration: None,
         geometry: st.shapes(),
     }
 }
@@ -313,6 +314,9 @@ pub struct WarmLimit {
     solver: SolverOptions,
     hot: bool,
     crushing: Crushing,
+    nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
+    /// Solves whose non-associative friction iteration did not converge.
+    pub unconverged: usize,
     basis: Option<lp::Basis>,
     /// LP solves and simplex iterations so far.
     pub solves: usize,
@@ -326,6 +330,8 @@ impl WarmLimit {
             solver: *solver,
             hot,
             crushing: Crushing::Linear,
+            nonassociative: None,
+            unconverged: 0,
             basis: None,
             solves: 0,
             iterations: 0,
@@ -339,9 +345,30 @@ impl WarmLimit {
         self
     }
 
+    /// Solve with non-associative friction (the iteration from scratch each time).
+    pub fn with_nonassociative(
+        mut self,
+        o: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
+    ) -> WarmLimit {
+        self.nonassociative = o;
+        self
+    }
+
     /// Limit analysis of `st` (same meaning as [`solve_limit`]).
     pub fn solve<S: Assembly>(&mut self, st: &S, map: &KinematicMap) -> Result<LimitSolution> {
         self.solves += 1;
+        if let Some(o) = &self.nonassociative {
+            let mut m = map.clone();
+            let (_, it) = crate::analysis::nonassociative::solve_limit_nonassociative(
+                st,
+                &mut m,
+                &self.solver,
+                o,
+            )?;
+            self.unconverged += usize::from(!it.converged);
+            self.iterations += it.last.iterations;
+            return Ok(it.last);
+        }
         if self.crushing == Crushing::Conic {
             let sol = solve_limit_conic(st, map, &self.solver)?;
             self.iterations += sol.iterations;

@@ -18,6 +18,7 @@
 //! the result is proportional to the settlement magnitude and the forces do not depend on it.
 
 use crate::analysis::limit::{check_facets, Crushing, DEFAULT_FACETS};
+use crate::analysis::nonassociative::NonAssociativeOptions;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, LpStatus, SolverOptions};
@@ -182,6 +183,7 @@ pub fn settlement_result<S: Assembly>(
             hinges: vec![],
             thrust_line: vec![],
             reactions: vec![],
+            friction_iteration: None,
             geometry: st.shapes(),
         };
     }
@@ -230,6 +232,7 @@ pub fn settlement_result<S: Assembly>(
         hinges: rep.hinges,
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
+        friction_iteration: None,
         geometry: st.shapes(),
     }
 }
@@ -396,6 +399,7 @@ pub struct SettlementPath<S: Assembly = Structure> {
     solver: SolverOptions,
     crushing: Crushing,
     facets: usize,
+    nonassociative: Option<NonAssociativeOptions>,
 }
 
 impl<S: Assembly> SettlementPath<S> {
@@ -409,6 +413,18 @@ impl<S: Assembly> SettlementPath<S> {
         solver: &SolverOptions,
         crushing: Crushing,
         facets: usize,
+    ) -> Result<SettlementPath<S>> {
+        Self::with_laws(st, solver, crushing, facets, None)
+    }
+
+    /// [`SettlementPath::with_crushing`], with non-associative friction when `nonassociative`
+    /// is given (every settlement solve is then the iteration's last iterate).
+    pub fn with_laws(
+        st: &S,
+        solver: &SolverOptions,
+        crushing: Crushing,
+        facets: usize,
+        nonassociative: Option<NonAssociativeOptions>,
     ) -> Result<SettlementPath<S>> {
         let mag = st.settlement_magnitude();
         if !(mag.is_finite() && mag > 0.0) {
@@ -440,9 +456,10 @@ impl<S: Assembly> SettlementPath<S> {
             solver: *solver,
             crushing,
             facets,
+            nonassociative,
         };
         if path.existing_cracks.is_empty() {
-            let sol = solve_settlement_crushing(&path.unit, &map, solver, crushing)?;
+            let sol = path.solve(&path.unit, &mut map)?;
             if sol.status == SettlementStatus::Mechanism {
                 (path.openings, path.open_tol) =
                     path.unit.joint_openings(&map, &sol.mechanism, 1.0);
@@ -466,8 +483,26 @@ impl<S: Assembly> SettlementPath<S> {
         let at = self.unit.with_support_motions(&motions);
         let mut map = KinematicMap::new(&at);
         map.facets = self.facets;
-        let sol = solve_settlement_crushing(&at, &map, &self.solver, self.crushing)?;
+        let sol = self.solve(&at, &mut map)?;
         Ok((at, map, sol))
+    }
+
+    /// One settlement solve under the path's joint laws.
+    fn solve(&self, st: &S, map: &mut KinematicMap) -> Result<SettlementSolution> {
+        match &self.nonassociative {
+            Some(o) => Ok(
+                crate::analysis::nonassociative::solve_settlement_nonassociative(
+                    st,
+                    map,
+                    &self.solver,
+                    self.crushing,
+                    o,
+                )?
+                .1
+                .last,
+            ),
+            None => solve_settlement_crushing(st, map, &self.solver, self.crushing),
+        }
     }
 
     /// The structure after a settlement `s` (m). `s = 0` returns the undeformed structure as is.

@@ -81,20 +81,28 @@ pub struct Iterated<T> {
     pub converged: bool,
 }
 
-/// The fixed-point iteration on the normal forces shared by every analysis: starting from the
-/// associative normal forces `first_pn`, fix the shear capacities `μ n̄ + c` on `map`, solve
-/// (`solve` returns the value and normal forces of a solution, or None when there is none),
-/// relax `n̄` towards the new normal forces, until value and forces settle.
+/// The fixed-point iteration on the normal forces shared by every analysis: solve the
+/// associative problem (`solve`; `read` gives the value and normal forces of a solution, or
+/// None when it has none), then repeatedly fix the shear capacities `μ n̄ + c` on `map`,
+/// solve, and relax `n̄` towards the new normal forces, until value and forces settle.
+/// Returns the associative value and the iteration (none without friction or without an
+/// associative solution).
 pub fn iterate<T>(
     map: &mut KinematicMap,
-    first: T,
-    first_pn: &[f64],
     o: &NonAssociativeOptions,
     mut solve: impl FnMut(&KinematicMap) -> Result<T>,
     read: impl Fn(&T) -> Option<(f64, &[f64])>,
-) -> Result<Iterated<T>> {
+) -> Result<(Option<f64>, Iterated<T>)> {
+    map.shear_limits = None;
+    let first = solve(map)?;
+    let Some((associative, first_pn)) = read(&first).map(|(v, p)| (v, p.to_vec())) else {
+        return Ok((None, Iterated::done(first)));
+    };
+    if !map.laws.iter().any(|l| l.friction.is_some()) {
+        return Ok((Some(associative), Iterated::done(first)));
+    }
     let alpha = o.relaxation.clamp(1e-3, 1.0);
-    let mut nbar = first_pn.to_vec();
+    let mut nbar = first_pn;
     let mut history = Vec::new();
     let mut last = first;
     let mut converged = false;
@@ -145,15 +153,25 @@ pub fn iterate<T>(
             }
         }
     }
-    Ok(Iterated {
-        last,
-        history,
-        converged,
-    })
+    Ok((
+        Some(associative),
+        Iterated {
+            last,
+            history,
+            converged,
+        },
+    ))
 }
 
-fn has_friction(map: &KinematicMap) -> bool {
-    map.laws.iter().any(|l| l.friction.is_some())
+impl<T> Iterated<T> {
+    /// No iteration: the associative solution stands.
+    fn done(last: T) -> Iterated<T> {
+        Iterated {
+            last,
+            history: vec![],
+            converged: true,
+        }
+    }
 }
 
 /// The limit solution with non-associative friction, on `map` (whose shear capacities it
@@ -164,28 +182,16 @@ pub fn solve_limit_nonassociative<S: Assembly>(
     opts: &SolverOptions,
     o: &NonAssociativeOptions,
 ) -> Result<(Option<f64>, Iterated<LimitSolution>)> {
-    let first = solve_limit(st, map, opts)?;
-    let associative = first.lambda;
-    if first.status != LimitStatus::Collapse || !has_friction(map) {
-        return Ok((
-            associative,
-            Iterated {
-                last: first,
-                history: vec![],
-                converged: true,
-            },
-        ));
-    }
-    let pn = first.pn.clone();
-    let it = iterate(
+    iterate(
         map,
-        first,
-        &pn,
         o,
         |m| solve_limit(st, m, opts),
-        |s| s.lambda.map(|l| (l, s.pn.as_slice())),
-    )?;
-    Ok((associative, it))
+        |s| {
+            (s.status == LimitStatus::Collapse)
+                .then_some(())
+                .and(s.lambda.map(|l| (l, s.pn.as_slice())))
+        },
+    )
 }
 
 pub fn limit_nonassociative<S: Assembly>(
@@ -213,29 +219,12 @@ pub fn solve_settlement_nonassociative<S: Assembly>(
     crushing: Crushing,
     o: &NonAssociativeOptions,
 ) -> Result<(Option<f64>, Iterated<SettlementSolution>)> {
-    let first = solve_settlement_crushing(st, map, opts, crushing)?;
-    let mechanism = first.status == SettlementStatus::Mechanism;
-    let associative = mechanism.then_some(first.primal);
-    if !mechanism || !has_friction(map) {
-        return Ok((
-            associative,
-            Iterated {
-                last: first,
-                history: vec![],
-                converged: true,
-            },
-        ));
-    }
-    let pn = first.pn.clone();
-    let it = iterate(
+    iterate(
         map,
-        first,
-        &pn,
         o,
         |m| solve_settlement_crushing(st, m, opts, crushing),
         |s| (s.status == SettlementStatus::Mechanism).then_some((s.primal, s.pn.as_slice())),
-    )?;
-    Ok((associative, it))
+    )
 }
 
 /// Settlement analysis with non-associative friction: the settlement result of the last

@@ -254,8 +254,8 @@ pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult>
             "the structure cannot carry its dead loads: no equilibrium state exists".to_string()
         }
         (true, Some(g)) => format!(
-            "the structure stands; geometric safety factor {g:.4} (the dead loads can be carried through the middle {:.4} of every joint)",
-            1.0 / g
+            "the structure stands; geometric safety factor {g:.4} (its dead loads can be carried through the middle {:.2} % of every joint)",
+            100.0 / g
         ),
         (true, None) => "the structure stands with every joint shrunk to its centre: the geometric safety factor is unbounded".to_string(),
     };

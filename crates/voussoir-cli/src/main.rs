@@ -78,7 +78,8 @@ enum Command {
     /// plot) or a model: `-o fig.svg`, `fig.png` or `report.html`.
     Plot(plot::PlotArgs),
     /// Many settlement analyses in parallel: magnitudes, directions or Monte Carlo samples of
-    /// the support motions; JSON lines and CSV; --shard I/N for array jobs (docs/sweep.md).
+    /// the support motions, with --capacity the capacity after each (distribution of λ); JSON
+    /// lines and CSV; --shard I/N for array jobs (docs/sweep.md).
     Sweep(sweep::SweepArgs),
     /// Merge the JSON-lines results of sweep shards (docs/sweep.md).
     Merge(sweep::MergeArgs),

@@ -489,7 +489,7 @@ pub fn capacity_summary(records: &[SweepRecord]) -> Option<CapacitySummary> {
         max: lam.last().copied(),
         quantiles,
         exhausted,
-        exhausted_fraction: (n > 0).then(|| exhausted as f64 / n as f64),
+        exhausted_fraction: (n > 0).then_some(exhausted as f64 / n as f64),
         invalid: caps.iter().filter(|c| !c.valid).count(),
         invalid_after: caps.iter().filter(|c| !c.valid_after).count(),
         failed: caps.iter().filter(|c| c.error.is_some()).count(),

@@ -241,7 +241,7 @@ pub fn reaction_ranges<S: Assembly>(
 pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult> {
     let (fraction, mut solves) = least_joint_fraction(st, opts.tolerance, &opts.solver)?;
     let stands = fraction.is_some();
-    let factor = fraction.and_then(|f| (f > 0.0).then(|| 1.0 / f));
+    let factor = fraction.and_then(|f| (f > 0.0).then_some(1.0 / f));
     let reactions = if stands && opts.reactions {
         let (r, n) = reaction_ranges(st, &opts.solver)?;
         solves += n;

@@ -31,6 +31,8 @@ pub struct CapacityArgs {
     #[arg(long)]
     pub cold: bool,
     #[command(flatten)]
+    pub crushing: crate::common::CrushingArgs,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -53,7 +55,10 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     let input = a.model.resolve()?;
     let motion = a.settle.resolve()?;
     let solver = input.solver;
+    let (crushing, facets) = a.crushing.resolve()?;
     let opts = CapacityOptions {
+        crushing,
+        facets,
         steps: a.steps,
         hot_start: !a.cold,
         mechanisms: !a.no_mechanisms,
@@ -71,6 +76,11 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         }
         AnyModel::Spatial(model) => {
             a.draw.refuse_3d()?;
+            if a.crushing.given() {
+                return Err(Fail(
+                    "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
+                ));
+            }
             let st = input.structure3d(model, Some(&motion))?;
             let opts = CapacityOptions {
                 solver: input.solver3d,

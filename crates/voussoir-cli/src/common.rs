@@ -4,6 +4,7 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
 use voussoir::analysis::{LimitResult, SettlementResult};
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::model3d::{AnyModel, Model3d};
@@ -102,6 +103,51 @@ pub enum CrushingArg {
     /// The exact crushing cone: a second-order cone program (Clarabel).
     #[value(alias = "cone", alias = "socp", alias = "exact")]
     Conic,
+}
+
+/// The finite-strength flags of `limit`, `settle` and `capacity`.
+#[derive(clap::Args, Clone, Copy, Debug)]
+#[command(next_help_heading = "Finite strength")]
+pub struct CrushingArgs {
+    /// Finite-strength (crushing) model; matters only where a compressive strength is given
+    /// (--compressive-strength or the model's materials).
+    #[arg(long, value_enum, default_value = "linear", ignore_case = true)]
+    pub crushing: CrushingArg,
+    /// Facets (chords) of the inscribed crushing polygon of --crushing linear; more facets,
+    /// closer to the exact cone [default: 16].
+    #[arg(long, value_name = "N")]
+    pub facets: Option<usize>,
+}
+
+impl CrushingArgs {
+    /// The crushing model and the facet count, checked.
+    pub fn resolve(&self) -> Result<(Crushing, usize), Fail> {
+        let crushing = match self.crushing {
+            CrushingArg::Linear => Crushing::Linear,
+            CrushingArg::Conic => Crushing::Conic,
+        };
+        let facets = match (self.crushing, self.facets) {
+            (CrushingArg::Conic, Some(_)) => {
+                return Err(Fail(
+                    "--facets applies to --crushing linear (the conic model is the exact cone)"
+                        .into(),
+                ))
+            }
+            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => {
+                return Err(Fail(format!(
+                    "--facets {n}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+                )))
+            }
+            (_, Some(n)) => n,
+            (_, None) => DEFAULT_FACETS,
+        };
+        Ok((crushing, facets))
+    }
+
+    /// Whether a finite-strength flag was given (refused in 3D).
+    pub fn given(&self) -> bool {
+        self.crushing == CrushingArg::Conic || self.facets.is_some()
+    }
 }
 
 /// Which LPs a settlement analysis solves.

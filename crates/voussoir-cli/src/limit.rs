@@ -1,24 +1,15 @@
 //! `voussoir limit`: classic limit analysis, with a choice of crushing model.
 
-use crate::common::{CrushingArg, Fail, Input, ModelArgs, OutArgs};
+use crate::common::{CrushingArgs, Fail, Input, ModelArgs, OutArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
-use voussoir::analysis::limit::{limit_with, Crushing, MAX_FACETS, MIN_FACETS};
+use voussoir::analysis::limit::{limit_with, Crushing, DEFAULT_FACETS};
 use voussoir::model3d::AnyModel;
-
-/// Facets of the inscribed crushing polygon when --facets is not given.
-const DEFAULT_FACETS: usize = 16;
 
 #[derive(Args)]
 pub struct LimitArgs {
-    /// Finite-strength (crushing) model; matters only where a compressive strength is given
-    /// (--compressive-strength or the model's materials).
-    #[arg(long, value_enum, default_value = "linear", ignore_case = true)]
-    pub crushing: CrushingArg,
-    /// Facets (chords) of the inscribed crushing polygon of --crushing linear; more facets,
-    /// closer to the exact cone [default: 16].
-    #[arg(long, value_name = "N")]
-    pub facets: Option<usize>,
+    #[command(flatten)]
+    pub crushing: CrushingArgs,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -38,25 +29,7 @@ pub struct LimitConfig {
 
 impl LimitArgs {
     pub fn resolve(&self) -> Result<LimitConfig, Fail> {
-        let crushing = match self.crushing {
-            CrushingArg::Linear => Crushing::Linear,
-            CrushingArg::Conic => Crushing::Conic,
-        };
-        let facets = match (self.crushing, self.facets) {
-            (CrushingArg::Conic, Some(_)) => {
-                return Err(Fail(
-                    "--facets applies to --crushing linear (the conic model is the exact cone)"
-                        .into(),
-                ))
-            }
-            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => {
-                return Err(Fail(format!(
-                    "--facets {n}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
-                )))
-            }
-            (_, Some(n)) => n,
-            (_, None) => DEFAULT_FACETS,
-        };
+        let (crushing, facets) = self.crushing.resolve()?;
         self.draw.check()?;
         Ok(LimitConfig {
             input: self.model.resolve()?,
@@ -77,7 +50,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
             a.out.emit(&r, || crate::common::limit_summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
-            if c.crushing == Crushing::Conic || a.facets.is_some() {
+            if a.crushing.given() {
                 return Err(Fail(
                     "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),
                 ));

@@ -1,9 +1,12 @@
 //! `voussoir settle`: the mechanism and contact forces for prescribed support motions.
 
-use crate::common::{self, Fail, FormArgs, Input, ModelArgs, Motion, OutArgs, SettleArgs};
+use crate::common::{
+    self, CrushingArgs, Fail, FormArgs, Input, ModelArgs, Motion, OutArgs, SettleArgs,
+};
 use crate::draw_args::DrawArgs;
 use clap::Args;
-use voussoir::analysis::settlement::{settle, settle_with, SettlementForm};
+use voussoir::analysis::limit::Crushing;
+use voussoir::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
 use voussoir::model3d::{AnyModel, Model3d};
 
 #[derive(Args)]
@@ -12,6 +15,8 @@ pub struct SettleCmdArgs {
     pub settle: SettleArgs,
     #[command(flatten)]
     pub form: FormArgs,
+    #[command(flatten)]
+    pub crushing: CrushingArgs,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -27,12 +32,22 @@ pub struct SettleConfig {
     pub input: Input,
     pub motion: Motion,
     pub form: SettlementForm,
+    pub crushing: Crushing,
+    pub facets: usize,
 }
 
 impl SettleCmdArgs {
     pub fn resolve(&self) -> Result<SettleConfig, Fail> {
         self.draw.check()?;
+        let (crushing, facets) = self.crushing.resolve()?;
+        if self.crushing.given() && self.form.settlement_form.form() != SettlementForm::Both {
+            return Err(Fail(
+                "--crushing/--facets and --form force-only do not go together (the conic settlement already solves the force program only)".into(),
+            ));
+        }
         Ok(SettleConfig {
+            crushing,
+            facets,
             input: self.model.resolve()?,
             motion: self.settle.resolve()?,
             form: self.form.settlement_form.form(),
@@ -57,7 +72,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         ));
     }
     let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver)?,
+        SettlementForm::Both => settle_crushing(&st, &c.input.solver, c.crushing, c.facets)?,
         form => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
@@ -65,6 +80,11 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
 }
 
 fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
+    if a.crushing.given() {
+        return Err(Fail(
+            "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
+        ));
+    }
     c.motion.apply(&mut model)?;
     let st = voussoir::Structure3d::new(&model, c.input.build)?;
     for w in model.warnings() {

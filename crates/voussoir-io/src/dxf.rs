@@ -608,6 +608,7 @@ pub fn drawing_to_model(
             live,
         },
         tolerance: None,
+        cracks: Vec::new(),
     };
     Ok((
         model,

@@ -20,7 +20,7 @@
 //! | settlement, motion form (primal): `max F_D·d`, `N d + g_n ≥ 0`, `T d + g_t = 0` | (62)–(66) | [`settlement_motion_program`] |
 //! | limit analysis, static: `max λ`, `F_D + λF_L + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` | Remark 3 | [`limit_force_program`] (and [`limit_force_program_fixed_topology`] for warm-started sequences) |
 //! | limit analysis, kinematic: `F_L·d = 1`, `λ = −F_D·d` | Remark 3 | the row duals of the static program ([`crate::analysis::limit`]) |
-//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`] |
+//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`], [`settlement_force_program_conic`] |
 //! | a dead-load ray (no λ in equilibrium) | — | [`dead_load_ray_program`] |
 //! | equilibrium under dead loads alone (does it stand; geometric safety factor) | safe theorem | [`equilibrium_program`] |
 //! | least / largest reaction component over admissible states (thrust range) | safe theorem | [`reaction_extreme_program`] |
@@ -72,6 +72,23 @@ impl ForceProgram {
         normal_cost: impl Fn(usize) -> f64,
         tangent_cost: impl Fn(usize) -> f64,
     ) -> ForceProgram {
+        Self::build(map, dead, live, direction, normal_cost, tangent_cost, false)
+    }
+
+    /// [`ForceProgram::new`]; with `closable_gaps` a point with a gap `Δ` (an existing crack)
+    /// is a unilateral contact that must first close: a normal force column (no shear: an open
+    /// crack slides freely) whose cost gains `Δ`, so that the motion program reads
+    /// `N d + g_n + Δ ≥ 0` (the paper's (42) and (58)). Without it such a point carries
+    /// nothing, as an infinitesimal mechanism cannot close a finite gap (limit analysis).
+    fn build(
+        map: &KinematicMap,
+        dead: &[f64],
+        live: Option<&[f64]>,
+        direction: Direction,
+        normal_cost: impl Fn(usize) -> f64,
+        tangent_cost: impl Fn(usize) -> f64,
+        closable_gaps: bool,
+    ) -> ForceProgram {
         let nt = map.tangents_per_point;
         let mut lp = LinearProgram::new(direction);
         for &f in dead {
@@ -86,6 +103,12 @@ impl ForceProgram {
             // A point with a gap carries nothing, except on a joint of finite strength, where its
             // column only places the stress block's resultant (see `crushing_rows`).
             let gapped = map.gap[k] > 0.0;
+            if gapped && closable_gaps && law.strength.is_none() && !map.bilateral[k] {
+                let row_n = KinematicMap::row(&map.normal, k);
+                pn.push(Some(c.add(normal_cost(k) + map.gap[k], 0.0, INF, row_n)));
+                pt.extend((0..nt).map(|_| None));
+                continue;
+            }
             if gapped && law.strength.is_none() {
                 pn.push(None);
                 pt.extend((0..nt).map(|_| None));
@@ -285,14 +308,18 @@ impl MotionProgram {
 /// The paper's (69)–(71), the force form of a settlement analysis: contact forces in
 /// equilibrium with the dead loads `dead` that minimise the work `g_nᵀp_n + g_tᵀp_t` of the
 /// forces on the moving supports.
+///
+/// Points with a gap (existing cracks) take part with their gap (see [`ForceProgram::build`]):
+/// the settlement is then a finite motion, and the result no longer scales with its magnitude.
 pub fn settlement_force_program(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
-    ForceProgram::new(
+    ForceProgram::build(
         map,
         dead,
         None,
         Direction::Minimise,
         |k| map.support_normal[k],
         |r| map.support_tangent[r],
+        true,
     )
 }
 
@@ -369,15 +396,33 @@ pub fn limit_force_program_fixed_topology(
 }
 
 /// [`limit_force_program`] with the exact crushing domain: no inscribed chords; each joint of
-/// finite strength gets the two rotated cones
-/// ```text
-///   N² ≤ 2 f_c w · (N t/2 ∓ M)      ⇔      ‖(N, (r − f_c w)/√2)‖ ≤ (r + f_c w)/√2,  r = N t/2 ∓ M
-/// ```
-/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly.
+/// finite strength gets the two rotated cones of [`crushing_cones`].
 pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64]) -> ForceProgram {
     let mut m = map.clone();
     m.facets = 0;
     let mut fp = limit_force_program(&m, dead, live);
+    crushing_cones(map, &mut fp);
+    fp
+}
+
+/// [`settlement_force_program`] with the exact crushing domain of [`limit_force_program_conic`]
+/// instead of the inscribed polygon: `min g·p` over forces in equilibrium with the dead loads
+/// whose joint resultants lie in `|M| ≤ N (t/2 − N/(2 f_c w))`. Its mechanism is read from the
+/// equilibrium rows' duals (there is no LP dual to build).
+pub fn settlement_force_program_conic(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
+    let mut m = map.clone();
+    m.facets = 0;
+    let mut fp = settlement_force_program(&m, dead);
+    crushing_cones(map, &mut fp);
+    fp
+}
+
+/// The two rotated cones of every joint of finite strength, appended to `fp`:
+/// ```text
+///   N² ≤ 2 f_c w · (N t/2 ∓ M)      ⇔      ‖(N, (r − f_c w)/√2)‖ ≤ (r + f_c w)/√2,  r = N t/2 ∓ M
+/// ```
+/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly.
+fn crushing_cones(map: &KinematicMap, fp: &mut ForceProgram) {
     let r2 = std::f64::consts::SQRT_2;
     for (law, nmax, range) in crushing_joints(map) {
         let t = law.depth;
@@ -396,7 +441,6 @@ pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64])
                 .push([(r_row.clone(), fw / r2), (n_row, 0.0), (r_row, -fw / r2)]);
         }
     }
-    fp
 }
 
 /// [`limit_force_program`] with the exact friction cone `‖p_t‖ ≤ μ p_n + c` at every point of

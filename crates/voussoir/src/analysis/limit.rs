@@ -194,6 +194,18 @@ pub enum Crushing {
 /// program's size (two rows per facet and joint).
 pub const MIN_FACETS: usize = 2;
 pub const MAX_FACETS: usize = 4096;
+/// Facets of the inscribed crushing polygon unless told otherwise.
+pub const DEFAULT_FACETS: usize = 16;
+
+/// A one-line error unless `facets` is within [`MIN_FACETS`]..=[`MAX_FACETS`].
+pub fn check_facets(facets: usize) -> Result<()> {
+    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
+        return Err(Error::Request(format!(
+            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+        )));
+    }
+    Ok(())
+}
 
 /// Limit analysis with a choice of crushing model and number of facets.
 pub fn limit_with<S: Assembly>(
@@ -202,11 +214,7 @@ pub fn limit_with<S: Assembly>(
     crushing: Crushing,
     facets: usize,
 ) -> Result<LimitResult<S::D>> {
-    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
-        return Err(Error::Request(format!(
-            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
-        )));
-    }
+    check_facets(facets)?;
     let mut map = KinematicMap::new(st);
     map.facets = facets;
     let s = match crushing {
@@ -244,7 +252,7 @@ pub fn limit_result<S: Assembly>(
             Some(dot(st.load_vector(true))),
         )
     };
-    let message = match (s.status, s.lambda) {
+    let mut message = match (s.status, s.lambda) {
         (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
             "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",
             s.status.sentence(),
@@ -262,6 +270,15 @@ pub fn limit_result<S: Assembly>(
         ),
         (st_, _) => st_.sentence().to_string(),
     };
+    // Existing cracks carry nothing in limit analysis; a mechanism that would close one is
+    // not the structure's collapse (the crack closes first and then carries force).
+    let closing = crate::analysis::capacity::closing_joints(st, map, &s.mechanism);
+    if !closing.is_empty() {
+        message.push_str(&format!(
+            "; WARNING: the collapse mechanism closes the open crack of joint {} (limit analysis is not valid there: after that crack closes the structure carries more; use the incremental analysis)",
+            closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
+        ));
+    }
     LimitResult {
         status: s.status,
         message,
@@ -295,6 +312,7 @@ pub fn limit_result<S: Assembly>(
 pub struct WarmLimit {
     solver: SolverOptions,
     hot: bool,
+    crushing: Crushing,
     basis: Option<lp::Basis>,
     /// LP solves and simplex iterations so far.
     pub solves: usize,
@@ -307,15 +325,28 @@ impl WarmLimit {
         WarmLimit {
             solver: *solver,
             hot,
+            crushing: Crushing::Linear,
             basis: None,
             solves: 0,
             iterations: 0,
         }
     }
 
+    /// Solve with the exact crushing cones ([`solve_limit_conic`], from scratch) instead of
+    /// the inscribed polygon.
+    pub fn with_crushing(mut self, crushing: Crushing) -> WarmLimit {
+        self.crushing = crushing;
+        self
+    }
+
     /// Limit analysis of `st` (same meaning as [`solve_limit`]).
     pub fn solve<S: Assembly>(&mut self, st: &S, map: &KinematicMap) -> Result<LimitSolution> {
         self.solves += 1;
+        if self.crushing == Crushing::Conic {
+            let sol = solve_limit_conic(st, map, &self.solver)?;
+            self.iterations += sol.iterations;
+            return Ok(sol);
+        }
         // Joint laws (friction, crushing) give gapped points roles of their own in the force
         // program: those structures are solved from scratch.
         let sol = if self.hot && !map.has_joint_laws() {

@@ -6,7 +6,7 @@ pub mod safety;
 pub mod settlement;
 pub mod tilt;
 
-pub use limit::{limit, LimitResult, LimitStatus};
+pub use limit::{limit, Crushing, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};
 pub mod capacity;
 pub mod identify;

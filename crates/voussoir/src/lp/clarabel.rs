@@ -206,6 +206,7 @@ fn solve_clarabel_with_cones(
             row_dual: vec![],
             col_dual: vec![],
             iterations,
+            dual_objective: f64::NAN,
         });
     }
     // Clarabel's z ≥ 0 multiplies `A x + s = b` in `min qᵀx`: q + Aᵀz = 0 in its convention, so the
@@ -237,5 +238,7 @@ fn solve_clarabel_with_cones(
         row_dual,
         col_dual,
         iterations,
+        // Clarabel minimises `sign·cᵀx`; its dual cost is in that sense.
+        dual_objective: sign * solver.info.cost_dual,
     })
 }

@@ -216,6 +216,10 @@ pub struct LpSolution {
     pub row_dual: Vec<f64>,
     pub col_dual: Vec<f64>,
     pub iterations: i64,
+    /// The dual objective as the solver reports it, in the program's own sense (NaN when the
+    /// solver gives none: HiGHS's simplex, whose optimal bases have no gap). For a program with
+    /// cones it is the value the dual side certifies, cone terms included.
+    pub dual_objective: f64,
 }
 
 /// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.

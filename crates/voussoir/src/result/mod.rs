@@ -313,7 +313,14 @@ pub fn report<S: Assembly>(
                 *sm = clean(slide[k * nt + m], mscale);
                 sliding |= sm.abs() > open_tol;
             }
-            if o > open_tol || gap > 0.0 {
+            // A finite motion (a settlement) adds to the gap a point had before, and may close
+            // it; a rate (a collapse mechanism) leaves a gapped point open.
+            let is_open = if support_scale > 0.0 && gap > 0.0 {
+                gap + o > open_tol
+            } else {
+                o > open_tol || gap > 0.0
+            };
+            if is_open {
                 n_open += 1;
             } else {
                 closed.push(x);

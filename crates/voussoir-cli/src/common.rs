@@ -456,8 +456,23 @@ impl ModelArgs {
     }
 
     pub fn solver(&self) -> SolverOptions {
+        self.solver.options()
+    }
+
+    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
+    /// `default` one included).
+    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
+        check_materials(self.friction, self.compressive_strength)?;
+        m.override_joint_laws(self.friction, self.compressive_strength);
+        Ok(())
+    }
+}
+
+impl SolverArgs {
+    /// The solver options of these flags (dual simplex unless --method says otherwise).
+    pub fn options(&self) -> SolverOptions {
         SolverOptions {
-            method: match self.solver.method.unwrap_or(MethodArg::DualSimplex) {
+            method: match self.method.unwrap_or(MethodArg::DualSimplex) {
                 MethodArg::DualSimplex => Method::DualSimplex,
                 MethodArg::PrimalSimplex => Method::PrimalSimplex,
                 MethodArg::Ipm => Method::Ipm,
@@ -471,14 +486,6 @@ impl ModelArgs {
             log: std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1"),
             ..SolverOptions::default()
         }
-    }
-
-    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
-    /// `default` one included).
-    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
-        check_materials(self.friction, self.compressive_strength)?;
-        m.override_joint_laws(self.friction, self.compressive_strength);
-        Ok(())
     }
 }
 

@@ -22,6 +22,8 @@
 //! | limit analysis, kinematic: `F_L·d = 1`, `λ = −F_D·d` | Remark 3 | the row duals of the static program ([`crate::analysis::limit`]) |
 //! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`], [`settlement_force_program_conic`] |
 //! | a dead-load ray (no λ in equilibrium) | — | [`dead_load_ray_program`] |
+//! | equilibrium under dead loads alone (does it stand; geometric safety factor) | safe theorem | [`equilibrium_program`] |
+//! | least / largest reaction component over admissible states (thrust range) | safe theorem | [`reaction_extreme_program`] |
 //!
 //! Every analysis, the benchmark and the sweeps call these builders; nothing else assembles a
 //! program of the paper.
@@ -329,6 +331,37 @@ pub fn settlement_motion_program(
     dead: &[f64],
 ) -> crate::error::Result<MotionProgram> {
     MotionProgram::new(map, dead)
+}
+
+/// Equilibrium under the dead loads alone: `F_D + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` (free on
+/// bilateral points) and the joint laws, with a zero objective. Feasible iff the structure can
+/// carry its dead loads (Heyman's safe theorem: a statically admissible state exists);
+/// [`crate::analysis::safety`] asks it of the structure and of its joints shrunk about their
+/// centres (the geometric safety factor).
+pub fn equilibrium_program(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
+    ForceProgram::new(map, dead, None, Direction::Minimise, |_| 0.0, |_| 0.0)
+}
+
+/// The extreme of a linear function of the contact forces over the statically admissible
+/// states (the constraints of [`equilibrium_program`]): `min` or `max` of
+/// `Σ_k c_n[k]·p_n,k + Σ_r c_t[r]·p_t,r`. With `c` the coefficients of a support's reaction
+/// component this gives the range of that reaction (the least and the largest thrust of an
+/// arch).
+pub fn reaction_extreme_program(
+    map: &KinematicMap,
+    dead: &[f64],
+    normal_coefficients: &[f64],
+    tangent_coefficients: &[f64],
+    direction: Direction,
+) -> ForceProgram {
+    ForceProgram::new(
+        map,
+        dead,
+        None,
+        direction,
+        |k| normal_coefficients[k],
+        |r| tangent_coefficients[r],
+    )
 }
 
 /// The static program of limit analysis (the paper's Remark 3): `max λ` subject to

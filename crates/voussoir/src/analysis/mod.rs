@@ -2,6 +2,7 @@
 
 pub mod limit;
 pub mod nonassociative;
+pub mod safety;
 pub mod settlement;
 pub mod tilt;
 

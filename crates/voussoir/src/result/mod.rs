@@ -8,6 +8,7 @@ pub mod capacity;
 pub mod incremental;
 pub mod limit;
 pub mod nonassociative;
+pub mod safety;
 pub mod settlement;
 pub mod tilt;
 
@@ -15,6 +16,7 @@ pub use capacity::*;
 pub use incremental::*;
 pub use limit::*;
 pub use nonassociative::*;
+pub use safety::*;
 pub use settlement::*;
 pub use tilt::*;
 

@@ -3,6 +3,7 @@
 use crate::common::{CrushingArg, Fail, Input, ModelArgs, OutArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
+use voussoir::analysis::canonical::limit_canonical;
 use voussoir::analysis::limit::{limit_with, Crushing, MAX_FACETS, MIN_FACETS};
 use voussoir::model3d::AnyModel;
 
@@ -27,6 +28,8 @@ pub struct LimitArgs {
     pub draw: DrawArgs,
     #[command(flatten)]
     pub forces: crate::draw_args::ForcesArgs,
+    #[command(flatten)]
+    pub canonical: crate::canonical::CanonicalArgs,
 }
 
 /// `limit`'s flags, resolved.
@@ -72,9 +75,16 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
             let st = c.input.structure_of(model, None)?;
-            let r = limit_with(&st, &c.input.solver, c.crushing, c.facets)?;
+            // The canonical selection is among LP optima (the conic model's optimum is an
+            // interior point of a cone program: reported as solved).
+            let r = match (a.canonical.options(), c.crushing) {
+                (Some(o), Crushing::Linear) => limit_canonical(&st, &c.input.solver, c.facets, &o)?,
+                _ => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
+            };
             a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
-            a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+            a.out.emit(&r, || {
+                crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+            })
         }
         AnyModel::Spatial(model) => {
             if c.crushing == Crushing::Conic || a.facets.is_some() {
@@ -88,9 +98,16 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
             } else {
                 Crushing::Linear
             };
-            let r = limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?;
+            let r = match (a.canonical.options(), cone) {
+                (Some(o), Crushing::Linear) => {
+                    limit_canonical(&st, &c.input.solver3d, DEFAULT_FACETS, &o)?
+                }
+                _ => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
+            };
             a.draw.emit_3d(&r, &c.input.path)?;
-            a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+            a.out.emit(&r, || {
+                crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+            })
         }
     }
 }

@@ -3,6 +3,7 @@
 use crate::common::{self, Fail, FormArgs, Input, ModelArgs, Motion, OutArgs, SettleArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
+use voussoir::analysis::canonical::settle_canonical;
 use voussoir::analysis::settlement::{settle, settle_with, SettlementForm};
 use voussoir::model3d::{AnyModel, Model3d};
 
@@ -20,6 +21,8 @@ pub struct SettleCmdArgs {
     pub draw: DrawArgs,
     #[command(flatten)]
     pub forces: crate::draw_args::ForcesArgs,
+    #[command(flatten)]
+    pub canonical: crate::canonical::CanonicalArgs,
 }
 
 /// `settle`'s flags, resolved.
@@ -56,12 +59,15 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                 .into(),
         ));
     }
-    let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver)?,
-        form => settle_with(&st, &c.input.solver, form)?,
+    let r = match (a.canonical.options(), c.form) {
+        (Some(o), form) => settle_canonical(&st, &c.input.solver, form, &o)?,
+        (None, SettlementForm::Both) => settle(&st, &c.input.solver)?,
+        (None, form) => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
-    a.out.emit(&r, || common::settle_summary(&st, &r))
+    a.out.emit(&r, || {
+        common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+    })
 }
 
 fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
@@ -80,10 +86,13 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
                 .into(),
         ));
     }
-    let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver3d)?,
-        form => settle_with(&st, &c.input.solver3d, form)?,
+    let r = match (a.canonical.options(), c.form) {
+        (Some(o), form) => settle_canonical(&st, &c.input.solver3d, form, &o)?,
+        (None, SettlementForm::Both) => settle(&st, &c.input.solver3d)?,
+        (None, form) => settle_with(&st, &c.input.solver3d, form)?,
     };
     a.draw.emit_3d(&r, &c.input.path)?;
-    a.out.emit(&r, || common::settle_summary(&st, &r))
+    a.out.emit(&r, || {
+        common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+    })
 }

@@ -285,6 +285,7 @@ pub fn limit_result<S: Assembly>(
         reactions: rep.reactions,
         iterations: s.iterations,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 

@@ -126,6 +126,7 @@ pub fn settlement_result<S: Assembly>(
             thrust_line: vec![],
             reactions: vec![],
             geometry: st.shapes(),
+            canonical: None,
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
@@ -174,6 +175,7 @@ pub fn settlement_result<S: Assembly>(
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 

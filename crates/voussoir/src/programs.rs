@@ -482,6 +482,52 @@ pub fn optimal_face(lp: &LinearProgram, value: f64, rel_tol: f64) -> LinearProgr
     out
 }
 
+/// [`optimal_face`] made exact by complementary slackness with an optimal dual solution of
+/// `lp` (`row_dual`, `col_dual`, as [`crate::lp::LpSolution`] reports them): every row whose
+/// dual exceeds `rel_tau` of the largest dual is held at its finite bound, every column whose
+/// reduced cost does at its finite bound. A point is optimal exactly when it is feasible and
+/// complementary to one optimal dual, so this is the optimal face without a tolerance (the
+/// value row of [`optimal_face`] stays, as a guard for interior-point duals).
+pub fn optimal_face_exact(
+    lp: &LinearProgram,
+    value: f64,
+    rel_tol: f64,
+    row_dual: &[f64],
+    col_dual: &[f64],
+    rel_tau: f64,
+) -> LinearProgram {
+    let mut out = optimal_face(lp, value, rel_tol);
+    let big = row_dual
+        .iter()
+        .chain(col_dual)
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let tau = rel_tau * big;
+    let hold = |lo: &mut f64, hi: &mut f64| {
+        if hi.is_finite() && !lo.is_finite() {
+            *lo = *hi;
+        } else if lo.is_finite() && !hi.is_finite() {
+            *hi = *lo;
+        }
+    };
+    for (i, y) in row_dual.iter().enumerate() {
+        if y.abs() > tau {
+            let (mut lo, mut hi) = (out.row_lower[i], out.row_upper[i]);
+            hold(&mut lo, &mut hi);
+            out.row_lower[i] = lo;
+            out.row_upper[i] = hi;
+        }
+    }
+    for (j, z) in col_dual.iter().enumerate() {
+        if z.abs() > tau {
+            let (mut lo, mut hi) = (out.col_lower[j], out.col_upper[j]);
+            hold(&mut lo, &mut hi);
+            out.col_lower[j] = lo;
+            out.col_upper[j] = hi;
+        }
+    }
+    out
+}
+
 /// The crack area `Σ_k w_k o_k` over points without a gap, with `o_k = N_k d + g_n,k` and
 /// `d = −y`, as a cost vector on the first `map.num_dofs` of `num_cols` columns, and its
 /// constant `Σ w_k g_n,k` (so that the area is `cost·x + constant`).
@@ -532,7 +578,9 @@ pub fn crack_opening_quadratic(
 /// physical optimal fields: its optimal value held ([`optimal_face`], relative `rel_tol`), the
 /// points in `open` carrying no force (normal nor shear: their columns fixed at zero), and,
 /// with `mu = Some(μ)`, Coulomb's `|p_t| ≤ μ p_n` on every joint without friction of its own
-/// (not on bilateral joints). No objective.
+/// (not on bilateral joints). No objective. With `shear_at_open`, open points carry no normal
+/// force but may carry shear (the friction rows of those points are dropped): the relaxation
+/// for mechanisms that Heyman's no-sliding rule holds at open joints (`docs/canonical.md`).
 pub fn physical_force_program(
     map: &KinematicMap,
     build: impl Fn(&KinematicMap) -> ForceProgram,
@@ -540,7 +588,9 @@ pub fn physical_force_program(
     rel_tol: f64,
     open: &[bool],
     mu: Option<f64>,
+    shear_at_open: bool,
 ) -> ForceProgram {
+    let rows_before_laws = map.num_dofs;
     let mut fp = match mu {
         Some(mu) => {
             let mut m = map.clone();
@@ -556,6 +606,21 @@ pub fn physical_force_program(
     let nt = map.tangents_per_point;
     for (k, _) in open.iter().enumerate().filter(|(_, &o)| o) {
         let shear = &fp.pt[k * nt..(k + 1) * nt];
+        if shear_at_open {
+            // Normal force zero; the shear free of the friction rows (which would zero it).
+            if let Some(c) = fp.pn[k] {
+                fp.lp.col_lower[c] = 0.0;
+                fp.lp.col_upper[c] = 0.0;
+            }
+            for &c in shear.iter().flatten() {
+                let rows: Vec<usize> = fp.lp.column(c).map(|(i, _)| i).collect();
+                for i in rows.into_iter().filter(|&i| i >= rows_before_laws) {
+                    fp.lp.row_lower[i] = -INF;
+                    fp.lp.row_upper[i] = INF;
+                }
+            }
+            continue;
+        }
         for &c in std::iter::once(&fp.pn[k]).chain(shear).flatten() {
             fp.lp.col_lower[c] = 0.0;
             fp.lp.col_upper[c] = 0.0;

@@ -27,11 +27,17 @@ pub use crate::result::canonical::*;
 use crate::result::Spatial;
 use crate::structure::Assembly;
 
+/// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
+pub const MAX_FRICTION: f64 = 100.0;
+
 /// Settings of the canonical selection.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CanonicalOptions {
     /// Relative tolerance with which optimal values are held (work, λ, crack area).
     pub tolerance: f64,
+    /// Relative size (of the largest dual value) above which a dual value is not zero: its row
+    /// or column is held at its bound on the optimal face.
+    pub dual_threshold: f64,
     /// Relative size (of the largest motion component) below which two mechanisms are the
     /// same and a face is a single point.
     pub point_tolerance: f64,
@@ -48,6 +54,7 @@ impl Default for CanonicalOptions {
     fn default() -> Self {
         CanonicalOptions {
             tolerance: 1e-9,
+            dual_threshold: 1e-9,
             point_tolerance: 1e-6,
             friction_precision: 1e-4,
             reaction_ranges: true,
@@ -164,17 +171,7 @@ impl Stages {
         // Keep the last basis when a solve ends without one (infeasible): it still starts the
         // next program of the same shape.
         let keep = basis.clone();
-        let t = std::time::Instant::now();
-        let warm = basis.is_some();
         let s = lp::solve_warm(lp, &self.opts, basis)?;
-        if std::env::var("VOUSSOIR_TIMING").is_ok() {
-            eprintln!(
-                "  stage solve warm={warm} {:?} {:?} it {}",
-                s.status,
-                t.elapsed(),
-                s.iterations
-            );
-        }
         if basis.is_none() {
             *basis = keep;
         }
@@ -197,7 +194,7 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 pub fn canonical_mechanism(
     map: &KinematicMap,
     klp: &LinearProgram,
-    value: f64,
+    first: &lp::LpSolution,
     raw: &[f64],
     start: Option<Basis>,
     weights: &[f64],
@@ -206,7 +203,14 @@ pub fn canonical_mechanism(
 ) -> Result<Option<(Vec<f64>, CanonicalMechanism)>> {
     let nd = map.num_dofs;
     let mut st = Stages::new(opts);
-    let face1 = programs::optimal_face(klp, value, copts.tolerance);
+    let face1 = programs::optimal_face_exact(
+        klp,
+        first.objective,
+        copts.tolerance,
+        &first.row_dual,
+        &first.col_dual,
+        copts.dual_threshold,
+    );
     let (area_cost, area_const) = programs::crack_area_cost(map, weights, klp.num_cols());
     let area_of = |d: &[f64]| -> f64 {
         let y: Vec<f64> = d.iter().map(|v| -v).collect();
@@ -322,46 +326,49 @@ pub fn canonical_forces<S: Assembly>(
     opts: &SolverOptions,
     copts: &CanonicalOptions,
 ) -> Result<Option<(Vec<f64>, Vec<f64>, CanonicalForces<S::D>)>> {
+    // The feasibility LPs of the bisection go to Clarabel: on large models its interior point
+    // decides feasibility in a few dozen iterations where a warm simplex needs thousands.
+    let copts_lp = SolverOptions {
+        method: Method::Clarabel,
+        feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
+        ..*opts
+    };
     let mut stages = Stages {
-        opts: *opts,
+        opts: copts_lp,
         solves: 0,
     };
     let tol = copts.tolerance;
-    let t00 = std::time::Instant::now();
     let needs_mu = map.laws.iter().enumerate().any(|(j, l)| {
         l.friction.is_none()
             && !(map.joint_start[j]..map.joint_start[j + 1]).all(|k| map.bilateral[k])
     });
     // Feasibility at μ (None: the model's own laws), with a warm basis shared by all μ.
     let mut basis: Option<Basis> = None;
-    let mut feasible = |mu: Option<f64>, basis: &mut Option<Basis>| -> Result<bool> {
-        let fp = programs::physical_force_program(map, &build, value, tol, open, mu);
-        let t = std::time::Instant::now();
-        let s = stages.solve(&fp.lp, basis)?;
-        if std::env::var("VOUSSOIR_TIMING").is_ok() {
-            eprintln!(
-                "mu {:?} {:?} {:?} it {}",
-                mu,
-                s.status,
-                t.elapsed(),
-                s.iterations
-            );
-        }
-        Ok(s.status == LpStatus::Optimal)
-    };
+    let mut feasible =
+        |mu: Option<f64>, basis: &mut Option<Basis>, relaxed: bool| -> Result<bool> {
+            let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+            // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
+            Ok(stages
+                .solve(&fp.lp, basis)
+                .is_ok_and(|s| s.status == LpStatus::Optimal))
+        };
     // Without a physical optimal field under the model's own laws (open points unloaded),
     // there is nothing to select from: the solver's forces stand.
-    if !feasible(None, &mut None)? {
-        return Ok(None);
+    let mut relaxed = false;
+    if !feasible(None, &mut None, false)? {
+        relaxed = true;
+        if !feasible(None, &mut None, true)? {
+            return Ok(None);
+        }
     }
     let (least, mu) = if needs_mu {
-        if feasible(Some(0.0), &mut basis)? {
+        if feasible(Some(0.0), &mut basis, relaxed)? {
             (Some(0.0), Some(0.0))
         } else {
             let (mut lo, mut hi) = (0.0, 0.5);
             let mut found = false;
-            while hi <= 1e4 {
-                if feasible(Some(hi), &mut basis)? {
+            while hi <= MAX_FRICTION {
+                if feasible(Some(hi), &mut basis, relaxed)? {
                     found = true;
                     break;
                 }
@@ -371,7 +378,7 @@ pub fn canonical_forces<S: Assembly>(
             if found {
                 while hi - lo > copts.friction_precision * hi {
                     let mid = 0.5 * (lo + hi);
-                    if feasible(Some(mid), &mut basis)? {
+                    if feasible(Some(mid), &mut basis, relaxed)? {
                         hi = mid;
                     } else {
                         lo = mid;
@@ -385,14 +392,19 @@ pub fn canonical_forces<S: Assembly>(
     } else {
         (None, None)
     };
-    let t0 = std::time::Instant::now();
-    if std::env::var("VOUSSOIR_TIMING").is_ok() {
-        eprintln!("bisection {:?}", t00.elapsed());
-    }
-    let fp = programs::physical_force_program(map, &build, value, tol, open, mu);
-    let p = programs::force_energy_quadratic(&fp, weights);
+    let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+    // Relaxed: shear at open points costs 10³ times the energy (pushed off them where the
+    // optimal set allows).
+    let w: Vec<f64> = weights
+        .iter()
+        .zip(open)
+        .map(|(&w, &o)| if relaxed && o { w * 1e-3 } else { w })
+        .collect();
+    let p = programs::force_energy_quadratic(&fp, &w);
     let mut solves = stages.solves + 1;
-    let mut qs = lp::solve_quadratic(&fp.lp, &p, opts)?;
+    let Ok(mut qs) = lp::solve_quadratic(&fp.lp, &p, &copts_lp) else {
+        return Ok(None);
+    };
     if qs.status != LpStatus::Optimal {
         return Ok(None);
     }
@@ -412,15 +424,12 @@ pub fn canonical_forces<S: Assembly>(
             largest_open_force = largest_open_force.max(pn[k].abs()).max(shear);
         }
         let law = &map.laws[map.points[k].joint];
-        if !map.bilateral[k] {
+        if !map.bilateral[k] && !(relaxed && open[k]) {
             let m = law.friction.or(mu);
             if let Some(m) = m {
                 excess = excess.max(shear - m * pn[k] - law.cohesion);
             }
         }
-    }
-    if std::env::var("VOUSSOIR_TIMING").is_ok() {
-        eprintln!("qp {:?} after {} solves", t0.elapsed(), stages.solves);
     }
     // Reaction ranges over the same set.
     let mut ranges = Vec::new();
@@ -500,7 +509,7 @@ pub fn canonical_forces<S: Assembly>(
         CanonicalForces {
             least_friction: least,
             friction: mu,
-            physical: true,
+            physical: !relaxed,
             largest_open_force,
             largest_friction_excess: excess.max(0.0),
             reaction_ranges: ranges,
@@ -545,15 +554,11 @@ pub fn settle_canonical<S: Assembly>(
     // The motion LP's optimum: the dead loads' work.
     let value = primal.objective;
     let weights = tributary_weights(st, &map);
-    let t0 = std::time::Instant::now();
     let (d, mech) =
-        match canonical_mechanism(&map, &mp.lp, value, &raw, basis, &weights, &o, copts)? {
+        match canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)? {
             Some((d, m)) => (d, Some(m)),
             None => (raw, None),
         };
-    if std::env::var("VOUSSOIR_TIMING").is_ok() {
-        eprintln!("mechanism {:?}", t0.elapsed());
-    }
     let work = mp.objective_sign * value;
     let mut forces = None;
     let mut pnt = None;
@@ -613,8 +618,14 @@ pub fn limit_canonical<S: Assembly>(
     let lambda = s.lambda.unwrap_or(0.0);
     let fp = programs::limit_force_program(&map, &dead, &live);
     let kp = programs::kinematic_program(&fp)?;
-    // The kinematic program minimises −λ (its maximisation's optimum is −λ); its `y = −d`.
-    let value = -lambda;
+    // The kinematic program (its maximisation's optimum is −λ; `y = −d`), solved for the
+    // duals that fix its optimal face.
+    let o = stage_options(opts);
+    let mut basis = None;
+    let first = lp::solve_warm(&kp.lp, &o, &mut basis)?;
+    if first.status != LpStatus::Optimal {
+        return Ok(limit::limit_result(st, &map, &s));
+    }
     let weights = tributary_weights(st, &map);
     // A limit mechanism's openings are N d: support motions do not enter.
     let mut kmap = map.clone();
@@ -622,11 +633,11 @@ pub fn limit_canonical<S: Assembly>(
     let Some((d, mech)) = canonical_mechanism(
         &kmap,
         &kp.lp,
-        value,
+        &first,
         &s.mechanism,
-        None,
+        basis,
         &weights,
-        opts,
+        &o,
         copts,
     )?
     else {
@@ -640,7 +651,7 @@ pub fn limit_canonical<S: Assembly>(
         let open = open_points(&map, &s.mechanism, 0.0);
         let build = |m: &KinematicMap| programs::limit_force_program(m, &dead, &live);
         if let Some((pn, pt, f)) =
-            canonical_forces(st, &map, build, lambda, &open, &weights, opts, copts)?
+            canonical_forces(st, &map, build, lambda, &open, &weights, &o, copts)?
         {
             s.pn = pn;
             s.pt = pt;

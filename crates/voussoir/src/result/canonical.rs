@@ -62,7 +62,11 @@ pub struct CanonicalForces<D: Spatial = Two> {
     /// The μ imposed on those joints in the reported field (`least_friction` up to the
     /// bisection's precision); `null` when none was imposed.
     pub friction: Option<f64>,
-    /// Whether a physical optimal field was found (false: the forces are the solver's own).
+    /// Whether the open points carry nothing at all. False when every optimal field needs
+    /// shear at some open points (Heyman's no-sliding rule holds at open joints too, and a
+    /// mechanism may lean on it): their normal force is still zero, their shear is kept as
+    /// small as the optimal set allows (weighted 10³ in the energy) and reported in
+    /// `largest_open_force`, and Coulomb's rule is imposed on the other points.
     pub physical: bool,
     /// Largest force (normal or shear, kN) at a point open in the mechanism, and largest
     /// `|p_t| − μ p_n` (kN) over all points, in the reported field: both ~0.

@@ -30,6 +30,30 @@ impl CanonicalArgs {
     }
 }
 
+/// `limit`'s flags: the canonical selection is opt-in there (docs/canonical.md: on a symmetric
+/// arch the generic tie-break picks one of two mirror mechanisms).
+#[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Canonical solution")]
+pub struct LimitCanonicalArgs {
+    /// Report the canonical collapse mechanism and forces (least crack area among the optimal
+    /// mechanisms, then a generic tie-break; physical forces of least complementary energy)
+    /// instead of the solver's own (docs/canonical.md).
+    #[arg(long)]
+    pub canonical: bool,
+    /// With --canonical: skip the ranges of the support reactions.
+    #[arg(long)]
+    pub no_ranges: bool,
+}
+
+impl LimitCanonicalArgs {
+    pub fn options(&self) -> Option<CanonicalOptions> {
+        self.canonical.then(|| CanonicalOptions {
+            reaction_ranges: !self.no_ranges,
+            ..CanonicalOptions::default()
+        })
+    }
+}
+
 /// The summary lines of a canonical selection.
 pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
     let mut s = String::new();

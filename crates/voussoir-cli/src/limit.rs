@@ -29,7 +29,7 @@ pub struct LimitArgs {
     #[command(flatten)]
     pub forces: crate::draw_args::ForcesArgs,
     #[command(flatten)]
-    pub canonical: crate::canonical::CanonicalArgs,
+    pub canonical: crate::canonical::LimitCanonicalArgs,
 }
 
 /// `limit`'s flags, resolved.

@@ -149,14 +149,24 @@ struct Stages {
 
 impl Stages {
     fn new(opts: &SolverOptions) -> Stages {
-        // A cost change keeps a basis primal feasible: primal simplex continues from it.
+        // A cost change keeps a basis primal feasible: primal simplex continues from it. After an
+        // interior-point method the stages run on the dual simplex too: the tie-break is a
+        // vertex, which an interior point only approaches.
         let method = if opts.method.is_simplex() {
             Method::PrimalSimplex
         } else {
-            opts.method
+            Method::DualSimplex
         };
         Stages {
-            opts: SolverOptions { method, ..*opts },
+            opts: SolverOptions {
+                method,
+                feasibility_tolerance: if method.is_simplex() {
+                    1e-9
+                } else {
+                    opts.feasibility_tolerance
+                },
+                ..*opts
+            },
             solves: 0,
         }
     }

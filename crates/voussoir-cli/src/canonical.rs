@@ -15,9 +15,13 @@ pub struct CanonicalArgs {
     #[arg(long)]
     pub raw: bool,
     /// Skip the ranges of the support reactions over the optimal force fields (2 LPs per
-    /// reaction component of every loaded support).
-    #[arg(long)]
+    /// reaction component of every loaded support; computed by default on models of at most
+    /// 500 blocks).
+    #[arg(long, conflicts_with = "ranges")]
     pub no_ranges: bool,
+    /// Compute the reaction ranges whatever the model's size.
+    #[arg(long)]
+    pub ranges: bool,
 }
 
 impl CanonicalArgs {
@@ -25,6 +29,11 @@ impl CanonicalArgs {
     pub fn options(&self) -> Option<CanonicalOptions> {
         (!self.raw).then(|| CanonicalOptions {
             reaction_ranges: !self.no_ranges,
+            ranges_max_blocks: if self.ranges {
+                usize::MAX
+            } else {
+                CanonicalOptions::default().ranges_max_blocks
+            },
             ..CanonicalOptions::default()
         })
     }
@@ -89,7 +98,13 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
                     "canonical forces: least complementary energy, open points unloaded"
                 );
             }
-            _ => {}
+            _ => {
+                let _ = writeln!(
+                    s,
+                    "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); least complementary energy",
+                    f.largest_open_force
+                );
+            }
         }
         let ranged: Vec<&str> = f
             .reaction_ranges

@@ -48,6 +48,9 @@ pub struct CanonicalOptions {
     pub reaction_ranges: bool,
     /// Select the canonical force field (and the least friction).
     pub forces: bool,
+    /// Reaction ranges only for models of at most this many blocks (each range LP is a full
+    /// solve; on the 1,889-block façade, 132 of them take many minutes).
+    pub ranges_max_blocks: usize,
 }
 
 impl Default for CanonicalOptions {
@@ -59,6 +62,7 @@ impl Default for CanonicalOptions {
             friction_precision: 1e-4,
             reaction_ranges: true,
             forces: true,
+            ranges_max_blocks: 500,
         }
     }
 }
@@ -443,7 +447,7 @@ pub fn canonical_forces<S: Assembly>(
     }
     // Reaction ranges over the same set.
     let mut ranges = Vec::new();
-    if copts.reaction_ranges {
+    if copts.reaction_ranges && st.num_blocks() <= copts.ranges_max_blocks {
         let nd = <S::D as Dim>::DOFS;
         let ns = st.num_supports();
         let mut coeff: Vec<Vec<Vec<(usize, f64)>>> = vec![vec![Vec::new(); nd]; ns];
@@ -531,7 +535,7 @@ pub fn canonical_forces<S: Assembly>(
 /// Solver options of the canonical stages: an interior-point backend runs at a tighter
 /// tolerance, since the optimal values it holds fix the faces the next stages search.
 fn stage_options(opts: &SolverOptions) -> SolverOptions {
-    if opts.method.is_simplex() {
+    if opts.method != Method::Clarabel {
         *opts
     } else {
         SolverOptions {

@@ -3,6 +3,7 @@
 use crate::common::{CrushingArgs, Fail, Input, ModelArgs, OutArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
+use voussoir::analysis::canonical::limit_canonical;
 use voussoir::analysis::limit::{limit_with, Crushing, DEFAULT_FACETS};
 use voussoir::model3d::AnyModel;
 
@@ -18,6 +19,8 @@ pub struct LimitArgs {
     pub draw: DrawArgs,
     #[command(flatten)]
     pub forces: crate::draw_args::ForcesArgs,
+    #[command(flatten)]
+    pub canonical: crate::canonical::LimitCanonicalArgs,
 }
 
 /// `limit`'s flags, resolved.
@@ -45,24 +48,33 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
             let st = c.input.structure_of(model, None)?;
-            let r = match a.crushing.non_associative() {
-                Some(o) => {
-                    if c.crushing == Crushing::Conic {
-                        return Err(Fail(
-                            "--non-associative goes with --crushing linear (each iterate is an LP)"
-                                .into(),
-                        ));
-                    }
-                    voussoir::analysis::nonassociative::limit_nonassociative_result(
-                        &st,
-                        &c.input.solver,
-                        &o,
-                    )?
+            let r = match (
+                a.crushing.non_associative(),
+                a.canonical.options(),
+                c.crushing,
+            ) {
+                (Some(_), _, Crushing::Conic) => {
+                    return Err(Fail(
+                        "--non-associative goes with --crushing linear (each iterate is an LP)"
+                            .into(),
+                    ))
                 }
-                None => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
+                (Some(o), _, _) => voussoir::analysis::nonassociative::limit_nonassociative_result(
+                    &st,
+                    &c.input.solver,
+                    &o,
+                )?,
+                // The canonical selection is among LP optima (the conic model's optimum is an
+                // interior point of a cone program: reported as solved).
+                (None, Some(o), Crushing::Linear) => {
+                    limit_canonical(&st, &c.input.solver, c.facets, &o)?
+                }
+                _ => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
             };
             a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
-            a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+            a.out.emit(&r, || {
+                crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+            })
         }
         AnyModel::Spatial(model) => {
             if a.crushing.given() {
@@ -76,22 +88,27 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
             } else {
                 Crushing::Linear
             };
-            let r = match a.crushing.non_associative() {
-                Some(o) if cone == Crushing::Linear => {
+            let r = match (a.crushing.non_associative(), a.canonical.options(), cone) {
+                (Some(o), _, Crushing::Linear) => {
                     voussoir::analysis::nonassociative::limit_nonassociative_result(
                         &st,
                         &c.input.solver3d,
                         &o,
                     )?
                 }
-                Some(_) => return Err(Fail(
+                (Some(_), _, _) => return Err(Fail(
                     "--non-associative goes with the friction pyramid, not --friction-cone exact"
                         .into(),
                 )),
-                None => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
+                (None, Some(o), Crushing::Linear) => {
+                    limit_canonical(&st, &c.input.solver3d, DEFAULT_FACETS, &o)?
+                }
+                _ => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
             };
             a.draw.emit_3d(&r, &c.input.path)?;
-            a.out.emit(&r, || crate::common::limit_summary(&st, &r))
+            a.out.emit(&r, || {
+                crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+            })
         }
     }
 }

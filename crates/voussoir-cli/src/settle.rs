@@ -5,7 +5,8 @@ use crate::common::{
 };
 use crate::draw_args::DrawArgs;
 use clap::Args;
-use voussoir::analysis::limit::Crushing;
+use voussoir::analysis::canonical::settle_canonical;
+use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS};
 use voussoir::analysis::nonassociative::settle_nonassociative;
 use voussoir::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
 use voussoir::model3d::{AnyModel, Model3d};
@@ -26,6 +27,8 @@ pub struct SettleCmdArgs {
     pub draw: DrawArgs,
     #[command(flatten)]
     pub forces: crate::draw_args::ForcesArgs,
+    #[command(flatten)]
+    pub canonical: crate::canonical::CanonicalArgs,
 }
 
 /// `settle`'s flags, resolved.
@@ -75,21 +78,31 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                 .into(),
         ));
     }
-    let r = match (c.form, a.crushing.non_associative_settlement()) {
-        (SettlementForm::Both, Some(o)) => settle_nonassociative(
+    // Joint laws beyond the defaults (non-associative iteration, exact cone, other facet
+    // counts) are solved as such; otherwise the canonical selection unless --raw.
+    let plain = c.crushing == Crushing::Linear && c.facets == DEFAULT_FACETS;
+    let r = match (
+        c.form,
+        a.crushing.non_associative_settlement(),
+        a.canonical.options(),
+    ) {
+        (SettlementForm::Both, Some(o), _) => settle_nonassociative(
             &st,
             &common::iteration_solver(&a.model, &c.input.solver),
             c.crushing,
             c.facets,
             &o,
         )?,
-        (SettlementForm::Both, None) => {
+        (form, None, Some(o)) if plain => settle_canonical(&st, &c.input.solver, form, &o)?,
+        (SettlementForm::Both, None, _) => {
             settle_crushing(&st, &c.input.solver, c.crushing, c.facets)?
         }
-        (form, _) => settle_with(&st, &c.input.solver, form)?,
+        (form, _, _) => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
-    a.out.emit(&r, || common::settle_summary(&st, &r))
+    a.out.emit(&r, || {
+        common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+    })
 }
 
 fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
@@ -113,17 +126,21 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
                 .into(),
         ));
     }
+    // 3D: the solver's own solution (the canonical selection is not yet fast enough on 3D
+    // models; docs/canonical.md).
     let r = match (c.form, a.crushing.non_associative_settlement()) {
         (SettlementForm::Both, Some(o)) => settle_nonassociative(
             &st,
             &common::iteration_solver(&a.model, &c.input.solver3d),
             Crushing::Linear,
-            voussoir::analysis::limit::DEFAULT_FACETS,
+            DEFAULT_FACETS,
             &o,
         )?,
         (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
         (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };
     a.draw.emit_3d(&r, &c.input.path)?;
-    a.out.emit(&r, || common::settle_summary(&st, &r))
+    a.out.emit(&r, || {
+        common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+    })
 }

@@ -303,6 +303,7 @@ pub fn limit_result<S: Assembly>(
         iterations: s.iterations,
         friction_iteration: None,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 

@@ -188,7 +188,7 @@ fn reaction_coefficients<S: Assembly>(
 pub fn reaction_ranges<S: Assembly>(
     st: &S,
     solver: &SolverOptions,
-) -> Result<(Vec<ReactionRange>, usize)> {
+) -> Result<(Vec<AdmissibleReactionRange>, usize)> {
     let map = KinematicMap::new(st);
     let dead = st.load_vector(false);
     let coefficients = reaction_coefficients(st, &map);
@@ -228,7 +228,7 @@ pub fn reaction_ranges<S: Assembly>(
                 max: ends[1],
             });
         }
-        ranges.push(ReactionRange {
+        ranges.push(AdmissibleReactionRange {
             support: st.support_name(s).to_string(),
             components,
         });

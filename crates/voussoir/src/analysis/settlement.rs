@@ -185,6 +185,7 @@ pub fn settlement_result<S: Assembly>(
             reactions: vec![],
             friction_iteration: None,
             geometry: st.shapes(),
+            canonical: None,
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
@@ -234,6 +235,7 @@ pub fn settlement_result<S: Assembly>(
         reactions: rep.reactions,
         friction_iteration: None,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 

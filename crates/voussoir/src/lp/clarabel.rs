@@ -26,10 +26,26 @@ impl Backend for Clarabel {
         let solution = if cones.is_empty() {
             solve_clarabel(lp, o)?
         } else {
-            solve_clarabel_with_cones(lp, o, cones)?
+            solve_clarabel_with_cones(lp, o, cones, &[])?
         };
         Ok(Solved {
             solution,
+            basis: None,
+        })
+    }
+
+    fn supports_quadratic(&self) -> bool {
+        true
+    }
+
+    fn solve_quadratic(
+        &self,
+        lp: &LinearProgram,
+        quadratic: &[(usize, usize, f64)],
+        o: &SolverOptions,
+    ) -> Result<Solved> {
+        Ok(Solved {
+            solution: solve_clarabel_with_cones(lp, o, &[], quadratic)?,
             basis: None,
         })
     }
@@ -44,7 +60,7 @@ fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
     // variable for the solver: in the force LP the two shear forces of a straight joint have
     // the same column. The merged value goes to the first of them.
     let (reduced, map) = merge_duplicate_columns(lp);
-    let mut sol = solve_clarabel_with_cones(&reduced, o, &[])?;
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &[], &[])?;
     if sol.status == LpStatus::Optimal {
         let mut x = vec![0.0; lp.num_cols()];
         let mut col_dual = vec![0.0; lp.num_cols()];
@@ -100,11 +116,13 @@ fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
     (out, map)
 }
 
-/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP).
+/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP) and
+/// a quadratic term `½ xᵀPx` (upper triangle triplets; none for a plain LP or cone program).
 fn solve_clarabel_with_cones(
     lp: &LinearProgram,
     o: &SolverOptions,
     socs: &[Cone3],
+    quadratic: &[(usize, usize, f64)],
 ) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
     use clarabel::solver::{
@@ -164,7 +182,17 @@ fn solve_clarabel_with_cones(
     }
     let m = b.len();
     let a = CscMatrix::new_from_triplets(m, n, ii, jj, vv);
-    let p = CscMatrix::<f64>::zeros((n, n));
+    let p = if quadratic.is_empty() {
+        CscMatrix::<f64>::zeros((n, n))
+    } else {
+        CscMatrix::new_from_triplets(
+            n,
+            n,
+            quadratic.iter().map(|t| t.0).collect(),
+            quadratic.iter().map(|t| t.1).collect(),
+            quadratic.iter().map(|t| t.2).collect(),
+        )
+    };
     let q: Vec<f64> = lp.cost.iter().map(|c| sign * c).collect();
     let mut cones: Vec<SupportedConeT<f64>> = Vec::new();
     if !zero.is_empty() {
@@ -230,7 +258,17 @@ fn solve_clarabel_with_cones(
             col_dual[j] -= v * row_dual[i];
         }
     }
-    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
+    let quad: f64 = quadratic
+        .iter()
+        .map(|&(i, j, v)| {
+            if i == j {
+                0.5 * v * x[i] * x[i]
+            } else {
+                v * x[i] * x[j]
+            }
+        })
+        .sum();
+    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum::<f64>() + quad;
     Ok(LpSolution {
         status,
         objective,

@@ -19,12 +19,12 @@ pub struct ComponentRange {
 
 /// The ranges of a support's reaction components.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ReactionRange {
+pub struct AdmissibleReactionRange {
     pub support: String,
     pub components: Vec<ComponentRange>,
 }
 
-impl ReactionRange {
+impl AdmissibleReactionRange {
     /// The range of a component by name (`"fx"`, …).
     pub fn component(&self, name: &str) -> Option<&ComponentRange> {
         self.components.iter().find(|c| c.component == name)
@@ -54,7 +54,7 @@ pub struct SafetyResult {
     /// Range of every support's reaction force components over the statically admissible
     /// states (empty if the structure does not stand): for an arch, the least and the largest
     /// horizontal thrust, the two states between which a settlement moves it.
-    pub reactions: Vec<ReactionRange>,
+    pub reactions: Vec<AdmissibleReactionRange>,
     /// LP solves spent.
     pub solves: usize,
 }

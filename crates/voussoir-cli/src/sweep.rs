@@ -170,6 +170,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         Some(s) => parse_shard(s)?,
         None => (0, 1),
     };
+    sweep::check_size(n, shards)?;
     let tasks = sweep::shard_tasks(n, shard, shards);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(a.threads.unwrap_or(0))

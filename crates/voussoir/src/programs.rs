@@ -43,6 +43,8 @@ pub struct ForceProgram {
     /// Column of `p_n` and `p_t` per point (None for points with a gap).
     pub pn: Vec<Option<usize>>,
     pub pt: Vec<Option<usize>>,
+    /// The loads' force scale (the total dead load) the crushing polygons are placed by.
+    pub force_scale: f64,
 }
 
 /// Columns under assembly: cost, bounds, entries.
@@ -127,7 +129,12 @@ impl ForceProgram {
             }
         }
         friction_rows(map, &mut lp, &mut c, &pn, &pt);
-        crushing_rows(map, &mut lp, &mut c, &pn);
+        // The force scale: the total dead load (the live loads' if there is none).
+        let scale = match force_scale(map, dead) {
+            s if s > 0.0 => s,
+            _ => live.map_or(0.0, |l| force_scale(map, l)),
+        };
+        crushing_rows(map, &mut lp, &mut c, &pn, scale);
         for (cost, lo, hi, entries) in c.cols {
             lp.add_column(cost, lo, hi, entries);
         }
@@ -137,6 +144,7 @@ impl ForceProgram {
             lambda,
             pn,
             pt,
+            force_scale: scale,
         }
     }
 
@@ -229,14 +237,75 @@ fn crushing_joints(
     })
 }
 
+/// The force scale of a load vector: the sum of the magnitudes of its block forces (the total
+/// weight, for the dead loads).
+fn force_scale(map: &KinematicMap, loads: &[f64]) -> f64 {
+    let nd = map.dofs_per_block;
+    let translations = if nd == 3 { 2 } else { 3 };
+    loads
+        .chunks(nd)
+        .map(|f| {
+            f[..translations.min(f.len())]
+                .iter()
+                .map(|v| v * v)
+                .sum::<f64>()
+                .sqrt()
+        })
+        .sum()
+}
+
+/// Where the vertices of a joint's crushing polygon lie, for `k` facets: at 0 and at forces
+/// rising geometrically from `low` to `top = min(f_c w t, reach × scale)` — where the joint
+/// forces are (about the loads' force `scale`), not spread evenly to the crushing force, so
+/// that as f_c → ∞ the polygon tends to the rigid `|M| ≤ N t/2` at any facet count. Between
+/// two vertices in the ratio `r` the chord cuts the eccentricity `t/2 − N/(2 f_c w)` by at
+/// most `(√r − 1)²/√r` of the crushing term itself; below `low = max(top / k², scale / 64)` by
+/// at most `low / (2 f_c w)`. When `top` is below f_c w t (returned `true`), a cap `N ≤ top`
+/// closes the polygon. When `top` is above the peak of the parabola `N = f_c w t / 2` (the
+/// largest moment a joint carries), the peak is the top of the geometric part and a quarter of
+/// the facets cover `[f_c w t / 2, top]` evenly.
+pub fn crushing_vertices(nmax: f64, scale: f64, reach: f64, k: usize) -> (Vec<f64>, bool) {
+    let k = k.max(1);
+    let capped = scale > 0.0 && reach * scale < nmax;
+    let end = if capped { reach * scale } else { nmax };
+    let (top, k_hi) = if nmax / 2.0 < end && k > 1 {
+        (nmax / 2.0, (k / 4).max(1).min(k - 1))
+    } else {
+        (end, 0)
+    };
+    let k_lo = k - k_hi;
+    let low = (top / (k_lo * k_lo) as f64)
+        .max(scale / 64.0)
+        .min(top / k_lo as f64);
+    let mut v = vec![0.0];
+    if k_lo == 1 {
+        v.push(top);
+    } else {
+        let ratio = (top / low).powf(1.0 / (k_lo - 1) as f64);
+        v.extend((0..k_lo).map(|i| {
+            if i + 1 == k_lo {
+                top
+            } else {
+                low * ratio.powi(i as i32)
+            }
+        }));
+    }
+    v.extend((1..=k_hi).map(|i| top + (end - top) * i as f64 / k_hi as f64));
+    (v, capped)
+}
+
 /// Finite compressive strength: `|M| ≤ N (t/2 − N / (2 f_c w))` per joint (rectangular stress
 /// block), inscribed by `map.facets` chords so that strength is never overestimated.
-/// `N = Σ p_n`, `M = Σ s_k p_n,k` with `s_k` the point's position along the joint.
+/// `N = Σ p_n`, `M = Σ s_k p_n,k` with `s_k` the point's position along the joint. The chords'
+/// ends lie on the parabola at [`crushing_vertices`] — placed where the forces are, so that as
+/// f_c → ∞ the polygon tends to the rigid `|M| ≤ N t/2` at any facet count — and where they stop
+/// below f_c·w·t a cap `N ≤ top` closes the polygon (still inscribed).
 fn crushing_rows(
     map: &KinematicMap,
     lp: &mut LinearProgram,
     c: &mut Columns,
     pn: &[Option<usize>],
+    scale: f64,
 ) {
     for (law, nmax, range) in crushing_joints(map) {
         let cols: Vec<(usize, f64)> = range
@@ -247,19 +316,24 @@ fn crushing_rows(
         let fw = nmax / t;
         let m_of = |n: f64| n * t / 2.0 - n * n / (2.0 * fw);
         // `facets == 0`: the chords are left to a conic solver (crate::conic).
-        let kf = map.facets;
-        for i in 0..kf {
-            let (n0, n1) = (
-                nmax * i as f64 / kf as f64,
-                nmax * (i + 1) as f64 / kf as f64,
-            );
-            let a = (m_of(n1) - m_of(n0)) / (n1 - n0);
-            let b = (m_of(n0) - a * n0).max(0.0);
-            for sign in [1.0, -1.0] {
-                // sign·M − a·N ≤ b
-                let r = lp.add_row(-INF, b);
-                for &(col, s) in &cols {
-                    c.entry(col, r, sign * s - a);
+        if map.facets > 0 {
+            let (v, capped) = crushing_vertices(nmax, scale, map.crushing_reach, map.facets);
+            for w in v.windows(2) {
+                let (n0, n1) = (w[0], w[1]);
+                let a = (m_of(n1) - m_of(n0)) / (n1 - n0);
+                let b = (m_of(n0) - a * n0).max(0.0);
+                for sign in [1.0, -1.0] {
+                    // sign·M − a·N ≤ b
+                    let r = lp.add_row(-INF, b);
+                    for &(col, s) in &cols {
+                        c.entry(col, r, sign * s - a);
+                    }
+                }
+            }
+            if capped {
+                let r = lp.add_row(-INF, v[v.len() - 1]);
+                for &(col, _) in &cols {
+                    c.entry(col, r, 1.0);
                 }
             }
         }
@@ -274,6 +348,21 @@ fn crushing_rows(
             }
         }
     }
+}
+
+/// Whether a joint of finite strength carries, in the solution `x` of `fp`, a normal force at
+/// the cap of its crushing polygon (so the polygon should reach further: see
+/// [`KinematicMap::crushing_reach`]).
+pub fn crushing_cap_reached(map: &KinematicMap, fp: &ForceProgram, x: &[f64]) -> bool {
+    if map.facets == 0 || fp.lp.num_cols() != x.len() {
+        return false;
+    }
+    let scale = fp.force_scale;
+    crushing_joints(map).any(|(_, nmax, range)| {
+        let (v, capped) = crushing_vertices(nmax, scale, map.crushing_reach, map.facets);
+        let n: f64 = range.filter_map(|k| fp.pn[k].map(|c| x[c])).sum();
+        capped && n >= v[v.len() - 1] * (1.0 - 1e-6)
+    })
 }
 
 /// The motion LP: `max work·d` subject to the joint rows — built as the LP dual of the force
@@ -419,26 +508,37 @@ pub fn settlement_force_program_conic(map: &KinematicMap, dead: &[f64]) -> Force
 
 /// The two rotated cones of every joint of finite strength, appended to `fp`:
 /// ```text
-///   N² ≤ 2 f_c w · (N t/2 ∓ M)      ⇔      ‖(N, (r − f_c w)/√2)‖ ≤ (r + f_c w)/√2,  r = N t/2 ∓ M
+///   N² ≤ 2 f_c w · (N t/2 ∓ M)   ⇔   ‖(N, (β r − v)/√2)‖ ≤ (β r + v)/√2,
+///   r = N t/2 ∓ M,   β = √(2 f_c w / F),   v = f_c w / β
 /// ```
-/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly.
+/// which is `|M| ≤ N (t/2 − N/(2 f_c w))` exactly (`β r · v = f_c w r`). `F` is the loads'
+/// force scale: with `β = 1` the cone's two halves differ by `f_c w t / F` (10⁶ and more for
+/// strong masonry) and the interior-point method stalls; the geometric mean halves the spread.
+/// (Where it still fails, limit analysis falls back on a fine inscribed polygon:
+/// [`crate::analysis::limit::solve_limit_conic`].)
 fn crushing_cones(map: &KinematicMap, fp: &mut ForceProgram) {
     let r2 = std::f64::consts::SQRT_2;
     for (law, nmax, range) in crushing_joints(map) {
         let t = law.depth;
         let fw = nmax / t;
+        let beta = if fp.force_scale > 0.0 {
+            (2.0 * fw / fp.force_scale).sqrt()
+        } else {
+            1.0
+        };
+        let v = fw / beta;
         let cols: Vec<(usize, f64)> = range
             .filter_map(|k| fp.pn[k].map(|c| (c, map.along[k])))
             .collect();
         for s in [1.0, -1.0] {
-            // r = Σ (t/2 − s·s_k) p_k; slacks b − A x = ((r + f w)/√2, N, (r − f w)/√2).
+            // r = Σ (t/2 − s·s_k) p_k; slacks b − A x = ((β r + v)/√2, N, (β r − v)/√2).
             let r_row: Vec<(usize, f64)> = cols
                 .iter()
-                .map(|&(c, a)| (c, -(t / 2.0 - s * a) / r2))
+                .map(|&(c, a)| (c, -beta * (t / 2.0 - s * a) / r2))
                 .collect();
             let n_row: Vec<(usize, f64)> = cols.iter().map(|&(c, _)| (c, -1.0)).collect();
             fp.cones
-                .push([(r_row.clone(), fw / r2), (n_row, 0.0), (r_row, -fw / r2)]);
+                .push([(r_row.clone(), v / r2), (n_row, 0.0), (r_row, -v / r2)]);
         }
     }
 }

@@ -275,6 +275,38 @@ pub fn capacity_record(st: &Structure, opts: &CapacityOptions) -> Result<Capacit
     })
 }
 
+/// Most analyses one run (one shard) of a sweep takes: its records are kept in memory (about
+/// 1 kB each, more with many hinges), so a million is about a gigabyte. Larger sweeps are split
+/// with `--shard I/N` (array jobs) and merged.
+pub const MAX_ANALYSES_PER_RUN: usize = 1_000_000;
+
+/// Most analyses a sweep may have in all (its shards together).
+pub const MAX_ANALYSES: usize = 1_000_000_000;
+
+/// Refuse, before any work, a sweep of `count` analyses whose runs (`shards` of them) would
+/// take more than [`MAX_ANALYSES_PER_RUN`] each, or that has more than [`MAX_ANALYSES`].
+pub fn check_size(count: usize, shards: usize) -> Result<()> {
+    if count == 0 {
+        return Err(Error::Request(
+            "the number of analyses must be at least 1".into(),
+        ));
+    }
+    if count > MAX_ANALYSES {
+        return Err(Error::Request(format!(
+            "{count} analyses: a sweep has at most {MAX_ANALYSES}"
+        )));
+    }
+    let per_run = count.div_ceil(shards.max(1));
+    if per_run > MAX_ANALYSES_PER_RUN {
+        return Err(Error::Request(format!(
+            "{count} analyses in {} run(s): at most {MAX_ANALYSES_PER_RUN} per run (their results are kept in memory); split it with --shard I/N (at least {} shards)",
+            shards.max(1),
+            count.div_ceil(MAX_ANALYSES_PER_RUN)
+        )));
+    }
+    Ok(())
+}
+
 /// Run the tasks `tasks` (indices below `spec.kind.count()`) in parallel on the current rayon
 /// pool, calling `progress` after each; the records come back sorted by index. The model is
 /// validated once first, so that a bad model fails with one message.
@@ -285,11 +317,7 @@ pub fn run(
     progress: &(dyn Fn() + Sync),
 ) -> Result<Vec<SweepRecord>> {
     let n = spec.kind.count();
-    if n == 0 {
-        return Err(Error::Request(
-            "the number of analyses must be at least 1".into(),
-        ));
-    }
+    check_size(n, n.div_ceil(tasks.len().max(1)))?;
     if let SweepKind::Sample { cov, .. } = spec.kind {
         if !(cov.is_finite() && cov >= 0.0) {
             return Err(Error::Request(format!(

@@ -207,6 +207,13 @@ pub fn incremental_with(
             "the maximum displacement must be a positive number".into(),
         ));
     }
+    let wanted = (opts.max_displacement / opts.step).ceil();
+    if wanted > opts.max_steps as f64 {
+        return Err(Error::Request(format!(
+            "steps: a largest displacement of {} m in steps of {} m takes {wanted:.0} steps, more than the bound of {} (take a larger step)",
+            opts.max_displacement, opts.step, opts.max_steps
+        )));
+    }
     if !start.has_live_loads() {
         return Err(Error::Request(
             "incremental analysis needs live loads (the model has none)".into(),

@@ -27,6 +27,9 @@ pub struct LimitSolution {
     pub solver: SolverInfo,
     /// The least multiplier in equilibrium (`None`: unbounded below, or not computed).
     pub least: Option<f64>,
+    /// A sentence to add to the result's message (how the result was obtained, when not as
+    /// asked), or empty.
+    pub note: String,
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
@@ -47,7 +50,39 @@ fn solve_static<S: Assembly>(
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
     let sol = fp.solve(opts)?;
+    if sol.status == LpStatus::Optimal && programs::crushing_cap_reached(map, &fp, &sol.x) {
+        return solve_widened(map, &dead, &live, opts);
+    }
     Ok((limit_solution(map, &fp, &live, &sol, opts.info()), fp))
+}
+
+/// The static program again with crushing polygons reaching further (×64 each time, at last
+/// to f_c·w·t), until no joint's force stops at the cap of its polygon: the polygons stay
+/// where the forces are, however large these are against the loads' scale.
+fn solve_widened(
+    map: &KinematicMap,
+    dead: &[f64],
+    live: &[f64],
+    opts: &SolverOptions,
+) -> Result<(LimitSolution, ForceProgram)> {
+    let mut m = map.clone();
+    let mut round = 0;
+    loop {
+        round += 1;
+        m.crushing_reach = if round < 8 {
+            map.crushing_reach * 64f64.powi(round)
+        } else {
+            f64::INFINITY
+        };
+        let fp = programs::limit_force_program(&m, dead, live);
+        let sol = fp.solve(opts)?;
+        if m.crushing_reach == f64::INFINITY
+            || sol.status != LpStatus::Optimal
+            || !programs::crushing_cap_reached(&m, &fp, &sol.x)
+        {
+            return Ok((limit_solution(&m, &fp, live, &sol, opts.info()), fp));
+        }
+    }
 }
 
 /// [`solve_limit`] of a structure as given, with the check that it stands under its dead loads
@@ -108,6 +143,12 @@ fn load_vectors<S: Assembly>(st: &S) -> Result<(Vec<f64>, Vec<f64>)> {
 
 /// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
 /// its inscribed polygon. Without finite compressive strength this is the same problem.
+///
+/// The cone program is checked against an inscribed polygon of [`CHECK_FACETS`] facets
+/// (HiGHS): the polygon's λ is a lower bound within its chord error (about 10⁻⁴ of the
+/// crushing effect) of the exact λ. Where the interior-point method fails — the cone is nearly
+/// flat where f_c is far above the joint stresses — or stops at a point that contradicts the
+/// bound, the polygon's result is returned, and the message says so.
 pub fn solve_limit_conic<S: Assembly>(
     st: &S,
     map: &KinematicMap,
@@ -119,13 +160,59 @@ pub fn solve_limit_conic<S: Assembly>(
         feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
         ..*opts
     };
-    let sol = fp.solve(&o)?;
     let solver = crate::lp::SolverInfo {
         solver: crate::lp::cone_backend(&o).name().to_string(),
         method: crate::lp::Method::Clarabel,
     };
-    Ok(limit_solution(map, &fp, &live, &sol, solver))
+    // Crushing cones (2D) have a polygon to check them by; the 3D friction cones do not.
+    let crushing = map.tangents_per_point == 1 && !fp.cones.is_empty();
+    if !crushing {
+        let sol = fp.solve(&o)?;
+        return Ok(limit_solution(map, &fp, &live, &sol, solver));
+    }
+    let conic = fp
+        .solve(&o)
+        .map(|sol| limit_solution(map, &fp, &live, &sol, solver));
+    let mut fine = map.clone();
+    fine.facets = CHECK_FACETS;
+    let (poly, _) = solve_static(st, &fine, opts)?;
+    let why = match &conic {
+        Err(e) => format!("the cone program failed ({e})"),
+        Ok(c) => match (c.status, c.lambda, poly.status, poly.lambda) {
+            (LimitStatus::Collapse, Some(lc), LimitStatus::Collapse, Some(lp)) => {
+                let tol = 1e-6 * lp.abs().max(1e-300);
+                if lc >= lp - tol && lc <= lp + 1e-3 * lp.abs() + tol {
+                    String::new()
+                } else {
+                    format!("the cone program's λ = {lc:.6} contradicts the polygon's bound")
+                }
+            }
+            // The polygon is inscribed: where it stands, the exact domain does too.
+            (cs, _, LimitStatus::Collapse | LimitStatus::Locked, _)
+                if cs != LimitStatus::Collapse && cs != poly.status =>
+            {
+                format!(
+                    "the cone program's '{}' contradicts the polygon",
+                    cs.sentence()
+                )
+            }
+            _ => String::new(),
+        },
+    };
+    match conic {
+        Ok(c) if why.is_empty() => Ok(c),
+        _ => Ok(LimitSolution {
+            note: format!(
+                "{why}: result of the inscribed polygon with {CHECK_FACETS} facets (a lower bound within 1e-4 of the crushing effect)"
+            ),
+            ..poly
+        }),
+    }
 }
+
+/// Facets of the inscribed polygon that checks (and replaces, where the interior-point method
+/// fails) the exact crushing cones.
+pub const CHECK_FACETS: usize = 256;
 
 /// λ, forces and the mechanism (duals of the equilibrium rows, normalised to unit live-load
 /// work) from a solved force program.
@@ -146,6 +233,7 @@ pub fn limit_solution(
         iterations,
         solver: solver.clone(),
         least: None,
+        note: String::new(),
     };
     match status {
         LpStatus::Unbounded => return none(LimitStatus::Locked),
@@ -174,6 +262,7 @@ pub fn limit_solution(
         iterations,
         solver,
         least: None,
+        note: String::new(),
     }
 }
 
@@ -278,6 +367,9 @@ pub fn limit_result<S: Assembly>(
             "; WARNING: the collapse mechanism closes the open crack of joint {} (limit analysis is not valid there: after that crack closes the structure carries more; use the incremental analysis)",
             closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
         ));
+    }
+    if !s.note.is_empty() {
+        message = format!("{message} ({})", s.note);
     }
     LimitResult {
         status: s.status,

@@ -23,11 +23,7 @@ impl Backend for Clarabel {
         o: &SolverOptions,
         _start: Option<&Basis>,
     ) -> Result<Solved> {
-        let solution = if cones.is_empty() {
-            solve_clarabel(lp, o)?
-        } else {
-            solve_clarabel_with_cones(lp, o, cones, &[])?
-        };
+        let solution = solve_clarabel(lp, cones, o)?;
         Ok(Solved {
             solution,
             basis: None,
@@ -55,12 +51,29 @@ impl Backend for Clarabel {
 /// fixed variables) or the non-negative cone (each finite side of a range row or bound). Row
 /// duals are returned with HiGHS's convention (`c − Aᵀy` are the reduced costs of a
 /// minimisation; negated for a maximisation).
-fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
-    // Identical columns (same entries, cost and bounds, each free or non-negative) are one
-    // variable for the solver: in the force LP the two shear forces of a straight joint have
-    // the same column. The merged value goes to the first of them.
-    let (reduced, map) = merge_duplicate_columns(lp);
-    let mut sol = solve_clarabel_with_cones(&reduced, o, &[], &[])?;
+fn solve_clarabel(lp: &LinearProgram, cones: &[Cone3], o: &SolverOptions) -> Result<LpSolution> {
+    // Identical columns (same entries, cost and bounds, each free or non-negative, in no cone)
+    // are one variable for the solver: in the force LP the two shear forces of a straight
+    // joint have the same column (a singular KKT system otherwise, which the cones' extreme
+    // curvature at high compressive strength does not forgive). The merged value goes to the
+    // first of them.
+    let mut in_cone = vec![false; lp.num_cols()];
+    for c in cones {
+        for (entries, _) in c {
+            for &(j, _) in entries {
+                in_cone[j] = true;
+            }
+        }
+    }
+    let (reduced, map) = merge_duplicate_columns(lp, &in_cone);
+    let cones: Vec<Cone3> = cones
+        .iter()
+        .map(|c| {
+            c.clone()
+                .map(|(e, b)| (e.into_iter().map(|(j, v)| (map[j], v)).collect(), b))
+        })
+        .collect();
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &cones, &[])?;
     if sol.status == LpStatus::Optimal {
         let mut x = vec![0.0; lp.num_cols()];
         let mut col_dual = vec![0.0; lp.num_cols()];
@@ -79,10 +92,11 @@ fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
 }
 
 /// The LP with duplicate columns merged, and the reduced column of every original column.
-fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
+fn merge_duplicate_columns(lp: &LinearProgram, keep: &[bool]) -> (LinearProgram, Vec<usize>) {
     use std::collections::HashMap;
     let mergeable = |j: usize| {
-        lp.col_upper[j] == f64::INFINITY
+        !keep[j]
+            && lp.col_upper[j] == f64::INFINITY
             && (lp.col_lower[j] == 0.0 || lp.col_lower[j] == f64::NEG_INFINITY)
     };
     let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();

@@ -17,6 +17,9 @@
 
 pub mod clarabel;
 pub mod highs;
+pub mod scale;
+
+pub use scale::Scaling;
 
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -367,9 +370,14 @@ fn check_numbers(lp: &LinearProgram) -> Result<()> {
 
 /// Solve `lp` with the backend of `opts.method`. Infeasible and unbounded are statuses, not
 /// errors.
+/// The program is solved in nondimensional form ([`scale`]); the solution is in its units.
 pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
-    Ok(opts.method.backend().solve(lp, &[], opts, None)?.solution)
+    let backend = opts.method.backend();
+    Ok(match Scaling::needed(lp, &[]) {
+        None => backend.solve(lp, &[], opts, None)?.solution,
+        Some(s) => s.unscale(backend.solve(&s.apply(lp), &[], opts, None)?.solution),
+    })
 }
 
 /// Solve `lp` starting from `basis` (a basis of the previous program of the same shape, if
@@ -384,9 +392,17 @@ pub fn solve_warm(
         .as_ref()
         .filter(|b| b.cols.len() == lp.num_cols() && b.rows.len() == lp.num_rows())
         .map(|b| b.adapted(lp));
-    let solved = opts.method.backend().solve(lp, &[], opts, start.as_ref())?;
+    let backend = opts.method.backend();
+    let scaling = Scaling::needed(lp, &[]);
+    let solved = match &scaling {
+        None => backend.solve(lp, &[], opts, start.as_ref())?,
+        Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref())?,
+    };
     *basis = solved.basis;
-    Ok(solved.solution)
+    Ok(match scaling {
+        None => solved.solution,
+        Some(s) => s.unscale(solved.solution),
+    })
 }
 
 /// Solve `lp` with second-order cones appended. Only a backend with cones takes them: with a
@@ -398,7 +414,13 @@ pub fn solve_with_cones(
 ) -> Result<LpSolution> {
     check_numbers(lp)?;
     let backend = cone_backend(opts);
-    Ok(backend.solve(lp, cones, opts, None)?.solution)
+    Ok(match Scaling::needed(lp, cones) {
+        None => backend.solve(lp, cones, opts, None)?.solution,
+        Some(s) => {
+            let solved = backend.solve(&s.apply(lp), &s.apply_cones(cones), opts, None)?;
+            s.unscale(solved.solution)
+        }
+    })
 }
 
 /// Minimise `cᵀx + ½ xᵀPx` (a convex quadratic program; `quadratic` is the upper triangle of

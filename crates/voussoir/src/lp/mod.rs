@@ -376,7 +376,11 @@ pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     let backend = opts.method.backend();
     Ok(match Scaling::needed(lp, &[]) {
         None => backend.solve(lp, &[], opts, None)?.solution,
-        Some(s) => s.unscale(backend.solve(&s.apply(lp), &[], opts, None)?.solution),
+        Some(s) => match backend.solve(&s.apply(lp), &[], opts, None) {
+            Ok(solved) => s.unscale(solved.solution),
+            // The equilibrated program refused: once more as written.
+            Err(_) => backend.solve(lp, &[], opts, None)?.solution,
+        },
     })
 }
 
@@ -394,9 +398,18 @@ pub fn solve_warm(
         .map(|b| b.adapted(lp));
     let backend = opts.method.backend();
     let scaling = Scaling::needed(lp, &[]);
-    let solved = match &scaling {
-        None => backend.solve(lp, &[], opts, start.as_ref())?,
-        Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref())?,
+    let first = match &scaling {
+        None => backend.solve(lp, &[], opts, start.as_ref()),
+        Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref()),
+    };
+    let (solved, scaling) = match first {
+        Ok(solved) => (solved, scaling),
+        // A refusal with a starting basis or after scaling (HiGHS's "Error" on a basis that
+        // does not suit the equilibrated program) is retried once from scratch as written.
+        Err(_) if start.is_some() || scaling.is_some() => {
+            (backend.solve(lp, &[], opts, None)?, None)
+        }
+        Err(e) => return Err(e),
     };
     *basis = solved.basis;
     Ok(match scaling {

@@ -568,11 +568,27 @@ pub fn settle_canonical<S: Assembly>(
     // The motion LP's optimum: the dead loads' work.
     let value = primal.objective;
     let weights = tributary_weights(st, &map);
-    let (d, mech) =
-        match canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)? {
-            Some((d, m)) => (d, Some(m)),
-            None => (raw, None),
+    let mut found = canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)?;
+    if found.is_none() && !opts.method.is_simplex() {
+        // The interior point's duals did not fix the optimal face (its solution is optimal
+        // only to the solver's tolerance): cross over to a vertex with the dual simplex, as
+        // HiGHS's crossover would, and select from there.
+        let vo = SolverOptions {
+            method: Method::DualSimplex,
+            ..*opts
         };
+        let mut vbasis = None;
+        let vertex = lp::solve_warm(&mp.lp, &vo, &mut vbasis)?;
+        if vertex.status == LpStatus::Optimal {
+            let vraw = mp.motion(&vertex.x);
+            found =
+                canonical_mechanism(&map, &mp.lp, &vertex, &vraw, vbasis, &weights, &vo, copts)?;
+        }
+    }
+    let (d, mech) = match found {
+        Some((d, m)) => (d, Some(m)),
+        None => (raw, None),
+    };
     let work = mp.objective_sign * value;
     let mut forces = None;
     let mut pnt = None;

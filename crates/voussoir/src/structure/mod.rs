@@ -19,6 +19,10 @@ use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::model::{Connection, Load, Material, Model, Per, Point};
 use serde::{Deserialize, Serialize};
 
+/// Most cells of the overlap check's grid (cells of the median block's size) a body is put in;
+/// a larger body is compared with every other body directly.
+const MAX_CELLS_PER_BODY: f64 = 64.0;
+
 /// A body of the structure: a block (3 DOFs) or a support (prescribed motion).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum Body {
@@ -386,19 +390,30 @@ impl Structure {
         sizes.sort_by(f64::total_cmp);
         let cell = sizes[sizes.len() / 2].max(tol * 10.0);
         let mut entries: Vec<(i64, i64, usize)> = Vec::new();
+        let mut pairs: Vec<(usize, usize)> = Vec::new();
+        let meet =
+            |p: [f64; 4], q: [f64; 4]| p[0] < q[2] && q[0] < p[2] && p[1] < q[3] && q[1] < p[3];
         for (k, b) in boxes.iter().enumerate() {
-            let (i0, j0) = ((b[0] / cell).floor() as i64, (b[1] / cell).floor() as i64);
-            let (i1, j1) = ((b[2] / cell).floor() as i64, (b[3] / cell).floor() as i64);
-            // Very large bodies (a long foundation) are put in every cell they cover; bounded by
-            // the number of cells the model spans.
-            for i in i0..=i1 {
-                for j in j0..=j1 {
+            let (i0, j0) = ((b[0] / cell).floor(), (b[1] / cell).floor());
+            let (i1, j1) = ((b[2] / cell).floor(), (b[3] / cell).floor());
+            // A body much larger than the median block (a long foundation, or a block drawn
+            // at the wrong scale) would fill more cells than the model has bodies: it is
+            // compared with every other body instead, so that memory stays linear.
+            if (i1 - i0 + 1.0) * (j1 - j0 + 1.0) > MAX_CELLS_PER_BODY {
+                pairs.extend(
+                    (0..boxes.len())
+                        .filter(|&q| q != k && meet(*b, boxes[q]))
+                        .map(|q| (k.min(q), k.max(q))),
+                );
+                continue;
+            }
+            for i in i0 as i64..=i1 as i64 {
+                for j in j0 as i64..=j1 as i64 {
                     entries.push((i, j, k));
                 }
             }
         }
         entries.sort_unstable();
-        let mut pairs: Vec<(usize, usize)> = Vec::new();
         let mut s = 0;
         while s < entries.len() {
             let mut e = s + 1;
@@ -411,8 +426,7 @@ impl Structure {
                     // Supports are checked against each other too: two overlapping foundations
                     // would give a block's face two joints.
                     let (p, q) = (entries[x].2, entries[y].2);
-                    let (bp, bq) = (boxes[p], boxes[q]);
-                    if bp[0] < bq[2] && bq[0] < bp[2] && bp[1] < bq[3] && bq[1] < bp[3] {
+                    if meet(boxes[p], boxes[q]) {
                         pairs.push((p.min(q), p.max(q)));
                     }
                 }

@@ -4,13 +4,12 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
 use voussoir::analysis::{LimitResult, SettlementResult};
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::model3d::{AnyModel, Model3d};
 use voussoir::result::{Hinge, Spatial};
-use voussoir::settlement_input::{
-    apply_profile, fix_support, move_support, ModelSupports, Profile,
-};
+use voussoir::settlement_input::ModelSupports;
 use voussoir::structure::Body;
 use voussoir::Assembly;
 use voussoir::{BuildOptions, Model, Structure, Structure3d};
@@ -21,7 +20,8 @@ pub struct Fail(pub String);
 
 impl std::fmt::Display for Fail {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        // One line whatever names or values from the user it quotes.
+        f.write_str(&voussoir::error::one_line(&self.0))
     }
 }
 impl From<voussoir::Error> for Fail {
@@ -102,6 +102,71 @@ pub enum CrushingArg {
     /// The exact crushing cone: a second-order cone program (Clarabel).
     #[value(alias = "cone", alias = "socp", alias = "exact")]
     Conic,
+}
+
+/// The finite-strength flags of `limit`, `settle` and `capacity`.
+#[derive(clap::Args, Clone, Copy, Debug)]
+#[command(next_help_heading = "Joint laws")]
+pub struct CrushingArgs {
+    /// Finite-strength (crushing) model; matters only where a compressive strength is given
+    /// (--compressive-strength or the model's materials).
+    #[arg(long, value_enum, default_value = "linear", ignore_case = true)]
+    pub crushing: CrushingArg,
+    /// Facets (chords) of the inscribed crushing polygon of --crushing linear; more facets,
+    /// closer to the exact cone [default: 16].
+    #[arg(long, value_name = "N")]
+    pub facets: Option<usize>,
+    /// Non-associative Coulomb friction: joints slide without opening (no dilatancy), by the
+    /// fixed-point iteration on the normal forces (docs/joint-laws.md); its convergence is
+    /// reported. Matters only where friction is given (--friction or the model's materials).
+    #[arg(long)]
+    pub non_associative: bool,
+}
+
+impl CrushingArgs {
+    /// The crushing model and the facet count, checked.
+    pub fn resolve(&self) -> Result<(Crushing, usize), Fail> {
+        let crushing = match self.crushing {
+            CrushingArg::Linear => Crushing::Linear,
+            CrushingArg::Conic => Crushing::Conic,
+        };
+        let facets = match (self.crushing, self.facets) {
+            (CrushingArg::Conic, Some(_)) => {
+                return Err(Fail(
+                    "--facets applies to --crushing linear (the conic model is the exact cone)"
+                        .into(),
+                ))
+            }
+            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => {
+                return Err(Fail(format!(
+                    "--facets {n}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+                )))
+            }
+            (_, Some(n)) => n,
+            (_, None) => DEFAULT_FACETS,
+        };
+        Ok((crushing, facets))
+    }
+
+    /// The non-associative iteration's settings, when asked for.
+    pub fn non_associative(
+        &self,
+    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
+        self.non_associative.then(Default::default)
+    }
+
+    /// The same for a settlement or capacity analysis.
+    pub fn non_associative_settlement(
+        &self,
+    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
+        self.non_associative
+            .then(voussoir::analysis::nonassociative::NonAssociativeOptions::settlement)
+    }
+
+    /// Whether a finite-strength flag was given (refused in 3D).
+    pub fn given(&self) -> bool {
+        self.crushing == CrushingArg::Conic || self.facets.is_some()
+    }
 }
 
 /// Which LPs a settlement analysis solves.
@@ -198,121 +263,21 @@ pub struct SettleArgs {
     pub profile: Option<String>,
 }
 
-/// A length in metres from the command line: a number in m, or with a unit `mm`, `cm` or `m`.
-pub fn signed_length(s: &str) -> Option<f64> {
-    let t = s.trim();
-    let (num, factor) = if let Some(n) = t.strip_suffix("mm") {
-        (n, 1e-3)
-    } else if let Some(n) = t.strip_suffix("cm") {
-        (n, 1e-2)
-    } else if let Some(n) = t.strip_suffix('m') {
-        (n, 1.0)
-    } else {
-        (t, 1.0)
-    };
-    num.trim().parse::<f64>().ok().map(|x| x * factor)
-}
-
-/// A support motion resolved from the flags: every value parsed and checked.
-#[derive(Clone, Debug, Default)]
-pub struct Motion {
-    pub fixed: Vec<String>,
-    /// (support, values, whether each value carried a length unit) as given; lengths in m,
-    /// angles in degrees. Their meaning depends on the model's dimension ([`Motion::apply`]).
-    pub moves: Vec<(String, Vec<(f64, bool)>)>,
-    pub profile: Option<Profile>,
-}
+pub use voussoir_io::motion::{parse_profile, signed_length, Motion};
 
 impl SettleArgs {
     /// Parse every `--move` and `--profile` (before any work).
     pub fn resolve(&self) -> Result<Motion, Fail> {
-        let mut moves = Vec::new();
-        for m in &self.moves {
-            let (name, vals) = m.split_once('=').ok_or_else(|| {
-                Fail(format!(
-                    "--move {m}: expected NAME=u,v[,θ] (2D) or NAME=u,v,w[,θx,θy,θz] (3D)"
-                ))
-            })?;
-            // Lengths may carry a unit (`-2.5mm`, `1cm`; bare numbers are metres).
-            let nums: Vec<(f64, bool)> = vals
-                .split(',')
-                .map(|x| {
-                    let t = x.trim();
-                    t.parse::<f64>()
-                        .ok()
-                        .map(|v| (v, false))
-                        .or_else(|| signed_length(t).map(|v| (v, true)))
-                })
-                .collect::<Option<_>>()
-                .ok_or_else(|| {
-                    Fail(format!(
-                        "--move {m}: the lengths and angles must be numbers"
-                    ))
-                })?;
-            if nums.iter().any(|(x, _)| !x.is_finite()) {
-                return Err(Fail(format!("--move {m}: every value must be finite")));
-            }
-            if !matches!(nums.len(), 2 | 3 | 6) {
-                return Err(Fail(format!(
-                    "--move {m}: expected NAME=u,v[,θ] (2D) or NAME=u,v,w[,θx,θy,θz] (3D)"
-                )));
-            }
-            moves.push((name.to_string(), nums));
-        }
-        let profile = match &self.profile {
-            Some(p) => Some(parse_profile(p)?),
-            None => None,
-        };
-        Ok(Motion {
-            fixed: self.fixed.clone(),
-            moves,
-            profile,
-        })
+        Ok(Motion::parse(
+            &self.moves,
+            &self.fixed,
+            self.profile.as_deref(),
+        )?)
     }
 
     /// Apply the moves, fixed supports and profile to a model.
     pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), Fail> {
-        self.resolve()?.apply(model)
-    }
-}
-
-impl Motion {
-    /// Apply the moves, fixed supports and profile to a model of either dimension: in 2D a
-    /// move is `u, v[, θ]`, in 3D `u, v, w[, θx, θy, θz]` (lengths in m or with a unit, angles
-    /// in degrees).
-    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), Fail> {
-        let lengths = M::MOTION / 2 + usize::from(M::MOTION == 3);
-        for f in &self.fixed {
-            fix_support(model, f)?;
-        }
-        for (name, nums) in &self.moves {
-            let form = if M::MOTION == 3 {
-                "NAME=u,v[,θ] in a 2D model"
-            } else {
-                "NAME=u,v,w[,θx,θy,θz] in a 3D model"
-            };
-            if nums.len() != lengths && nums.len() != M::MOTION {
-                return Err(Fail(format!(
-                    "--move {name}: {} values given, expected {form}",
-                    nums.len()
-                )));
-            }
-            if let Some(k) = (lengths..nums.len()).find(|&k| nums[k].1) {
-                return Err(Fail(format!(
-                    "--move {name}: value {} is an angle in degrees and takes no length unit",
-                    k + 1
-                )));
-            }
-            let mut motion = vec![0.0; M::MOTION];
-            for (k, (v, _)) in nums.iter().enumerate() {
-                motion[k] = if k < lengths { *v } else { v.to_radians() };
-            }
-            move_support(model, name, &motion)?;
-        }
-        if let Some(p) = &self.profile {
-            apply_profile(model, p)?;
-        }
-        Ok(())
+        Ok(self.resolve()?.apply(model)?)
     }
 }
 
@@ -390,8 +355,23 @@ impl ModelArgs {
     }
 
     pub fn solver(&self) -> SolverOptions {
+        self.solver.options()
+    }
+
+    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
+    /// `default` one included).
+    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
+        check_materials(self.friction, self.compressive_strength)?;
+        m.override_joint_laws(self.friction, self.compressive_strength);
+        Ok(())
+    }
+}
+
+impl SolverArgs {
+    /// The solver options of these flags (dual simplex unless --method says otherwise).
+    pub fn options(&self) -> SolverOptions {
         SolverOptions {
-            method: match self.solver.method.unwrap_or(MethodArg::DualSimplex) {
+            method: match self.method.unwrap_or(MethodArg::DualSimplex) {
                 MethodArg::DualSimplex => Method::DualSimplex,
                 MethodArg::PrimalSimplex => Method::PrimalSimplex,
                 MethodArg::Ipm => Method::Ipm,
@@ -405,14 +385,6 @@ impl ModelArgs {
             log: std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1"),
             ..SolverOptions::default()
         }
-    }
-
-    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
-    /// `default` one included).
-    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
-        check_materials(self.friction, self.compressive_strength)?;
-        m.override_joint_laws(self.friction, self.compressive_strength);
-        Ok(())
     }
 }
 
@@ -617,75 +589,18 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
     s
 }
 
-/// Parse the command-line form: `uniform:X0,X1,V`, `linear:X0,V0,X1,V1` or
-/// `table:X,V;X,V;…` (metres).
-pub fn parse_profile(s: &str) -> Result<Profile, Fail> {
-    let bad = || {
-        Fail(format!("cannot read settlement profile '{s}': expected uniform:X0,X1,V or linear:X0,V0,X1,V1 or table:X,V;X,V;…"))
-    };
-    let (kind, rest) = s.split_once(':').ok_or_else(bad)?;
-    let nums = |t: &str| -> Result<Vec<f64>, Fail> {
-        t.split(',')
-            .map(|x| x.trim().parse::<f64>().map_err(|_| bad()))
-            .collect()
-    };
-    let p = match kind {
-        "uniform" => match nums(rest)?.as_slice() {
-            [x0, x1, v] => Profile::Uniform {
-                x0: *x0,
-                x1: *x1,
-                v: *v,
-            },
-            _ => return Err(bad()),
-        },
-        "linear" => match nums(rest)?.as_slice() {
-            [x0, v0, x1, v1] => Profile::Linear {
-                x0: *x0,
-                v0: *v0,
-                x1: *x1,
-                v1: *v1,
-            },
-            _ => return Err(bad()),
-        },
-        "table" => {
-            let mut points = Vec::new();
-            for pair in rest.split(';').filter(|t| !t.trim().is_empty()) {
-                match nums(pair)?.as_slice() {
-                    [x, v] => points.push([*x, *v]),
-                    _ => return Err(bad()),
-                }
-            }
-            Profile::Table { points }
-        }
-        _ => return Err(bad()),
-    };
-    p.validate().map_err(Fail::from)?;
-    Ok(p)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn profiles_parse_from_the_command_line_form() {
-        assert_eq!(
-            parse_profile("uniform:1,2,-0.2").unwrap(),
-            Profile::Uniform {
-                x0: 1.0,
-                x1: 2.0,
-                v: -0.2
-            }
-        );
-        assert_eq!(
-            parse_profile("table:0,0;1,-0.1").unwrap(),
-            Profile::Table {
-                points: vec![[0.0, 0.0], [1.0, -0.1]]
-            }
-        );
-        assert!(parse_profile("uniform:2,1,-0.2").is_err());
-        assert!(parse_profile("linear:0,0,0,1").is_err());
-        assert!(parse_profile("table:0,0;1").is_err());
-        assert!(parse_profile("wavy:1").is_err());
+/// The solver of a non-associative settlement iteration: Clarabel's interior point unless
+/// --method says otherwise. Its solutions are the centres of the optimal faces, so the normal
+/// forces move smoothly from one iterate to the next, where a simplex jumps between vertices
+/// and the iteration wanders (measured on a 20 × 10 wall: docs/joint-laws.md). The tolerance is
+/// tightened so that every iterate is certified.
+pub fn iteration_solver(m: &ModelArgs, solver: &SolverOptions) -> SolverOptions {
+    if m.solver.method.is_some() {
+        return *solver;
+    }
+    SolverOptions {
+        method: voussoir::lp::Method::Clarabel,
+        feasibility_tolerance: solver.feasibility_tolerance.min(1e-10),
+        ..*solver
     }
 }

@@ -611,6 +611,7 @@ pub fn drawing_to_model(
             live,
         },
         tolerance: None,
+        cracks: Vec::new(),
     };
     Ok((
         model,
@@ -685,6 +686,10 @@ fn units_warning(
 
 /// Read a DXF file (ASCII or binary) into a model.
 pub fn read_dxf(path: &Path, opts: &DxfOptions) -> Result<(Model, ImportReport), IoError> {
+    read_dxf_inner(path, opts).map_err(IoError::one_line)
+}
+
+fn read_dxf_inner(path: &Path, opts: &DxfOptions) -> Result<(Model, ImportReport), IoError> {
     let drawing = Drawing::load_file(path)
         .map_err(|e| IoError(format!("cannot read {} as DXF: {e}", path.display())))?;
     let name = path
@@ -697,6 +702,14 @@ pub fn read_dxf(path: &Path, opts: &DxfOptions) -> Result<(Model, ImportReport),
 
 /// Read DXF text or bytes already in memory.
 pub fn parse_dxf(
+    bytes: &[u8],
+    opts: &DxfOptions,
+    name: &str,
+) -> Result<(Model, ImportReport), IoError> {
+    parse_dxf_inner(bytes, opts, name).map_err(IoError::one_line)
+}
+
+fn parse_dxf_inner(
     bytes: &[u8],
     opts: &DxfOptions,
     name: &str,

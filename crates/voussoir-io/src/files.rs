@@ -11,7 +11,18 @@ pub struct IoError(pub String);
 
 impl std::fmt::Display for IoError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        f.write_str(&voussoir::error::one_line(&self.0))
+    }
+}
+
+impl IoError {
+    /// The message on one line (control characters from the user's file written as escapes):
+    /// every public reader returns its errors through this.
+    pub fn one_line(self) -> IoError {
+        match voussoir::error::one_line(&self.0) {
+            std::borrow::Cow::Borrowed(_) => self,
+            std::borrow::Cow::Owned(s) => IoError(s),
+        }
     }
 }
 impl std::error::Error for IoError {}
@@ -26,7 +37,7 @@ impl From<voussoir::Error> for IoError {
 pub fn read_model(path: &Path) -> Result<Model, IoError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| IoError(format!("cannot read {}: {e}", path.display())))?;
-    parse_model(&text).map_err(|e| IoError(format!("{}: {}", path.display(), e.0)))
+    parse_model(&text).map_err(|e| IoError(format!("{}: {}", path.display(), e.0)).one_line())
 }
 
 /// Read a JSON model of either dimension (3D when its blocks have `vertices`).
@@ -36,13 +47,14 @@ pub fn read_any_model(path: &Path) -> Result<voussoir::model3d::AnyModel, IoErro
     unique_keys(&text)
         .map_err(|e| IoError(format!("{}: invalid model JSON: {e}", path.display())))?;
     voussoir::model3d::AnyModel::from_json(&text)
-        .map_err(|e| IoError(format!("{}: invalid model JSON: {e}", path.display())))
+        .map_err(|e| IoError(format!("{}: invalid model JSON: {e}", path.display())).one_line())
 }
 
 /// Parse a JSON model (unknown fields and duplicate keys are rejected).
 pub fn parse_model(text: &str) -> Result<Model, IoError> {
-    unique_keys(text).map_err(|e| IoError(format!("invalid model JSON: {e}")))?;
-    serde_json::from_str::<Model>(text).map_err(|e| IoError(format!("invalid model JSON: {e}")))
+    unique_keys(text).map_err(|e| IoError(format!("invalid model JSON: {e}")).one_line())?;
+    serde_json::from_str::<Model>(text)
+        .map_err(|e| IoError(format!("invalid model JSON: {e}")).one_line())
 }
 
 /// Check that no JSON object in `text` has a key twice (at any depth: a material named twice

@@ -7,6 +7,7 @@ pub mod draw3d;
 pub mod dxf;
 pub mod files;
 pub mod mesh;
+pub mod motion;
 pub mod report3d;
 pub mod result3d;
 pub mod vtk;

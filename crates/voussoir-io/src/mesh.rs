@@ -129,7 +129,7 @@ pub fn read_mesh(path: &Path, opts: &MeshOptions) -> Result<(Model3d, MeshReport
     } else {
         parse_obj(&bytes, opts, &file)
     };
-    r.map_err(|e| IoError(format!("{}: {}", path.display(), e.0)))
+    r.map_err(|e| IoError(format!("{}: {}", path.display(), e.0)).one_line())
 }
 
 /// A body as read: a name, vertices and faces (vertex index lists).
@@ -148,13 +148,39 @@ pub fn parse_obj(
     opts: &MeshOptions,
     file: &str,
 ) -> Result<(Model3d, MeshReport), IoError> {
+    parse_obj_inner(bytes, opts, file).map_err(IoError::one_line)
+}
+
+fn parse_obj_inner(
+    bytes: &[u8],
+    opts: &MeshOptions,
+    file: &str,
+) -> Result<(Model3d, MeshReport), IoError> {
     let load = tobj::LoadOptions {
         single_index: true,
         triangulate: false,
         ignore_points: true,
         ignore_lines: true,
     };
-    let mut reader = std::io::Cursor::new(bytes);
+    // Texture coordinates (`vt`) and normals (`vn`) are not used: they are dropped before
+    // tobj sees the file, which keeps it away from its unchecked arithmetic on their indices
+    // (`f 1/-11` with one `vt` overflows in tobj 4.0.5). A file that is not UTF-8 text fails
+    // as tobj would fail it.
+    let text = std::str::from_utf8(bytes).map_err(|_| {
+        IoError(format!(
+            "not a readable OBJ file ({})",
+            tobj::LoadError::ReadError
+        ))
+    })?;
+    let geometry: Vec<&str> = text
+        .split('\n')
+        .map(|l| match l.split_whitespace().next() {
+            Some("vt" | "vn") => "",
+            _ => l,
+        })
+        .collect();
+    let geometry = geometry.join("\n");
+    let mut reader = std::io::Cursor::new(geometry.as_bytes());
     // Materials are not used: the loader for `mtllib` files reports them missing.
     let (models, _) =
         tobj::load_obj_buf(&mut reader, &load, |_| Err(tobj::LoadError::OpenFileFailed))
@@ -229,6 +255,14 @@ pub fn parse_obj(
 /// `vertex_indices` (or `vertex_index`). Each set of faces connected through shared vertex
 /// indices is a body `part_K` (K from 0, in the order of their first face).
 pub fn parse_ply(
+    bytes: &[u8],
+    opts: &MeshOptions,
+    file: &str,
+) -> Result<(Model3d, MeshReport), IoError> {
+    parse_ply_inner(bytes, opts, file).map_err(IoError::one_line)
+}
+
+fn parse_ply_inner(
     bytes: &[u8],
     opts: &MeshOptions,
     file: &str,

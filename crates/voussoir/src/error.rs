@@ -1,18 +1,37 @@
 //! The library's one error type. Every message is one line and names what is wrong.
 
+use std::borrow::Cow;
 use thiserror::Error;
 
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum Error {
     /// The model is not a valid structure (bad polygon, overlap, isolated block, …).
-    #[error("invalid model: {0}")]
+    #[error("invalid model: {}", one_line(.0))]
     Model(String),
     /// A request that does not fit the model (unknown support name, bad option value, …).
-    #[error("invalid request: {0}")]
+    #[error("invalid request: {}", one_line(.0))]
     Request(String),
     /// The LP solver failed for a reason other than infeasibility or unboundedness.
-    #[error("solver failure: {0}")]
+    #[error("solver failure: {}", one_line(.0))]
     Solver(String),
+}
+
+/// `s` on one line: control characters (line breaks, tabs, NUL, …) written as escapes (`\n`),
+/// so that a name or a value taken from the user's file cannot spread a message over several
+/// lines (a support named "a\nb" in JSON, a layer name in a binary DXF).
+pub fn one_line(s: &str) -> Cow<'_, str> {
+    if !s.chars().any(char::is_control) {
+        return Cow::Borrowed(s);
+    }
+    let mut out = String::with_capacity(s.len() + 8);
+    for c in s.chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
 }
 
 pub type Result<T> = std::result::Result<T, Error>;

@@ -208,7 +208,9 @@ impl AnyModel {
     /// Parse a JSON model: 3D if its first block (or, without blocks, first support) has
     /// `vertices`, 2D otherwise. Unknown fields are rejected in both.
     pub fn from_json(text: &str) -> std::result::Result<AnyModel, String> {
-        let v: serde_json::Value = serde_json::from_str(text).map_err(|e| e.to_string())?;
+        // serde's messages quote the unknown field as written: one line whatever it holds.
+        let err = |e: serde_json::Error| crate::error::one_line(&e.to_string()).into_owned();
+        let v: serde_json::Value = serde_json::from_str(text).map_err(err)?;
         let has_vertices = |key: &str| {
             v.get(key)
                 .and_then(|b| b.as_array())
@@ -220,11 +222,11 @@ impl AnyModel {
         if has_vertices("blocks") || has_vertices("supports") {
             serde_json::from_str::<Model3d>(text)
                 .map(AnyModel::Spatial)
-                .map_err(|e| e.to_string())
+                .map_err(err)
         } else {
             serde_json::from_str::<crate::Model>(text)
                 .map(AnyModel::Planar)
-                .map_err(|e| e.to_string())
+                .map_err(err)
         }
     }
 }

@@ -177,7 +177,7 @@ pub fn settled(st: &Structure, solver: &SolverOptions, release: bool) -> Result<
             path.status.sentence()
         )));
     }
-    let mut out = path.deformed(path.max_settlement);
+    let mut out = path.deformed(path.max_settlement)?;
     if release {
         out.release_fixed();
     }

@@ -283,6 +283,18 @@ pub enum Crushing {
 /// program's size (two rows per facet and joint).
 pub const MIN_FACETS: usize = 2;
 pub const MAX_FACETS: usize = 4096;
+/// Facets of the inscribed crushing polygon unless told otherwise.
+pub const DEFAULT_FACETS: usize = 16;
+
+/// A one-line error unless `facets` is within [`MIN_FACETS`]..=[`MAX_FACETS`].
+pub fn check_facets(facets: usize) -> Result<()> {
+    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
+        return Err(Error::Request(format!(
+            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+        )));
+    }
+    Ok(())
+}
 
 /// Limit analysis with a choice of crushing model and number of facets.
 pub fn limit_with<S: Assembly>(
@@ -291,11 +303,7 @@ pub fn limit_with<S: Assembly>(
     crushing: Crushing,
     facets: usize,
 ) -> Result<LimitResult<S::D>> {
-    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
-        return Err(Error::Request(format!(
-            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
-        )));
-    }
+    check_facets(facets)?;
     let mut map = KinematicMap::new(st);
     map.facets = facets;
     let s = match crushing {
@@ -333,7 +341,7 @@ pub fn limit_result<S: Assembly>(
             Some(dot(st.load_vector(true))),
         )
     };
-    let message = match (s.status, s.lambda) {
+    let mut message = match (s.status, s.lambda) {
         (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
             "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",
             s.status.sentence(),
@@ -351,11 +359,18 @@ pub fn limit_result<S: Assembly>(
         ),
         (st_, _) => st_.sentence().to_string(),
     };
-    let message = if s.note.is_empty() {
-        message
-    } else {
-        format!("{message} ({})", s.note)
-    };
+    // Existing cracks carry nothing in limit analysis; a mechanism that would close one is
+    // not the structure's collapse (the crack closes first and then carries force).
+    let closing = crate::analysis::capacity::closing_joints(st, map, &s.mechanism);
+    if !closing.is_empty() {
+        message.push_str(&format!(
+            "; WARNING: the collapse mechanism closes the open crack of joint {} (limit analysis is not valid there: after that crack closes the structure carries more; use the incremental analysis)",
+            closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
+        ));
+    }
+    if !s.note.is_empty() {
+        message = format!("{message} ({})", s.note);
+    }
     LimitResult {
         status: s.status,
         message,
@@ -378,7 +393,9 @@ pub fn limit_result<S: Assembly>(
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,
+        friction_iteration: None,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 
@@ -389,6 +406,10 @@ pub fn limit_result<S: Assembly>(
 pub struct WarmLimit {
     solver: SolverOptions,
     hot: bool,
+    crushing: Crushing,
+    nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
+    /// Solves whose non-associative friction iteration did not converge.
+    pub unconverged: usize,
     basis: Option<lp::Basis>,
     /// LP solves and simplex iterations so far.
     pub solves: usize,
@@ -401,15 +422,51 @@ impl WarmLimit {
         WarmLimit {
             solver: *solver,
             hot,
+            crushing: Crushing::Linear,
+            nonassociative: None,
+            unconverged: 0,
             basis: None,
             solves: 0,
             iterations: 0,
         }
     }
 
+    /// Solve with the exact crushing cones ([`solve_limit_conic`], from scratch) instead of
+    /// the inscribed polygon.
+    pub fn with_crushing(mut self, crushing: Crushing) -> WarmLimit {
+        self.crushing = crushing;
+        self
+    }
+
+    /// Solve with non-associative friction (the iteration from scratch each time).
+    pub fn with_nonassociative(
+        mut self,
+        o: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
+    ) -> WarmLimit {
+        self.nonassociative = o;
+        self
+    }
+
     /// Limit analysis of `st` (same meaning as [`solve_limit`]).
     pub fn solve<S: Assembly>(&mut self, st: &S, map: &KinematicMap) -> Result<LimitSolution> {
         self.solves += 1;
+        if let Some(o) = &self.nonassociative {
+            let mut m = map.clone();
+            let (_, it) = crate::analysis::nonassociative::solve_limit_nonassociative(
+                st,
+                &mut m,
+                &self.solver,
+                o,
+            )?;
+            self.unconverged += usize::from(!it.converged);
+            self.iterations += it.last.iterations;
+            return Ok(it.last);
+        }
+        if self.crushing == Crushing::Conic {
+            let sol = solve_limit_conic(st, map, &self.solver)?;
+            self.iterations += sol.iterations;
+            return Ok(sol);
+        }
         // Joint laws (friction, crushing) give gapped points roles of their own in the force
         // program: those structures are solved from scratch.
         let sol = if self.hot && !map.has_joint_laws() {

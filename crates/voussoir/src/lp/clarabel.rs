@@ -29,6 +29,22 @@ impl Backend for Clarabel {
             basis: None,
         })
     }
+
+    fn supports_quadratic(&self) -> bool {
+        true
+    }
+
+    fn solve_quadratic(
+        &self,
+        lp: &LinearProgram,
+        quadratic: &[(usize, usize, f64)],
+        o: &SolverOptions,
+    ) -> Result<Solved> {
+        Ok(Solved {
+            solution: solve_clarabel_with_cones(lp, o, &[], quadratic)?,
+            basis: None,
+        })
+    }
 }
 
 /// Solve with Clarabel: `min cᵀx` with `A x + s = b`, `s` in the zero cone (equality rows and
@@ -57,7 +73,7 @@ fn solve_clarabel(lp: &LinearProgram, cones: &[Cone3], o: &SolverOptions) -> Res
                 .map(|(e, b)| (e.into_iter().map(|(j, v)| (map[j], v)).collect(), b))
         })
         .collect();
-    let mut sol = solve_clarabel_with_cones(&reduced, o, &cones)?;
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &cones, &[])?;
     if sol.status == LpStatus::Optimal {
         let mut x = vec![0.0; lp.num_cols()];
         let mut col_dual = vec![0.0; lp.num_cols()];
@@ -114,11 +130,13 @@ fn merge_duplicate_columns(lp: &LinearProgram, keep: &[bool]) -> (LinearProgram,
     (out, map)
 }
 
-/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP).
+/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP) and
+/// a quadratic term `½ xᵀPx` (upper triangle triplets; none for a plain LP or cone program).
 fn solve_clarabel_with_cones(
     lp: &LinearProgram,
     o: &SolverOptions,
     socs: &[Cone3],
+    quadratic: &[(usize, usize, f64)],
 ) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
     use clarabel::solver::{
@@ -178,7 +196,17 @@ fn solve_clarabel_with_cones(
     }
     let m = b.len();
     let a = CscMatrix::new_from_triplets(m, n, ii, jj, vv);
-    let p = CscMatrix::<f64>::zeros((n, n));
+    let p = if quadratic.is_empty() {
+        CscMatrix::<f64>::zeros((n, n))
+    } else {
+        CscMatrix::new_from_triplets(
+            n,
+            n,
+            quadratic.iter().map(|t| t.0).collect(),
+            quadratic.iter().map(|t| t.1).collect(),
+            quadratic.iter().map(|t| t.2).collect(),
+        )
+    };
     let q: Vec<f64> = lp.cost.iter().map(|c| sign * c).collect();
     let mut cones: Vec<SupportedConeT<f64>> = Vec::new();
     if !zero.is_empty() {
@@ -220,6 +248,7 @@ fn solve_clarabel_with_cones(
             row_dual: vec![],
             col_dual: vec![],
             iterations,
+            dual_objective: f64::NAN,
         });
     }
     // Clarabel's z ≥ 0 multiplies `A x + s = b` in `min qᵀx`: q + Aᵀz = 0 in its convention, so the
@@ -243,7 +272,17 @@ fn solve_clarabel_with_cones(
             col_dual[j] -= v * row_dual[i];
         }
     }
-    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
+    let quad: f64 = quadratic
+        .iter()
+        .map(|&(i, j, v)| {
+            if i == j {
+                0.5 * v * x[i] * x[i]
+            } else {
+                v * x[i] * x[j]
+            }
+        })
+        .sum();
+    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum::<f64>() + quad;
     Ok(LpSolution {
         status,
         objective,
@@ -251,5 +290,7 @@ fn solve_clarabel_with_cones(
         row_dual,
         col_dual,
         iterations,
+        // Clarabel minimises `sign·cᵀx`; its dual cost is in that sense.
+        dual_objective: sign * solver.info.cost_dual,
     })
 }

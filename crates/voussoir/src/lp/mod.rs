@@ -92,6 +92,38 @@ impl LinearProgram {
     pub fn column(&self, j: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
         (self.col_start[j]..self.col_start[j + 1]).map(move |k| (self.row_index[k], self.value[k]))
     }
+    /// This program with one more row `lo ≤ Σ v·x_j ≤ hi` over `entries` `(column, v)` (the
+    /// last row), for holding an optimal value while another objective is optimised.
+    pub fn with_row(&self, entries: &[(usize, f64)], lo: f64, hi: f64) -> LinearProgram {
+        let mut by_col: Vec<f64> = vec![0.0; self.num_cols()];
+        for &(j, v) in entries {
+            by_col[j] += v;
+        }
+        let mut out = LinearProgram {
+            maximise: self.maximise,
+            cost: self.cost.clone(),
+            col_lower: self.col_lower.clone(),
+            col_upper: self.col_upper.clone(),
+            row_lower: self.row_lower.clone(),
+            row_upper: self.row_upper.clone(),
+            col_start: vec![0],
+            row_index: Vec::with_capacity(self.num_nonzeros() + entries.len()),
+            value: Vec::with_capacity(self.num_nonzeros() + entries.len()),
+        };
+        let r = out.add_row(lo, hi);
+        for (j, &v) in by_col.iter().enumerate() {
+            for (i, a) in self.column(j) {
+                out.row_index.push(i);
+                out.value.push(a);
+            }
+            if v != 0.0 {
+                out.row_index.push(r);
+                out.value.push(v);
+            }
+            out.col_start.push(out.row_index.len());
+        }
+        out
+    }
     /// `A x` (row activities).
     pub fn row_activity(&self, x: &[f64]) -> Vec<f64> {
         let mut r = vec![0.0; self.num_rows()];
@@ -219,6 +251,10 @@ pub struct LpSolution {
     pub row_dual: Vec<f64>,
     pub col_dual: Vec<f64>,
     pub iterations: i64,
+    /// The dual objective as the solver reports it, in the program's own sense (NaN when the
+    /// solver gives none: HiGHS's simplex, whose optimal bases have no gap). For a program with
+    /// cones it is the value the dual side certifies, cone terms included.
+    pub dual_objective: f64,
 }
 
 /// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.
@@ -293,6 +329,24 @@ pub trait Backend: Sync {
         opts: &SolverOptions,
         start: Option<&Basis>,
     ) -> Result<Solved>;
+    /// Whether the backend takes a convex quadratic objective term.
+    fn supports_quadratic(&self) -> bool {
+        false
+    }
+    /// Minimise `cᵀx + ½ xᵀPx` over the rows and bounds of `lp` (`lp.maximise` must be false);
+    /// `quadratic` holds the upper triangle of `P` (positive semidefinite) as `(i, j, v)`,
+    /// `i ≤ j`, repeated entries summed.
+    fn solve_quadratic(
+        &self,
+        _lp: &LinearProgram,
+        _quadratic: &[(usize, usize, f64)],
+        _opts: &SolverOptions,
+    ) -> Result<Solved> {
+        Err(Error::Solver(format!(
+            "{} does not take a quadratic objective",
+            self.name()
+        )))
+    }
 }
 
 fn check_numbers(lp: &LinearProgram) -> Result<()> {
@@ -322,7 +376,11 @@ pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     let backend = opts.method.backend();
     Ok(match Scaling::needed(lp, &[]) {
         None => backend.solve(lp, &[], opts, None)?.solution,
-        Some(s) => s.unscale(backend.solve(&s.apply(lp), &[], opts, None)?.solution),
+        Some(s) => match backend.solve(&s.apply(lp), &[], opts, None) {
+            Ok(solved) => s.unscale(solved.solution),
+            // The equilibrated program refused: once more as written.
+            Err(_) => backend.solve(lp, &[], opts, None)?.solution,
+        },
     })
 }
 
@@ -340,9 +398,18 @@ pub fn solve_warm(
         .map(|b| b.adapted(lp));
     let backend = opts.method.backend();
     let scaling = Scaling::needed(lp, &[]);
-    let solved = match &scaling {
-        None => backend.solve(lp, &[], opts, start.as_ref())?,
-        Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref())?,
+    let first = match &scaling {
+        None => backend.solve(lp, &[], opts, start.as_ref()),
+        Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref()),
+    };
+    let (solved, scaling) = match first {
+        Ok(solved) => (solved, scaling),
+        // A refusal with a starting basis or after scaling (HiGHS's "Error" on a basis that
+        // does not suit the equilibrated program) is retried once from scratch as written.
+        Err(_) if start.is_some() || scaling.is_some() => {
+            (backend.solve(lp, &[], opts, None)?, None)
+        }
+        Err(e) => return Err(e),
     };
     *basis = solved.basis;
     Ok(match scaling {
@@ -367,6 +434,38 @@ pub fn solve_with_cones(
             s.unscale(solved.solution)
         }
     })
+}
+
+/// Minimise `cᵀx + ½ xᵀPx` (a convex quadratic program; `quadratic` is the upper triangle of
+/// `P` as `(i, j, v)` with `i ≤ j`). Only a backend with quadratic objectives takes it: with a
+/// HiGHS method the program goes to Clarabel. The reported objective includes the quadratic
+/// term.
+pub fn solve_quadratic(
+    lp: &LinearProgram,
+    quadratic: &[(usize, usize, f64)],
+    opts: &SolverOptions,
+) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    if lp.maximise {
+        return Err(Error::Solver(
+            "a quadratic program must be a minimisation".into(),
+        ));
+    }
+    if quadratic
+        .iter()
+        .any(|&(i, j, v)| i > j || j >= lp.num_cols() || !v.is_finite())
+    {
+        return Err(Error::Solver(
+            "the quadratic term is not an upper triangle of finite numbers".into(),
+        ));
+    }
+    let b = opts.method.backend();
+    let backend: &dyn Backend = if b.supports_quadratic() {
+        b
+    } else {
+        &clarabel::Clarabel
+    };
+    Ok(backend.solve_quadratic(lp, quadratic, opts)?.solution)
 }
 
 /// The backend that solves cone programs under `opts`.

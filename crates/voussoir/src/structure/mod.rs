@@ -13,10 +13,15 @@ pub use solid::Structure3d;
 
 use crate::dim::{Dim, Two};
 use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
+use crate::error::Error;
 use crate::error::{model_err, Result};
 use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::model::{Connection, Load, Material, Model, Per, Point};
 use serde::{Deserialize, Serialize};
+
+/// Most cells of the overlap check's grid (cells of the median block's size) a body is put in;
+/// a larger body is compared with every other body directly.
+const MAX_CELLS_PER_BODY: f64 = 64.0;
 
 /// A body of the structure: a block (3 DOFs) or a support (prescribed motion).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -250,7 +255,101 @@ impl Structure {
         st.check_overlaps()?;
         st.find_joints()?;
         st.loads = resolve_loads(model, &st)?;
+        st.open_existing_cracks(&model.cracks)?;
         Ok(st)
+    }
+
+    /// The collocation points a crack names, as `(joint, point index, width)`: by `at`, the
+    /// nearest point of any joint (ties to the lowest joint and point), or by `joint`, its
+    /// points with one width each or one for all. `what` names the crack in errors.
+    pub fn crack_points(
+        &self,
+        what: &str,
+        at: Option<[f64; 2]>,
+        joint: Option<usize>,
+        opening: &crate::model::Width,
+    ) -> Result<Vec<(usize, usize, f64)>> {
+        use crate::model::Width;
+        let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
+        let points = match (at, joint, opening) {
+            (Some(p), None, Width::One(w)) => {
+                if !(p[0].is_finite() && p[1].is_finite()) {
+                    return bad("\"at\" must be two finite coordinates".into());
+                }
+                let mut best: Option<(f64, usize, usize)> = None;
+                for (j, jt) in self.joints.iter().enumerate() {
+                    for (k, q) in jt.points.iter().enumerate() {
+                        let dd = (q.x[0] - p[0]).hypot(q.x[1] - p[1]);
+                        if best.is_none_or(|(b, _, _)| dd < b) {
+                            best = Some((dd, j, k));
+                        }
+                    }
+                }
+                match best {
+                    Some((_, j, k)) => vec![(j, k, *w)],
+                    None => return bad("the structure has no joints".into()),
+                }
+            }
+            (Some(_), None, Width::PerPoint(_)) => {
+                return bad("a crack located by \"at\" takes one width".into())
+            }
+            (None, Some(j), w) => {
+                let Some(jt) = self.joints.get(j) else {
+                    return bad(format!(
+                        "joint {j} does not exist (the structure has {} joints)",
+                        self.joints.len()
+                    ));
+                };
+                let n = jt.points.len();
+                match w {
+                    Width::One(w) => (0..n).map(|k| (j, k, *w)).collect(),
+                    Width::PerPoint(ws) => {
+                        if ws.len() != n {
+                            return bad(format!(
+                                "joint {j} has {n} points, {} widths given",
+                                ws.len()
+                            ));
+                        }
+                        ws.iter().enumerate().map(|(k, &w)| (j, k, w)).collect()
+                    }
+                }
+            }
+            _ => return bad("give exactly one of \"at\" and \"joint\"".into()),
+        };
+        for &(_, _, w) in &points {
+            if !(w.is_finite() && w >= 0.0) {
+                return bad(format!("width {w} must be a finite number ≥ 0 (m)"));
+            }
+        }
+        Ok(points)
+    }
+
+    /// Give the points of the model's existing cracks their gaps.
+    fn open_existing_cracks(&mut self, cracks: &[crate::model::ExistingCrack]) -> Result<()> {
+        let mut seen: std::collections::HashMap<(usize, usize), usize> = Default::default();
+        for (i, c) in cracks.iter().enumerate() {
+            let what = format!("cracks[{i}]");
+            let points = self
+                .crack_points(&what, c.at, c.joint, &c.opening)
+                .map_err(|e| match e {
+                    Error::Request(m) => Error::Model(m),
+                    e => e,
+                })?;
+            for (j, k, w) in points {
+                if let Some(other) = seen.insert((j, k), i) {
+                    return Err(Error::Model(format!(
+                        "cracks[{i}] and cracks[{other}] name the same point of joint {j}"
+                    )));
+                }
+                if self.joints[j].bilateral && w > 0.0 {
+                    return Err(Error::Model(format!(
+                        "{what}: joint {j} is tied (a fixed support) and cannot be cracked"
+                    )));
+                }
+                self.joints[j].points[k].gap = w;
+            }
+        }
+        Ok(())
     }
 
     fn body_name(&self, k: usize) -> String {
@@ -291,19 +390,30 @@ impl Structure {
         sizes.sort_by(f64::total_cmp);
         let cell = sizes[sizes.len() / 2].max(tol * 10.0);
         let mut entries: Vec<(i64, i64, usize)> = Vec::new();
+        let mut pairs: Vec<(usize, usize)> = Vec::new();
+        let meet =
+            |p: [f64; 4], q: [f64; 4]| p[0] < q[2] && q[0] < p[2] && p[1] < q[3] && q[1] < p[3];
         for (k, b) in boxes.iter().enumerate() {
-            let (i0, j0) = ((b[0] / cell).floor() as i64, (b[1] / cell).floor() as i64);
-            let (i1, j1) = ((b[2] / cell).floor() as i64, (b[3] / cell).floor() as i64);
-            // Very large bodies (a long foundation) are put in every cell they cover; bounded by
-            // the number of cells the model spans.
-            for i in i0..=i1 {
-                for j in j0..=j1 {
+            let (i0, j0) = ((b[0] / cell).floor(), (b[1] / cell).floor());
+            let (i1, j1) = ((b[2] / cell).floor(), (b[3] / cell).floor());
+            // A body much larger than the median block (a long foundation, or a block drawn
+            // at the wrong scale) would fill more cells than the model has bodies: it is
+            // compared with every other body instead, so that memory stays linear.
+            if (i1 - i0 + 1.0) * (j1 - j0 + 1.0) > MAX_CELLS_PER_BODY {
+                pairs.extend(
+                    (0..boxes.len())
+                        .filter(|&q| q != k && meet(*b, boxes[q]))
+                        .map(|q| (k.min(q), k.max(q))),
+                );
+                continue;
+            }
+            for i in i0 as i64..=i1 as i64 {
+                for j in j0 as i64..=j1 as i64 {
                     entries.push((i, j, k));
                 }
             }
         }
         entries.sort_unstable();
-        let mut pairs: Vec<(usize, usize)> = Vec::new();
         let mut s = 0;
         while s < entries.len() {
             let mut e = s + 1;
@@ -316,8 +426,7 @@ impl Structure {
                     // Supports are checked against each other too: two overlapping foundations
                     // would give a block's face two joints.
                     let (p, q) = (entries[x].2, entries[y].2);
-                    let (bp, bq) = (boxes[p], boxes[q]);
-                    if bp[0] < bq[2] && bq[0] < bp[2] && bp[1] < bq[3] && bq[1] < bp[3] {
+                    if meet(boxes[p], boxes[q]) {
                         pairs.push((p.min(q), p.max(q)));
                     }
                 }

@@ -31,6 +31,8 @@ pub struct CapacityArgs {
     #[arg(long)]
     pub cold: bool,
     #[command(flatten)]
+    pub crushing: crate::common::CrushingArgs,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -52,8 +54,17 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     a.draw.check()?;
     let input = a.model.resolve()?;
     let motion = a.settle.resolve()?;
-    let solver = input.solver;
+    let nonassociative = a.crushing.non_associative_settlement();
+    let solver = if nonassociative.is_some() {
+        crate::common::iteration_solver(&a.model, &input.solver)
+    } else {
+        input.solver
+    };
+    let (crushing, facets) = a.crushing.resolve()?;
     let opts = CapacityOptions {
+        crushing,
+        facets,
+        nonassociative,
         steps: a.steps,
         hot_start: !a.cold,
         mechanisms: !a.no_mechanisms,
@@ -71,9 +82,18 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         }
         AnyModel::Spatial(model) => {
             a.draw.refuse_3d()?;
+            if a.crushing.given() {
+                return Err(Fail(
+                    "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
+                ));
+            }
             let st = input.structure3d(model, Some(&motion))?;
             let opts = CapacityOptions {
-                solver: input.solver3d,
+                solver: if nonassociative.is_some() {
+                    crate::common::iteration_solver(&a.model, &input.solver3d)
+                } else {
+                    input.solver3d
+                },
                 ..opts
             };
             let r = capacity(&st, &opts)?;

@@ -4,6 +4,7 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
 use voussoir::analysis::{LimitResult, SettlementResult};
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::model3d::{AnyModel, Model3d};
@@ -101,6 +102,71 @@ pub enum CrushingArg {
     /// The exact crushing cone: a second-order cone program (Clarabel).
     #[value(alias = "cone", alias = "socp", alias = "exact")]
     Conic,
+}
+
+/// The finite-strength flags of `limit`, `settle` and `capacity`.
+#[derive(clap::Args, Clone, Copy, Debug)]
+#[command(next_help_heading = "Joint laws")]
+pub struct CrushingArgs {
+    /// Finite-strength (crushing) model; matters only where a compressive strength is given
+    /// (--compressive-strength or the model's materials).
+    #[arg(long, value_enum, default_value = "linear", ignore_case = true)]
+    pub crushing: CrushingArg,
+    /// Facets (chords) of the inscribed crushing polygon of --crushing linear; more facets,
+    /// closer to the exact cone [default: 16].
+    #[arg(long, value_name = "N")]
+    pub facets: Option<usize>,
+    /// Non-associative Coulomb friction: joints slide without opening (no dilatancy), by the
+    /// fixed-point iteration on the normal forces (docs/joint-laws.md); its convergence is
+    /// reported. Matters only where friction is given (--friction or the model's materials).
+    #[arg(long)]
+    pub non_associative: bool,
+}
+
+impl CrushingArgs {
+    /// The crushing model and the facet count, checked.
+    pub fn resolve(&self) -> Result<(Crushing, usize), Fail> {
+        let crushing = match self.crushing {
+            CrushingArg::Linear => Crushing::Linear,
+            CrushingArg::Conic => Crushing::Conic,
+        };
+        let facets = match (self.crushing, self.facets) {
+            (CrushingArg::Conic, Some(_)) => {
+                return Err(Fail(
+                    "--facets applies to --crushing linear (the conic model is the exact cone)"
+                        .into(),
+                ))
+            }
+            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => {
+                return Err(Fail(format!(
+                    "--facets {n}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+                )))
+            }
+            (_, Some(n)) => n,
+            (_, None) => DEFAULT_FACETS,
+        };
+        Ok((crushing, facets))
+    }
+
+    /// The non-associative iteration's settings, when asked for.
+    pub fn non_associative(
+        &self,
+    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
+        self.non_associative.then(Default::default)
+    }
+
+    /// The same for a settlement or capacity analysis.
+    pub fn non_associative_settlement(
+        &self,
+    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
+        self.non_associative
+            .then(voussoir::analysis::nonassociative::NonAssociativeOptions::settlement)
+    }
+
+    /// Whether a finite-strength flag was given (refused in 3D).
+    pub fn given(&self) -> bool {
+        self.crushing == CrushingArg::Conic || self.facets.is_some()
+    }
 }
 
 /// Which LPs a settlement analysis solves.
@@ -289,8 +355,23 @@ impl ModelArgs {
     }
 
     pub fn solver(&self) -> SolverOptions {
+        self.solver.options()
+    }
+
+    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
+    /// `default` one included).
+    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
+        check_materials(self.friction, self.compressive_strength)?;
+        m.override_joint_laws(self.friction, self.compressive_strength);
+        Ok(())
+    }
+}
+
+impl SolverArgs {
+    /// The solver options of these flags (dual simplex unless --method says otherwise).
+    pub fn options(&self) -> SolverOptions {
         SolverOptions {
-            method: match self.solver.method.unwrap_or(MethodArg::DualSimplex) {
+            method: match self.method.unwrap_or(MethodArg::DualSimplex) {
                 MethodArg::DualSimplex => Method::DualSimplex,
                 MethodArg::PrimalSimplex => Method::PrimalSimplex,
                 MethodArg::Ipm => Method::Ipm,
@@ -304,14 +385,6 @@ impl ModelArgs {
             log: std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1"),
             ..SolverOptions::default()
         }
-    }
-
-    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
-    /// `default` one included).
-    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
-        check_materials(self.friction, self.compressive_strength)?;
-        m.override_joint_laws(self.friction, self.compressive_strength);
-        Ok(())
     }
 }
 
@@ -514,4 +587,20 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
     s
+}
+
+/// The solver of a non-associative settlement iteration: Clarabel's interior point unless
+/// --method says otherwise. Its solutions are the centres of the optimal faces, so the normal
+/// forces move smoothly from one iterate to the next, where a simplex jumps between vertices
+/// and the iteration wanders (measured on a 20 × 10 wall: docs/joint-laws.md). The tolerance is
+/// tightened so that every iterate is certified.
+pub fn iteration_solver(m: &ModelArgs, solver: &SolverOptions) -> SolverOptions {
+    if m.solver.method.is_some() {
+        return *solver;
+    }
+    SolverOptions {
+        method: voussoir::lp::Method::Clarabel,
+        feasibility_tolerance: solver.feasibility_tolerance.min(1e-10),
+        ..*solver
+    }
 }

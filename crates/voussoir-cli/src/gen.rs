@@ -236,7 +236,7 @@ fn write_json<T: serde::Serialize>(
 }
 
 impl ArchArgs {
-    fn spec(&self) -> ArchSpec {
+    pub fn spec(&self) -> ArchSpec {
         let shape = match self.shape {
             ShapeArg::Semicircular => ArchShape::Semicircular,
             ShapeArg::Segmental => ArchShape::Segmental {
@@ -299,17 +299,7 @@ pub fn run(g: Gen) -> Result<(), Fail> {
             write3d(&m, &v.arch.out)
         }
         Gen::Dome(d) => {
-            let m = generate3d::dome(&DomeSpec {
-                radius: d.radius,
-                radius_at: d.radius_at.into(),
-                thickness: d.thickness,
-                courses: d.courses,
-                segments: d.segments,
-                half_angle: d.half_angle.to_radians(),
-                oculus: d.oculus.map(f64::to_radians),
-                unit_weight: d.unit_weight,
-                crown_load: d.crown_load,
-            })?;
+            let m = generate3d::dome(&d.spec())?;
             write3d(&m, &d.out)
         }
         Gen::Block(b) => {
@@ -561,6 +551,22 @@ pub struct DomeArgs {
     pub crown_load: f64,
     #[command(flatten)]
     pub out: Output,
+}
+
+impl DomeArgs {
+    pub fn spec(&self) -> DomeSpec {
+        DomeSpec {
+            radius: self.radius,
+            radius_at: self.radius_at.into(),
+            thickness: self.thickness,
+            courses: self.courses,
+            segments: self.segments,
+            half_angle: self.half_angle.to_radians(),
+            oculus: self.oculus.map(f64::to_radians),
+            unit_weight: self.unit_weight,
+            crown_load: self.crown_load,
+        }
+    }
 }
 
 #[derive(Args)]

@@ -250,6 +250,9 @@ impl DxfArgs {
         crate::outputs::input(path);
         if voussoir_io::dxf::is_dxf(path) {
             let (m, rep) = read_dxf(path, &self.options())?;
+            for w in &rep.warnings {
+                eprintln!("warning: {w}");
+            }
             Ok((AnyModel::Planar(m), Some(rep)))
         } else if is_mesh(path) {
             let (m, rep) = read_mesh(path, &self.mesh_options())?;
@@ -325,6 +328,9 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
     for n in &rep.notes {
         eprintln!("note: {n}");
+    }
+    for w in &rep.warnings {
+        eprintln!("warning: {w}");
     }
     Ok(())
 }

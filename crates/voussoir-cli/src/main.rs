@@ -1,6 +1,7 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
 mod bench;
+mod canonical;
 mod capacity;
 mod common;
 mod draw_args;
@@ -11,6 +12,7 @@ mod incremental;
 mod limit;
 mod outputs;
 mod plot;
+mod safety;
 mod settle;
 mod sweep;
 mod tilt;
@@ -58,6 +60,15 @@ enum Command {
     /// Load capacity after a settlement: λ against the settlement (limit analysis on the
     /// deformed geometry), the settlement at which λ reaches zero, validity of each step.
     Capacity(capacity::CapacityArgs),
+    /// Does the structure stand under its dead loads, its geometric safety factor (Heyman) and
+    /// the range of each support's reaction over the statically admissible states
+    /// (docs/safety.md).
+    Safety(safety::SafetyArgs),
+    /// The least thickness at which a generated arch or dome stands under its own weight:
+    /// bisection on the generator's --thickness, every other generator flag kept (live loads
+    /// play no part; docs/safety.md).
+    #[command(subcommand)]
+    LeastThickness(safety::Generated),
     /// Incremental (nonlinear kinematic) analysis: λ against the displacement of a control
     /// point as the mechanism evolves and cracks close.
     Incremental(incremental::IncrementalArgs),
@@ -68,7 +79,8 @@ enum Command {
     /// plot) or a model: `-o fig.svg`, `fig.png` or `report.html`.
     Plot(plot::PlotArgs),
     /// Many settlement analyses in parallel: magnitudes, directions or Monte Carlo samples of
-    /// the support motions; JSON lines and CSV; --shard I/N for array jobs (docs/sweep.md).
+    /// the support motions, with --capacity the capacity after each (distribution of λ); JSON
+    /// lines and CSV; --shard I/N for array jobs (docs/sweep.md).
     Sweep(sweep::SweepArgs),
     /// Merge the JSON-lines results of sweep shards (docs/sweep.md).
     Merge(sweep::MergeArgs),
@@ -88,6 +100,8 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Limit(a) => limit::run(a),
         Command::Settle(a) => settle::run(a),
         Command::Capacity(a) => capacity::run(a),
+        Command::Safety(a) => safety::run(a),
+        Command::LeastThickness(g) => safety::run_least(g),
         Command::Incremental(a) => incremental::run(a),
         Command::Plot(a) => plot::run(a),
         Command::Tilt(a) => tilt::run(a),

@@ -1,9 +1,14 @@
 //! `voussoir settle`: the mechanism and contact forces for prescribed support motions.
 
-use crate::common::{self, Fail, FormArgs, Input, ModelArgs, Motion, OutArgs, SettleArgs};
+use crate::common::{
+    self, CrushingArgs, Fail, FormArgs, Input, ModelArgs, Motion, OutArgs, SettleArgs,
+};
 use crate::draw_args::DrawArgs;
 use clap::Args;
-use voussoir::analysis::settlement::{settle, settle_with, SettlementForm};
+use voussoir::analysis::canonical::settle_canonical;
+use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS};
+use voussoir::analysis::nonassociative::settle_nonassociative;
+use voussoir::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
 use voussoir::model3d::{AnyModel, Model3d};
 
 #[derive(Args)]
@@ -13,6 +18,8 @@ pub struct SettleCmdArgs {
     #[command(flatten)]
     pub form: FormArgs,
     #[command(flatten)]
+    pub crushing: CrushingArgs,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -20,6 +27,8 @@ pub struct SettleCmdArgs {
     pub draw: DrawArgs,
     #[command(flatten)]
     pub forces: crate::draw_args::ForcesArgs,
+    #[command(flatten)]
+    pub canonical: crate::canonical::CanonicalArgs,
 }
 
 /// `settle`'s flags, resolved.
@@ -27,12 +36,25 @@ pub struct SettleConfig {
     pub input: Input,
     pub motion: Motion,
     pub form: SettlementForm,
+    pub crushing: Crushing,
+    pub facets: usize,
 }
 
 impl SettleCmdArgs {
     pub fn resolve(&self) -> Result<SettleConfig, Fail> {
         self.draw.check()?;
+        let (crushing, facets) = self.crushing.resolve()?;
+        if (self.crushing.given() || self.crushing.non_associative)
+            && self.form.settlement_form.form() != SettlementForm::Both
+        {
+            return Err(Fail(
+                "--crushing, --facets and --non-associative go with --form both (the default)"
+                    .into(),
+            ));
+        }
         Ok(SettleConfig {
+            crushing,
+            facets,
             input: self.model.resolve()?,
             motion: self.settle.resolve()?,
             form: self.form.settlement_form.form(),
@@ -56,15 +78,39 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                 .into(),
         ));
     }
-    let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver)?,
-        form => settle_with(&st, &c.input.solver, form)?,
+    // Joint laws beyond the defaults (non-associative iteration, exact cone, other facet
+    // counts) are solved as such; otherwise the canonical selection unless --raw.
+    let plain = c.crushing == Crushing::Linear && c.facets == DEFAULT_FACETS;
+    let r = match (
+        c.form,
+        a.crushing.non_associative_settlement(),
+        a.canonical.options(),
+    ) {
+        (SettlementForm::Both, Some(o), _) => settle_nonassociative(
+            &st,
+            &common::iteration_solver(&a.model, &c.input.solver),
+            c.crushing,
+            c.facets,
+            &o,
+        )?,
+        (form, None, Some(o)) if plain => settle_canonical(&st, &c.input.solver, form, &o)?,
+        (SettlementForm::Both, None, _) => {
+            settle_crushing(&st, &c.input.solver, c.crushing, c.facets)?
+        }
+        (form, _, _) => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
-    a.out.emit(&r, || common::settle_summary(&st, &r))
+    a.out.emit(&r, || {
+        common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+    })
 }
 
 fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
+    if a.crushing.given() {
+        return Err(Fail(
+            "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
+        ));
+    }
     c.motion.apply(&mut model)?;
     let st = voussoir::Structure3d::new(&model, c.input.build)?;
     for w in model.warnings() {
@@ -80,10 +126,21 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
                 .into(),
         ));
     }
-    let r = match c.form {
-        SettlementForm::Both => settle(&st, &c.input.solver3d)?,
-        form => settle_with(&st, &c.input.solver3d, form)?,
+    // 3D: the solver's own solution (the canonical selection is not yet fast enough on 3D
+    // models; docs/canonical.md).
+    let r = match (c.form, a.crushing.non_associative_settlement()) {
+        (SettlementForm::Both, Some(o)) => settle_nonassociative(
+            &st,
+            &common::iteration_solver(&a.model, &c.input.solver3d),
+            Crushing::Linear,
+            DEFAULT_FACETS,
+            &o,
+        )?,
+        (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
+        (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };
     a.draw.emit_3d(&r, &c.input.path)?;
-    a.out.emit(&r, || common::settle_summary(&st, &r))
+    a.out.emit(&r, || {
+        common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+    })
 }

@@ -8,6 +8,7 @@ use crate::common::{Fail, SettleArgs, SettleModelArgs};
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
+use voussoir::analysis::capacity::CapacityOptions;
 use voussoir::sweep::{self, csv, jsonl, SweepKind, SweepRecord, SweepSpec};
 use voussoir::BuildOptions;
 
@@ -34,6 +35,14 @@ pub struct SweepArgs {
     /// Run only the tasks with index ≡ I (mod N): `--shard I/N`, I from 0.
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
+    /// After each settlement, the capacity analysis of the same settlement (as `voussoir
+    /// capacity`): λ after the settlement, the zero-capacity settlement and the validity flag
+    /// per record; quantiles of λ on stderr (docs/sweep.md). The model needs live loads.
+    #[arg(long)]
+    pub capacity: bool,
+    /// --capacity: intervals of each capacity curve (as `capacity --steps`).
+    #[arg(long, default_value_t = 40, value_name = "N")]
+    pub capacity_steps: usize,
     /// Worker threads (default: one per core).
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
@@ -46,6 +55,19 @@ pub struct SweepArgs {
     /// Write the results as a CSV table here (default: stdout when no --jsonl is given).
     #[arg(long, value_name = "FILE", help_heading = "Output")]
     pub csv: Option<PathBuf>,
+    /// --capacity: write the distribution of λ after the settlement (count, mean, quantiles) as
+    /// JSON here.
+    #[arg(long, value_name = "FILE", help_heading = "Output")]
+    pub summary: Option<PathBuf>,
+    /// --capacity: draw the histogram and the exceedance curve of λ as SVG.
+    #[arg(long, value_name = "FILE", help_heading = "Drawing")]
+    pub svg: Option<PathBuf>,
+    /// --capacity: the same figure as PNG.
+    #[arg(long, value_name = "FILE", help_heading = "Drawing")]
+    pub png: Option<PathBuf>,
+    /// --capacity: an HTML report (key numbers, quantiles, both figures, every record).
+    #[arg(long, value_name = "FILE", help_heading = "Drawing")]
+    pub report: Option<PathBuf>,
 }
 
 #[derive(Args)]
@@ -106,6 +128,17 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
             "give exactly one of --steps, --directions, --samples".into(),
         ));
     }
+    let drawn = a.summary.is_some() || a.svg.is_some() || a.png.is_some() || a.report.is_some();
+    if drawn && !a.capacity {
+        return Err(Fail(
+            "--summary, --svg, --png and --report describe the distribution of λ after the settlement: give --capacity".into(),
+        ));
+    }
+    if a.capacity && a.capacity_steps == 0 {
+        return Err(Fail(
+            "--capacity-steps 0: a capacity curve needs at least one interval".into(),
+        ));
+    }
     let kind = match (a.steps, a.directions, a.samples) {
         (Some(n), _, _) => SweepKind::Scale(n),
         (_, Some(n), _) => SweepKind::Direction(n),
@@ -127,11 +160,17 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         },
         solver: a.model.solver(),
         form: a.model.settlement_form(),
+        capacity: a.capacity.then_some(CapacityOptions {
+            steps: a.capacity_steps,
+            mechanisms: false,
+            ..CapacityOptions::default()
+        }),
     };
     let (shard, shards) = match &a.shard {
         Some(s) => parse_shard(s)?,
         None => (0, 1),
     };
+    sweep::check_size(n, shards)?;
     let tasks = sweep::shard_tasks(n, shard, shards);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(a.threads.unwrap_or(0))
@@ -167,6 +206,53 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         shards,
         pool.current_num_threads()
     );
+    if a.capacity {
+        write_distribution(&a, &records)?;
+    }
+    Ok(())
+}
+
+/// The distribution of λ after the settlement: quantiles on stderr, and the summary, figure and
+/// report files asked for.
+fn write_distribution(a: &SweepArgs, records: &[SweepRecord]) -> Result<(), Fail> {
+    use voussoir_io::draw::distribution;
+    let Some(s) = sweep::capacity_summary(records) else {
+        return Ok(());
+    };
+    for (k, v) in distribution::summary_rows(&s) {
+        eprintln!("{k}: {v}");
+    }
+    let q: Vec<String> = s
+        .quantiles
+        .iter()
+        .map(|q| format!("{:.0} % {:.6}", q.probability * 100.0, q.value))
+        .collect();
+    eprintln!("quantiles of λ after the settlement: {}", q.join(", "));
+    if let Some(p) = &a.summary {
+        crate::outputs::stage(p, voussoir_io::files::to_json(&s)?.as_bytes())?;
+    }
+    let title = "Load multiplier after the settlement";
+    if a.svg.is_some() || a.png.is_some() {
+        let svg = distribution::capacity_distribution_svg(records, title);
+        if let Some(p) = &a.svg {
+            crate::outputs::stage(p, svg.as_bytes())?;
+        }
+        if let Some(p) = &a.png {
+            let png = voussoir_io::draw::svg_to_png(&svg, voussoir_io::draw::PNG_ZOOM)?;
+            crate::outputs::stage(p, &png)?;
+        }
+    }
+    if let Some(p) = &a.report {
+        let rep = distribution::sweep_capacity_report(
+            records,
+            &voussoir_io::draw::ReportOptions {
+                title: None,
+                source: a.model.model.display().to_string(),
+                scale: None,
+            },
+        );
+        crate::outputs::stage(p, rep.to_html().as_bytes())?;
+    }
     Ok(())
 }
 

@@ -74,19 +74,12 @@ fn settle_without_motion_fails_in_one_line() {
 }
 
 #[test]
-fn settle_with_crushing_conic_is_refused_in_one_line() {
+fn tilt_with_crushing_conic_is_refused_in_one_line() {
     let d = tmpdir("crushing");
     let a = arch(&d, "full");
     let err = fails_in_one_line(
-        &[
-            "settle",
-            &a,
-            "--move",
-            "right=0.01,0",
-            "--crushing",
-            "conic",
-        ],
-        &["--crushing", "settle", "`limit`"],
+        &["tilt", &a, "--crushing", "conic"],
+        &["--crushing", "tilt", "`limit`, `settle`, `capacity`"],
     );
     assert!(!err.contains("Usage"), "{err}");
 }
@@ -98,10 +91,7 @@ fn flags_that_do_not_apply_are_absent_from_help_and_refused() {
     let mv = ["--move", "right=0.01,0"];
     // (command and its required arguments, foreign flag with a value)
     let cases: Vec<(Vec<&str>, [&str; 2])> = vec![
-        (vec!["settle", &a, mv[0], mv[1]], ["--crushing", "linear"]),
-        (vec!["settle", &a, mv[0], mv[1]], ["--facets", "32"]),
-        (vec!["capacity", &a, mv[0], mv[1]], ["--crushing", "conic"]),
-        (vec!["capacity", &a, mv[0], mv[1]], ["--facets", "32"]),
+        (vec!["tilt", &a], ["--crushing", "linear"]),
         (
             vec!["capacity", &a, mv[0], mv[1]],
             ["--settlement-form", "both"],

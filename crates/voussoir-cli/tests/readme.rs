@@ -1,5 +1,5 @@
-//! The documentation runs as written: the README's example session and the sweep example of
-//! docs/sweep.md are taken from between their markers (`<!-- example: NAME begin … -->`,
+//! The documentation runs as written: the README's example session and the examples of
+//! docs/sweep.md and docs/safety.md are taken from between their markers (`<!-- example: NAME begin … -->`,
 //! `<!-- example: NAME end -->`) and run line by line with the built `voussoir` first on PATH,
 //! in a temporary folder. Every line must succeed, every file a line names must be written, and
 //! nothing may be written outside `out/` (which `.gitignore` covers). The README's claims about
@@ -148,6 +148,11 @@ fn readme_3d_example_runs_as_written() {
 #[test]
 fn sweep_doc_example_runs_as_written() {
     run_example("docs/sweep.md", "sweep");
+}
+
+#[test]
+fn safety_doc_example_runs_as_written() {
+    run_example("docs/safety.md", "safety");
 }
 
 fn help(args: &[&str]) -> String {

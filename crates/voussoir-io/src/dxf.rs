@@ -124,6 +124,9 @@ pub struct ImportReport {
     pub merge_tolerance: f64,
     /// Repairs made while reading (one line each).
     pub notes: Vec<String>,
+    /// Things that look wrong but are not errors (one line each): units whose blocks come out
+    /// of masonry size.
+    pub warnings: Vec<String>,
 }
 
 impl ImportReport {
@@ -608,6 +611,7 @@ pub fn drawing_to_model(
             live,
         },
         tolerance: None,
+        cracks: Vec::new(),
     };
     Ok((
         model,
@@ -620,7 +624,63 @@ pub fn drawing_to_model(
             merged_vertices: merged,
             merge_tolerance: tol,
             notes,
+            warnings: units_warning(&cleaned, &is_support, units, opts.units.is_some())
+                .into_iter()
+                .collect(),
         },
+    ))
+}
+
+/// Block sizes (the median of the blocks' larger bounding-box side, in m) that masonry has:
+/// outside them a drawing's declared units are probably not its real ones.
+pub const PLAUSIBLE_BLOCK_SIZE: (f64, f64) = (0.005, 20.0);
+
+/// One line when the units taken from `$INSUNITS` make the blocks' median size implausible
+/// for masonry (a drawing in millimetres whose header says metres gives 400 m voussoirs),
+/// naming the units that would make it plausible. Nothing when the units were given.
+fn units_warning(
+    polys: &[Vec<Point>],
+    is_support: &[bool],
+    units: Units,
+    given: bool,
+) -> Option<String> {
+    if given {
+        return None;
+    }
+    let mut sizes: Vec<f64> = polys
+        .iter()
+        .zip(is_support)
+        .filter(|(_, s)| !**s)
+        .map(|(p, _)| {
+            let b = bbox(p);
+            (b[2] - b[0]).max(b[3] - b[1])
+        })
+        .collect();
+    if sizes.is_empty() {
+        return None;
+    }
+    sizes.sort_by(f64::total_cmp);
+    let median = sizes[sizes.len() / 2];
+    let (lo, hi) = PLAUSIBLE_BLOCK_SIZE;
+    if (lo..=hi).contains(&median) {
+        return None;
+    }
+    let raw = median / units.scale();
+    // The plausible units that bring the median closest to a typical 0.3 m block.
+    let better = [Units::Mm, Units::Cm, Units::M]
+        .into_iter()
+        .filter(|u| (lo..=hi).contains(&(raw * u.scale())) && *u != units)
+        .min_by(|a, b| {
+            let d = |u: &Units| (raw * u.scale() / 0.3).ln().abs();
+            d(a).total_cmp(&d(b))
+        });
+    let hint = match better {
+        Some(u) => format!("if it is drawn in {}, pass --units {}", u.name(), u.name()),
+        None => "pass --units mm|cm|m if its coordinates are in other units".to_string(),
+    };
+    Some(format!(
+        "the drawing's header says its units are {} ($INSUNITS), which makes its blocks {median:.4} m across (median), not masonry-sized; {hint}",
+        units.name()
     ))
 }
 

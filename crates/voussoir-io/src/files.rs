@@ -44,14 +44,71 @@ pub fn read_model(path: &Path) -> Result<Model, IoError> {
 pub fn read_any_model(path: &Path) -> Result<voussoir::model3d::AnyModel, IoError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| IoError(format!("cannot read {}: {e}", path.display())))?;
+    unique_keys(&text)
+        .map_err(|e| IoError(format!("{}: invalid model JSON: {e}", path.display())))?;
     voussoir::model3d::AnyModel::from_json(&text)
         .map_err(|e| IoError(format!("{}: invalid model JSON: {e}", path.display())).one_line())
 }
 
-/// Parse a JSON model (unknown fields are rejected).
+/// Parse a JSON model (unknown fields and duplicate keys are rejected).
 pub fn parse_model(text: &str) -> Result<Model, IoError> {
+    unique_keys(text).map_err(|e| IoError(format!("invalid model JSON: {e}")).one_line())?;
     serde_json::from_str::<Model>(text)
         .map_err(|e| IoError(format!("invalid model JSON: {e}")).one_line())
+}
+
+/// Check that no JSON object in `text` has a key twice (at any depth: a material named twice
+/// as well as a field given twice), so that every reader — `limit`, `plot`, the 3D reader —
+/// refuses what one refuses; the error names the key, line and column.
+pub fn unique_keys(text: &str) -> Result<(), serde_json::Error> {
+    use serde::de::{Deserializer, MapAccess, SeqAccess, Visitor};
+    struct Unique;
+    impl<'de> serde::Deserialize<'de> for Unique {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            d.deserialize_any(UniqueVisitor)
+        }
+    }
+    struct UniqueVisitor;
+    impl<'de> Visitor<'de> for UniqueVisitor {
+        type Value = Unique;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("any JSON value")
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Unique, A::Error> {
+            let mut seen = std::collections::HashSet::new();
+            while let Some(key) = map.next_key::<String>()? {
+                if !seen.insert(key.clone()) {
+                    return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
+                }
+                map.next_value::<Unique>()?;
+            }
+            Ok(Unique)
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Unique, A::Error> {
+            while seq.next_element::<Unique>()?.is_some() {}
+            Ok(Unique)
+        }
+        fn visit_bool<E>(self, _: bool) -> Result<Unique, E> {
+            Ok(Unique)
+        }
+        fn visit_i64<E>(self, _: i64) -> Result<Unique, E> {
+            Ok(Unique)
+        }
+        fn visit_u64<E>(self, _: u64) -> Result<Unique, E> {
+            Ok(Unique)
+        }
+        fn visit_f64<E>(self, _: f64) -> Result<Unique, E> {
+            Ok(Unique)
+        }
+        fn visit_str<E>(self, _: &str) -> Result<Unique, E> {
+            Ok(Unique)
+        }
+        fn visit_unit<E>(self) -> Result<Unique, E> {
+            Ok(Unique)
+        }
+    }
+    let mut d = serde_json::Deserializer::from_str(text);
+    serde::Deserialize::deserialize(&mut d).map(|_: Unique| ())
 }
 
 /// Where the bytes for `path` really go: a symbolic link is written through (its target is

@@ -32,6 +32,7 @@ fn spec(common: &Common, kind: &str, n: usize, cov: f64, seed: u64) -> Result<Sw
         },
         solver: common.solver()?,
         form: common.settlement_form()?,
+        capacity: None,
     })
 }
 

@@ -106,6 +106,10 @@ pub struct ContactBodies<D: Dim> {
     pub supports: Vec<(D::Vector, Vec<f64>)>,
 }
 
+/// Default [`KinematicMap::crushing_reach`]: the crushing polygon spans forces up to 64 times
+/// the total dead load (or up to f_c·w·t, if less).
+pub const CRUSHING_REACH: f64 = 64.0;
+
 /// The assembled kinematic map of a structure.
 ///
 /// Rows: one opening row per collocation point `k` (`N`), `tangents_per_point` sliding rows per
@@ -139,6 +143,10 @@ pub struct KinematicMap {
     pub along: Vec<f64>,
     /// Facets of the piecewise-linear crushing domain (finite compressive strength).
     pub facets: usize,
+    /// How far above the loads' force scale (the total dead load) the crushing polygon
+    /// reaches: its vertices lie in `[0, min(f_c·w·t, reach × scale)]`, capped there
+    /// ([`crate::programs`]); limit analysis widens it when a joint's force reaches the cap.
+    pub crushing_reach: f64,
     /// Facets of the pyramid inscribed in the friction cone (3D; 2D needs none).
     pub friction_facets: usize,
     /// Fixed shear capacities per point, replacing `μ p_n + c` on frictional joints (used by the
@@ -235,6 +243,7 @@ impl KinematicMap {
             laws,
             along,
             facets: 16,
+            crushing_reach: CRUSHING_REACH,
             friction_facets: 8,
             shear_limits: None,
         }

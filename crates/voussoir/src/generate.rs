@@ -293,6 +293,7 @@ pub fn arch(s: &ArchSpec) -> Result<Model> {
         supports,
         loads: Loads { self_weight: true, dead: vec![], live },
         tolerance: None,
+        cracks: Vec::new(),
     })
 }
 
@@ -395,6 +396,7 @@ pub fn lintel(s: &LintelSpec) -> Result<Model> {
             live,
         },
         tolerance: None,
+        cracks: Vec::new(),
     })
 }
 
@@ -520,5 +522,6 @@ pub fn wall(s: &WallSpec) -> Result<Model> {
             live,
         },
         tolerance: None,
+        cracks: Vec::new(),
     })
 }

@@ -525,6 +525,7 @@ fn shifted_arch(s: &ArchSpec, plain: &Model) -> Result<Model> {
         supports: plain.supports.clone(),
         loads,
         tolerance: plain.tolerance,
+        cracks: Vec::new(),
     })
 }
 

@@ -724,6 +724,7 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
             live,
         },
         tolerance: Some(rel_tol),
+        cracks: Vec::new(),
     })
 }
 

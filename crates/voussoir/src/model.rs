@@ -33,6 +33,32 @@ pub struct Model {
     /// diagonal (default 1e-7).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+    /// Cracks the structure already has (a survey): each point they name starts with that gap
+    /// and carries no force until it closes (the paper's initial gap Δ, equations 42 and 58).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cracks: Vec<ExistingCrack>,
+}
+
+/// A crack width: one number (a point, or every point of a joint) or one per joint point.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Width {
+    One(f64),
+    PerPoint(Vec<f64>),
+}
+
+/// A crack measured in the structure as it stands. Exactly one of `at` (the nearest
+/// collocation point of any joint: the surveyor's coordinates, in m) and `joint` (a joint id:
+/// widths at its points in order, start then end, or one width for all of them).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ExistingCrack {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub at: Option<[f64; 2]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub joint: Option<usize>,
+    /// Width (m), ≥ 0.
+    pub opening: Width,
 }
 
 /// Material of a block.

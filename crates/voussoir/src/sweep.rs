@@ -8,10 +8,16 @@
 //!   normal, independent per support, from a seed (one stream per sample, so a sample's numbers
 //!   do not depend on sharding or threads).
 //!
+//! With [`SweepSpec::capacity`] every analysis is followed by the capacity analysis of the same
+//! settlement ([`crate::analysis::capacity`]): λ after the settlement, the zero-capacity
+//! settlement and the validity flag per record, so that a Monte Carlo of settlement fields gives
+//! the distribution of the residual capacity ([`capacity_summary`]: quantiles).
+//!
 //! Each analysis is a rayon task with its own structure and solver, run on the caller's thread
 //! pool; records come back ordered by task index whatever the order of completion. Front ends
 //! (the command line, Python) parse their flags, pick the tasks (shards) and write the records.
 
+use crate::analysis::capacity::{capacity, CapacityOptions, CapacityStatus};
 use crate::analysis::settlement::{settle_with, SettlementForm};
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
@@ -56,6 +62,9 @@ pub struct SweepSpec {
     pub build: BuildOptions,
     pub solver: SolverOptions,
     pub form: SettlementForm,
+    /// Also run the capacity analysis after each settlement, with these options (their solver
+    /// is replaced by `solver`); `None`: settlement analyses only.
+    pub capacity: Option<CapacityOptions>,
 }
 
 /// One analysis of a sweep.
@@ -81,6 +90,52 @@ pub struct SweepRecord {
     pub motions: BTreeMap<String, [f64; 3]>,
     /// The solver and method that produced the analysis.
     pub solver: crate::lp::SolverInfo,
+    /// The capacity after this settlement (sweeps with [`SweepSpec::capacity`] only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub capacity: Option<CapacityRecord>,
+}
+
+/// The capacity analysis after one settlement of a sweep: what `voussoir capacity` gives for the
+/// same support motions.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct CapacityRecord {
+    /// `curve` or `no_settlement_mechanism`, as in `voussoir capacity`.
+    pub status: String,
+    /// The settlement magnitude (m): the largest support translation (`null` if failed).
+    pub max_settlement: Option<f64>,
+    /// λ without settlement (the plain limit analysis) and after the whole settlement (the
+    /// curve's last point); `null` if locked or without equilibrium.
+    pub load_multiplier_before: Option<f64>,
+    pub load_multiplier_after: Option<f64>,
+    /// The settlement at which λ reaches 0 (m), `null` if not reached within this settlement.
+    pub zero_capacity_settlement: Option<f64>,
+    /// Whether limit analysis on the deformed geometry is valid at every step of the curve
+    /// (the collapse mechanism closes no crack opened by the settlement), and at how many steps
+    /// it is not.
+    pub valid: bool,
+    pub invalid_steps: usize,
+    /// Whether it is valid at the last step (where `load_multiplier_after` is computed).
+    pub valid_after: bool,
+    /// Why the capacity analysis failed (status `failed`; every number is then `null`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+}
+
+impl CapacityRecord {
+    /// The record of a capacity analysis that failed with `e`.
+    pub fn failed(e: &Error) -> CapacityRecord {
+        CapacityRecord {
+            status: "failed".into(),
+            max_settlement: None,
+            load_multiplier_before: None,
+            load_multiplier_after: None,
+            zero_capacity_settlement: None,
+            valid: false,
+            invalid_steps: 0,
+            valid_after: false,
+            error: Some(e.to_string()),
+        }
+    }
 }
 
 /// Deterministic random numbers (SplitMix64), so that a seed means the same samples everywhere.
@@ -156,6 +211,15 @@ pub fn analyse(
     }
     let st = Structure::new(&m, spec.build)?;
     let r = settle_with(&st, &spec.solver, spec.form)?;
+    // A capacity analysis that fails (a solver failure on one deformed geometry) is recorded
+    // as such, so that one sample does not stop a Monte Carlo of hundreds.
+    let capacity = spec.capacity.as_ref().map(|o| {
+        let o = CapacityOptions {
+            solver: spec.solver,
+            ..*o
+        };
+        capacity_record(&st, &o).unwrap_or_else(|e| CapacityRecord::failed(&e))
+    });
     let max_displacement = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.u.hypot(b.v)));
     let max_rotation = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.theta.abs()));
     Ok(SweepRecord {
@@ -186,7 +250,61 @@ pub fn analyse(
             .map(|s| (s.name.clone(), s.motion))
             .collect(),
         solver: r.solver.clone(),
+        capacity,
     })
+}
+
+/// The capacity analysis of `st` (its supports carrying the settlement) as a sweep record.
+pub fn capacity_record(st: &Structure, opts: &CapacityOptions) -> Result<CapacityRecord> {
+    let c = capacity(st, opts)?;
+    let invalid_steps = c.curve.iter().filter(|p| !p.valid).count();
+    Ok(CapacityRecord {
+        status: match c.status {
+            CapacityStatus::Curve => "curve",
+            CapacityStatus::NoSettlementMechanism => "no_settlement_mechanism",
+        }
+        .to_string(),
+        max_settlement: Some(c.max_settlement),
+        load_multiplier_before: c.curve.first().and_then(|p| p.load_multiplier),
+        load_multiplier_after: c.curve.last().and_then(|p| p.load_multiplier),
+        zero_capacity_settlement: c.zero_capacity_settlement,
+        valid: invalid_steps == 0 && !c.curve.is_empty(),
+        invalid_steps,
+        valid_after: c.curve.last().is_some_and(|p| p.valid),
+        error: None,
+    })
+}
+
+/// Most analyses one run (one shard) of a sweep takes: its records are kept in memory (about
+/// 1 kB each, more with many hinges), so a million is about a gigabyte. Larger sweeps are split
+/// with `--shard I/N` (array jobs) and merged.
+pub const MAX_ANALYSES_PER_RUN: usize = 1_000_000;
+
+/// Most analyses a sweep may have in all (its shards together).
+pub const MAX_ANALYSES: usize = 1_000_000_000;
+
+/// Refuse, before any work, a sweep of `count` analyses whose runs (`shards` of them) would
+/// take more than [`MAX_ANALYSES_PER_RUN`] each, or that has more than [`MAX_ANALYSES`].
+pub fn check_size(count: usize, shards: usize) -> Result<()> {
+    if count == 0 {
+        return Err(Error::Request(
+            "the number of analyses must be at least 1".into(),
+        ));
+    }
+    if count > MAX_ANALYSES {
+        return Err(Error::Request(format!(
+            "{count} analyses: a sweep has at most {MAX_ANALYSES}"
+        )));
+    }
+    let per_run = count.div_ceil(shards.max(1));
+    if per_run > MAX_ANALYSES_PER_RUN {
+        return Err(Error::Request(format!(
+            "{count} analyses in {} run(s): at most {MAX_ANALYSES_PER_RUN} per run (their results are kept in memory); split it with --shard I/N (at least {} shards)",
+            shards.max(1),
+            count.div_ceil(MAX_ANALYSES_PER_RUN)
+        )));
+    }
+    Ok(())
 }
 
 /// Run the tasks `tasks` (indices below `spec.kind.count()`) in parallel on the current rayon
@@ -199,11 +317,7 @@ pub fn run(
     progress: &(dyn Fn() + Sync),
 ) -> Result<Vec<SweepRecord>> {
     let n = spec.kind.count();
-    if n == 0 {
-        return Err(Error::Request(
-            "the number of analyses must be at least 1".into(),
-        ));
-    }
+    check_size(n, n.div_ceil(tasks.len().max(1)))?;
     if let SweepKind::Sample { cov, .. } = spec.kind {
         if !(cov.is_finite() && cov >= 0.0) {
             return Err(Error::Request(format!(
@@ -222,7 +336,12 @@ pub fn run(
             "the sweep needs a base settlement: no support has a prescribed motion".into(),
         ));
     }
-    Structure::new(model, spec.build)?;
+    let st = Structure::new(model, spec.build)?;
+    if spec.capacity.is_some() && !st.has_live_loads() {
+        return Err(Error::Request(
+            "a capacity sweep needs live loads (the model has none): λ is their multiplier".into(),
+        ));
+    }
     let results: Vec<Result<SweepRecord>> = tasks
         .par_iter()
         .map(|&k| {
@@ -262,11 +381,18 @@ fn num(x: Option<f64>) -> String {
     x.map_or(String::new(), |v| format!("{v:e}"))
 }
 
-/// The CSV table of records.
+/// The CSV table of records; with capacity records, their columns follow (`capacity_status`,
+/// `max_settlement`, `lambda_before`, `lambda_after`, `zero_capacity_settlement`,
+/// `capacity_valid`, `invalid_steps`, `valid_after`).
 pub fn csv(records: &[SweepRecord]) -> String {
+    let with_capacity = records.iter().any(|r| r.capacity.is_some());
     let mut s = String::from(
-        "index,kind,parameter,status,work_dead_loads,work_reactions,duality_gap,certified,hinges,open_joints,max_displacement,max_rotation,hinge_joints\n",
+        "index,kind,parameter,status,work_dead_loads,work_reactions,duality_gap,certified,hinges,open_joints,max_displacement,max_rotation,hinge_joints",
     );
+    if with_capacity {
+        s.push_str(",capacity_status,max_settlement,lambda_before,lambda_after,zero_capacity_settlement,capacity_valid,invalid_steps,valid_after");
+    }
+    s.push('\n');
     for r in records {
         s.push_str(&format!(
             "{},{},{},{},{},{},{},{},{},{},{:e},{:e},{}\n",
@@ -288,8 +414,114 @@ pub fn csv(records: &[SweepRecord]) -> String {
                 .collect::<Vec<_>>()
                 .join(" ")
         ));
+        if with_capacity {
+            s.pop();
+            match &r.capacity {
+                Some(c) => s.push_str(&format!(
+                    ",{},{},{},{},{},{},{},{}",
+                    c.status,
+                    num(c.max_settlement),
+                    num(c.load_multiplier_before),
+                    num(c.load_multiplier_after),
+                    num(c.zero_capacity_settlement),
+                    c.valid,
+                    c.invalid_steps,
+                    c.valid_after
+                )),
+                None => s.push_str(",,,,,,,,"),
+            }
+            s.push('\n');
+        }
     }
     s
+}
+
+/// Quantile `p` in `[0, 1]` of sorted values: linear interpolation between order statistics
+/// (Hyndman and Fan's definition 7, the default of R and NumPy).
+pub fn quantile(sorted: &[f64], p: f64) -> Option<f64> {
+    if sorted.is_empty() || !(0.0..=1.0).contains(&p) {
+        return None;
+    }
+    let h = (sorted.len() - 1) as f64 * p;
+    let (i, f) = (h.floor() as usize, h - h.floor());
+    let next = sorted.get(i + 1).copied().unwrap_or(sorted[i]);
+    Some(sorted[i] + f * (next - sorted[i]))
+}
+
+/// The probabilities at which [`capacity_summary`] gives quantiles.
+pub const QUANTILES: [f64; 9] = [0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 0.95, 0.99];
+
+/// A quantile of a distribution.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Quantile {
+    pub probability: f64,
+    pub value: f64,
+}
+
+/// The distribution of the capacity after the settlements of a capacity sweep.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct CapacitySummary {
+    /// Records with a capacity analysis, and among them those with a finite λ after the
+    /// settlement (the distribution's sample).
+    pub analyses: usize,
+    pub with_load_multiplier: usize,
+    /// λ without settlement (the same for every record of a sweep of one model).
+    pub load_multiplier_before: Option<f64>,
+    /// λ after the settlement: mean, least, largest and quantiles (at [`QUANTILES`]).
+    pub mean: Option<f64>,
+    pub min: Option<f64>,
+    pub max: Option<f64>,
+    pub quantiles: Vec<Quantile>,
+    /// Records whose λ after the settlement is ≤ 0 (the settlement alone exhausts the
+    /// capacity), and their fraction of `with_load_multiplier`.
+    pub exhausted: usize,
+    pub exhausted_fraction: Option<f64>,
+    /// Records whose capacity curve is not valid at some step / at the last step (failed
+    /// analyses included).
+    pub invalid: usize,
+    pub invalid_after: usize,
+    /// Records whose capacity analysis failed (`status: failed`, with the error).
+    pub failed: usize,
+}
+
+/// Quantiles and counts of λ after the settlement over the records of a capacity sweep; `None`
+/// if no record has a capacity analysis.
+pub fn capacity_summary(records: &[SweepRecord]) -> Option<CapacitySummary> {
+    let caps: Vec<&CapacityRecord> = records.iter().filter_map(|r| r.capacity.as_ref()).collect();
+    if caps.is_empty() {
+        return None;
+    }
+    let mut lam: Vec<f64> = caps
+        .iter()
+        .filter_map(|c| c.load_multiplier_after)
+        .filter(|l| l.is_finite())
+        .collect();
+    lam.sort_by(f64::total_cmp);
+    let n = lam.len();
+    let quantiles: Vec<Quantile> = QUANTILES
+        .iter()
+        .filter_map(|&p| {
+            quantile(&lam, p).map(|value| Quantile {
+                probability: p,
+                value,
+            })
+        })
+        .collect();
+    let exhausted = lam.iter().filter(|l| **l <= 0.0).count();
+    Some(CapacitySummary {
+        analyses: caps.len(),
+        with_load_multiplier: n,
+        load_multiplier_before: caps.iter().find_map(|c| c.load_multiplier_before),
+        mean: (n > 0).then(|| lam.iter().sum::<f64>() / n as f64),
+        min: lam.first().copied(),
+        max: lam.last().copied(),
+        quantiles,
+        exhausted,
+        exhausted_fraction: (n > 0).then_some(exhausted as f64 / n as f64),
+        invalid: caps.iter().filter(|c| !c.valid).count(),
+        invalid_after: caps.iter().filter(|c| !c.valid_after).count(),
+        failed: caps.iter().filter(|c| c.error.is_some()).count(),
+    })
 }
 
 /// The records as JSON lines.

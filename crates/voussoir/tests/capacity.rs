@@ -155,7 +155,7 @@ fn zero_capacity_settlement_is_found_to_1e_5_m() {
     let o = SolverOptions::default();
     let path = SettlementPath::new(&st, &o).unwrap();
     let lam = |s: f64| {
-        let d = path.deformed(s);
+        let d = path.deformed(s).unwrap();
         let map = KinematicMap::new(&d);
         solve_limit(&d, &map, &o).unwrap().lambda.unwrap()
     };

@@ -179,6 +179,7 @@ fn small_model(motion: [f64; 3]) -> Model {
             ],
         },
         tolerance: Some(1e-6),
+        cracks: Vec::new(),
     }
 }
 

@@ -160,6 +160,7 @@ impl Case {
                         }],
                     },
                     tolerance: None,
+                    cracks: Vec::new(),
                 }
             }
             Case::Wall {

@@ -112,6 +112,24 @@ pub fn capacity_plot(curves: &[(&str, &CapacityResult)], title: &str) -> Plot {
                 ));
             }
         }
+        // The model's existing cracks close here: the curve's step up or down.
+        if let Some(sc) = r.existing_cracks_closed_at {
+            let after = r
+                .curve
+                .iter()
+                .find(|p| p.settlement >= sc)
+                .and_then(|p| p.load_multiplier);
+            if let Some(l) = after {
+                marks.push(Mark::new(
+                    sc * 100.0,
+                    l,
+                    format!(
+                        "existing cracks closed, s = {} cm",
+                        fmt_fixed(sc * 100.0, 3)
+                    ),
+                ));
+            }
+        }
         if let Some(first) = r.curve.first().and_then(|p| p.load_multiplier) {
             if r.curve.len() > 1 && curves.len() == 1 {
                 marks.push(Mark::new(

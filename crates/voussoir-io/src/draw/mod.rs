@@ -11,6 +11,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod capacity;
+pub mod distribution;
 pub mod identify;
 pub mod incremental;
 pub mod plot;
@@ -65,6 +66,9 @@ impl Saved {
 
 /// Recognise and parse a saved result or model.
 pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
+    // Duplicate keys are refused as the analyses' readers refuse them (a `Value` would keep the
+    // last one silently).
+    crate::files::unique_keys(text).map_err(|e| IoError(format!("invalid JSON: {e}")))?;
     let v: serde_json::Value =
         serde_json::from_str(text).map_err(|e| IoError(format!("not JSON: {e}")))?;
     let obj = v

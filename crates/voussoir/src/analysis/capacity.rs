@@ -45,7 +45,9 @@
 //! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
 
-use crate::analysis::limit::{LimitSolution, LimitStatus, WarmLimit};
+use crate::analysis::limit::{
+    check_facets, Crushing, LimitSolution, LimitStatus, WarmLimit, DEFAULT_FACETS,
+};
 use crate::analysis::settlement::{SettlementPath, SettlementStatus};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
@@ -71,6 +73,14 @@ pub struct CapacityOptions {
     /// condition); the analyses that follow it use unilateral contact at every support. Default
     /// true; false keeps the blocks tied to their fixed supports.
     pub release_fixed: bool,
+    /// Finite compressive strength: inscribed polygon (LPs) or the exact cone (Clarabel), in
+    /// the settlement and in every limit analysis of the curve.
+    pub crushing: Crushing,
+    /// Facets of the inscribed crushing polygon ([`Crushing::Linear`]).
+    pub facets: usize,
+    /// Non-associative Coulomb friction in the settlement and in every limit analysis
+    /// (the fixed-point iteration of [`crate::analysis::nonassociative`]); None: associative.
+    pub nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
     pub solver: SolverOptions,
 }
 
@@ -82,6 +92,9 @@ impl Default for CapacityOptions {
             hot_start: true,
             mechanisms: true,
             release_fixed: true,
+            crushing: Crushing::Linear,
+            facets: DEFAULT_FACETS,
+            nonassociative: None,
             solver: SolverOptions::default(),
         }
     }
@@ -136,7 +149,14 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             "capacity analysis needs live loads (the model has none)".into(),
         ));
     }
-    let path = SettlementPath::new(st, &opts.solver)?;
+    check_facets(opts.facets)?;
+    let path = SettlementPath::with_laws(
+        st,
+        &opts.solver,
+        opts.crushing,
+        opts.facets,
+        opts.nonassociative,
+    )?;
     let smax = path.max_settlement;
     let direction: Vec<SupportDirection> = (0..path.unit.num_supports())
         .filter(|&k| path.unit.support_motion(k).iter().any(|&x| x != 0.0))
@@ -154,6 +174,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             direction,
             curve: vec![],
             zero_capacity_settlement: None,
+            existing_cracks_closed_at: None,
             linear_fit: None,
             settlement_mechanism: vec![],
             settlement_hinges: vec![],
@@ -170,18 +191,23 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     );
     let srep = report(&path.unit, &umap, &path.mechanism, 1.0, &pn0, &pt0);
 
-    let mut warm = WarmLimit::new(&opts.solver, opts.hot_start);
+    let mut warm = WarmLimit::new(&opts.solver, opts.hot_start)
+        .with_crushing(opts.crushing)
+        .with_nonassociative(opts.nonassociative);
     let mut curve = Vec::with_capacity(opts.steps + 1);
     let mut mechanisms = Vec::new();
     let mut values = Vec::with_capacity(opts.steps + 1);
     let (mut solves, mut iterations) = (0usize, 0i64);
     for i in 0..=opts.steps {
         let s = smax * i as f64 / opts.steps as f64;
-        let mut dst = path.deformed(s);
+        let mut dst = path.deformed(s)?;
         if opts.release_fixed {
             dst.release_fixed();
         }
-        let map = KinematicMap::new(&dst);
+        let mut map = KinematicMap::new(&dst);
+        map.facets = opts.facets;
+        let cracks_open =
+            (!path.existing_cracks.is_empty()).then(|| path.existing_cracks_open(&map));
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
         // columns, same options, no starting basis), so λ(0) is the plain limit analysis
         // exactly, and its basis starts the next step.
@@ -207,6 +233,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             valid: closing.is_empty(),
             closing_joints: closing,
             hinges,
+            existing_cracks_open: cracks_open,
         });
     }
 
@@ -221,11 +248,12 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
                     zero = Some(curve[i].settlement);
                 } else {
                     let lam = |s: f64, w: &mut WarmLimit| -> Result<f64> {
-                        let mut dst = path.deformed(s);
+                        let mut dst = path.deformed(s)?;
                         if opts.release_fixed {
                             dst.release_fixed();
                         }
-                        let map = KinematicMap::new(&dst);
+                        let mut map = KinematicMap::new(&dst);
+                        map.facets = opts.facets;
                         Ok(signed_lambda(&w.solve(&dst, &map)?))
                     };
                     zero = Some(illinois(
@@ -242,6 +270,27 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     solves += warm.solves;
     iterations += warm.iterations;
 
+    // Existing cracks: the settlement at which the last of them closes, by bisection between
+    // the curve points where the count of open ones reaches zero.
+    let mut closed_at = None;
+    if let Some(i) = curve
+        .iter()
+        .position(|p| p.existing_cracks_open == Some(0))
+        .filter(|&i| i > 0)
+    {
+        let (mut a, mut b) = (curve[i - 1].settlement, curve[i].settlement);
+        while b - a > opts.root_tolerance {
+            let m = 0.5 * (a + b);
+            let dst = path.deformed(m)?;
+            if path.existing_cracks_open(&KinematicMap::new(&dst)) == 0 {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        closed_at = Some(b);
+    }
+
     let linear_fit = fit(&curve);
     let l0 = curve[0].load_multiplier;
     let invalid = curve.iter().filter(|p| !p.valid).count();
@@ -257,6 +306,24 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         ),
         (None, _) => format!("at no settlement: {}", curve[0].status.sentence()),
     };
+    if warm.unconverged > 0 {
+        message.push_str(&format!(
+            "; WARNING: the non-associative friction iteration did not converge in {} of {} limit analyses",
+            warm.unconverged, warm.solves
+        ));
+    }
+    if let Some(c) = closed_at {
+        message.push_str(&format!(
+            "; the existing cracks close at a settlement of {:.4} cm",
+            c * 100.0
+        ));
+    } else if curve
+        .last()
+        .and_then(|p| p.existing_cracks_open)
+        .is_some_and(|n| n > 0)
+    {
+        message.push_str("; some existing cracks stay open over the whole range");
+    }
     if invalid > 0 {
         message.push_str(&format!(
             "; WARNING: at {invalid} of {} settlements the collapse mechanism closes cracks opened by the settlement, so limit analysis is not valid there (use the incremental analysis)",
@@ -271,6 +338,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         direction,
         curve,
         zero_capacity_settlement: zero,
+        existing_cracks_closed_at: closed_at,
         linear_fit,
         settlement_mechanism: srep.blocks,
         settlement_hinges: srep.hinges,

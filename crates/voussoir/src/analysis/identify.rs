@@ -43,13 +43,7 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-4;
 
 // --- Observations -------------------------------------------------------------------------
 
-/// A crack width: one number (a point, or every point of a joint) or one per joint point.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(untagged)]
-pub enum Width {
-    One(f64),
-    PerPoint(Vec<f64>),
-}
+pub use crate::model::Width;
 
 /// One observed crack. Exactly one of `at` (the nearest collocation point of any joint: the
 /// surveyor's coordinates) and `joint` (a joint id: widths at its points in order, start then
@@ -165,60 +159,11 @@ impl Observations {
                     "cracks[{i}]: tolerance {tau} must be a finite number > 0 (m)"
                 ));
             }
-            let points: Vec<(usize, f64)> = match (c.at, c.joint, &c.opening) {
-                (Some(p), None, Width::One(w)) => {
-                    if !(p[0].is_finite() && p[1].is_finite()) {
-                        return bad(format!(
-                            "cracks[{i}]: \"at\" must be two finite coordinates"
-                        ));
-                    }
-                    // Nearest collocation point; ties go to the lowest point number.
-                    let mut best: Option<(f64, usize)> = None;
-                    for k in 0..npts {
-                        let q = xy(k);
-                        let dd = (q[0] - p[0]).hypot(q[1] - p[1]);
-                        if best.is_none_or(|(b, _)| dd < b) {
-                            best = Some((dd, k));
-                        }
-                    }
-                    match best {
-                        Some((_, k)) => vec![(k, *w)],
-                        None => return bad("the structure has no joints to observe".into()),
-                    }
-                }
-                (Some(_), None, Width::PerPoint(_)) => {
-                    return bad(format!(
-                        "cracks[{i}]: a crack located by \"at\" takes one width"
-                    ));
-                }
-                (None, Some(j), w) => {
-                    if j >= st.joints.len() {
-                        return bad(format!(
-                            "cracks[{i}]: joint {j} does not exist (the structure has {} joints)",
-                            st.joints.len()
-                        ));
-                    }
-                    let range = map.joint_start[j]..map.joint_start[j + 1];
-                    match w {
-                        Width::One(w) => range.map(|k| (k, *w)).collect(),
-                        Width::PerPoint(ws) => {
-                            if ws.len() != range.len() {
-                                return bad(format!(
-                                    "cracks[{i}]: joint {j} has {} points, {} widths given",
-                                    range.len(),
-                                    ws.len()
-                                ));
-                            }
-                            range.zip(ws.iter().copied()).collect()
-                        }
-                    }
-                }
-                _ => {
-                    return bad(format!(
-                        "cracks[{i}]: give exactly one of \"at\" and \"joint\""
-                    ))
-                }
-            };
+            let points: Vec<(usize, f64)> = st
+                .crack_points(&format!("cracks[{i}]"), c.at, c.joint, &c.opening)?
+                .into_iter()
+                .map(|(j, k, w)| (map.joint_start[j] + k, w))
+                .collect();
             for (k, w) in points {
                 if !finite_nonneg(w) {
                     return bad(format!(
@@ -592,6 +537,12 @@ pub fn identify(
         }
     }
     let map_base = KinematicMap::new(st);
+    if let Some(k) = map_base.gap.iter().position(|g| *g > 0.0) {
+        return Err(Error::Request(format!(
+            "identify: joint {} of the model is already cracked (the model's \"cracks\"); give the surveyed cracks as observations instead",
+            map_base.points[k].joint
+        )));
+    }
     if let Some(j) = map_base.laws.iter().position(|l| l.strength.is_some()) {
         return Err(Error::Request(format!(
             "identify: joint {j} has a finite compressive strength, which the inverse analysis does not handle (Heyman joints and Coulomb friction only)"

@@ -94,14 +94,7 @@ impl Control {
         }
         // A point far from every block is a mistake (a typo, other units): refuse it rather
         // than attach it to whichever block happens to be nearest.
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for q in st.blocks.iter().flat_map(|b| b.polygon.iter()) {
-            for c in 0..2 {
-                lo[c] = lo[c].min(q[c]);
-                hi[c] = hi[c].max(q[c]);
-            }
-        }
-        let diag = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+        let diag = size_of(st).0;
         if !(best.0 <= CONTROL_REACH * diag) {
             return Err(Error::Request(format!(
                 "control point ({}, {}) is {:.3} m from the nearest block (block {}): give a point on the structure (within {:.0} % of its size)",
@@ -115,6 +108,23 @@ impl Control {
         Control::new(st, best.1, x, direction)
     }
 }
+
+/// The blocks' bounding-box diagonal and largest coordinate magnitude (m).
+fn size_of(st: &Structure) -> (f64, f64) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in st.blocks.iter().flat_map(|b| b.polygon.iter()) {
+        for c in 0..2 {
+            lo[c] = lo[c].min(q[c]);
+            hi[c] = hi[c].max(q[c]);
+        }
+    }
+    let far = lo.iter().chain(&hi).fold(0.0f64, |m, v| m.max(v.abs()));
+    ((hi[0] - lo[0]).hypot(hi[1] - lo[1]), far)
+}
+
+/// The smallest step, relative to the structure's size (or its distance from the origin, if
+/// larger): below it the moved coordinates cannot record the step in double precision.
+pub const MIN_RELATIVE_STEP: f64 = 1e-10;
 
 /// How far (relative to the structure's bounding-box diagonal) a control point may lie from the
 /// nearest block.
@@ -167,7 +177,7 @@ pub fn settled(st: &Structure, solver: &SolverOptions, release: bool) -> Result<
             path.status.sentence()
         )));
     }
-    let mut out = path.deformed(path.max_settlement);
+    let mut out = path.deformed(path.max_settlement)?;
     if release {
         out.release_fixed();
     }
@@ -206,6 +216,21 @@ pub fn incremental_with(
         return Err(Error::Request(
             "the maximum displacement must be a positive number".into(),
         ));
+    }
+    let (diag, far) = size_of(start);
+    if opts.step < MIN_RELATIVE_STEP * diag.max(far) {
+        return Err(Error::Request(format!(
+            "step {:.3e} m: below {MIN_RELATIVE_STEP:e} of the structure's size ({:.3e} m), too small for the geometry to record",
+            opts.step,
+            diag.max(far)
+        )));
+    }
+    let wanted = (opts.max_displacement / opts.step).ceil();
+    if wanted > opts.max_steps as f64 {
+        return Err(Error::Request(format!(
+            "steps: a largest displacement of {} m in steps of {} m takes {wanted:.0} steps, more than the bound of {} (take a larger step)",
+            opts.max_displacement, opts.step, opts.max_steps
+        )));
     }
     if !start.has_live_loads() {
         return Err(Error::Request(

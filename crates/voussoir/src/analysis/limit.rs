@@ -27,6 +27,9 @@ pub struct LimitSolution {
     pub solver: SolverInfo,
     /// The least multiplier in equilibrium (`None`: unbounded below, or not computed).
     pub least: Option<f64>,
+    /// A sentence to add to the result's message (how the result was obtained, when not as
+    /// asked), or empty.
+    pub note: String,
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
@@ -47,7 +50,39 @@ fn solve_static<S: Assembly>(
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
     let sol = fp.solve(opts)?;
+    if sol.status == LpStatus::Optimal && programs::crushing_cap_reached(map, &fp, &sol.x) {
+        return solve_widened(map, &dead, &live, opts);
+    }
     Ok((limit_solution(map, &fp, &live, &sol, opts.info()), fp))
+}
+
+/// The static program again with crushing polygons reaching further (×64 each time, at last
+/// to f_c·w·t), until no joint's force stops at the cap of its polygon: the polygons stay
+/// where the forces are, however large these are against the loads' scale.
+fn solve_widened(
+    map: &KinematicMap,
+    dead: &[f64],
+    live: &[f64],
+    opts: &SolverOptions,
+) -> Result<(LimitSolution, ForceProgram)> {
+    let mut m = map.clone();
+    let mut round = 0;
+    loop {
+        round += 1;
+        m.crushing_reach = if round < 8 {
+            map.crushing_reach * 64f64.powi(round)
+        } else {
+            f64::INFINITY
+        };
+        let fp = programs::limit_force_program(&m, dead, live);
+        let sol = fp.solve(opts)?;
+        if m.crushing_reach == f64::INFINITY
+            || sol.status != LpStatus::Optimal
+            || !programs::crushing_cap_reached(&m, &fp, &sol.x)
+        {
+            return Ok((limit_solution(&m, &fp, live, &sol, opts.info()), fp));
+        }
+    }
 }
 
 /// [`solve_limit`] of a structure as given, with the check that it stands under its dead loads
@@ -108,6 +143,12 @@ fn load_vectors<S: Assembly>(st: &S) -> Result<(Vec<f64>, Vec<f64>)> {
 
 /// Limit analysis with the exact crushing domain (second-order cones, Clarabel) instead of
 /// its inscribed polygon. Without finite compressive strength this is the same problem.
+///
+/// The cone program is checked against an inscribed polygon of [`CHECK_FACETS`] facets
+/// (HiGHS): the polygon's λ is a lower bound within its chord error (about 10⁻³ of the
+/// crushing effect) of the exact λ. Where the interior-point method fails — the cone is nearly
+/// flat where f_c is far above the joint stresses — or stops at a point that contradicts the
+/// bound, the polygon's result is returned, and the message says so.
 pub fn solve_limit_conic<S: Assembly>(
     st: &S,
     map: &KinematicMap,
@@ -119,13 +160,59 @@ pub fn solve_limit_conic<S: Assembly>(
         feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
         ..*opts
     };
-    let sol = fp.solve(&o)?;
     let solver = crate::lp::SolverInfo {
         solver: crate::lp::cone_backend(&o).name().to_string(),
         method: crate::lp::Method::Clarabel,
     };
-    Ok(limit_solution(map, &fp, &live, &sol, solver))
+    // Crushing cones (2D) have a polygon to check them by; the 3D friction cones do not.
+    let crushing = map.tangents_per_point == 1 && !fp.cones.is_empty();
+    if !crushing {
+        let sol = fp.solve(&o)?;
+        return Ok(limit_solution(map, &fp, &live, &sol, solver));
+    }
+    let conic = fp
+        .solve(&o)
+        .map(|sol| limit_solution(map, &fp, &live, &sol, solver));
+    let mut fine = map.clone();
+    fine.facets = CHECK_FACETS;
+    let (poly, _) = solve_static(st, &fine, opts)?;
+    let why = match &conic {
+        Err(e) => format!("the cone program failed ({e})"),
+        Ok(c) => match (c.status, c.lambda, poly.status, poly.lambda) {
+            (LimitStatus::Collapse, Some(lc), LimitStatus::Collapse, Some(lp)) => {
+                let tol = 1e-6 * lp.abs().max(1e-300);
+                if lc >= lp - tol && lc <= lp + 1e-3 * lp.abs() + tol {
+                    String::new()
+                } else {
+                    format!("the cone program's λ = {lc:.6} contradicts the polygon's bound")
+                }
+            }
+            // The polygon is inscribed: where it stands, the exact domain does too.
+            (cs, _, LimitStatus::Collapse | LimitStatus::Locked, _)
+                if cs != LimitStatus::Collapse && cs != poly.status =>
+            {
+                format!(
+                    "the cone program's '{}' contradicts the polygon",
+                    cs.sentence()
+                )
+            }
+            _ => String::new(),
+        },
+    };
+    match conic {
+        Ok(c) if why.is_empty() => Ok(c),
+        _ => Ok(LimitSolution {
+            note: format!(
+                "{why}: result of the inscribed polygon with {CHECK_FACETS} facets (a lower bound within about 1e-3 of the crushing effect)"
+            ),
+            ..poly
+        }),
+    }
 }
+
+/// Facets of the inscribed polygon that checks (and replaces, where the interior-point method
+/// fails) the exact crushing cones.
+pub const CHECK_FACETS: usize = 256;
 
 /// λ, forces and the mechanism (duals of the equilibrium rows, normalised to unit live-load
 /// work) from a solved force program.
@@ -146,6 +233,7 @@ pub fn limit_solution(
         iterations,
         solver: solver.clone(),
         least: None,
+        note: String::new(),
     };
     match status {
         LpStatus::Unbounded => return none(LimitStatus::Locked),
@@ -174,6 +262,7 @@ pub fn limit_solution(
         iterations,
         solver,
         least: None,
+        note: String::new(),
     }
 }
 
@@ -194,6 +283,18 @@ pub enum Crushing {
 /// program's size (two rows per facet and joint).
 pub const MIN_FACETS: usize = 2;
 pub const MAX_FACETS: usize = 4096;
+/// Facets of the inscribed crushing polygon unless told otherwise.
+pub const DEFAULT_FACETS: usize = 16;
+
+/// A one-line error unless `facets` is within [`MIN_FACETS`]..=[`MAX_FACETS`].
+pub fn check_facets(facets: usize) -> Result<()> {
+    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
+        return Err(Error::Request(format!(
+            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
+        )));
+    }
+    Ok(())
+}
 
 /// Limit analysis with a choice of crushing model and number of facets.
 pub fn limit_with<S: Assembly>(
@@ -202,11 +303,7 @@ pub fn limit_with<S: Assembly>(
     crushing: Crushing,
     facets: usize,
 ) -> Result<LimitResult<S::D>> {
-    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
-        return Err(Error::Request(format!(
-            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
-        )));
-    }
+    check_facets(facets)?;
     let mut map = KinematicMap::new(st);
     map.facets = facets;
     let s = match crushing {
@@ -244,7 +341,7 @@ pub fn limit_result<S: Assembly>(
             Some(dot(st.load_vector(true))),
         )
     };
-    let message = match (s.status, s.lambda) {
+    let mut message = match (s.status, s.lambda) {
         (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
             "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",
             s.status.sentence(),
@@ -262,6 +359,18 @@ pub fn limit_result<S: Assembly>(
         ),
         (st_, _) => st_.sentence().to_string(),
     };
+    // Existing cracks carry nothing in limit analysis; a mechanism that would close one is
+    // not the structure's collapse (the crack closes first and then carries force).
+    let closing = crate::analysis::capacity::closing_joints(st, map, &s.mechanism);
+    if !closing.is_empty() {
+        message.push_str(&format!(
+            "; WARNING: the collapse mechanism closes the open crack of joint {} (limit analysis is not valid there: after that crack closes the structure carries more; use the incremental analysis)",
+            closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
+        ));
+    }
+    if !s.note.is_empty() {
+        message = format!("{message} ({})", s.note);
+    }
     LimitResult {
         status: s.status,
         message,
@@ -284,7 +393,9 @@ pub fn limit_result<S: Assembly>(
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,
+        friction_iteration: None,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 
@@ -295,6 +406,10 @@ pub fn limit_result<S: Assembly>(
 pub struct WarmLimit {
     solver: SolverOptions,
     hot: bool,
+    crushing: Crushing,
+    nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
+    /// Solves whose non-associative friction iteration did not converge.
+    pub unconverged: usize,
     basis: Option<lp::Basis>,
     /// LP solves and simplex iterations so far.
     pub solves: usize,
@@ -307,15 +422,51 @@ impl WarmLimit {
         WarmLimit {
             solver: *solver,
             hot,
+            crushing: Crushing::Linear,
+            nonassociative: None,
+            unconverged: 0,
             basis: None,
             solves: 0,
             iterations: 0,
         }
     }
 
+    /// Solve with the exact crushing cones ([`solve_limit_conic`], from scratch) instead of
+    /// the inscribed polygon.
+    pub fn with_crushing(mut self, crushing: Crushing) -> WarmLimit {
+        self.crushing = crushing;
+        self
+    }
+
+    /// Solve with non-associative friction (the iteration from scratch each time).
+    pub fn with_nonassociative(
+        mut self,
+        o: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
+    ) -> WarmLimit {
+        self.nonassociative = o;
+        self
+    }
+
     /// Limit analysis of `st` (same meaning as [`solve_limit`]).
     pub fn solve<S: Assembly>(&mut self, st: &S, map: &KinematicMap) -> Result<LimitSolution> {
         self.solves += 1;
+        if let Some(o) = &self.nonassociative {
+            let mut m = map.clone();
+            let (_, it) = crate::analysis::nonassociative::solve_limit_nonassociative(
+                st,
+                &mut m,
+                &self.solver,
+                o,
+            )?;
+            self.unconverged += usize::from(!it.converged);
+            self.iterations += it.last.iterations;
+            return Ok(it.last);
+        }
+        if self.crushing == Crushing::Conic {
+            let sol = solve_limit_conic(st, map, &self.solver)?;
+            self.iterations += sol.iterations;
+            return Ok(sol);
+        }
         // Joint laws (friction, crushing) give gapped points roles of their own in the force
         // program: those structures are solved from scratch.
         let sol = if self.hot && !map.has_joint_laws() {

@@ -1,11 +1,13 @@
 //! Analyses: each is a composition of the structure, the kinematic map and the two LP forms.
 
+pub mod canonical;
 pub mod limit;
 pub mod nonassociative;
+pub mod safety;
 pub mod settlement;
 pub mod tilt;
 
-pub use limit::{limit, LimitResult, LimitStatus};
+pub use limit::{limit, Crushing, LimitResult, LimitStatus};
 pub use settlement::{settle, SettlementResult, SettlementStatus};
 pub mod capacity;
 pub mod identify;

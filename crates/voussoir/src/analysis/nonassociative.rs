@@ -1,4 +1,5 @@
-//! Limit analysis with non-associative Coulomb friction (sliding without dilatancy).
+//! Limit, settlement and capacity analyses with non-associative Coulomb friction (sliding
+//! without dilatancy).
 //!
 //! Associative friction (the LP of [`super::limit`]) lets joints dilate as they slide, which
 //! overestimates the strength of frictional masonry. Following the idea of Gilbert, Casapulla and
@@ -15,13 +16,23 @@
 //! kinematically consistent non-associative solution. The scheme is a heuristic (the
 //! non-associative problem is not convex): the result reports whether it converged, and the
 //! multiplier is never above the associative one in our tests.
+//!
+//! The settlement analysis iterates the same way on its pair of LPs: with the capacities fixed,
+//! the motion LP lets a joint slide without opening, against the dissipation
+//! `(μ n̄_k + c)·|slip|` of each point, so a frictional wall no longer dilates where its blocks
+//! slide. The converged value is the work of the dead loads less that dissipation.
 
-use super::limit::{limit_result, solve_limit, LimitStatus};
+use super::limit::{limit_result, solve_limit, LimitResult, LimitSolution, LimitStatus};
+use super::settlement::{
+    settlement_result, solve_settlement_crushing, SettlementResult, SettlementSolution,
+    SettlementStatus,
+};
+use super::Crushing;
 use crate::discretize::KinematicMap;
 use crate::error::Result;
 use crate::lp::SolverOptions;
 pub use crate::result::nonassociative::*;
-use crate::structure::Structure;
+use crate::structure::Assembly;
 
 /// Settings of the iteration.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -29,8 +40,11 @@ pub struct NonAssociativeOptions {
     pub max_iterations: usize,
     /// Relaxation α in (0, 1].
     pub relaxation: f64,
-    /// Convergence: relative change of λ and of the normal forces.
+    /// Convergence: relative change of the value (λ or the work) and of the normal forces.
     pub tolerance: f64,
+    /// Iterations over which the value must stay within `tolerance` (2: consecutive values,
+    /// with the normal forces within `√tolerance` too; more: a window of values only).
+    pub window: usize,
 }
 
 impl Default for NonAssociativeOptions {
@@ -39,29 +53,56 @@ impl Default for NonAssociativeOptions {
             max_iterations: 200,
             relaxation: 0.5,
             tolerance: 1e-7,
+            window: 2,
         }
     }
 }
 
-pub fn limit_nonassociative(
-    st: &Structure,
-    opts: &SolverOptions,
+impl NonAssociativeOptions {
+    /// The settings of the settlement and capacity analyses: the optimal force fields of a
+    /// settlement are rarely unique, so the normal forces wander on the optimal face while the
+    /// work settles; convergence is a spread of the work below 1e-3 over 8 iterations.
+    pub fn settlement() -> Self {
+        NonAssociativeOptions {
+            max_iterations: 120,
+            relaxation: 0.5,
+            tolerance: 1e-3,
+            window: 8,
+        }
+    }
+}
+
+/// Where the fixed-point iteration ended.
+pub struct Iterated<T> {
+    /// The last solution (of the program with fixed shear capacities).
+    pub last: T,
+    /// The value (λ or work) per iteration.
+    pub history: Vec<f64>,
+    pub converged: bool,
+}
+
+/// The fixed-point iteration on the normal forces shared by every analysis: solve the
+/// associative problem (`solve`; `read` gives the value and normal forces of a solution, or
+/// None when it has none), then repeatedly fix the shear capacities `μ n̄ + c` on `map`,
+/// solve, and relax `n̄` towards the new normal forces, until value and forces settle.
+/// Returns the associative value and the iteration (none without friction or without an
+/// associative solution).
+pub fn iterate<T>(
+    map: &mut KinematicMap,
     o: &NonAssociativeOptions,
-) -> Result<NonAssociativeResult> {
-    let mut map = KinematicMap::new(st);
-    let first = solve_limit(st, &map, opts)?;
-    let associative = first.lambda;
-    if first.status != LimitStatus::Collapse || !map.laws.iter().any(|l| l.friction.is_some()) {
-        let limit = limit_result(st, &map, &first);
-        return Ok(NonAssociativeResult {
-            associative_multiplier: associative,
-            history: vec![],
-            converged: true,
-            limit,
-        });
+    mut solve: impl FnMut(&KinematicMap) -> Result<T>,
+    read: impl Fn(&T) -> Option<(f64, &[f64])>,
+) -> Result<(Option<f64>, Iterated<T>)> {
+    map.shear_limits = None;
+    let first = solve(map)?;
+    let Some((associative, first_pn)) = read(&first).map(|(v, p)| (v, p.to_vec())) else {
+        return Ok((None, Iterated::done(first)));
+    };
+    if !map.laws.iter().any(|l| l.friction.is_some()) {
+        return Ok((Some(associative), Iterated::done(first)));
     }
     let alpha = o.relaxation.clamp(1e-3, 1.0);
-    let mut nbar = first.pn.clone();
+    let mut nbar = first_pn;
     let mut history = Vec::new();
     let mut last = first;
     let mut converged = false;
@@ -74,35 +115,166 @@ pub fn limit_nonassociative(
             })
             .collect();
         map.shear_limits = Some(limits);
-        let s = solve_limit(st, &map, opts)?;
-        let Some(lam) = s.lambda else {
+        let s = solve(map)?;
+        let Some((value, pn)) = read(&s) else {
             last = s;
             break;
         };
         let prev = history.last().copied();
-        history.push(lam);
+        history.push(value);
         let scale = nbar.iter().fold(1e-12f64, |m, x| m.max(x.abs()));
         let dn = nbar
             .iter()
-            .zip(&s.pn)
+            .zip(pn)
             .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
             / scale;
-        for (a, b) in nbar.iter_mut().zip(&s.pn) {
+        for (a, b) in nbar.iter_mut().zip(pn) {
             *a = (1.0 - alpha) * *a + alpha * b;
         }
         last = s;
-        if let Some(p) = prev {
-            if (lam - p).abs() <= o.tolerance * lam.abs().max(1e-12) && dn <= o.tolerance.sqrt() {
+        if o.window <= 2 {
+            if let Some(p) = prev {
+                let vscale = value.abs().max(p.abs()).max(1e-12);
+                if (value - p).abs() <= o.tolerance * vscale && dn <= o.tolerance.sqrt() {
+                    converged = true;
+                    break;
+                }
+            }
+        } else if history.len() >= o.window {
+            let w = &history[history.len() - o.window..];
+            let (lo, hi) = w
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                    (a.min(x), b.max(x))
+                });
+            if hi - lo <= o.tolerance * hi.abs().max(lo.abs()).max(1e-12) {
                 converged = true;
                 break;
             }
         }
     }
-    let limit = limit_result(st, &map, &last);
+    Ok((
+        Some(associative),
+        Iterated {
+            last,
+            history,
+            converged,
+        },
+    ))
+}
+
+impl<T> Iterated<T> {
+    /// No iteration: the associative solution stands.
+    fn done(last: T) -> Iterated<T> {
+        Iterated {
+            last,
+            history: vec![],
+            converged: true,
+        }
+    }
+}
+
+/// The limit solution with non-associative friction, on `map` (whose shear capacities it
+/// sets): the associative λ, and the iteration.
+pub fn solve_limit_nonassociative<S: Assembly>(
+    st: &S,
+    map: &mut KinematicMap,
+    opts: &SolverOptions,
+    o: &NonAssociativeOptions,
+) -> Result<(Option<f64>, Iterated<LimitSolution>)> {
+    iterate(
+        map,
+        o,
+        |m| solve_limit(st, m, opts),
+        |s| {
+            (s.status == LimitStatus::Collapse)
+                .then_some(())
+                .and(s.lambda.map(|l| (l, s.pn.as_slice())))
+        },
+    )
+}
+
+pub fn limit_nonassociative<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    o: &NonAssociativeOptions,
+) -> Result<NonAssociativeResult<S::D>> {
+    let mut map = KinematicMap::new(st);
+    let (associative, it) = solve_limit_nonassociative(st, &mut map, opts, o)?;
+    let limit = limit_result(st, &map, &it.last);
     Ok(NonAssociativeResult {
         associative_multiplier: associative,
-        history,
-        converged,
+        history: it.history,
+        converged: it.converged,
         limit,
     })
+}
+
+/// The settlement solution with non-associative friction, on `map` (whose shear capacities
+/// it sets): the associative work, and the iteration.
+pub fn solve_settlement_nonassociative<S: Assembly>(
+    st: &S,
+    map: &mut KinematicMap,
+    opts: &SolverOptions,
+    crushing: Crushing,
+    o: &NonAssociativeOptions,
+) -> Result<(Option<f64>, Iterated<SettlementSolution>)> {
+    iterate(
+        map,
+        o,
+        |m| solve_settlement_crushing(st, m, opts, crushing),
+        |s| (s.status == SettlementStatus::Mechanism).then_some((s.primal, s.pn.as_slice())),
+    )
+}
+
+/// Settlement analysis with non-associative friction: the settlement result of the last
+/// iterate, with the iteration (`friction_iteration`) and a warning when it did not converge.
+pub fn settle_nonassociative<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    crushing: Crushing,
+    facets: usize,
+    o: &NonAssociativeOptions,
+) -> Result<SettlementResult<S::D>> {
+    super::limit::check_facets(facets)?;
+    let mut map = KinematicMap::new(st);
+    map.facets = facets;
+    let (associative, it) = solve_settlement_nonassociative(st, &mut map, opts, crushing, o)?;
+    let mut settlement = settlement_result(st, &map, &it.last);
+    if !it.converged {
+        settlement.message = format!(
+            "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
+            it.history.len(),
+            settlement.message
+        );
+    }
+    settlement.friction_iteration = Some(FrictionIteration {
+        associative,
+        history: it.history,
+        converged: it.converged,
+    });
+    Ok(settlement)
+}
+
+/// [`limit_nonassociative`] as a limit result with its `friction_iteration`.
+pub fn limit_nonassociative_result<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    o: &NonAssociativeOptions,
+) -> Result<LimitResult<S::D>> {
+    let r = limit_nonassociative(st, opts, o)?;
+    let mut limit = r.limit;
+    if !r.converged {
+        limit.message = format!(
+            "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
+            r.history.len(),
+            limit.message
+        );
+    }
+    limit.friction_iteration = Some(FrictionIteration {
+        associative: r.associative_multiplier,
+        history: r.history,
+        converged: r.converged,
+    });
+    Ok(limit)
 }

@@ -17,6 +17,8 @@
 //! Both LPs are homogeneous of degree one in the prescribed motions, so every displacement of
 //! the result is proportional to the settlement magnitude and the forces do not depend on it.
 
+use crate::analysis::limit::{check_facets, Crushing, DEFAULT_FACETS};
+use crate::analysis::nonassociative::NonAssociativeOptions;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, LpStatus, SolverOptions};
@@ -99,6 +101,62 @@ pub fn solve_settlement<S: Assembly>(
     })
 }
 
+/// The settlement analysis with the exact crushing domain (second-order cones; Clarabel)
+/// instead of its inscribed polygon ([`programs::settlement_force_program_conic`]). The forces
+/// come from the program's primal, the mechanism from its equilibrium duals; the value on the
+/// mechanism's side is the solver's dual objective, which includes the crushing dissipation
+/// (as the motion LP's optimum does with the polygon), so the duality gap still certifies the
+/// pair. Without finite strength it is the settlement LP solved by an interior point.
+pub fn solve_settlement_conic<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<SettlementSolution> {
+    let fp = programs::settlement_force_program_conic(map, &st.load_vector(false));
+    let o = SolverOptions {
+        feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
+        ..*opts
+    };
+    let sol = fp.solve(&o)?;
+    let solver = lp::SolverInfo {
+        solver: lp::cone_backend(&o).name().to_string(),
+        method: lp::Method::Clarabel,
+    };
+    let mut s = settlement_from_force_solution(st, map, &fp, &sol, solver);
+    if s.status == SettlementStatus::Mechanism && sol.dual_objective.is_finite() {
+        s.primal = sol.dual_objective;
+    }
+    Ok(s)
+}
+
+/// The settlement solution under a choice of crushing model: the inscribed polygon of
+/// `facets` chords (the LP pair) or the exact cone.
+pub fn solve_settlement_crushing<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+    crushing: Crushing,
+) -> Result<SettlementSolution> {
+    match crushing {
+        Crushing::Linear => solve_settlement(st, map, opts),
+        Crushing::Conic => solve_settlement_conic(st, map, opts),
+    }
+}
+
+/// [`settle`] with a choice of crushing model and facet count (as [`crate::analysis::limit::limit_with`]).
+pub fn settle_crushing<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    crushing: Crushing,
+    facets: usize,
+) -> Result<SettlementResult<S::D>> {
+    check_facets(facets)?;
+    let mut map = KinematicMap::new(st);
+    map.facets = facets;
+    let s = solve_settlement_crushing(st, &map, opts, crushing)?;
+    Ok(settlement_result(st, &map, &s))
+}
+
 /// Settlement analysis of a structure whose supports carry their prescribed motions.
 pub fn settle<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<SettlementResult<S::D>> {
     let map = KinematicMap::new(st);
@@ -125,7 +183,9 @@ pub fn settlement_result<S: Assembly>(
             hinges: vec![],
             thrust_line: vec![],
             reactions: vec![],
+            friction_iteration: None,
             geometry: st.shapes(),
+            canonical: None,
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
@@ -173,7 +233,9 @@ pub fn settlement_result<S: Assembly>(
         hinges: rep.hinges,
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
+        friction_iteration: None,
         geometry: st.shapes(),
+        canonical: None,
     }
 }
 
@@ -202,18 +264,16 @@ pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
     let (open, slide) = map.jumps(d, 1.0);
     let mut v = 0.0f64;
     for k in 0..map.num_points() {
-        if map.gap[k] > 0.0 {
-            continue;
-        }
+        // A point with a gap (an existing crack) may close it, not pass through it.
         let o = if map.bilateral[k] {
             open[k].abs()
         } else {
-            (-open[k]).max(0.0)
+            (-(open[k] + map.gap[k])).max(0.0)
         };
         // Sliding is a violation only where the joint law forbids it (Heyman's joints); a
         // frictional joint may slide (its dilatancy is in the opening rows).
         let nt = map.tangents_per_point;
-        let s = if map.laws[map.points[k].joint].friction.is_some() {
+        let s = if map.laws[map.points[k].joint].friction.is_some() || map.gap[k] > 0.0 {
             0.0
         } else {
             slide[k * nt..(k + 1) * nt]
@@ -321,19 +381,53 @@ pub fn settle_with<S: Assembly>(
 
 /// The settlement path: the structure with unit support motions, its settlement mechanism and
 /// openings, from which every deformed structure is made.
+///
+/// Without existing cracks the settlement LPs are homogeneous in the magnitude: one mechanism
+/// per unit settlement, scaled. A structure with existing cracks (gaps) is not: cracks close
+/// at some magnitude and the mechanism changes there, so every deformed structure is solved at
+/// its own magnitude.
 pub struct SettlementPath<S: Assembly = Structure> {
     /// The structure with its support motions divided by `max_settlement`.
     pub unit: S,
     pub max_settlement: f64,
     pub status: SettlementStatus,
-    /// Settlement mechanism per unit settlement (empty unless `status` is a mechanism).
+    /// Settlement mechanism per unit settlement (empty unless `status` is a mechanism); with
+    /// existing cracks, the mechanism of the largest settlement divided by its magnitude.
     pub mechanism: Vec<f64>,
+    /// The points (map indices) of existing cracks, with their initial gaps.
+    pub existing_cracks: Vec<(usize, f64)>,
     openings: Vec<Vec<f64>>,
     open_tol: f64,
+    solver: SolverOptions,
+    crushing: Crushing,
+    facets: usize,
+    nonassociative: Option<NonAssociativeOptions>,
 }
 
 impl<S: Assembly> SettlementPath<S> {
     pub fn new(st: &S, solver: &SolverOptions) -> Result<SettlementPath<S>> {
+        Self::with_crushing(st, solver, Crushing::Linear, DEFAULT_FACETS)
+    }
+
+    /// [`SettlementPath::new`] with a choice of crushing model and facet count.
+    pub fn with_crushing(
+        st: &S,
+        solver: &SolverOptions,
+        crushing: Crushing,
+        facets: usize,
+    ) -> Result<SettlementPath<S>> {
+        Self::with_laws(st, solver, crushing, facets, None)
+    }
+
+    /// [`SettlementPath::with_crushing`], with non-associative friction when `nonassociative`
+    /// is given (every settlement solve is then the iteration's last iterate).
+    pub fn with_laws(
+        st: &S,
+        solver: &SolverOptions,
+        crushing: Crushing,
+        facets: usize,
+        nonassociative: Option<NonAssociativeOptions>,
+    ) -> Result<SettlementPath<S>> {
         let mag = st.settlement_magnitude();
         if !(mag.is_finite() && mag > 0.0) {
             return Err(Error::Request(
@@ -344,36 +438,106 @@ impl<S: Assembly> SettlementPath<S> {
             .map(|s| st.support_motion(s).iter().map(|x| x / mag).collect())
             .collect();
         let unit = st.with_support_motions(&motions);
-        let map = KinematicMap::new(&unit);
-        let sol = solve_settlement(&unit, &map, solver)?;
-        let (openings, open_tol) = if sol.status == SettlementStatus::Mechanism {
-            unit.joint_openings(&map, &sol.mechanism, 1.0)
-        } else {
-            (vec![], 0.0)
-        };
-        Ok(SettlementPath {
+        let mut map = KinematicMap::new(&unit);
+        map.facets = facets;
+        let existing_cracks: Vec<(usize, f64)> = map
+            .gap
+            .iter()
+            .enumerate()
+            .filter(|(_, g)| **g > 0.0)
+            .map(|(k, g)| (k, *g))
+            .collect();
+        let mut path = SettlementPath {
             unit,
             max_settlement: mag,
-            status: sol.status,
-            mechanism: sol.mechanism,
-            openings,
-            open_tol,
-        })
+            status: SettlementStatus::Mechanism,
+            mechanism: vec![],
+            existing_cracks,
+            openings: vec![],
+            open_tol: 0.0,
+            solver: *solver,
+            crushing,
+            facets,
+            nonassociative,
+        };
+        if path.existing_cracks.is_empty() {
+            let sol = path.solve(&path.unit, &mut map)?;
+            if sol.status == SettlementStatus::Mechanism {
+                (path.openings, path.open_tol) =
+                    path.unit.joint_openings(&map, &sol.mechanism, 1.0);
+            }
+            path.status = sol.status;
+            path.mechanism = sol.mechanism;
+        } else {
+            let (at, map, sol) = path.solve_at(mag)?;
+            let _ = (at, map);
+            path.status = sol.status;
+            path.mechanism = sol.mechanism.iter().map(|x| x / mag).collect();
+        }
+        Ok(path)
+    }
+
+    /// The structure with the support motions of a settlement `s`, its map and its solution.
+    fn solve_at(&self, s: f64) -> Result<(S, KinematicMap, SettlementSolution)> {
+        let motions: Vec<Vec<f64>> = (0..self.unit.num_supports())
+            .map(|k| self.unit.support_motion(k).iter().map(|x| x * s).collect())
+            .collect();
+        let at = self.unit.with_support_motions(&motions);
+        let mut map = KinematicMap::new(&at);
+        map.facets = self.facets;
+        let sol = self.solve(&at, &mut map)?;
+        Ok((at, map, sol))
+    }
+
+    /// One settlement solve under the path's joint laws.
+    fn solve(&self, st: &S, map: &mut KinematicMap) -> Result<SettlementSolution> {
+        match &self.nonassociative {
+            Some(o) => Ok(
+                crate::analysis::nonassociative::solve_settlement_nonassociative(
+                    st,
+                    map,
+                    &self.solver,
+                    self.crushing,
+                    o,
+                )?
+                .1
+                .last,
+            ),
+            None => solve_settlement_crushing(st, map, &self.solver, self.crushing),
+        }
     }
 
     /// The structure after a settlement `s` (m). `s = 0` returns the undeformed structure as is.
-    pub fn deformed(&self, s: f64) -> S {
+    pub fn deformed(&self, s: f64) -> Result<S> {
         let mut st = if s == 0.0 || self.mechanism.is_empty() {
             self.unit.clone()
-        } else {
+        } else if self.existing_cracks.is_empty() {
             self.unit
                 .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol)
+        } else {
+            let (at, map, sol) = self.solve_at(s)?;
+            if sol.status != SettlementStatus::Mechanism {
+                return Err(Error::Request(format!(
+                    "at a settlement of {s} m: {}",
+                    sol.status.sentence()
+                )));
+            }
+            let (openings, tol) = at.joint_openings(&map, &sol.mechanism, 1.0);
+            at.deformed(&sol.mechanism, 1.0, &openings, tol)
         };
         let still = vec![0.0; <S::D as crate::dim::Dim>::DOFS];
         for k in 0..st.num_supports() {
             st.set_support_motion(k, &still);
         }
-        st
+        Ok(st)
+    }
+
+    /// How many points of the existing cracks are still open in a deformed structure's map.
+    pub fn existing_cracks_open(&self, map: &KinematicMap) -> usize {
+        self.existing_cracks
+            .iter()
+            .filter(|(k, _)| map.gap.get(*k).is_some_and(|g| *g > 0.0))
+            .count()
     }
 }
 

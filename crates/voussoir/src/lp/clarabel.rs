@@ -23,13 +23,25 @@ impl Backend for Clarabel {
         o: &SolverOptions,
         _start: Option<&Basis>,
     ) -> Result<Solved> {
-        let solution = if cones.is_empty() {
-            solve_clarabel(lp, o)?
-        } else {
-            solve_clarabel_with_cones(lp, o, cones)?
-        };
+        let solution = solve_clarabel(lp, cones, o)?;
         Ok(Solved {
             solution,
+            basis: None,
+        })
+    }
+
+    fn supports_quadratic(&self) -> bool {
+        true
+    }
+
+    fn solve_quadratic(
+        &self,
+        lp: &LinearProgram,
+        quadratic: &[(usize, usize, f64)],
+        o: &SolverOptions,
+    ) -> Result<Solved> {
+        Ok(Solved {
+            solution: solve_clarabel_with_cones(lp, o, &[], quadratic)?,
             basis: None,
         })
     }
@@ -39,12 +51,29 @@ impl Backend for Clarabel {
 /// fixed variables) or the non-negative cone (each finite side of a range row or bound). Row
 /// duals are returned with HiGHS's convention (`c − Aᵀy` are the reduced costs of a
 /// minimisation; negated for a maximisation).
-fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
-    // Identical columns (same entries, cost and bounds, each free or non-negative) are one
-    // variable for the solver: in the force LP the two shear forces of a straight joint have
-    // the same column. The merged value goes to the first of them.
-    let (reduced, map) = merge_duplicate_columns(lp);
-    let mut sol = solve_clarabel_with_cones(&reduced, o, &[])?;
+fn solve_clarabel(lp: &LinearProgram, cones: &[Cone3], o: &SolverOptions) -> Result<LpSolution> {
+    // Identical columns (same entries, cost and bounds, each free or non-negative, in no cone)
+    // are one variable for the solver: in the force LP the two shear forces of a straight
+    // joint have the same column (a singular KKT system otherwise, which the cones' extreme
+    // curvature at high compressive strength does not forgive). The merged value goes to the
+    // first of them.
+    let mut in_cone = vec![false; lp.num_cols()];
+    for c in cones {
+        for (entries, _) in c {
+            for &(j, _) in entries {
+                in_cone[j] = true;
+            }
+        }
+    }
+    let (reduced, map) = merge_duplicate_columns(lp, &in_cone);
+    let cones: Vec<Cone3> = cones
+        .iter()
+        .map(|c| {
+            c.clone()
+                .map(|(e, b)| (e.into_iter().map(|(j, v)| (map[j], v)).collect(), b))
+        })
+        .collect();
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &cones, &[])?;
     if sol.status == LpStatus::Optimal {
         let mut x = vec![0.0; lp.num_cols()];
         let mut col_dual = vec![0.0; lp.num_cols()];
@@ -63,10 +92,11 @@ fn solve_clarabel(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
 }
 
 /// The LP with duplicate columns merged, and the reduced column of every original column.
-fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
+fn merge_duplicate_columns(lp: &LinearProgram, keep: &[bool]) -> (LinearProgram, Vec<usize>) {
     use std::collections::HashMap;
     let mergeable = |j: usize| {
-        lp.col_upper[j] == f64::INFINITY
+        !keep[j]
+            && lp.col_upper[j] == f64::INFINITY
             && (lp.col_lower[j] == 0.0 || lp.col_lower[j] == f64::NEG_INFINITY)
     };
     let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
@@ -100,11 +130,13 @@ fn merge_duplicate_columns(lp: &LinearProgram) -> (LinearProgram, Vec<usize>) {
     (out, map)
 }
 
-/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP).
+/// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP) and
+/// a quadratic term `½ xᵀPx` (upper triangle triplets; none for a plain LP or cone program).
 fn solve_clarabel_with_cones(
     lp: &LinearProgram,
     o: &SolverOptions,
     socs: &[Cone3],
+    quadratic: &[(usize, usize, f64)],
 ) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
     use clarabel::solver::{
@@ -164,7 +196,17 @@ fn solve_clarabel_with_cones(
     }
     let m = b.len();
     let a = CscMatrix::new_from_triplets(m, n, ii, jj, vv);
-    let p = CscMatrix::<f64>::zeros((n, n));
+    let p = if quadratic.is_empty() {
+        CscMatrix::<f64>::zeros((n, n))
+    } else {
+        CscMatrix::new_from_triplets(
+            n,
+            n,
+            quadratic.iter().map(|t| t.0).collect(),
+            quadratic.iter().map(|t| t.1).collect(),
+            quadratic.iter().map(|t| t.2).collect(),
+        )
+    };
     let q: Vec<f64> = lp.cost.iter().map(|c| sign * c).collect();
     let mut cones: Vec<SupportedConeT<f64>> = Vec::new();
     if !zero.is_empty() {
@@ -206,6 +248,7 @@ fn solve_clarabel_with_cones(
             row_dual: vec![],
             col_dual: vec![],
             iterations,
+            dual_objective: f64::NAN,
         });
     }
     // Clarabel's z ≥ 0 multiplies `A x + s = b` in `min qᵀx`: q + Aᵀz = 0 in its convention, so the
@@ -229,7 +272,17 @@ fn solve_clarabel_with_cones(
             col_dual[j] -= v * row_dual[i];
         }
     }
-    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
+    let quad: f64 = quadratic
+        .iter()
+        .map(|&(i, j, v)| {
+            if i == j {
+                0.5 * v * x[i] * x[i]
+            } else {
+                v * x[i] * x[j]
+            }
+        })
+        .sum();
+    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum::<f64>() + quad;
     Ok(LpSolution {
         status,
         objective,
@@ -237,5 +290,7 @@ fn solve_clarabel_with_cones(
         row_dual,
         col_dual,
         iterations,
+        // Clarabel minimises `sign·cᵀx`; its dual cost is in that sense.
+        dual_objective: sign * solver.info.cost_dual,
     })
 }

@@ -192,6 +192,7 @@ impl Backend for Highs {
                         row_dual: vec![],
                         col_dual: vec![],
                         iterations,
+                        dual_objective: f64::NAN,
                     },
                     basis: None,
                 });
@@ -204,6 +205,7 @@ impl Backend for Highs {
                 row_dual: s.dual_rows().to_vec(),
                 col_dual: s.dual_columns().to_vec(),
                 iterations,
+                dual_objective: f64::NAN,
             };
             let basis = if o.method.is_simplex() {
                 let mut cs = vec![0i32; lp.num_cols()];

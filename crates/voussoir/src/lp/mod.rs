@@ -17,6 +17,9 @@
 
 pub mod clarabel;
 pub mod highs;
+pub mod scale;
+
+pub use scale::Scaling;
 
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -88,6 +91,38 @@ impl LinearProgram {
     /// Entries of column `j`.
     pub fn column(&self, j: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
         (self.col_start[j]..self.col_start[j + 1]).map(move |k| (self.row_index[k], self.value[k]))
+    }
+    /// This program with one more row `lo ≤ Σ v·x_j ≤ hi` over `entries` `(column, v)` (the
+    /// last row), for holding an optimal value while another objective is optimised.
+    pub fn with_row(&self, entries: &[(usize, f64)], lo: f64, hi: f64) -> LinearProgram {
+        let mut by_col: Vec<f64> = vec![0.0; self.num_cols()];
+        for &(j, v) in entries {
+            by_col[j] += v;
+        }
+        let mut out = LinearProgram {
+            maximise: self.maximise,
+            cost: self.cost.clone(),
+            col_lower: self.col_lower.clone(),
+            col_upper: self.col_upper.clone(),
+            row_lower: self.row_lower.clone(),
+            row_upper: self.row_upper.clone(),
+            col_start: vec![0],
+            row_index: Vec::with_capacity(self.num_nonzeros() + entries.len()),
+            value: Vec::with_capacity(self.num_nonzeros() + entries.len()),
+        };
+        let r = out.add_row(lo, hi);
+        for (j, &v) in by_col.iter().enumerate() {
+            for (i, a) in self.column(j) {
+                out.row_index.push(i);
+                out.value.push(a);
+            }
+            if v != 0.0 {
+                out.row_index.push(r);
+                out.value.push(v);
+            }
+            out.col_start.push(out.row_index.len());
+        }
+        out
     }
     /// `A x` (row activities).
     pub fn row_activity(&self, x: &[f64]) -> Vec<f64> {
@@ -216,6 +251,10 @@ pub struct LpSolution {
     pub row_dual: Vec<f64>,
     pub col_dual: Vec<f64>,
     pub iterations: i64,
+    /// The dual objective as the solver reports it, in the program's own sense (NaN when the
+    /// solver gives none: HiGHS's simplex, whose optimal bases have no gap). For a program with
+    /// cones it is the value the dual side certifies, cone terms included.
+    pub dual_objective: f64,
 }
 
 /// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.
@@ -290,6 +329,24 @@ pub trait Backend: Sync {
         opts: &SolverOptions,
         start: Option<&Basis>,
     ) -> Result<Solved>;
+    /// Whether the backend takes a convex quadratic objective term.
+    fn supports_quadratic(&self) -> bool {
+        false
+    }
+    /// Minimise `cᵀx + ½ xᵀPx` over the rows and bounds of `lp` (`lp.maximise` must be false);
+    /// `quadratic` holds the upper triangle of `P` (positive semidefinite) as `(i, j, v)`,
+    /// `i ≤ j`, repeated entries summed.
+    fn solve_quadratic(
+        &self,
+        _lp: &LinearProgram,
+        _quadratic: &[(usize, usize, f64)],
+        _opts: &SolverOptions,
+    ) -> Result<Solved> {
+        Err(Error::Solver(format!(
+            "{} does not take a quadratic objective",
+            self.name()
+        )))
+    }
 }
 
 fn check_numbers(lp: &LinearProgram) -> Result<()> {
@@ -313,9 +370,18 @@ fn check_numbers(lp: &LinearProgram) -> Result<()> {
 
 /// Solve `lp` with the backend of `opts.method`. Infeasible and unbounded are statuses, not
 /// errors.
+/// The program is solved in nondimensional form ([`scale`]); the solution is in its units.
 pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
-    Ok(opts.method.backend().solve(lp, &[], opts, None)?.solution)
+    let backend = opts.method.backend();
+    Ok(match Scaling::needed(lp, &[]) {
+        None => backend.solve(lp, &[], opts, None)?.solution,
+        Some(s) => match backend.solve(&s.apply(lp), &[], opts, None) {
+            Ok(solved) => s.unscale(solved.solution),
+            // The equilibrated program refused: once more as written.
+            Err(_) => backend.solve(lp, &[], opts, None)?.solution,
+        },
+    })
 }
 
 /// Solve `lp` starting from `basis` (a basis of the previous program of the same shape, if
@@ -330,9 +396,26 @@ pub fn solve_warm(
         .as_ref()
         .filter(|b| b.cols.len() == lp.num_cols() && b.rows.len() == lp.num_rows())
         .map(|b| b.adapted(lp));
-    let solved = opts.method.backend().solve(lp, &[], opts, start.as_ref())?;
+    let backend = opts.method.backend();
+    let scaling = Scaling::needed(lp, &[]);
+    let first = match &scaling {
+        None => backend.solve(lp, &[], opts, start.as_ref()),
+        Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref()),
+    };
+    let (solved, scaling) = match first {
+        Ok(solved) => (solved, scaling),
+        // A refusal with a starting basis or after scaling (HiGHS's "Error" on a basis that
+        // does not suit the equilibrated program) is retried once from scratch as written.
+        Err(_) if start.is_some() || scaling.is_some() => {
+            (backend.solve(lp, &[], opts, None)?, None)
+        }
+        Err(e) => return Err(e),
+    };
     *basis = solved.basis;
-    Ok(solved.solution)
+    Ok(match scaling {
+        None => solved.solution,
+        Some(s) => s.unscale(solved.solution),
+    })
 }
 
 /// Solve `lp` with second-order cones appended. Only a backend with cones takes them: with a
@@ -344,7 +427,45 @@ pub fn solve_with_cones(
 ) -> Result<LpSolution> {
     check_numbers(lp)?;
     let backend = cone_backend(opts);
-    Ok(backend.solve(lp, cones, opts, None)?.solution)
+    Ok(match Scaling::needed(lp, cones) {
+        None => backend.solve(lp, cones, opts, None)?.solution,
+        Some(s) => {
+            let solved = backend.solve(&s.apply(lp), &s.apply_cones(cones), opts, None)?;
+            s.unscale(solved.solution)
+        }
+    })
+}
+
+/// Minimise `cᵀx + ½ xᵀPx` (a convex quadratic program; `quadratic` is the upper triangle of
+/// `P` as `(i, j, v)` with `i ≤ j`). Only a backend with quadratic objectives takes it: with a
+/// HiGHS method the program goes to Clarabel. The reported objective includes the quadratic
+/// term.
+pub fn solve_quadratic(
+    lp: &LinearProgram,
+    quadratic: &[(usize, usize, f64)],
+    opts: &SolverOptions,
+) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    if lp.maximise {
+        return Err(Error::Solver(
+            "a quadratic program must be a minimisation".into(),
+        ));
+    }
+    if quadratic
+        .iter()
+        .any(|&(i, j, v)| i > j || j >= lp.num_cols() || !v.is_finite())
+    {
+        return Err(Error::Solver(
+            "the quadratic term is not an upper triangle of finite numbers".into(),
+        ));
+    }
+    let b = opts.method.backend();
+    let backend: &dyn Backend = if b.supports_quadratic() {
+        b
+    } else {
+        &clarabel::Clarabel
+    };
+    Ok(backend.solve_quadratic(lp, quadratic, opts)?.solution)
 }
 
 /// The backend that solves cone programs under `opts`.

@@ -25,6 +25,10 @@ pub struct CapacityPoint<D: Spatial = Two> {
     pub closing_joints: Vec<usize>,
     /// Hinges of the collapse mechanism (positions on the deformed geometry).
     pub hinges: Vec<Hinge<D>>,
+    /// Points of the model's existing cracks still open at this settlement (absent when the
+    /// model has none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub existing_cracks_open: Option<usize>,
 }
 
 /// The collapse mechanism at one settlement.
@@ -70,6 +74,10 @@ pub struct CapacityResult<D: Spatial = Two> {
     pub curve: Vec<CapacityPoint<D>>,
     /// The settlement at which λ reaches 0 (`null` if λ does not change sign in the range).
     pub zero_capacity_settlement: Option<f64>,
+    /// The settlement at which the last point of the model's existing cracks closes (to the
+    /// root tolerance), when it happens within the range.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub existing_cracks_closed_at: Option<f64>,
     /// Least-squares line `λ ≈ intercept + slope·s` through the valid points with s > 0, and the
     /// largest deviation from it relative to λ(0) (a measure of linearity).
     pub linear_fit: Option<LinearFit>,

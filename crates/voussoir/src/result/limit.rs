@@ -56,6 +56,13 @@ pub struct LimitResult<D: Spatial = Two> {
     pub reactions: Vec<Reaction<D>>,
     /// Simplex iterations spent.
     pub iterations: i64,
+    /// The non-associative friction iteration, when one was run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction_iteration: Option<super::nonassociative::FrictionIteration>,
     /// The geometry analysed (for drawing a saved result).
     pub geometry: D::Shapes,
+    /// The canonical selection among optimal solutions (absent for the solver's own
+    /// solution, e.g. with `--raw`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub canonical: Option<super::Canonical<D>>,
 }

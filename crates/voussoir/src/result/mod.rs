@@ -4,17 +4,21 @@
 //! result serialises to the JSON the CLI prints. Drawings and other front ends read results
 //! from this module only, never from the algorithms in [`crate::analysis`].
 
+pub mod canonical;
 pub mod capacity;
 pub mod incremental;
 pub mod limit;
 pub mod nonassociative;
+pub mod safety;
 pub mod settlement;
 pub mod tilt;
 
+pub use canonical::*;
 pub use capacity::*;
 pub use incremental::*;
 pub use limit::*;
 pub use nonassociative::*;
+pub use safety::*;
 pub use settlement::*;
 pub use tilt::*;
 
@@ -311,7 +315,14 @@ pub fn report<S: Assembly>(
                 *sm = clean(slide[k * nt + m], mscale);
                 sliding |= sm.abs() > open_tol;
             }
-            if o > open_tol || gap > 0.0 {
+            // A finite motion (a settlement) adds to the gap a point had before, and may close
+            // it; a rate (a collapse mechanism) leaves a gapped point open.
+            let is_open = if support_scale > 0.0 && gap > 0.0 {
+                gap + o > open_tol
+            } else {
+                o > open_tol || gap > 0.0
+            };
+            if is_open {
                 n_open += 1;
             } else {
                 closed.push(x);
@@ -400,6 +411,49 @@ pub fn report<S: Assembly>(
         thrust_line,
         reactions,
         openings: open,
+    }
+}
+
+/// How each point force enters the reactions: `visit(support, point, which, row)` for every
+/// point on a support, with `which = 0` for the normal force and `1 + m` for the shear along
+/// tangent `m`, and `row` the support's reaction (force, then moment about its reference point)
+/// per unit of that force. Reactions are linear in the forces: `Σ force × row`.
+pub fn reaction_terms<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    visit: impl FnMut(usize, usize, usize, &[f64]),
+) {
+    reaction_terms_of(st, &st.contact_joints(), map, visit)
+}
+
+fn reaction_terms_of<S: Assembly>(
+    st: &S,
+    contact: &[ContactJoint<S::D>],
+    map: &KinematicMap,
+    mut visit: impl FnMut(usize, usize, usize, &[f64]),
+) {
+    let (nd, n) = (<S::D as Dim>::DOFS, <S::D as Dim>::N);
+    let centres = st.contact_bodies().supports;
+    let mut row = [0.0f64; 6];
+    for (k, pr) in map.points.iter().enumerate() {
+        let joint = &contact[pr.joint];
+        let x = joint.points[pr.index].0;
+        let dirs = std::iter::once(joint.normal).chain(joint.tangents.as_ref().iter().copied());
+        for (which, e) in dirs.enumerate() {
+            for (body, sign) in [(joint.a, 1.0), (joint.b, -1.0)] {
+                // A force along e on b (and −e on a): the structure receives +e from a support
+                // a, −e from a support b.
+                if let Body::Support(s) = body {
+                    let c = centres[s].0;
+                    let mut r = e;
+                    for v in r.as_mut()[..n].iter_mut() {
+                        *v *= sign;
+                    }
+                    S::D::dof_row(S::D::sub(x, c), r, &mut row[..nd]);
+                    visit(s, k, which, &row[..nd]);
+                }
+            }
+        }
     }
 }
 

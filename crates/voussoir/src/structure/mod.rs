@@ -13,6 +13,7 @@ pub use solid::Structure3d;
 
 use crate::dim::{Dim, Two};
 use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
+use crate::error::Error;
 use crate::error::{model_err, Result};
 use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::model::{Connection, Load, Material, Model, Per, Point};
@@ -254,7 +255,101 @@ impl Structure {
         st.check_overlaps()?;
         st.find_joints()?;
         st.loads = resolve_loads(model, &st)?;
+        st.open_existing_cracks(&model.cracks)?;
         Ok(st)
+    }
+
+    /// The collocation points a crack names, as `(joint, point index, width)`: by `at`, the
+    /// nearest point of any joint (ties to the lowest joint and point), or by `joint`, its
+    /// points with one width each or one for all. `what` names the crack in errors.
+    pub fn crack_points(
+        &self,
+        what: &str,
+        at: Option<[f64; 2]>,
+        joint: Option<usize>,
+        opening: &crate::model::Width,
+    ) -> Result<Vec<(usize, usize, f64)>> {
+        use crate::model::Width;
+        let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
+        let points = match (at, joint, opening) {
+            (Some(p), None, Width::One(w)) => {
+                if !(p[0].is_finite() && p[1].is_finite()) {
+                    return bad("\"at\" must be two finite coordinates".into());
+                }
+                let mut best: Option<(f64, usize, usize)> = None;
+                for (j, jt) in self.joints.iter().enumerate() {
+                    for (k, q) in jt.points.iter().enumerate() {
+                        let dd = (q.x[0] - p[0]).hypot(q.x[1] - p[1]);
+                        if best.is_none_or(|(b, _, _)| dd < b) {
+                            best = Some((dd, j, k));
+                        }
+                    }
+                }
+                match best {
+                    Some((_, j, k)) => vec![(j, k, *w)],
+                    None => return bad("the structure has no joints".into()),
+                }
+            }
+            (Some(_), None, Width::PerPoint(_)) => {
+                return bad("a crack located by \"at\" takes one width".into())
+            }
+            (None, Some(j), w) => {
+                let Some(jt) = self.joints.get(j) else {
+                    return bad(format!(
+                        "joint {j} does not exist (the structure has {} joints)",
+                        self.joints.len()
+                    ));
+                };
+                let n = jt.points.len();
+                match w {
+                    Width::One(w) => (0..n).map(|k| (j, k, *w)).collect(),
+                    Width::PerPoint(ws) => {
+                        if ws.len() != n {
+                            return bad(format!(
+                                "joint {j} has {n} points, {} widths given",
+                                ws.len()
+                            ));
+                        }
+                        ws.iter().enumerate().map(|(k, &w)| (j, k, w)).collect()
+                    }
+                }
+            }
+            _ => return bad("give exactly one of \"at\" and \"joint\"".into()),
+        };
+        for &(_, _, w) in &points {
+            if !(w.is_finite() && w >= 0.0) {
+                return bad(format!("width {w} must be a finite number ≥ 0 (m)"));
+            }
+        }
+        Ok(points)
+    }
+
+    /// Give the points of the model's existing cracks their gaps.
+    fn open_existing_cracks(&mut self, cracks: &[crate::model::ExistingCrack]) -> Result<()> {
+        let mut seen: std::collections::HashMap<(usize, usize), usize> = Default::default();
+        for (i, c) in cracks.iter().enumerate() {
+            let what = format!("cracks[{i}]");
+            let points = self
+                .crack_points(&what, c.at, c.joint, &c.opening)
+                .map_err(|e| match e {
+                    Error::Request(m) => Error::Model(m),
+                    e => e,
+                })?;
+            for (j, k, w) in points {
+                if let Some(other) = seen.insert((j, k), i) {
+                    return Err(Error::Model(format!(
+                        "cracks[{i}] and cracks[{other}] name the same point of joint {j}"
+                    )));
+                }
+                if self.joints[j].bilateral && w > 0.0 {
+                    return Err(Error::Model(format!(
+                        "{what}: joint {j} is tied (a fixed support) and cannot be cracked"
+                    )));
+                }
+                self.joints[j].points[k].gap = w;
+            }
+        }
+        Ok(())
     }
 
     fn body_name(&self, k: usize) -> String {

@@ -1,0 +1,131 @@
+//! `--raw` and `--no-ranges`: the canonical selection among optimal solutions of `settle` and
+//! `limit` (docs/canonical.md), and its lines in the summaries.
+
+use clap::Args;
+use std::fmt::Write as _;
+use voussoir::analysis::canonical::{Canonical, CanonicalOptions, Selection};
+use voussoir::result::Spatial;
+
+#[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Canonical solution")]
+pub struct CanonicalArgs {
+    /// Report the solver's own optimal solution (a vertex with simplex, an interior point with
+    /// clarabel) instead of the canonical one: faster, but when the optimum is not unique the
+    /// crack pattern and the forces depend on --method (docs/canonical.md).
+    #[arg(long)]
+    pub raw: bool,
+    /// Skip the ranges of the support reactions over the optimal force fields (2 LPs per
+    /// reaction component of every loaded support; computed by default on models of at most
+    /// 500 blocks).
+    #[arg(long, conflicts_with = "ranges")]
+    pub no_ranges: bool,
+    /// Compute the reaction ranges whatever the model's size.
+    #[arg(long)]
+    pub ranges: bool,
+}
+
+impl CanonicalArgs {
+    /// The library's options, `None` for `--raw`.
+    pub fn options(&self) -> Option<CanonicalOptions> {
+        (!self.raw).then(|| CanonicalOptions {
+            reaction_ranges: !self.no_ranges,
+            ranges_max_blocks: if self.ranges {
+                usize::MAX
+            } else {
+                CanonicalOptions::default().ranges_max_blocks
+            },
+            ..CanonicalOptions::default()
+        })
+    }
+}
+
+/// `limit`'s flags: the canonical selection is opt-in there (docs/canonical.md: on a symmetric
+/// arch the generic tie-break picks one of two mirror mechanisms).
+#[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Canonical solution")]
+pub struct LimitCanonicalArgs {
+    /// Report the canonical collapse mechanism and forces (least crack area among the optimal
+    /// mechanisms, then a generic tie-break; physical forces of least complementary energy)
+    /// instead of the solver's own (docs/canonical.md).
+    #[arg(long)]
+    pub canonical: bool,
+    /// With --canonical: skip the ranges of the support reactions.
+    #[arg(long)]
+    pub no_ranges: bool,
+}
+
+impl LimitCanonicalArgs {
+    pub fn options(&self) -> Option<CanonicalOptions> {
+        self.canonical.then(|| CanonicalOptions {
+            reaction_ranges: !self.no_ranges,
+            ..CanonicalOptions::default()
+        })
+    }
+}
+
+/// The summary lines of a canonical selection.
+pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
+    let mut s = String::new();
+    let Some(c) = c else {
+        return s;
+    };
+    let m = &c.mechanism;
+    let how = match m.selected_by {
+        Selection::Optimum => "the optimal mechanism is unique",
+        Selection::LeastCrackArea => {
+            "the optimal mechanism is not unique: the one of least crack area (unique) is reported"
+        }
+        Selection::GenericVertex => {
+            "the optimal mechanism is not unique, nor the one of least crack area: of those, the vertex fixed by the generic tie-break is reported"
+        }
+    };
+    let _ = writeln!(
+        s,
+        "canonical: {how} (crack area {:.6e}, solver's {:.6e})",
+        m.crack_area, m.crack_area_solver
+    );
+    if let Some(f) = &c.forces {
+        match (f.least_friction, f.friction) {
+            (Some(l), _) => {
+                let _ = writeln!(
+                    s,
+                    "canonical forces: least complementary energy, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}"
+                );
+            }
+            (None, None) if f.physical => {
+                let _ = writeln!(
+                    s,
+                    "canonical forces: least complementary energy, open points unloaded"
+                );
+            }
+            _ => {
+                let _ = writeln!(
+                    s,
+                    "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); least complementary energy",
+                    f.largest_open_force
+                );
+            }
+        }
+        let ranged: Vec<&str> = f
+            .reaction_ranges
+            .iter()
+            .filter(|r| !r.unique)
+            .map(|r| r.support.as_str())
+            .collect();
+        if !f.reaction_ranges.is_empty() {
+            if ranged.is_empty() {
+                let _ = writeln!(
+                    s,
+                    "every support reaction is the same in every optimal field"
+                );
+            } else {
+                let _ = writeln!(
+                    s,
+                    "reactions not unique over the optimal fields (ranges in the JSON): {}",
+                    ranged.join(", ")
+                );
+            }
+        }
+    }
+    s
+}

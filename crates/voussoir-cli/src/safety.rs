@@ -1,0 +1,243 @@
+//! `voussoir safety`: does the structure stand under its dead loads, its geometric safety factor
+//! and the range of its support reactions; `voussoir least-thickness arch|dome`: the least
+//! thickness of a generated arch or dome (bisection, regenerating the model).
+
+use crate::common::{Fail, FrictionConeArg, ModelArgs, OutArgs, SolverArgs};
+use crate::gen::{ArchArgs, DomeArgs};
+use clap::{Args, Subcommand};
+use serde::Serialize;
+use std::fmt::Write as _;
+use voussoir::analysis::safety::{
+    least_thickness, safety, LeastThickness, SafetyOptions, SafetyResult,
+};
+use voussoir::generate::RadiusAt;
+use voussoir::lp::Method;
+use voussoir::model3d::AnyModel;
+use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
+
+#[derive(Args)]
+pub struct SafetyArgs {
+    /// Absolute tolerance of the bisection on the joint fraction (the geometric safety factor
+    /// is 1 / that fraction).
+    #[arg(long, default_value_t = 1e-6, value_name = "TOL")]
+    pub bisection_tolerance: f64,
+    /// Leave out the ranges of the support reactions (two LPs per support and component).
+    #[arg(long)]
+    pub no_reactions: bool,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub out: OutArgs,
+}
+
+#[derive(Subcommand)]
+pub enum Generated {
+    /// An arch of `voussoir gen arch` (every flag of it; -o writes the model at the least
+    /// thickness).
+    Arch(LeastArch),
+    /// A dome of `voussoir gen dome` (every flag of it; -o writes the model at the least
+    /// thickness).
+    Dome(LeastDome),
+}
+
+#[derive(Args)]
+pub struct LeastArch {
+    #[command(flatten)]
+    pub arch: ArchArgs,
+    #[command(flatten)]
+    pub bracket: Bracket,
+}
+
+#[derive(Args)]
+pub struct LeastDome {
+    #[command(flatten)]
+    pub dome: DomeArgs,
+    #[command(flatten)]
+    pub bracket: Bracket,
+}
+
+#[derive(Args)]
+#[command(next_help_heading = "Bisection")]
+pub struct Bracket {
+    /// Thickness (m) at which the structure must not stand [default: radius / 1000].
+    #[arg(long, value_name = "M")]
+    pub lower: Option<f64>,
+    /// Thickness (m) at which the structure must stand [default: radius / 2].
+    #[arg(long, value_name = "M")]
+    pub upper: Option<f64>,
+    /// Tolerance of the bisection, relative to the radius.
+    #[arg(long, default_value_t = 1e-6, value_name = "REL")]
+    pub relative_tolerance: f64,
+    /// Print the result as JSON.
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+}
+
+/// What `safety least-thickness` reports.
+#[derive(Serialize)]
+struct LeastThicknessResult {
+    generator: &'static str,
+    /// The least thickness (m) at which the structure stands, and the bracket.
+    #[serde(flatten)]
+    found: LeastThickness,
+    /// The radius of the centreline at the least thickness (m), and thickness / that radius
+    /// (Milankovitch's t/R = 0.1075 for a semicircular arch, Heyman's 0.042 for a hemisphere).
+    centreline_radius: f64,
+    thickness_over_radius: f64,
+    solver: voussoir::lp::SolverInfo,
+}
+
+fn centreline(radius: f64, at: RadiusAt, t: f64) -> f64 {
+    match at {
+        RadiusAt::Intrados => radius + t / 2.0,
+        RadiusAt::Centreline => radius,
+        RadiusAt::Extrados => radius - t / 2.0,
+    }
+}
+
+pub fn run(a: SafetyArgs) -> Result<(), Fail> {
+    let model = &a.model;
+    let tol = a.bisection_tolerance;
+    if !(tol.is_finite() && tol > 0.0 && tol < 1.0) {
+        return Err(Fail(format!(
+            "--bisection-tolerance {tol}: must be a number between 0 and 1"
+        )));
+    }
+    if model.friction_cone == Some(FrictionConeArg::Exact) {
+        return Err(Fail(
+            "--friction-cone exact does not apply to `safety` (its programs are LPs: the inscribed pyramid)".into(),
+        ));
+    }
+    let input = model.resolve()?;
+    let opts = |solver| SafetyOptions {
+        tolerance: tol,
+        reactions: !a.no_reactions,
+        solver,
+    };
+    match input.load_any()? {
+        AnyModel::Planar(m) => {
+            let st = input.structure_of(m, None)?;
+            let r = safety(&st, &opts(input.solver))?;
+            a.out.emit(&r, || summary(&st, &r))
+        }
+        AnyModel::Spatial(m) => {
+            let st = input.structure3d(m, None)?;
+            let r = safety(&st, &opts(input.solver3d))?;
+            a.out.emit(&r, || summary(&st, &r))
+        }
+    }
+}
+
+pub fn run_least(g: Generated) -> Result<(), Fail> {
+    let (radius, at, bracket) = match &g {
+        Generated::Arch(x) => (x.arch.radius, x.arch.radius_at.into(), &x.bracket),
+        Generated::Dome(x) => (x.dome.radius, x.dome.radius_at.into(), &x.bracket),
+    };
+    if !(radius.is_finite() && radius > 0.0) {
+        return Err(Fail(format!("--radius {radius}: must be a number > 0")));
+    }
+    let rel = bracket.relative_tolerance;
+    if !(rel.is_finite() && rel > 0.0 && rel < 1.0) {
+        return Err(Fail(format!(
+            "--relative-tolerance {rel}: must be a number between 0 and 1"
+        )));
+    }
+    let lo = bracket.lower.unwrap_or(radius / 1000.0);
+    let hi = bracket.upper.unwrap_or(radius / 2.0);
+    let build = BuildOptions::default();
+    // The solver: dual simplex for the 2D arch, interior point for the 3D dome (as for models).
+    let mut solver = bracket.solver.options();
+    let (generator, found, model_json) = match &g {
+        Generated::Arch(x) => {
+            let spec = x.arch.spec();
+            let make = |t: f64| {
+                voussoir::generate::arch(&voussoir::generate::ArchSpec {
+                    thickness: t,
+                    ..spec.clone()
+                })
+            };
+            let found = least_thickness(
+                |t| Structure::new(&make(t)?, build),
+                lo,
+                hi,
+                rel * radius,
+                &solver,
+            )?;
+            let json = voussoir_io::files::to_json(&make(found.thickness)?)?;
+            ("arch", found, (json, x.arch.out.output.clone()))
+        }
+        Generated::Dome(x) => {
+            if bracket.solver.method.is_none() {
+                solver.method = Method::Ipm;
+            }
+            let spec = x.dome.spec();
+            let make = |t: f64| {
+                voussoir::generate3d::dome(&voussoir::generate3d::DomeSpec {
+                    thickness: t,
+                    ..spec.clone()
+                })
+            };
+            let found = least_thickness(
+                |t| Structure3d::new(&make(t)?, build),
+                lo,
+                hi,
+                rel * radius,
+                &solver,
+            )?;
+            let json = voussoir_io::files::to_json(&make(found.thickness)?)?;
+            ("dome", found, (json, x.dome.out.output.clone()))
+        }
+    };
+    if let (json, Some(path)) = &model_json {
+        crate::outputs::stage(path, json.as_bytes())?;
+    }
+    let rc = centreline(radius, at, found.thickness);
+    let r = LeastThicknessResult {
+        generator,
+        centreline_radius: rc,
+        thickness_over_radius: found.thickness / rc,
+        found,
+        solver: solver.info(),
+    };
+    if bracket.json {
+        crate::common::out(&voussoir_io::files::to_json(&r)?);
+    } else {
+        crate::common::out(&format!(
+            "least thickness of the {generator}: {:.8} m (t/R = {:.6} with R = {:.6} m at the centreline); it does not stand at {:.8} m; {} bisection steps\n",
+            r.found.thickness, r.thickness_over_radius, rc, r.found.below, r.found.steps
+        ));
+    }
+    Ok(())
+}
+
+fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", crate::common::structure_line(st));
+    let _ = writeln!(
+        s,
+        "stands under its dead loads: {}",
+        if r.stands { "yes" } else { "no" }
+    );
+    let _ = writeln!(s, "{}", r.message);
+    let show =
+        |v: Option<f64>, side: &str| v.map_or(format!("unbounded {side}"), |x| format!("{x:.4}"));
+    for re in &r.reactions {
+        let parts: Vec<String> = re
+            .components
+            .iter()
+            .map(|c| {
+                format!(
+                    "{} [{}, {}] kN",
+                    c.component,
+                    show(c.min, "below"),
+                    show(c.max, "above")
+                )
+            })
+            .collect();
+        let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
+    }
+    let _ = writeln!(s, "{} LP solves", r.solves);
+    s
+}

@@ -1,0 +1,697 @@
+//! Canonical solutions: one documented choice among the optimal mechanisms and force fields,
+//! so that the reported crack pattern and forces do not depend on the LP method
+//! (`docs/canonical.md`).
+//!
+//! **Mechanism.** The optimal mechanisms of a settlement (or limit) analysis form a face of the
+//! kinematic LP's polytope. With its optimal value held as a row ([`programs::optimal_face`],
+//! relative tolerance [`CanonicalOptions::tolerance`]), a second LP minimises the crack area
+//! `Σ w_k o_k` (openings weighted by their tributary joint size). If that still leaves a face
+//! (tested by minimising and maximising a generic linear functional over it), a third program
+//! picks the least `Σ w_k o_k²` — strictly convex in the openings, so unique — with Clarabel.
+//!
+//! **Forces.** Among the optimal force fields, the ones in which the points open in the
+//! canonical mechanism carry nothing (normal and shear) and `|p_t| ≤ μ p_n` holds at every
+//! point — μ the joint's friction, or on joints without friction the least μ for which such a
+//! field exists (a bisection on LP feasibility). Of those, the field of least complementary
+//! energy `Σ |p_k|²/w_k` (springs of equal stiffness per unit joint size; unique); each
+//! support's reaction is reported with its range over the whole set (min/max LPs).
+
+use crate::analysis::limit::{self, LimitResult, LimitSolution, LimitStatus};
+use crate::analysis::settlement::{self, SettlementForm, SettlementResult, SettlementStatus};
+use crate::dim::Dim;
+use crate::discretize::KinematicMap;
+use crate::error::Result;
+use crate::lp::{self, Basis, BasisStatus, LinearProgram, LpStatus, Method, SolverOptions};
+use crate::programs::{self, ForceProgram};
+pub use crate::result::canonical::*;
+use crate::result::Spatial;
+use crate::structure::Assembly;
+
+/// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
+pub const MAX_FRICTION: f64 = 100.0;
+
+/// Settings of the canonical selection.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CanonicalOptions {
+    /// Relative tolerance with which optimal values are held (work, λ, crack area).
+    pub tolerance: f64,
+    /// Relative size (of the largest dual value) above which a dual value is not zero: its row
+    /// or column is held at its bound on the optimal face.
+    pub dual_threshold: f64,
+    /// Relative size (of the largest motion component) below which two mechanisms are the
+    /// same and a face is a single point.
+    pub point_tolerance: f64,
+    /// Relative precision of the least friction coefficient (bisection).
+    pub friction_precision: f64,
+    /// Compute the ranges of the support reactions (2 LPs per reaction component of every
+    /// support that is not entirely open).
+    pub reaction_ranges: bool,
+    /// Select the canonical force field (and the least friction).
+    pub forces: bool,
+    /// Reaction ranges only for models of at most this many blocks (each range LP is a full
+    /// solve; on the 1,889-block façade, 132 of them take many minutes).
+    pub ranges_max_blocks: usize,
+}
+
+impl Default for CanonicalOptions {
+    fn default() -> Self {
+        CanonicalOptions {
+            tolerance: 1e-9,
+            dual_threshold: 1e-9,
+            point_tolerance: 1e-6,
+            friction_precision: 1e-4,
+            reaction_ranges: true,
+            forces: true,
+            ranges_max_blocks: 500,
+        }
+    }
+}
+
+/// Tributary size of every point: its joint's size (2D: length; 3D: area of the polygon of its
+/// points) divided by the number of its points.
+pub fn tributary_weights<S: Assembly>(st: &S, map: &KinematicMap) -> Vec<f64> {
+    let contact = st.contact_joints();
+    let sizes: Vec<f64> = contact
+        .iter()
+        .map(|j| {
+            let pts: Vec<&[f64]> = j.points.iter().map(|(x, _)| x.as_ref()).collect();
+            let n = pts.len();
+            let size = match (n, <S::D as Dim>::N) {
+                (0 | 1, _) => 0.0,
+                (_, 2) | (2, _) => {
+                    // The largest distance between points (2D: the joint's length).
+                    let mut m = 0.0f64;
+                    for a in &pts {
+                        for b in &pts {
+                            let d: f64 = a.iter().zip(*b).map(|(x, y)| (x - y).powi(2)).sum();
+                            m = m.max(d.sqrt());
+                        }
+                    }
+                    m
+                }
+                _ => {
+                    // A polygon (points in order): half the norm of Σ (p_i − p_0) × (p_i+1 − p_0).
+                    let mut s = [0.0f64; 3];
+                    for i in 1..n - 1 {
+                        let u: Vec<f64> = (0..3).map(|c| pts[i][c] - pts[0][c]).collect();
+                        let v: Vec<f64> = (0..3).map(|c| pts[i + 1][c] - pts[0][c]).collect();
+                        s[0] += u[1] * v[2] - u[2] * v[1];
+                        s[1] += u[2] * v[0] - u[0] * v[2];
+                        s[2] += u[0] * v[1] - u[1] * v[0];
+                    }
+                    0.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt()
+                }
+            };
+            size / n.max(1) as f64
+        })
+        .collect();
+    let fallback = {
+        let pos: Vec<f64> = sizes.iter().copied().filter(|s| *s > 0.0).collect();
+        if pos.is_empty() {
+            1.0
+        } else {
+            pos.iter().sum::<f64>() / pos.len() as f64
+        }
+    };
+    map.points
+        .iter()
+        .map(|p| {
+            let s = sizes[p.joint];
+            if s > 0.0 {
+                s
+            } else {
+                fallback
+            }
+        })
+        .collect()
+}
+
+/// Deterministic weights in ±[0.5, 1.5] (splitmix64): the generic linear functional of the
+/// uniqueness test.
+fn generic_functional(n: usize) -> Vec<f64> {
+    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
+    (0..n)
+        .map(|_| {
+            state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^= z >> 31;
+            let u = (z >> 11) as f64 / (1u64 << 53) as f64;
+            let sign = if z & 1 == 0 { 1.0 } else { -1.0 };
+            sign * (0.5 + u)
+        })
+        .collect()
+}
+
+/// Runs the LPs of a selection: warm starts where the backend has bases (a basis of the program
+/// before a row was appended starts the next one with that row basic), counts solves.
+struct Stages {
+    opts: SolverOptions,
+    solves: usize,
+}
+
+impl Stages {
+    fn new(opts: &SolverOptions) -> Stages {
+        // A cost change keeps a basis primal feasible: primal simplex continues from it. After an
+        // interior-point method the stages run on the dual simplex too: the tie-break is a
+        // vertex, which an interior point only approaches.
+        let method = if opts.method.is_simplex() {
+            Method::PrimalSimplex
+        } else {
+            Method::DualSimplex
+        };
+        Stages {
+            opts: SolverOptions {
+                method,
+                feasibility_tolerance: if method.is_simplex() {
+                    1e-9
+                } else {
+                    opts.feasibility_tolerance
+                },
+                ..*opts
+            },
+            solves: 0,
+        }
+    }
+
+    fn solve(&mut self, lp: &LinearProgram, basis: &mut Option<Basis>) -> Result<lp::LpSolution> {
+        self.solves += 1;
+        if let Some(b) = basis.as_mut() {
+            while b.rows.len() < lp.num_rows() {
+                b.rows.push(BasisStatus::Basic);
+            }
+        }
+        // Keep the last basis when a solve ends without one (infeasible): it still starts the
+        // next program of the same shape.
+        let keep = basis.clone();
+        let s = lp::solve_warm(lp, &self.opts, basis)?;
+        if basis.is_none() {
+            *basis = keep;
+        }
+        Ok(s)
+    }
+}
+
+fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// The canonical mechanism among the optima of the kinematic program `klp` (a maximisation
+/// whose first `map.num_dofs` columns are `y = −d`) of optimal value `value`; `raw` is the
+/// solver's own mechanism `d`. Returns the mechanism `d` (in the normalisation of `klp`) and
+/// how it was selected; `None` if a stage did not solve (the raw mechanism then stands).
+pub fn canonical_mechanism(
+    map: &KinematicMap,
+    klp: &LinearProgram,
+    first: &lp::LpSolution,
+    raw: &[f64],
+    start: Option<Basis>,
+    weights: &[f64],
+    opts: &SolverOptions,
+    copts: &CanonicalOptions,
+) -> Result<Option<(Vec<f64>, CanonicalMechanism)>> {
+    let nd = map.num_dofs;
+    let mut st = Stages::new(opts);
+    let face1 = programs::optimal_face_exact(
+        klp,
+        first.objective,
+        copts.tolerance,
+        &first.row_dual,
+        &first.col_dual,
+        copts.dual_threshold,
+    );
+    let (area_cost, area_const) = programs::crack_area_cost(map, weights, klp.num_cols());
+    let area_of = |d: &[f64]| -> f64 {
+        let y: Vec<f64> = d.iter().map(|v| -v).collect();
+        dot(&area_cost[..nd], &y) + area_const
+    };
+    let crack_area_solver = area_of(raw);
+    // Stage 2: least crack area on the optimal face.
+    let mut stage2 = face1.clone();
+    stage2.cost = area_cost.clone();
+    let mut basis = start;
+    let s2 = st.solve(&stage2, &mut basis)?;
+    if s2.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    let d2: Vec<f64> = s2.x[..nd].iter().map(|v| -v).collect();
+    let area2 = s2.objective + area_const;
+    // Motions are compared with the largest block motion or prescribed support motion.
+    let scale = max_abs(raw)
+        .max(max_abs(&d2))
+        .max(max_abs(&map.support_normal))
+        .max(max_abs(&map.support_tangent))
+        .max(1e-300);
+    let ptol = copts.point_tolerance * scale;
+    let changed2 = raw.iter().zip(&d2).any(|(a, b)| (a - b).abs() > ptol);
+    // Is the least-crack face a single point?
+    let area_entries: Vec<(usize, f64)> = area_cost
+        .iter()
+        .copied()
+        .enumerate()
+        .filter(|&(_, c)| c != 0.0)
+        .collect();
+    let slack = copts.tolerance * area2.abs().max(1e-9 * scale);
+    let face2 = face1.with_row(&area_entries, -f64::INFINITY, area2 - area_const + slack);
+    // Stage 3 (only if the least-crack face is not a point): the least value of a fixed generic
+    // linear functional `r·y` on it — a unique vertex, exact with every method. Its maximum
+    // tells whether the face is a point.
+    let r = generic_functional(nd);
+    let extremes = |st: &mut Stages,
+                    face: &LinearProgram,
+                    basis: Option<Basis>|
+     -> Result<Option<(Vec<f64>, f64)>> {
+        let mut lp = face.clone();
+        lp.cost[..nd].copy_from_slice(&r);
+        let mut b = basis;
+        let lo = st.solve(&lp, &mut b)?;
+        lp.maximise = true;
+        let hi = st.solve(&lp, &mut b)?;
+        Ok(
+            (lo.status == LpStatus::Optimal && hi.status == LpStatus::Optimal).then(|| {
+                (
+                    lo.x[..nd].iter().map(|v| -v).collect(),
+                    hi.objective - lo.objective,
+                )
+            }),
+        )
+    };
+    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.clone())? else {
+        return Ok(None);
+    };
+    let face2_point = spread2 <= ptol;
+    let (d, selected_by) = if face2_point {
+        (d2, Selection::LeastCrackArea)
+    } else {
+        (d3, Selection::GenericVertex)
+    };
+    let changed = raw.iter().zip(&d).any(|(a, b)| (a - b).abs() > ptol);
+    // The optimal face is a point only if the least-crack one is and the solver's mechanism
+    // is in it; then one more test on the optimal face itself.
+    let unique = !changed2
+        && face2_point
+        && extremes(&mut st, &face1, basis)?.is_some_and(|(_, w)| w <= ptol);
+    let selected_by = if unique {
+        Selection::Optimum
+    } else {
+        selected_by
+    };
+    let d = if changed { d } else { raw.to_vec() };
+    let crack_area = area_of(&d);
+    Ok(Some((
+        d,
+        CanonicalMechanism {
+            unique,
+            selected_by,
+            crack_area_solver,
+            crack_area,
+            changed,
+            solves: st.solves,
+        },
+    )))
+}
+
+/// Points open in mechanism `d` (with the support motions scaled by `support_scale`): opening
+/// above 1e-7 of the largest jump, as the report counts them.
+pub fn open_points(map: &KinematicMap, d: &[f64], support_scale: f64) -> Vec<bool> {
+    let (open, slide) = map.jumps(d, support_scale);
+    let tol = 1e-7 * max_abs(&open).max(max_abs(&slide)).max(1e-300);
+    open.iter()
+        .zip(&map.gap)
+        .map(|(&o, &g)| g > 0.0 || o > tol)
+        .collect()
+}
+
+/// The canonical force field among the optima of the force program `build(map)` of optimal
+/// value `value`, with the points in `open` unloaded. Returns `(p_n, p_t, report)`.
+#[allow(clippy::too_many_arguments)]
+pub fn canonical_forces<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    build: impl Fn(&KinematicMap) -> ForceProgram,
+    value: f64,
+    open: &[bool],
+    weights: &[f64],
+    opts: &SolverOptions,
+    copts: &CanonicalOptions,
+) -> Result<Option<(Vec<f64>, Vec<f64>, CanonicalForces<S::D>)>> {
+    // The feasibility LPs of the bisection go to Clarabel: on large models its interior point
+    // decides feasibility in a few dozen iterations where a warm simplex needs thousands.
+    let copts_lp = SolverOptions {
+        method: Method::Clarabel,
+        feasibility_tolerance: opts.feasibility_tolerance.min(1e-10),
+        ..*opts
+    };
+    let mut stages = Stages {
+        opts: copts_lp,
+        solves: 0,
+    };
+    let tol = copts.tolerance;
+    let needs_mu = map.laws.iter().enumerate().any(|(j, l)| {
+        l.friction.is_none()
+            && !(map.joint_start[j]..map.joint_start[j + 1]).all(|k| map.bilateral[k])
+    });
+    // Feasibility at μ (None: the model's own laws), with a warm basis shared by all μ.
+    let mut basis: Option<Basis> = None;
+    let mut feasible =
+        |mu: Option<f64>, basis: &mut Option<Basis>, relaxed: bool| -> Result<bool> {
+            let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+            // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
+            Ok(stages
+                .solve(&fp.lp, basis)
+                .is_ok_and(|s| s.status == LpStatus::Optimal))
+        };
+    // Without a physical optimal field under the model's own laws (open points unloaded),
+    // there is nothing to select from: the solver's forces stand.
+    let mut relaxed = false;
+    if !feasible(None, &mut None, false)? {
+        relaxed = true;
+        if !feasible(None, &mut None, true)? {
+            return Ok(None);
+        }
+    }
+    let (least, mu) = if needs_mu {
+        if feasible(Some(0.0), &mut basis, relaxed)? {
+            (Some(0.0), Some(0.0))
+        } else {
+            let (mut lo, mut hi) = (0.0, 0.5);
+            let mut found = false;
+            while hi <= MAX_FRICTION {
+                if feasible(Some(hi), &mut basis, relaxed)? {
+                    found = true;
+                    break;
+                }
+                lo = hi;
+                hi *= 4.0;
+            }
+            if found {
+                while hi - lo > copts.friction_precision * hi {
+                    let mid = 0.5 * (lo + hi);
+                    if feasible(Some(mid), &mut basis, relaxed)? {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                (Some(hi), Some(hi))
+            } else {
+                (None, None)
+            }
+        }
+    } else {
+        (None, None)
+    };
+    let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+    // Relaxed: shear at open points costs 10³ times the energy (pushed off them where the
+    // optimal set allows).
+    let w: Vec<f64> = weights
+        .iter()
+        .zip(open)
+        .map(|(&w, &o)| if relaxed && o { w * 1e-3 } else { w })
+        .collect();
+    let p = programs::force_energy_quadratic(&fp, &w);
+    let mut solves = stages.solves + 1;
+    let Ok(mut qs) = lp::solve_quadratic(&fp.lp, &p, &copts_lp) else {
+        return Ok(None);
+    };
+    if qs.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    // An interior-point solution within its tolerance of the bounds: on them (open points carry
+    // exactly nothing, compression is never negative).
+    for (j, x) in qs.x.iter_mut().enumerate() {
+        *x = x.clamp(fp.lp.col_lower[j], fp.lp.col_upper[j]);
+    }
+    let (pn, pt) = fp.forces(&qs.x);
+    // Checks: forces at open points, friction excess.
+    let nt = map.tangents_per_point;
+    let mut largest_open_force = 0.0f64;
+    let mut excess = 0.0f64;
+    for k in 0..map.num_points() {
+        let shear = (0..nt).map(|m| pt[k * nt + m].powi(2)).sum::<f64>().sqrt();
+        if open[k] {
+            largest_open_force = largest_open_force.max(pn[k].abs()).max(shear);
+        }
+        let law = &map.laws[map.points[k].joint];
+        if !map.bilateral[k] && !(relaxed && open[k]) {
+            let m = law.friction.or(mu);
+            if let Some(m) = m {
+                excess = excess.max(shear - m * pn[k] - law.cohesion);
+            }
+        }
+    }
+    // Reaction ranges over the same set.
+    let mut ranges = Vec::new();
+    if copts.reaction_ranges && st.num_blocks() <= copts.ranges_max_blocks {
+        let nd = <S::D as Dim>::DOFS;
+        let ns = st.num_supports();
+        let mut coeff: Vec<Vec<Vec<(usize, f64)>>> = vec![vec![Vec::new(); nd]; ns];
+        let mut loaded = vec![false; ns];
+        crate::result::reaction_terms(st, map, |s, k, which, row| {
+            let col = if which == 0 {
+                fp.pn[k]
+            } else {
+                fp.pt[k * nt + which - 1]
+            };
+            if !open[k] {
+                loaded[s] = true;
+            }
+            if let Some(c) = col {
+                for (i, &v) in row.iter().enumerate() {
+                    if v != 0.0 {
+                        coeff[s][i].push((c, v));
+                    }
+                }
+            }
+        });
+        let value_of = |entries: &[(usize, f64)], x: &[f64]| -> f64 {
+            entries.iter().map(|&(c, v)| v * x[c]).sum()
+        };
+        let centres = st.contact_bodies().supports;
+        let fscale = max_abs(&pn).max(max_abs(&pt)).max(1e-300);
+        let mut rstages = Stages::new(opts);
+        let mut b = basis.clone();
+        for s in 0..ns {
+            let mut lo = vec![0.0; nd];
+            let mut hi = vec![0.0; nd];
+            if loaded[s] {
+                for i in 0..nd {
+                    let mut lp = fp.lp.clone();
+                    for &(c, v) in &coeff[s][i] {
+                        lp.cost[c] += v;
+                    }
+                    let a = rstages.solve(&lp, &mut b)?;
+                    lp.maximise = true;
+                    let z = rstages.solve(&lp, &mut b)?;
+                    let here = value_of(&coeff[s][i], &qs.x);
+                    lo[i] = if a.status == LpStatus::Optimal {
+                        value_of(&coeff[s][i], &a.x).min(here)
+                    } else {
+                        here
+                    };
+                    hi[i] = if z.status == LpStatus::Optimal {
+                        value_of(&coeff[s][i], &z.x).max(here)
+                    } else {
+                        f64::INFINITY
+                    };
+                }
+            }
+            let clean = |v: f64| crate::result::clean(v, fscale);
+            let lo: Vec<f64> = lo.into_iter().map(clean).collect();
+            let hi: Vec<f64> = hi.into_iter().map(clean).collect();
+            let unique = lo
+                .iter()
+                .zip(&hi)
+                .all(|(a, b)| (b - a).abs() <= 1e-6 * fscale);
+            ranges.push(ReactionRange {
+                support: st.support_name(s).to_string(),
+                unique,
+                min: S::D::wrench(&lo, centres[s].0),
+                max: S::D::wrench(&hi, centres[s].0),
+            });
+        }
+        solves += rstages.solves;
+    }
+    Ok(Some((
+        pn,
+        pt,
+        CanonicalForces {
+            least_friction: least,
+            friction: mu,
+            physical: !relaxed,
+            largest_open_force,
+            largest_friction_excess: excess.max(0.0),
+            reaction_ranges: ranges,
+            solves,
+        },
+    )))
+}
+
+/// Solver options of the canonical stages: an interior-point backend runs at a tighter
+/// tolerance, since the optimal values it holds fix the faces the next stages search.
+fn stage_options(opts: &SolverOptions) -> SolverOptions {
+    if opts.method != Method::Clarabel {
+        *opts
+    } else {
+        SolverOptions {
+            feasibility_tolerance: opts.feasibility_tolerance.min(1e-11),
+            ..*opts
+        }
+    }
+}
+
+/// Settlement analysis with the canonical mechanism and forces (`docs/canonical.md`); the
+/// solver's own solution is [`settlement::settle_with`]. The motion LP is solved first (its
+/// basis starts the selection; `form` applies to the solver's own solution only), the force
+/// LP only if no physical optimal field is found.
+pub fn settle_canonical<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    form: SettlementForm,
+    copts: &CanonicalOptions,
+) -> Result<SettlementResult<S::D>> {
+    let map = KinematicMap::new(st);
+    let dead = st.load_vector(false);
+    let mp = programs::settlement_motion_program(&map, &dead)?;
+    let o = stage_options(opts);
+    let mut basis = None;
+    let primal = lp::solve_warm(&mp.lp, &o, &mut basis)?;
+    if primal.status != LpStatus::Optimal {
+        return settlement::settle_with(st, opts, form);
+    }
+    let raw = mp.motion(&primal.x);
+    // The motion LP's optimum: the dead loads' work.
+    let value = primal.objective;
+    let weights = tributary_weights(st, &map);
+    let mut found = canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)?;
+    if found.is_none() && !opts.method.is_simplex() {
+        // The interior point's duals did not fix the optimal face (its solution is optimal
+        // only to the solver's tolerance): cross over to a vertex with the dual simplex, as
+        // HiGHS's crossover would, and select from there.
+        let vo = SolverOptions {
+            method: Method::DualSimplex,
+            ..*opts
+        };
+        let mut vbasis = None;
+        let vertex = lp::solve_warm(&mp.lp, &vo, &mut vbasis)?;
+        if vertex.status == LpStatus::Optimal {
+            let vraw = mp.motion(&vertex.x);
+            found =
+                canonical_mechanism(&map, &mp.lp, &vertex, &vraw, vbasis, &weights, &vo, copts)?;
+        }
+    }
+    let (d, mech) = match found {
+        Some((d, m)) => (d, Some(m)),
+        None => (raw, None),
+    };
+    let work = mp.objective_sign * value;
+    let mut forces = None;
+    let mut pnt = None;
+    if copts.forces && mech.is_some() {
+        let open = open_points(&map, &d, 1.0);
+        let build = |m: &KinematicMap| programs::settlement_force_program(m, &dead);
+        if let Some((pn, pt, f)) =
+            canonical_forces(st, &map, build, work, &open, &weights, &o, copts)?
+        {
+            pnt = Some((pn, pt));
+            forces = Some(f);
+        }
+    }
+    let (pn, pt) = match pnt {
+        Some(p) => p,
+        None => {
+            let fp = programs::settlement_force_program(&map, &dead);
+            let sol = fp.solve(opts)?;
+            if sol.status != LpStatus::Optimal {
+                return settlement::settle_with(st, opts, form);
+            }
+            fp.forces(&sol.x)
+        }
+    };
+    let s = settlement::SettlementSolution {
+        status: SettlementStatus::Mechanism,
+        primal: dot(&dead, &d),
+        dual: dot(&map.support_normal, &pn) + dot(&map.support_tangent, &pt),
+        mechanism: d,
+        pn,
+        pt,
+        solver: opts.info(),
+    };
+    let mut r = settlement::settlement_result_checked(st, &map, &s);
+    r.canonical = mech.map(|mechanism| Canonical { mechanism, forces });
+    Ok(r)
+}
+
+/// Limit analysis with the canonical collapse mechanism and forces (`docs/canonical.md`).
+/// `facets` as in [`limit::limit_with`] with the linear crushing model.
+pub fn limit_canonical<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    facets: usize,
+    copts: &CanonicalOptions,
+) -> Result<LimitResult<S::D>> {
+    if !(limit::MIN_FACETS..=limit::MAX_FACETS).contains(&facets) {
+        return limit::limit_with(st, opts, limit::Crushing::Linear, facets);
+    }
+    let mut map = KinematicMap::new(st);
+    map.facets = facets;
+    let mut s: LimitSolution = limit::solve_limit_checked(st, &map, opts)?;
+    if s.status != LimitStatus::Collapse || s.mechanism.is_empty() {
+        return Ok(limit::limit_result(st, &map, &s));
+    }
+    let (dead, live) = (st.load_vector(false), st.load_vector(true));
+    let lambda = s.lambda.unwrap_or(0.0);
+    let fp = programs::limit_force_program(&map, &dead, &live);
+    let kp = programs::kinematic_program(&fp)?;
+    // The kinematic program (its maximisation's optimum is −λ; `y = −d`), solved for the
+    // duals that fix its optimal face.
+    let o = stage_options(opts);
+    let mut basis = None;
+    let first = lp::solve_warm(&kp.lp, &o, &mut basis)?;
+    if first.status != LpStatus::Optimal {
+        return Ok(limit::limit_result(st, &map, &s));
+    }
+    let weights = tributary_weights(st, &map);
+    // A limit mechanism's openings are N d: support motions do not enter.
+    let mut kmap = map.clone();
+    kmap.support_normal.iter_mut().for_each(|g| *g = 0.0);
+    let Some((d, mech)) = canonical_mechanism(
+        &kmap,
+        &kp.lp,
+        &first,
+        &s.mechanism,
+        basis,
+        &weights,
+        &o,
+        copts,
+    )?
+    else {
+        return Ok(limit::limit_result(st, &map, &s));
+    };
+    if mech.changed {
+        s.mechanism = d;
+    }
+    let mut forces = None;
+    if copts.forces {
+        let open = open_points(&map, &s.mechanism, 0.0);
+        let build = |m: &KinematicMap| programs::limit_force_program(m, &dead, &live);
+        if let Some((pn, pt, f)) =
+            canonical_forces(st, &map, build, lambda, &open, &weights, &o, copts)?
+        {
+            s.pn = pn;
+            s.pt = pt;
+            forces = Some(f);
+        }
+    }
+    let mut r = limit::limit_result(st, &map, &s);
+    r.canonical = Some(Canonical {
+        mechanism: mech,
+        forces,
+    });
+    Ok(r)
+}

@@ -1,0 +1,323 @@
+//! Does the structure stand, and with what margin (Heyman's safe theorem).
+//!
+//! * **Stands**: an equilibrium state exists under the dead loads alone — contact forces with
+//!   `F_D + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` and the joint laws
+//!   ([`programs::equilibrium_program`], a feasibility LP). This is the question `limit` answers
+//!   only with live loads (0 in `[λ_min, λ_max]`, [`crate::analysis::limit`]'s least-multiplier
+//!   check) and `settle` answers by an unbounded mechanism program (status `cannot_stand`); the
+//!   three agree (tested).
+//! * **Geometric safety factor** (Heyman 1969): every joint shrunk about its centre — each
+//!   collocation point `x` moved to `c + f·(x − c)`, `c` the mean of the joint's points (the
+//!   joint's midpoint in 2D, the centre of its vertices in 3D) — to the least fraction `f_min`
+//!   at which an equilibrium state still exists (bisection on the feasibility LP; feasibility
+//!   only grows with `f`, since a force at a shrunk point is a convex combination of forces at
+//!   wider ones). Loads stay those of the structure as given. The factor is
+//!   `thickness / least thickness = 1 / f_min`: 2 means that the thrust can be kept within the
+//!   middle half of every joint, 3 within the middle third. With finite compressive strength a
+//!   shrunk joint is a thinner joint of the same material (its depth scales by `f`).
+//! * **Reaction ranges**: for every support and force component, the least and the largest
+//!   value over the statically admissible states ([`programs::reaction_extreme_program`]); for
+//!   an arch on two supports, the least and the largest horizontal thrust — the two extreme
+//!   states that a spreading and a closing settlement select ([`crate::analysis::settlement`]).
+//! * **Least thickness** of a generated structure: bisection on the generator's thickness
+//!   ([`least_thickness`], any generator as a closure).
+
+use crate::dim::Dim;
+use crate::discretize::{ContactJoint, KinematicMap};
+use crate::error::{Error, Result};
+use crate::lp::{self, Direction, LpStatus, SolverOptions};
+use crate::programs;
+pub use crate::result::safety::*;
+use crate::structure::{Assembly, Body};
+
+/// Options of the safety assessment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SafetyOptions {
+    /// Absolute tolerance of the bisection on the joint fraction (default 1e-6).
+    pub tolerance: f64,
+    /// Compute the ranges of the support reactions (2·N LPs per support, N = 2 in 2D, 3 in 3D).
+    pub reactions: bool,
+    pub solver: SolverOptions,
+}
+
+impl Default for SafetyOptions {
+    fn default() -> Self {
+        SafetyOptions {
+            tolerance: 1e-6,
+            reactions: true,
+            solver: SolverOptions::default(),
+        }
+    }
+}
+
+/// Whether an LP status says "feasible"; an unbounded zero-objective program cannot occur.
+fn feasible(status: LpStatus) -> bool {
+    status != LpStatus::Infeasible
+}
+
+/// Whether `st` can carry its dead loads: the equilibrium program is feasible.
+pub fn stands<S: Assembly>(st: &S, solver: &SolverOptions) -> Result<bool> {
+    stands_on(&KinematicMap::new(st), &st.load_vector(false), solver)
+}
+
+fn stands_on(map: &KinematicMap, dead: &[f64], solver: &SolverOptions) -> Result<bool> {
+    let fp = programs::equilibrium_program(map, dead);
+    Ok(feasible(fp.solve(solver)?.status))
+}
+
+/// The joints of `st` with every point moved towards its joint's centre: `x → c + f·(x − c)`,
+/// `c` the mean of the joint's points. In 2D the lever arms of the crushing domain and the
+/// joint's depth scale by `f` too.
+pub fn shrunk_joints<S: Assembly>(st: &S, f: f64) -> Vec<ContactJoint<S::D>> {
+    let mut joints = st.contact_joints();
+    for j in &mut joints {
+        let Some(&(first, _)) = j.points.first() else {
+            continue;
+        };
+        let n = j.points.len() as f64;
+        let mut c = <S::D as Dim>::sub(first, first);
+        for (x, _) in &j.points {
+            for (ci, xi) in c.as_mut().iter_mut().zip(x.as_ref()) {
+                *ci += xi / n;
+            }
+        }
+        for (x, _) in j.points.iter_mut() {
+            for (xi, ci) in x.as_mut().iter_mut().zip(c.as_ref()) {
+                *xi = ci + f * (*xi - ci);
+            }
+        }
+        for a in j.along.iter_mut() {
+            *a *= f;
+        }
+        j.law.depth *= f;
+    }
+    joints
+}
+
+/// The kinematic map of `st` with its joints shrunk by `f` ([`shrunk_joints`]); every other
+/// setting of the structure's own map (facets, gaps, …) is kept.
+pub fn shrunk_map<S: Assembly>(st: &S, base: &KinematicMap, f: f64) -> KinematicMap {
+    let s = KinematicMap::assemble(&st.contact_bodies(), &shrunk_joints(st, f));
+    let mut m = base.clone();
+    m.normal = s.normal;
+    m.tangent = s.tangent;
+    m.support_normal = s.support_normal;
+    m.support_tangent = s.support_tangent;
+    m.along = s.along;
+    m.laws = s.laws;
+    m
+}
+
+/// The least joint fraction `f` in `[0, 1]` at which `st` stands, to `tolerance` (the upper
+/// end of the final bracket), and the LP solves spent; `None` if it does not stand at `f = 1`.
+pub fn least_joint_fraction<S: Assembly>(
+    st: &S,
+    tolerance: f64,
+    solver: &SolverOptions,
+) -> Result<(Option<f64>, usize)> {
+    if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
+        return Err(Error::Request(format!(
+            "tolerance {tolerance}: the bisection on the joint fraction needs 0 < tolerance < 1"
+        )));
+    }
+    let base = KinematicMap::new(st);
+    let dead = st.load_vector(false);
+    let at = |f: f64| stands_on(&shrunk_map(st, &base, f), &dead, solver);
+    let mut solves = 1;
+    if !stands_on(&base, &dead, solver)? {
+        return Ok((None, solves));
+    }
+    solves += 1;
+    if at(0.0)? {
+        return Ok((Some(0.0), solves));
+    }
+    let (mut lo, mut hi) = (0.0, 1.0);
+    while hi - lo > tolerance {
+        let mid = 0.5 * (lo + hi);
+        solves += 1;
+        if at(mid)? {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok((Some(hi), solves))
+}
+
+/// Coefficients of the force components of each support's reaction in the point forces:
+/// `[support][component] → (c_n per point, c_t per point and tangent)`, so that the component
+/// is `c_n·p_n + c_t·p_t` (the force of the support on the structure, as in
+/// [`crate::result::reactions`]).
+fn reaction_coefficients<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+) -> Vec<Vec<(Vec<f64>, Vec<f64>)>> {
+    let (n, nt) = (<S::D as Dim>::N, <S::D as Dim>::TANGENTS);
+    let joints = st.contact_joints();
+    let mut out = vec![
+        vec![
+            (
+                vec![0.0; map.num_points()],
+                vec![0.0; map.num_tangent_rows()]
+            );
+            n
+        ];
+        st.num_supports()
+    ];
+    for (k, pr) in map.points.iter().enumerate() {
+        let joint = &joints[pr.joint];
+        // The force on b is p_n·n + p_t·t; a support that is `a` gives it to the structure,
+        // one that is `b` receives it (the structure gets −f).
+        for (body, sign) in [(joint.a, 1.0), (joint.b, -1.0)] {
+            if let Body::Support(s) = body {
+                for (c, comp) in out[s].iter_mut().enumerate() {
+                    comp.0[k] += sign * joint.normal.as_ref()[c];
+                    for (m, t) in joint.tangents.as_ref().iter().enumerate() {
+                        comp.1[k * nt + m] += sign * t.as_ref()[c];
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The range of every force component of every support's reaction over the statically
+/// admissible states, and the LP solves spent. Each range is two LPs of one shape (the
+/// objective changes), warm-started where the backend keeps a basis.
+pub fn reaction_ranges<S: Assembly>(
+    st: &S,
+    solver: &SolverOptions,
+) -> Result<(Vec<AdmissibleReactionRange>, usize)> {
+    let map = KinematicMap::new(st);
+    let dead = st.load_vector(false);
+    let coefficients = reaction_coefficients(st, &map);
+    // The force components of the reaction (z up in 3D).
+    let labels = &["fx", "fy", "fz"][..<S::D as Dim>::N];
+    let mut basis = None;
+    let mut solves = 0;
+    let mut ranges = Vec::with_capacity(st.num_supports());
+    for (s, comps) in coefficients.iter().enumerate() {
+        let mut components = Vec::with_capacity(comps.len());
+        for (c, (cn, ct)) in comps.iter().enumerate() {
+            let mut ends = [None, None];
+            for (e, direction) in [Direction::Minimise, Direction::Maximise]
+                .into_iter()
+                .enumerate()
+            {
+                let fp = programs::reaction_extreme_program(&map, &dead, cn, ct, direction);
+                let sol = if fp.cones.is_empty() {
+                    lp::solve_warm(&fp.lp, solver, &mut basis)?
+                } else {
+                    fp.solve(solver)?
+                };
+                solves += 1;
+                ends[e] = match sol.status {
+                    LpStatus::Optimal => Some(sol.objective),
+                    LpStatus::Unbounded => None,
+                    LpStatus::Infeasible => {
+                        return Err(Error::Request(
+                            "the structure does not stand: its reactions have no range".into(),
+                        ))
+                    }
+                };
+            }
+            components.push(ComponentRange {
+                component: labels[c].to_string(),
+                min: ends[0],
+                max: ends[1],
+            });
+        }
+        ranges.push(AdmissibleReactionRange {
+            support: st.support_name(s).to_string(),
+            components,
+        });
+    }
+    Ok((ranges, solves))
+}
+
+/// The safety assessment of `st`: whether it stands, its geometric safety factor and the
+/// ranges of its support reactions.
+pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult> {
+    let (fraction, mut solves) = least_joint_fraction(st, opts.tolerance, &opts.solver)?;
+    let stands = fraction.is_some();
+    let factor = fraction.and_then(|f| (f > 0.0).then_some(1.0 / f));
+    let reactions = if stands && opts.reactions {
+        let (r, n) = reaction_ranges(st, &opts.solver)?;
+        solves += n;
+        r
+    } else {
+        vec![]
+    };
+    let message = match (stands, factor) {
+        (false, _) => {
+            "the structure cannot carry its dead loads: no equilibrium state exists".to_string()
+        }
+        (true, Some(g)) => format!(
+            "the structure stands; geometric safety factor {g:.4} (its dead loads can be carried through the middle {:.2} % of every joint)",
+            100.0 / g
+        ),
+        (true, None) => "the structure stands with every joint shrunk to its centre: the geometric safety factor is unbounded".to_string(),
+    };
+    Ok(SafetyResult {
+        stands,
+        message,
+        solver: opts.solver.info(),
+        geometric_safety_factor: factor,
+        least_joint_fraction: fraction,
+        tolerance: opts.tolerance,
+        reactions,
+        solves,
+    })
+}
+
+/// The least thickness at which the structure `build(t)` stands, by bisection on `t` in
+/// `[lo, hi]` to the absolute tolerance `tolerance`: it must not stand at `lo` and must stand
+/// at `hi`. `build` is any generator with its other parameters fixed, e.g.
+/// `|t| Structure::new(&arch(&ArchSpec { thickness: t, ..spec })?, BuildOptions::default())`.
+pub fn least_thickness<S: Assembly>(
+    build: impl Fn(f64) -> Result<S>,
+    lo: f64,
+    hi: f64,
+    tolerance: f64,
+    solver: &SolverOptions,
+) -> Result<LeastThickness> {
+    if !(lo.is_finite() && hi.is_finite() && 0.0 < lo && lo < hi) {
+        return Err(Error::Request(format!(
+            "thickness bracket [{lo}, {hi}]: needs 0 < lo < hi"
+        )));
+    }
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(Error::Request(format!(
+            "tolerance {tolerance}: must be a finite number > 0"
+        )));
+    }
+    let at = |t: f64| -> Result<bool> { stands(&build(t)?, solver) };
+    if at(lo)? {
+        return Err(Error::Request(format!(
+            "the structure already stands at the lower thickness {lo}: give a smaller one"
+        )));
+    }
+    if !at(hi)? {
+        return Err(Error::Request(format!(
+            "the structure does not stand at the upper thickness {hi}: give a larger one"
+        )));
+    }
+    let (mut a, mut b) = (lo, hi);
+    let mut steps = 0;
+    while b - a > tolerance {
+        let mid = 0.5 * (a + b);
+        steps += 1;
+        if at(mid)? {
+            b = mid;
+        } else {
+            a = mid;
+        }
+    }
+    Ok(LeastThickness {
+        thickness: b,
+        below: a,
+        tolerance,
+        steps,
+    })
+}

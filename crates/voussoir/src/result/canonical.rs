@@ -1,0 +1,88 @@
+//! What the canonical selection among optimal solutions reports (settlement and limit
+//! analyses; see `docs/canonical.md`).
+
+use super::Spatial;
+use crate::dim::Two;
+use serde::{Deserialize, Serialize};
+
+/// Which criterion fixed the reported mechanism.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Selection {
+    /// The optimum itself: the optimal mechanism is unique.
+    Optimum,
+    /// The least crack area `Σ w_k o_k` among the optimal mechanisms, which is unique.
+    LeastCrackArea,
+    /// Among the mechanisms of least crack area (not unique), the vertex of least value of a
+    /// fixed generic linear functional of the block motions (a documented, reproducible
+    /// tie-break; `docs/canonical.md`).
+    GenericVertex,
+}
+
+/// The canonical mechanism: how it was selected among the optimal mechanisms.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CanonicalMechanism {
+    /// Whether the optimal mechanism is unique (the optimal face is a single point: a generic
+    /// linear functional takes one value on it, see `docs/canonical.md`).
+    pub unique: bool,
+    /// The criterion that fixed the reported mechanism.
+    pub selected_by: Selection,
+    /// Crack area `Σ w_k o_k` (openings times tributary joint size: m² in 2D per unit of the
+    /// mechanism's normalisation) of the solver's own optimal mechanism and of the reported one.
+    pub crack_area_solver: f64,
+    pub crack_area: f64,
+    /// Whether the reported mechanism differs from the solver's own.
+    pub changed: bool,
+    /// Programs solved for the selection (beyond the analysis's own).
+    pub solves: usize,
+}
+
+/// A support's reaction over the physical optimal force fields: componentwise least and
+/// largest value (each a separate LP).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct ReactionRange<D: Spatial = Two> {
+    pub support: String,
+    /// Whether every component is the same in every physical optimal field (range below
+    /// tolerance).
+    pub unique: bool,
+    pub min: D::Wrench,
+    pub max: D::Wrench,
+}
+
+/// The canonical force field: physical (open points unloaded, Coulomb's cone at every point)
+/// and of least complementary energy among the optimal ones.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct CanonicalForces<D: Spatial = Two> {
+    /// The least friction coefficient μ for which an optimal field with unloaded open points
+    /// has `|p_t| ≤ μ p_n` at every point of the joints without friction of their own (`null`
+    /// when every joint has its own friction, or when no finite μ admits one).
+    pub least_friction: Option<f64>,
+    /// The μ imposed on those joints in the reported field (`least_friction` up to the
+    /// bisection's precision); `null` when none was imposed.
+    pub friction: Option<f64>,
+    /// Whether the open points carry nothing at all. False when every optimal field needs
+    /// shear at some open points (Heyman's no-sliding rule holds at open joints too, and a
+    /// mechanism may lean on it): their normal force is still zero, their shear is kept as
+    /// small as the optimal set allows (weighted 10³ in the energy) and reported in
+    /// `largest_open_force`, and Coulomb's rule is imposed on the other points.
+    pub physical: bool,
+    /// Largest force (normal or shear, kN) at a point open in the mechanism, and largest
+    /// `|p_t| − μ p_n` (kN) over all points, in the reported field: both ~0.
+    pub largest_open_force: f64,
+    pub largest_friction_excess: f64,
+    /// The range of every support's reaction over the physical optimal fields.
+    pub reaction_ranges: Vec<ReactionRange<D>>,
+    /// Programs solved for the selection.
+    pub solves: usize,
+}
+
+/// The canonical selection of a result.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct Canonical<D: Spatial = Two> {
+    pub mechanism: CanonicalMechanism,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub forces: Option<CanonicalForces<D>>,
+}

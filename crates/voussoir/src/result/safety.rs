@@ -1,0 +1,73 @@
+//! Result of a safety assessment ([`crate::analysis::safety`]): does the structure stand under
+//! its dead loads, with what geometric margin, and between which extreme states its support
+//! reactions can move.
+
+use crate::lp::SolverInfo;
+use serde::{Deserialize, Serialize};
+
+/// The range of one component of a support's reaction over the statically admissible states.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ComponentRange {
+    /// `fx`, `fy` (2D) or `fx`, `fy`, `fz` (3D, z up): the force the support exerts on the
+    /// structure.
+    pub component: String,
+    /// Least and largest value (kN); `null`: unbounded on that side (e.g. the thrust of a flat
+    /// lintel with infinite compressive strength).
+    pub min: Option<f64>,
+    pub max: Option<f64>,
+}
+
+/// The ranges of a support's reaction components.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AdmissibleReactionRange {
+    pub support: String,
+    pub components: Vec<ComponentRange>,
+}
+
+impl AdmissibleReactionRange {
+    /// The range of a component by name (`"fx"`, …).
+    pub fn component(&self, name: &str) -> Option<&ComponentRange> {
+        self.components.iter().find(|c| c.component == name)
+    }
+}
+
+/// Result of `voussoir safety`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SafetyResult {
+    /// Whether an equilibrium state exists under the dead loads alone (contact forces in
+    /// equilibrium that respect the joint laws: no tension, no sliding or Coulomb friction,
+    /// finite strength where given).
+    pub stands: bool,
+    pub message: String,
+    /// The solver and method that produced the result.
+    pub solver: SolverInfo,
+    /// Heyman's geometric safety factor: every joint's thickness divided by the least
+    /// thickness, joints shrunk about their centres by one common fraction, at which an
+    /// equilibrium state still exists (`1 / least_joint_fraction`). `null` if the structure
+    /// does not stand, or stands with every joint shrunk to its centre (unbounded factor).
+    pub geometric_safety_factor: Option<f64>,
+    /// The least fraction of every joint's extent (about its centre) through which the dead
+    /// loads can still be carried, to `tolerance`; `null` if the structure does not stand.
+    pub least_joint_fraction: Option<f64>,
+    /// Absolute tolerance of the bisection on the joint fraction.
+    pub tolerance: f64,
+    /// Range of every support's reaction force components over the statically admissible
+    /// states (empty if the structure does not stand): for an arch, the least and the largest
+    /// horizontal thrust, the two states between which a settlement moves it.
+    pub reactions: Vec<AdmissibleReactionRange>,
+    /// LP solves spent.
+    pub solves: usize,
+}
+
+/// A least thickness found by bisection on a generator's thickness.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LeastThickness {
+    /// The least thickness at which the structure stands, to `tolerance` (the upper end of the
+    /// final bracket: the structure stands there).
+    pub thickness: f64,
+    /// The final bracket: does not stand at `below`, stands at `thickness`.
+    pub below: f64,
+    pub tolerance: f64,
+    /// Bisection steps (one equilibrium LP each, after the two ends).
+    pub steps: usize,
+}

@@ -41,9 +41,9 @@ const CASES: u32 = 32;
 /// Relative tolerance of every comparison of λ and of works.
 const REL: f64 = 1e-6;
 
-/// The default solver, with a time limit as a guard: a solve that does not end (one is known
-/// at scale 1e-4, see `lambda_and_hinges_do_not_depend_on_the_scale_1e_4_and_1e4`) fails its
-/// case instead of hanging the test. Every solve here takes milliseconds.
+/// The default solver, with a time limit as a guard: a solve that does not end (one did at
+/// scale 1e-4 before the scale-free numerics) fails its case instead of hanging the test.
+/// Every solve here takes milliseconds.
 fn solver() -> SolverOptions {
     SolverOptions {
         time_limit: Some(60.0),
@@ -536,16 +536,11 @@ fn lambda_and_hinges_do_not_depend_on_the_scale_1e_2_to_1e2() {
     );
 }
 
-// KNOWN FAILURE, not weakened: the programs and analyses still use absolute tolerances
-// (issue 19, item 2: scale-free numerics, on branch `reliability`). On 20 random cases
-// (docs/fuzzing.md, "Properties") scale 1e4 changed the status of 7 (a collapse became
-// `no_equilibrium` or `locked`), scale 1e-4 changed 4 and made HiGHS fail ("HiGHS run failed:
-// Error") on 6, and a 4-block stack at 1e-4 keeps the dual simplex running for minutes
-// (tests/property_cases/stack_at_1e-4_scale_limit_does_not_end.json; `voussoir limit` on it
-// does not end within 120 s, the unscaled model takes milliseconds). Remove the `ignore` when
-// the scale-free numerics are merged; until then run it with `--ignored`.
+// Failed before the scale-free numerics of issue 19 item 2 (main at a59f4d2): on 20 random
+// cases scale 1e4 changed the status of 7, scale 1e-4 changed 4 and made HiGHS fail on 6, and a
+// 4-block stack at 1e-4 did not end (docs/fuzzing.md, "Properties";
+// `a_stack_of_tenth_millimetre_blocks_gets_the_answer_of_the_unscaled_stack` below).
 #[test]
-#[ignore = "fails until the scale-free numerics of issue 19 item 2 (branch reliability) are merged"]
 fn lambda_and_hinges_do_not_depend_on_the_scale_1e_4_and_1e4() {
     check(
         "scale 1e-4, 1e4",
@@ -553,6 +548,25 @@ fn lambda_and_hinges_do_not_depend_on_the_scale_1e_4_and_1e4() {
         (any_case(), prop_oneof![Just(-4.0), Just(4.0)]),
         |(case, e)| scale_invariance(case, 10f64.powf(e)),
     );
+}
+
+/// The case found by the extreme-scale property: a 4-block stack scaled by 1e-4 (blocks of
+/// 0.1 mm) kept HiGHS's dual simplex in phase 2 for minutes, where the stack at scale 1 takes
+/// milliseconds. Both must give the same answer (it cannot stand: its largest multiplier is
+/// negative).
+#[test]
+fn a_stack_of_tenth_millimetre_blocks_gets_the_answer_of_the_unscaled_stack() {
+    let read = |name: &str| -> Model {
+        let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/property_cases")
+            .join(name);
+        serde_json::from_str(&std::fs::read_to_string(&p).expect("fixture")).expect("model")
+    };
+    let small = read("stack_at_1e-4_scale_limit_does_not_end.json");
+    let unit = read("stack_at_1e-4_scale_limit_does_not_end.unscaled.json");
+    let (a, b) = (limit(&unit).result, limit(&small).result);
+    assert_eq!(a.status, LimitStatus::NoEquilibrium, "{}", a.message);
+    same_limit(&a, &b, size(&unit), |p| [p[0] * 1e4, p[1] * 1e4]).expect("same result at 1e-4");
 }
 
 // ── (c) rigid motion ───────────────────────────────────────────────────────────────────────

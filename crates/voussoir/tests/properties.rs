@@ -542,10 +542,9 @@ fn lambda_and_hinges_do_not_depend_on_the_scale_1e_2_to_1e2() {
 // `no_equilibrium` or `locked`), scale 1e-4 changed 4 and made HiGHS fail ("HiGHS run failed:
 // Error") on 6, and a 4-block stack at 1e-4 keeps the dual simplex running for minutes
 // (tests/property_cases/stack_at_1e-4_scale_limit_does_not_end.json; `voussoir limit` on it
-// does not end within 120 s, the unscaled model takes milliseconds). Remove the `ignore` when
-// the scale-free numerics are merged; until then run it with `--ignored`.
+// does not end within 120 s, the unscaled model takes milliseconds). With the nondimensional
+// programs (lp::scale) merged it passes.
 #[test]
-#[ignore = "fails until the scale-free numerics of issue 19 item 2 (branch reliability) are merged"]
 fn lambda_and_hinges_do_not_depend_on_the_scale_1e_4_and_1e4() {
     check(
         "scale 1e-4, 1e4",

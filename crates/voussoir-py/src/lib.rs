@@ -18,6 +18,7 @@ use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use std::path::PathBuf;
+use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
 use voussoir::analysis::capacity::{capacity as capacity_analysis, CapacityOptions};
 use voussoir::analysis::incremental::{incremental_with, settled, Control, IncrementalOptions};
 use voussoir::analysis::settlement::{settle_with, SettlementForm};
@@ -388,7 +389,14 @@ fn limit(py: Python<'_>, model: String, common: Common) -> PyResult<String> {
 }
 
 #[pyfunction]
-fn settle(py: Python<'_>, model: String, common: Common, settle: Settle) -> PyResult<String> {
+fn settle(
+    py: Python<'_>,
+    model: String,
+    common: Common,
+    settle: Settle,
+    raw: bool,
+    ranges: Option<bool>,
+) -> PyResult<String> {
     detached(py, || {
         let m = common.model(&model, Some(&settle))?;
         // Validated first, so that a bad model is named before a missing motion (as the CLI).
@@ -407,9 +415,26 @@ fn settle(py: Python<'_>, model: String, common: Common, settle: Settle) -> PyRe
                 "settle needs a support motion: give move={NAME: (u, v)} or profile=... (the model's supports do not move)".into(),
             ));
         }
-        let r = match common.settlement_form()? {
-            SettlementForm::Both => voussoir::analysis::settle(&st, &opts)?,
-            form => settle_with(&st, &opts, form)?,
+        // As the CLI: the canonical selection unless `raw` (docs/canonical.md); `ranges`
+        // None = the reaction ranges on models of at most 500 blocks, True/False = always/never.
+        let form = common.settlement_form()?;
+        let r = if raw {
+            match form {
+                SettlementForm::Both => voussoir::analysis::settle(&st, &opts)?,
+                form => settle_with(&st, &opts, form)?,
+            }
+        } else {
+            let d = CanonicalOptions::default();
+            let copts = CanonicalOptions {
+                reaction_ranges: ranges != Some(false),
+                ranges_max_blocks: if ranges == Some(true) {
+                    usize::MAX
+                } else {
+                    d.ranges_max_blocks
+                },
+                ..d
+            };
+            settle_canonical(&st, &opts, form, &copts)?
         };
         json(&r)
     })

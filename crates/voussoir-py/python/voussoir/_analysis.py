@@ -100,6 +100,8 @@ def settle(
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     settlement_form: str = "both",
+    raw: bool = False,
+    ranges: Optional[bool] = None,
     executor=None,
 ) -> SettlementResult:
     """Settlement analysis (``voussoir settle``): the mechanism and contact forces for
@@ -110,12 +112,19 @@ def settle(
     strings in that syntax are accepted too). ``fixed``: support name(s) declared fixed
     (bilateral). ``profile``: vertical settlement profile along x applied to every support,
     ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``.
-    ``settlement_form``: ``"both"`` (default) or ``"force-only"``. Other keywords as
-    :func:`limit`.
+    ``settlement_form``: ``"both"`` (default) or ``"force-only"``.
+
+    As the CLI, the result is the canonical one (docs/canonical.md): the least-crack mechanism
+    among the optimal ones and the physical forces of least complementary energy, with the
+    ranges of the support reactions over the optimal force fields on models of at most 500
+    blocks. ``raw=True`` reports the solver's own optimal solution instead (``--raw``);
+    ``ranges=True``/``False`` computes the reaction ranges always/never (``--ranges`` /
+    ``--no-ranges``). Other keywords as :func:`limit`.
     """
     c = o.common(tolerance, method, friction, compressive_strength, "linear", 16, settlement_form)
     s = o.settle(move, fixed, profile)
-    return _dispatch("settle", model, (c, s), executor)
+    r = None if ranges is None else bool(ranges)
+    return _dispatch("settle", model, (c, s, bool(raw), r), executor)
 
 
 def capacity(

@@ -13,8 +13,9 @@
 //! (d) nor under a renumbering of the blocks (loads renumbered along);
 //! (e) settlement results are linear in the support motion: work, block motions and hinges
 //!     scale with its magnitude;
-//! (f) `limit` and `settle` agree on whether a structure stands: settle with no support motion
-//!     finds `cannot_stand` exactly when limit finds `no_equilibrium`.
+//! (f) `limit`, `settle` and `safety` agree on whether a structure stands: settle with no
+//!     support motion finds `cannot_stand`, and safety's `stands` is false, exactly when limit
+//!     finds `no_equilibrium`.
 //!
 //! Reproducible: every property runs a fixed number of cases from a fixed ChaCha seed
 //! ([`runner`]); no failure files are written. A failing case is printed shrunk.
@@ -719,17 +720,25 @@ fn settlement_work_and_mechanism_scale_with_the_support_motion() {
     );
 }
 
-// ── (f) limit and settle agree on standing ─────────────────────────────────────────────────
+// ── (f) limit, settle and safety agree on standing────────────────────────────────────────────
 
 #[test]
-fn limit_and_settle_agree_on_whether_the_structure_stands() {
-    check("limit/settle agree", 8, any_case(), |case| {
+fn limit_settle_and_safety_agree_on_whether_the_structure_stands() {
+    check("limit/settle/safety agree", 8, any_case(), |case| {
         let m = case.model();
         let st = structure(&m);
         let l = limit(&m).result;
         let s = settle(&st, &solver()).expect("settle solves");
         let limit_stands = l.status != LimitStatus::NoEquilibrium;
         let settle_stands = s.status != SettlementStatus::CannotStand;
+        let safety_stands = voussoir::analysis::safety::stands(&st, &solver()).expect("stands");
+        prop_assert_eq!(
+            limit_stands,
+            safety_stands,
+            "limit: {} | safety: stands = {}",
+            l.message,
+            safety_stands
+        );
         prop_assert_eq!(
             limit_stands,
             settle_stands,

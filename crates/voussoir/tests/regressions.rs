@@ -364,6 +364,8 @@ fn overhanging_block_cannot_stand_in_limit_tilt_and_settle_alike() {
     assert_eq!(r.status, LimitStatus::NoEquilibrium, "{}", r.message);
     assert!((r.least_load_multiplier.unwrap() - 0.1).abs() < 1e-9);
     assert!((r.load_multiplier.unwrap() - 1.1).abs() < 1e-9);
+    // Safety analysis agrees: it does not stand under its dead loads.
+    assert!(!voussoir::analysis::safety::stands(&st, &o).unwrap());
     assert!(
         r.message.contains("between 0.100000 and 1.100000"),
         "{}",

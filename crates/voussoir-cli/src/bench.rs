@@ -4,7 +4,7 @@
 use crate::common::Fail;
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
-use voussoir::bench::{self, bench_limit, bench_settle, header, line, BenchConfig};
+use voussoir::bench::{self, bench_run, header, line, Analysis, BenchConfig, Scenario};
 use voussoir::lp::Method;
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
@@ -45,9 +45,31 @@ pub enum BenchAnalysis {
     Both,
 }
 
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+pub enum BenchScenario {
+    /// 2D running-bond walls, no-sliding joints: the right 40 % of the foundation settles 1 cm
+    /// (an optimum of exactly 0); tilting-table load.
+    Wall,
+    /// 2D running-bond walls with associative friction μ = 0.6: the right third settles 1 cm
+    /// (a stepped crack, a non-zero optimum); tilting-table load.
+    FrictionWall,
+    /// 3D barrel vault (the paper's arch, 64 voussoirs per ring, running bond, μ = 0.6): the
+    /// right springing spreads 1 cm; live load on the whole span.
+    Vault,
+    /// 3D hemispherical dome, c courses of 2c blocks, μ = 0.5: a quarter of its supports settle
+    /// 2 cm; a vertical crown load.
+    Dome,
+    /// 3D U-shaped wall with returns on one ground slab: out-of-plane load on the main wall
+    /// (limit only).
+    WallReturns,
+}
+
 #[derive(Args)]
 pub struct BenchArgs {
-    /// Approximate numbers of units, comma-separated.
+    /// Structures to time, comma-separated.
+    #[arg(long, value_enum, default_value = "wall", value_delimiter = ',')]
+    pub scenario: Vec<BenchScenario>,
+    /// Approximate numbers of blocks, comma-separated.
     #[arg(long, default_value = "1000,4000,16000,64000", value_delimiter = ',')]
     pub sizes: Vec<usize>,
     /// Which analyses to time.
@@ -101,15 +123,44 @@ impl BenchArgs {
 }
 
 pub fn run(a: BenchArgs) -> Result<(), Fail> {
-    println!("Running-bond walls of 0.25 × 0.055 m units (times in seconds; gap = relative duality gap; admissibility = largest joint violation of the mechanism, relative).\n");
+    println!("Times in seconds; peak memory = the largest resident set of the run; gap = relative duality gap; admissibility = largest joint violation of the mechanism, relative (docs/performance.md).\n");
     print!("{}", header());
     let cfg = a.config();
-    for &n in &a.sizes {
-        if matches!(a.analysis, BenchAnalysis::Settle | BenchAnalysis::Both) {
-            print!("{}", line(&bench_settle(n, &cfg)?));
-        }
-        if matches!(a.analysis, BenchAnalysis::Limit | BenchAnalysis::Both) {
-            print!("{}", line(&bench_limit(n, &cfg)?));
+    let analyses: &[Analysis] = match a.analysis {
+        BenchAnalysis::Settle => &[Analysis::Settle],
+        BenchAnalysis::Limit => &[Analysis::Limit],
+        BenchAnalysis::Both => &[Analysis::Settle, Analysis::Limit],
+    };
+    for &scenario in &a.scenario {
+        let scenario = match scenario {
+            BenchScenario::Wall => Scenario::Wall,
+            BenchScenario::FrictionWall => Scenario::FrictionWall,
+            BenchScenario::Vault => Scenario::Vault,
+            BenchScenario::Dome => Scenario::Dome,
+            BenchScenario::WallReturns => Scenario::WallReturns,
+        };
+        for &n in &a.sizes {
+            for &analysis in analyses {
+                reset_peak_memory();
+                match bench_run(scenario, analysis, n, &cfg) {
+                    Ok(Some(mut row)) => {
+                        row.peak_mib = peak_memory_mib();
+                        print!("{}", line(&row));
+                    }
+                    Ok(None) => {}
+                    // A run that fails is a row of the table (what was reached), not the end
+                    // of the benchmark.
+                    Err(e) => println!(
+                        "| {} | {} | ~{n} | | | | | | | | | | | {} | | | failed: {e} |",
+                        scenario.name(),
+                        match analysis {
+                            Analysis::Settle => "settlement",
+                            Analysis::Limit => "limit",
+                        },
+                        peak_memory_mib().map_or("—".into(), |m| format!("{m:.0} MiB"))
+                    ),
+                }
+            }
         }
     }
     if !a.geometry_sizes.is_empty() {
@@ -125,4 +176,19 @@ pub fn run(a: BenchArgs) -> Result<(), Fail> {
         print!("{s}");
     }
     Ok(())
+}
+
+/// Reset the kernel's record of this process's peak resident set (Linux ≥ 4.0:
+/// `/proc/self/clear_refs`, value 5), so that each run's peak is its own. Elsewhere, or where
+/// the file cannot be written, the peak is the process's since its start.
+fn reset_peak_memory() {
+    let _ = std::fs::write("/proc/self/clear_refs", "5");
+}
+
+/// The peak resident set (`VmHWM` of `/proc/self/status`), MiB; `None` where there is none.
+fn peak_memory_mib() -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib / 1024.0)
 }

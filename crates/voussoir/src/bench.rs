@@ -1,11 +1,13 @@
-//! The benchmark engine behind `voussoir bench`: timings of the whole pipeline on running-bond
-//! walls of growing size. The command line parses flags and prints; the work is here, so any
-//! front end can run it.
+//! The benchmark engine behind `voussoir bench`: timings of the whole pipeline on structures
+//! of growing size ([`Scenario`]: the no-sliding and the frictional running-bond walls in 2D, a
+//! barrel vault, a dome and a wall with returns in 3D), one engine for both dimensions (generic
+//! over [`Assembly`]). The command line parses flags, measures memory and prints; the work is
+//! here, so any front end can run it.
 //!
-//! Each size is a wall of 0.25 × 0.055 m bricks with about twice as many units per course as
+//! The walls are of 0.25 × 0.055 m bricks with about twice as many units per course as
 //! courses, on one foundation segment per base unit. Two analyses:
-//! * settlement: the foundation segments under the right 40 % of the wall settle uniformly by
-//!   1 cm;
+//! * settlement: the foundation segments under the right 40 % of the wall (a third with
+//!   friction) settle uniformly by 1 cm;
 //! * limit: the tilting-table live load (a horizontal force equal to each block's weight).
 //!
 //! Phases are timed separately: model generation, structure building (validation and overlap
@@ -25,6 +27,7 @@ use crate::generate::{self, LiveLoad, WallSpec};
 use crate::lp::{LpStatus, Method, SolverOptions};
 use crate::programs;
 use crate::settlement_input::{apply_profile, Profile};
+use crate::structure::Assembly;
 use crate::{BuildOptions, Structure};
 use std::time::Instant;
 
@@ -108,6 +111,7 @@ fn method_name(m: Method) -> &'static str {
 
 /// One timed run.
 pub struct Row {
+    pub scenario: &'static str,
     pub analysis: &'static str,
     pub units: usize,
     pub joints: usize,
@@ -117,13 +121,17 @@ pub struct Row {
     pub method: String,
     pub t_gen: f64,
     pub t_build: f64,
-    pub t_detect: f64,
+    /// Interface detection alone (2D; in 3D it is part of `t_build`).
+    pub t_detect: Option<f64>,
     pub t_assemble: f64,
     pub t_solve: f64,
     pub t_output: f64,
     pub gap: f64,
     pub violation: f64,
     pub outcome: String,
+    /// Peak resident memory of the run, MiB (measured by the front end: the library does no
+    /// I/O).
+    pub peak_mib: Option<f64>,
 }
 
 impl Row {
@@ -149,17 +157,205 @@ pub fn time_detection(st: &Structure) -> f64 {
     secs(t)
 }
 
-/// Build and validate the structure (timed), time its interface detection alone, and choose
-/// the solver settings for its size.
-fn prepare(
-    model: &crate::Model,
+/// The benchmark structures of `voussoir bench --scenario` (issue 18, item 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scenario {
+    /// (a) Running-bond walls with Heyman's no-sliding joints: settlement of the right 40 %
+    /// of the foundation (an optimum of exactly 0: the bond bridges it) and the tilting-table
+    /// load.
+    Wall,
+    /// (b) The same walls with associative Coulomb friction μ = 0.6 and the right third of the
+    /// foundation settling 1 cm: a non-zero optimum (a stepped crack); limit under the same
+    /// tilting-table load.
+    FrictionWall,
+    /// (c) The paper's arch as a barrel vault of 64 voussoirs per ring, as many rings (running
+    /// bond, μ = 0.6) as the size asks: the right springing spreads 1 cm; limit under the live
+    /// load on the whole span.
+    Vault,
+    /// (c) A hemispherical dome (R = 5 m, t = 0.3 m) of `c` courses of `2c` blocks on one
+    /// support per segment, μ = 0.5: the supports of a quarter of the ring settle 2 cm; limit
+    /// under a vertical crown load.
+    Dome,
+    /// (c) A U-shaped wall (main wall and two returns, bonded at the corners) on one ground
+    /// slab: limit under an out-of-plane load on the main wall (settlement: one support only,
+    /// nothing to settle relative to).
+    WallReturns,
+}
+
+impl Scenario {
+    pub fn name(self) -> &'static str {
+        match self {
+            Scenario::Wall => "wall",
+            Scenario::FrictionWall => "friction wall",
+            Scenario::Vault => "vault",
+            Scenario::Dome => "dome",
+            Scenario::WallReturns => "wall with returns",
+        }
+    }
+}
+
+/// Which analysis of a benchmark run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Analysis {
+    Settle,
+    Limit,
+}
+
+/// A generated model of about `n` blocks for `scenario` and `analysis`, with its settlement
+/// applied; `None` when the scenario has no such analysis.
+enum Built {
+    Planar(crate::Model),
+    Spatial(crate::model3d::Model3d),
+}
+
+fn build_model(scenario: Scenario, analysis: Analysis, n: usize) -> Result<Option<Built>> {
+    use crate::generate3d::{self, Bond, DomeSpec, Plan, WallsLive, WallsSpec};
+    use crate::settlement_input::move_support;
+    let settle = analysis == Analysis::Settle;
+    Ok(Some(match scenario {
+        Scenario::Wall | Scenario::FrictionWall => {
+            let friction = scenario == Scenario::FrictionWall;
+            let live = if settle {
+                LiveLoad::None
+            } else {
+                LiveLoad::Horizontal
+            };
+            let spec = wall_of(n, live);
+            let mut model = generate::wall(&spec)?;
+            if friction {
+                model
+                    .materials
+                    .entry("default".into())
+                    .or_default()
+                    .friction = Some(0.6);
+            }
+            if settle {
+                let width = spec.units as f64 * spec.unit[0];
+                let x0 = if friction { 2.0 / 3.0 } else { 0.6 } * width;
+                apply_profile(
+                    &mut model,
+                    &Profile::Uniform {
+                        x0,
+                        x1: width,
+                        v: -0.01,
+                    },
+                )?;
+            }
+            Built::Planar(model)
+        }
+        Scenario::Vault => {
+            let spec = generate::ArchSpec {
+                voussoirs: 64,
+                live: if settle {
+                    LiveLoad::None
+                } else {
+                    LiveLoad::Full
+                },
+                ..generate::ArchSpec::default()
+            };
+            let rings = n.div_ceil(64).max(1);
+            // Rings 0.5 m deep: the vault's depth grows with the size.
+            let mut m = generate3d::vault(&spec, 0.5 * rings as f64, rings, Bond::Running)?;
+            // With Heyman's no-sliding joints a running bond locks the rings together (no
+            // collapse load); with friction they can slide on each other.
+            m.materials.entry("default".into()).or_default().friction = Some(0.6);
+            if settle {
+                move_support(&mut m, "right", &[0.01, 0.0, 0.0, 0.0, 0.0, 0.0])?;
+            }
+            Built::Spatial(m)
+        }
+        Scenario::Dome => {
+            let c = ((n as f64 / 2.0).sqrt().round() as usize).max(2);
+            let spec = DomeSpec {
+                courses: c,
+                segments: 2 * c,
+                crown_load: if settle { 0.0 } else { 10.0 },
+                ..DomeSpec::default()
+            };
+            let mut m = generate3d::dome(&spec)?;
+            m.materials.entry("default".into()).or_default().friction = Some(0.5);
+            if settle {
+                for j in 0..(2 * c).div_ceil(4) {
+                    move_support(
+                        &mut m,
+                        &format!("base{j}"),
+                        &[0.0, 0.0, -0.02, 0.0, 0.0, 0.0],
+                    )?;
+                }
+            }
+            Built::Spatial(m)
+        }
+        Scenario::WallReturns => {
+            if settle {
+                return Ok(None);
+            }
+            // 2c courses of a main wall of 2c units and two returns of c: about 8c² blocks.
+            let c = ((n as f64 / 8.0).sqrt().round() as usize).max(2);
+            let u = 2 * c;
+            let spec = WallsSpec {
+                plan: Plan::U,
+                length: 0.25 * u as f64,
+                return_length: 0.125 * u as f64,
+                height: 0.055 * c as f64 * 2.0,
+                thickness: 0.12,
+                courses: 2 * c,
+                units: u,
+                live: WallsLive::Main,
+                ..WallsSpec::default()
+            };
+            Built::Spatial(generate3d::walls(&spec)?)
+        }
+    }))
+}
+
+/// Time one analysis of a `scenario` structure of about `n` blocks; `None` when the scenario
+/// has no such analysis.
+pub fn bench_run(
+    scenario: Scenario,
+    analysis: Analysis,
+    n: usize,
     a: &BenchConfig,
-) -> Result<(Structure, f64, f64, Method, SolverOptions)> {
+) -> Result<Option<Row>> {
     let t = Instant::now();
-    let st = Structure::new(model, BuildOptions::default())?;
-    let t_build = secs(t);
-    let t_detect = time_detection(&st);
-    let method = method_for(a.method, st.blocks.len());
+    let Some(model) = build_model(scenario, analysis, n)? else {
+        return Ok(None);
+    };
+    let t_gen = secs(t);
+    let t = Instant::now();
+    let mut row = match model {
+        Built::Planar(m) => {
+            let st = Structure::new(&m, BuildOptions::default())?;
+            let t_build = secs(t);
+            let t_detect = time_detection(&st);
+            let phases = (t_gen, t_build - t_detect.min(t_build), Some(t_detect));
+            run_on(&st, analysis, phases, a)?
+        }
+        Built::Spatial(m) => {
+            let st = crate::Structure3d::new(&m, BuildOptions::default())?;
+            run_on(&st, analysis, (t_gen, secs(t), None), a)?
+        }
+    };
+    row.scenario = scenario.name();
+    Ok(Some(row))
+}
+
+/// Time one settlement analysis of a wall of about `n` units (scenario (a)).
+pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
+    bench_run(Scenario::Wall, Analysis::Settle, n, a).map(|r| r.expect("walls settle"))
+}
+
+/// Time one limit analysis (tilting-table load) of a wall of about `n` units (scenario (a)).
+pub fn bench_limit(n: usize, a: &BenchConfig) -> Result<Row> {
+    bench_run(Scenario::Wall, Analysis::Limit, n, a).map(|r| r.expect("walls have a limit"))
+}
+
+fn run_on<S: Assembly>(
+    st: &S,
+    analysis: Analysis,
+    phases: (f64, f64, Option<f64>),
+    a: &BenchConfig,
+) -> Result<Row> {
+    let method = method_for(a.method, st.num_blocks());
     let opts = SolverOptions {
         method,
         presolve: a.presolve,
@@ -167,59 +363,72 @@ fn prepare(
         time_limit: a.time_limit,
         ..SolverOptions::default()
     };
-    Ok((st, t_build, t_detect, method, opts))
+    let mut row = match analysis {
+        Analysis::Settle => settle_on(st, a, &opts)?,
+        Analysis::Limit => limit_on(st, &opts)?,
+    };
+    row.method = method_name(method).to_string();
+    (row.t_gen, row.t_build, row.t_detect) = phases;
+    Ok(row)
 }
 
-/// Time one settlement analysis of a wall of about `n` units.
-pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
+fn empty_row<S: Assembly>(st: &S, analysis: &'static str) -> Row {
+    Row {
+        scenario: "",
+        analysis,
+        units: st.num_blocks(),
+        joints: st.num_joints(),
+        rows: 0,
+        cols: 0,
+        nnz: 0,
+        method: String::new(),
+        t_gen: 0.0,
+        t_build: 0.0,
+        t_detect: None,
+        t_assemble: 0.0,
+        t_solve: 0.0,
+        t_output: 0.0,
+        gap: f64::NAN,
+        violation: f64::NAN,
+        outcome: String::new(),
+        peak_mib: None,
+    }
+}
+
+fn settle_on<S: Assembly>(st: &S, a: &BenchConfig, opts: &SolverOptions) -> Result<Row> {
+    let mut row = empty_row(st, "settlement");
+    let u = st.settlement_magnitude();
     let t = Instant::now();
-    let spec = wall_of(n, LiveLoad::None);
-    let mut model = generate::wall(&spec)?;
-    let t_gen = secs(t);
-    let width = spec.units as f64 * spec.unit[0];
-    apply_profile(
-        &mut model,
-        &Profile::Uniform {
-            x0: 0.6 * width,
-            x1: width,
-            v: -0.01,
-        },
-    )?;
-    let (st, t_build, t_detect, method, opts) = prepare(&model, a)?;
-    let t = Instant::now();
-    let map = KinematicMap::new(&st);
-    let (s, lp_size, t_assemble, t_solve) = match a.form {
+    let map = KinematicMap::new(st);
+    let dead = st.load_vector(false);
+    let s = match a.form {
         BenchForm::Force => {
-            let fp = programs::settlement_force_program(&map, &st.load_vector(false));
-            let t_assemble = secs(t);
-            let size = (fp.lp.num_rows(), fp.lp.num_cols(), fp.lp.num_nonzeros());
+            let fp = programs::settlement_force_program(&map, &dead);
+            row.t_assemble = secs(t);
+            (row.rows, row.cols, row.nnz) =
+                (fp.lp.num_rows(), fp.lp.num_cols(), fp.lp.num_nonzeros());
             let t = Instant::now();
-            let sol = fp.solve(&opts)?;
-            let t_solve = secs(t);
-            (
-                settlement_from_force_solution(&st, &map, &fp, &sol, opts.info()),
-                size,
-                t_assemble,
-                t_solve,
-            )
+            let sol = fp.solve(opts)?;
+            row.t_solve = secs(t);
+            settlement_from_force_solution(st, &map, &fp, &sol, opts.info())
         }
         BenchForm::Motion => {
-            let dead = st.load_vector(false);
             let mp = programs::settlement_motion_program(&map, &dead)?;
-            let t_assemble = secs(t);
-            let size = (mp.lp.num_rows(), mp.lp.num_cols(), mp.lp.num_nonzeros());
+            row.t_assemble = secs(t);
+            (row.rows, row.cols, row.nnz) =
+                (mp.lp.num_rows(), mp.lp.num_cols(), mp.lp.num_nonzeros());
             let t = Instant::now();
-            let sol = crate::lp::solve(&mp.lp, &opts)?;
-            let t_solve = secs(t);
-            // Forces from the motion LP's duals are not mapped back here: the motion form is timed
-            // only (its certificate is the full two-LP settle run).
+            let sol = crate::lp::solve(&mp.lp, opts)?;
+            row.t_solve = secs(t);
+            // Forces from the motion LP's duals are not mapped back here: the motion form is
+            // timed only (its certificate is the full two-LP settle run).
             let status = match sol.status {
                 LpStatus::Optimal => SettlementStatus::Mechanism,
                 LpStatus::Unbounded => SettlementStatus::CannotStand,
                 LpStatus::Infeasible => SettlementStatus::Incompatible,
             };
             let np = map.num_points();
-            let s = crate::analysis::settlement::SettlementSolution {
+            crate::analysis::settlement::SettlementSolution {
                 status,
                 mechanism: if status == SettlementStatus::Mechanism {
                     mp.motion(&sol.x)
@@ -231,124 +440,86 @@ pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
                 primal: mp.objective_sign * sol.objective,
                 dual: f64::NAN,
                 solver: opts.info(),
-            };
-            (s, size, t_assemble, t_solve)
+            }
         }
     };
     let t = Instant::now();
-    let r = settlement_result_checked(&st, &map, &s);
+    let r = settlement_result_checked(st, &map, &s);
     let json = serde_json::to_string_pretty(&r)
         .map_err(|e| Error::Request(format!("cannot serialise the result: {e}")))?;
     std::hint::black_box(json.len());
-    let t_output = secs(t);
-    let violation = if s.mechanism.is_empty() {
+    row.t_output = secs(t);
+    row.violation = if s.mechanism.is_empty() {
         f64::NAN
     } else {
-        kinematic_violation(&map, &s.mechanism) / 0.01
+        kinematic_violation(&map, &s.mechanism) / u
     };
-    Ok(Row {
-        analysis: "settlement",
-        units: st.blocks.len(),
-        joints: st.joints.len(),
-        rows: lp_size.0,
-        cols: lp_size.1,
-        nnz: lp_size.2,
-        method: method_name(method).to_string(),
-        t_gen,
-        t_build: t_build - t_detect.min(t_build),
-        t_detect,
-        t_assemble,
-        t_solve,
-        t_output,
-        // |primal − dual| relative to the larger of the two and of the work scale W·u (total
-        // weight times the settlement): the optimum here is 0 (the wall bridges the settled
-        // segments), where a gap relative to the values alone measures round-off.
-        gap: {
-            let w: f64 = st.blocks.iter().map(|b| b.weight).sum();
-            (s.primal - s.dual).abs() / s.primal.abs().max(s.dual.abs()).max(w * 0.01)
-        },
-        violation,
-        outcome: format!(
-            "{:?}, work {:.3e} kN·m",
-            r.status,
-            r.work_dead_loads.unwrap_or(f64::NAN)
-        ),
-    })
+    // |primal − dual| relative to the larger of the two and of the work scale W·u (total
+    // weight times the settlement): where the optimum is 0 (scenario (a): the wall bridges the
+    // settled segments) a gap relative to the values alone measures round-off.
+    let w: f64 = dead.iter().map(|f| f.abs()).sum();
+    row.gap = (s.primal - s.dual).abs() / s.primal.abs().max(s.dual.abs()).max(w * u);
+    row.outcome = format!(
+        "{:?}, work {:.6e} kN·m",
+        r.status,
+        r.work_dead_loads.unwrap_or(f64::NAN)
+    );
+    Ok(row)
 }
 
-/// Time one limit analysis (tilting-table load) of a wall of about `n` units. The certificate:
-/// λ of the static LP against the kinematic multiplier `−F_D·d` of the mechanism read from its
-/// duals (normalised to `F_L·d = 1`), and the mechanism's admissibility.
-pub fn bench_limit(n: usize, a: &BenchConfig) -> Result<Row> {
+/// The certificate: λ of the static LP against the kinematic multiplier `−F_D·d` of the
+/// mechanism read from its duals (normalised to `F_L·d = 1`), and the mechanism's admissibility
+/// relative to its largest opening.
+fn limit_on<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<Row> {
+    let mut row = empty_row(st, "limit");
     let t = Instant::now();
-    let spec = wall_of(n, LiveLoad::Horizontal);
-    let model = generate::wall(&spec)?;
-    let t_gen = secs(t);
-    let (st, t_build, t_detect, method, opts) = prepare(&model, a)?;
-    let t = Instant::now();
-    let map = KinematicMap::new(&st);
+    let map = KinematicMap::new(st);
     let dead = st.load_vector(false);
     let live = st.load_vector(true);
     let fp = programs::limit_force_program(&map, &dead, &live);
-    let t_assemble = secs(t);
+    row.t_assemble = secs(t);
+    (row.rows, row.cols, row.nnz) = (fp.lp.num_rows(), fp.lp.num_cols(), fp.lp.num_nonzeros());
     let t = Instant::now();
-    let sol = fp.solve(&opts)?;
-    let t_solve = secs(t);
+    let sol = fp.solve(opts)?;
+    row.t_solve = secs(t);
     let t = Instant::now();
     let ls = limit_solution(&map, &fp, &live, &sol, opts.info());
     let (status, lambda, mechanism) = (ls.status, ls.lambda, ls.mechanism.clone());
-    let r = limit_result(&st, &map, &ls);
+    let r = limit_result(st, &map, &ls);
     let json = serde_json::to_string_pretty(&r)
         .map_err(|e| Error::Request(format!("cannot serialise the result: {e}")))?;
     std::hint::black_box(json.len());
-    let t_output = secs(t);
-    let (gap, violation) = match lambda {
-        Some(l) if !mechanism.is_empty() => {
-            let kin: f64 = -dead.iter().zip(&mechanism).map(|(f, d)| f * d).sum::<f64>();
-            // Admissibility relative to the mechanism's size (largest point displacement).
-            let (open, _) = map.jumps(&mechanism, 0.0);
-            let scale = open.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(1e-300);
-            let mut v = 0.0f64;
-            let (o, s) = map.jumps(&mechanism, 0.0);
-            for k in 0..map.num_points() {
-                v = v.max((-o[k]).max(0.0)).max(s[k].abs());
-            }
-            ((l - kin).abs() / l.abs().max(1e-12), v / scale)
-        }
-        _ => (f64::NAN, f64::NAN),
+    row.t_output = secs(t);
+    if let (Some(l), false) = (lambda, mechanism.is_empty()) {
+        let kin: f64 = -dead.iter().zip(&mechanism).map(|(f, d)| f * d).sum::<f64>();
+        let (open, _) = map.jumps(&mechanism, 0.0);
+        let scale = open.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(1e-300);
+        row.gap = (l - kin).abs() / l.abs().max(1e-12);
+        row.violation = kinematic_violation(&map, &mechanism) / scale;
+    }
+    row.outcome = match lambda {
+        Some(l) => format!("λ = {l:.6}"),
+        None => format!("{status:?}"),
     };
-    Ok(Row {
-        analysis: "limit",
-        units: st.blocks.len(),
-        joints: st.joints.len(),
-        rows: fp.lp.num_rows(),
-        cols: fp.lp.num_cols(),
-        nnz: fp.lp.num_nonzeros(),
-        method: method_name(method).to_string(),
-        t_gen,
-        t_build: t_build - t_detect.min(t_build),
-        t_detect,
-        t_assemble,
-        t_solve,
-        t_output,
-        gap,
-        violation,
-        outcome: match lambda {
-            Some(l) => format!("λ = {l:.6}"),
-            None => format!("{status:?}"),
-        },
-    })
+    Ok(row)
 }
 
 pub fn header() -> String {
-    "| analysis | units | joints | LP rows × cols (nnz) | method | generate | validate | detect | assemble | solve | output | total | gap | admissibility | result |\n\
-     |---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n"
+    "| structure | analysis | blocks | joints | LP rows × cols (nnz) | method | generate | validate | detect | assemble | solve | output | total | peak memory | gap | admissibility | result |\n\
+     |---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n"
         .to_string()
 }
 
 pub fn line(r: &Row) -> String {
+    let detect = r
+        .t_detect
+        .map_or("(in validate)".to_string(), |t| format!("{t:.3}"));
+    let peak = r
+        .peak_mib
+        .map_or("—".to_string(), |m| format!("{m:.0} MiB"));
     format!(
-        "| {} | {} | {} | {} × {} ({}) | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.2} | {:.3} | {:.2} | {:.1e} | {:.1e} | {} |\n",
+        "| {} | {} | {} | {} | {} × {} ({}) | {} | {:.3} | {:.3} | {} | {:.3} | {:.2} | {:.3} | {:.2} | {} | {:.1e} | {:.1e} | {} |\n",
+        r.scenario,
         r.analysis,
         r.units,
         r.joints,
@@ -358,11 +529,12 @@ pub fn line(r: &Row) -> String {
         r.method,
         r.t_gen,
         r.t_build,
-        r.t_detect,
+        detect,
         r.t_assemble,
         r.t_solve,
         r.t_output,
         r.total(),
+        peak,
         r.gap,
         r.violation,
         r.outcome

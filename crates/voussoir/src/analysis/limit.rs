@@ -320,6 +320,41 @@ pub fn limit<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<LimitResult<S:
     Ok(limit_result(st, &map, &s))
 }
 
+/// The certificate of a collapse multiplier ([`LimitCertificate`]): for the joint laws whose
+/// kinematic multiplier is `−F_D·d` alone (no cohesion, no crushing, no fixed shear
+/// capacities), the static λ against it and the mechanism's admissibility.
+fn limit_certificate(
+    map: &KinematicMap,
+    s: &LimitSolution,
+    wd: Option<f64>,
+    wl: Option<f64>,
+) -> Option<LimitCertificate> {
+    let plain = map.shear_limits.is_none()
+        && map
+            .laws
+            .iter()
+            .all(|l| l.cohesion == 0.0 && l.strength.is_none());
+    let (LimitStatus::Collapse, Some(l), Some(wd), Some(wl)) = (s.status, s.lambda, wd, wl) else {
+        return None;
+    };
+    if !plain || s.mechanism.is_empty() || wl.abs() < 1e-300 {
+        return None;
+    }
+    let gap = (l + wd / wl).abs() / l.abs().max(1e-12);
+    let (open, _) = map.jumps(&s.mechanism, 0.0);
+    let scale = open.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let admissibility = if scale > 0.0 {
+        crate::analysis::settlement::kinematic_violation(map, &s.mechanism) / scale
+    } else {
+        0.0
+    };
+    Some(LimitCertificate {
+        gap,
+        admissibility,
+        ok: gap <= CERTIFICATE_TOLERANCE && admissibility <= CERTIFICATE_TOLERANCE,
+    })
+}
+
 /// Turn raw vectors into the reported result.
 pub fn limit_result<S: Assembly>(
     st: &S,
@@ -368,11 +403,19 @@ pub fn limit_result<S: Assembly>(
             closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
         ));
     }
+    let certificate = limit_certificate(map, s, wd, wl);
+    if let Some(c) = certificate.as_ref().filter(|c| !c.ok) {
+        message = format!(
+            "NOT CERTIFIED (gap {:.1e}, admissibility {:.1e}: the solver stopped short of the optimum; try another --method or a tighter --solver-tolerance): {message}",
+            c.gap, c.admissibility
+        );
+    }
     if !s.note.is_empty() {
         message = format!("{message} ({})", s.note);
     }
     LimitResult {
         status: s.status,
+        certificate,
         message,
         solver: s.solver.clone(),
         load_multiplier: s.lambda,

@@ -28,6 +28,27 @@ impl LimitStatus {
     }
 }
 
+/// The certificate of a collapse multiplier (issue 18: every result at any size states it):
+/// the static λ of the force program against the kinematic multiplier of the mechanism read
+/// from its duals, and that mechanism's admissibility. Computed for the joint laws whose
+/// kinematic multiplier is the dead loads' work alone (no-tension joints, with or without
+/// associative Coulomb friction without cohesion, rigid in compression); absent otherwise.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LimitCertificate {
+    /// `|λ − λ_kin| / max(|λ|, 1e-12)` with `λ_kin = −F_D·d` for the mechanism `d`
+    /// normalised to `F_L·d = 1`.
+    pub gap: f64,
+    /// The mechanism's largest violation of the joints (interpenetration, or sliding where
+    /// the joint forbids it), relative to its largest joint opening.
+    pub admissibility: f64,
+    /// Both within [`CERTIFICATE_TOLERANCE`]. When false the message says that λ is not
+    /// certified (the solver stopped short of the optimum).
+    pub ok: bool,
+}
+
+/// The relative tolerance of [`LimitCertificate::ok`].
+pub const CERTIFICATE_TOLERANCE: f64 = 1e-6;
+
 /// Result of a limit analysis.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
@@ -45,6 +66,10 @@ pub struct LimitResult<D: Spatial = Two> {
     /// which it stands.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub least_load_multiplier: Option<f64>,
+    /// The certificate of λ at collapse (absent for other statuses and for joint laws whose
+    /// kinematic multiplier has more terms than the dead loads' work).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub certificate: Option<LimitCertificate>,
     /// Work of the dead loads and of the live loads on the mechanism (−λ and 1 at collapse).
     pub work_dead_loads: Option<f64>,
     pub work_live_loads: Option<f64>,

@@ -45,8 +45,8 @@ pub const BAND: i32 = 10;
 /// Passes of geometric-mean equilibration (each a column and a row sweep).
 const PASSES: usize = 8;
 
-/// Entries below this fraction of the largest of their column and of their row are round-off —
-/// the cosine 6·10⁻¹⁷ of a right angle — and do not steer the scaling.
+/// Entries below this fraction of the largest of their column (or row) are round-off — the
+/// cosine 6·10⁻¹⁷ of a right angle — and do not steer the scaling.
 const ROUND_OFF: f64 = 1e-12;
 
 /// The power of two nearest to `x` (in the logarithm), within `2^±1000`; 1 for zero, infinite
@@ -59,13 +59,17 @@ fn pow2(x: f64) -> f64 {
     2f64.powi(e)
 }
 
-/// `1 / √(min·max)` of the magnitudes of one row or column; 1 if it has none.
+/// `1 / √(min·max)` of the magnitudes of one row or column that are not round-off; 1 if it
+/// has none.
 fn geometric(a: &[f64]) -> f64 {
     let max = a.iter().fold(0.0f64, |m, &v| m.max(v));
     if !(max > 0.0 && max.is_finite()) {
         return 1.0;
     }
-    let min = a.iter().fold(max, |m, &v| m.min(v));
+    let min = a
+        .iter()
+        .filter(|&&v| v >= ROUND_OFF * max)
+        .fold(max, |m, &v| m.min(v));
     1.0 / (min * max).sqrt()
 }
 
@@ -90,20 +94,6 @@ impl Scaling {
             for (entries, _) in c {
                 by_row[m + k].extend(entries.iter().map(|&(j, v)| (j, v.abs())));
             }
-        }
-        // Round-off entries (the cosine 2.6·10⁻¹⁴ of a right angle) are left out, once, on
-        // the program as given: an entry below ROUND_OFF of the largest of its column and of
-        // the largest of its row. (Judged on the scaled program instead, they drift: a column
-        // of ±1 entries got a factor of 7·10¹⁰ through its round-off neighbours.)
-        let mut cmax = vec![0.0f64; n];
-        for r in &by_row {
-            for &(j, a) in r {
-                cmax[j] = cmax[j].max(a);
-            }
-        }
-        for r in by_row.iter_mut() {
-            let rmax = r.iter().fold(0.0f64, |m, e| m.max(e.1));
-            r.retain(|&(j, a)| a >= ROUND_OFF * cmax[j] || a >= ROUND_OFF * rmax);
         }
         let mut by_col: Vec<Vec<(usize, f64)>> = vec![Vec::new(); n];
         for (i, r) in by_row.iter().enumerate() {

@@ -270,7 +270,7 @@ MISUSE = [
     ["settle", "arch.json", "--move", "right=abc,0"], ["settle", "arch.json", "--move", "right=1"],
     ["settle", "arch.json", "--move", "right=nan,0"], ["settle", "arch.json", "--move", "right=inf,0"],
     ["settle", "arch.json", "--profile", "uniform:1,2"], ["settle", "arch.json", "--profile", "wavy:1,2,3"],
-    ["settle", "arch.json", "--move", "right=0.01,0", "--crushing", "conic"],
+    ["tilt", "arch.json", "--crushing", "conic"],
     ["limit", "arch.json", "--facets", "0"], ["limit", "arch.json", "--facets", "1"],
     ["limit", "arch.json", "--facets", "100000000"], ["limit", "arch.json", "--facets", "-3"],
     ["limit", "arch.json", "--tolerance", "-1"], ["limit", "arch.json", "--tolerance", "0"],
@@ -489,7 +489,7 @@ end), 4 duplicate keys accepted by `plot`, and 2 DXF unit mix-ups read without a
 | malformed JSON model | the paper's arch truncated, a byte replaced, a key twice, a field of the wrong type or misspelt, empty/`null`/`[]` documents; through `limit`, `settle`, `tilt`, `plot` | accepted only if the text is still a valid model |
 | broken geometry | a bow-tie, a two-vertex or zero-area block, a block overlapping its neighbour or floating, a coordinate of 1e300, two supports of one name, overlapping supports | — |
 | extreme sizes and values | the two-block stack scaled 1e-9 … 1e12 (`limit`, `tilt`); the arch ×1e-3, 1e3, 1e9 (`limit`, certified `settle`); unit weights 1e-12 … 1e18; a live point force 1e-12 … 1e20 kN; support motions 1e-12 … 1e300 m; f_c from 100 kPa to 10¹⁵ kPa, polygon and cone | λ = 1 (hand calculation); λ ∝ s, ∝ γ, ∝ 1/F; polygon ≤ cone ≤ rigid 0.434645; 1 GPa with 16 facets within 0.5 % of 0.4346 |
-| command-line misuse | missing or wrong arguments, unknown flags and commands, motions of unknown supports, `nan`/`inf` motions, bad profiles, foreign flags, facet counts 0, 1, 1e8, negative tolerances, friction and strength, no live load, steps 0 and 1e8, a control point 100 m away, a step of 1e-12 mm, sweeps of 1e8 analyses, a bad shard, bad generator parameters, `plot` without or with a bad output | must be refused in one line |
+| command-line misuse | missing or wrong arguments, unknown flags and commands, motions of unknown supports, `nan`/`inf` motions, bad profiles, foreign flags (`tilt --crushing`), facet counts 0, 1, 1e8, negative tolerances, friction and strength, no live load, steps 0 and 1e8, a control point 100 m away, a step of 1e-12 mm, sweeps of 1e8 analyses, a bad shard, bad generator parameters, `plot` without or with a bad output | must be refused in one line |
 | DXF drawings | a good drawing in mm; millimetre blocks in a drawing that says metres and metre blocks in one that says millimetres; truncated or corrupted drawings; undeclared or foreign units; a self-intersecting or open polyline | λ = b/h = 0.4; the units warning |
 | output targets | `-o /dev/full` as root, a directory, the model itself, a missing folder, two outputs of which one cannot be written, a link to a mode-600 file, a full disk (root: a 200 kB tmpfs) | refusal, no output changed, no temporary left; a link written through with its mode kept |
 | random models | 300 random columns of 1–5 offset rectangles, scaled by 10^U(−4, 5), under a horizontal load equal to their weight; 60 random arches scaled by 10^(−3…4) | the admissible range of λ at every bed (hand calculation): `limit` status and λ to 1e-6, `settle` and `tilt` agreeing on whether it stands; λ ∝ s for the arches |

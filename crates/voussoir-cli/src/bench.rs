@@ -9,7 +9,8 @@ use voussoir::lp::Method;
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
 pub enum BenchMethod {
-    /// Per size: dual simplex up to 2,000 blocks (vertex mechanisms), Clarabel above.
+    /// Dual simplex for no-sliding walls up to 2,000 blocks (vertex mechanisms), Clarabel above
+    /// and for every frictional or 3D model.
     Auto,
     /// HiGHS dual simplex: an exact vertex.
     DualSimplex,

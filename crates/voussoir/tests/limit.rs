@@ -281,3 +281,54 @@ fn collapse_multipliers_carry_their_certificate_and_a_short_one_is_flagged() {
         .certificate
         .is_none());
 }
+
+/// The cleanup pass (issue 18): an interior point stopped early (Clarabel at a tolerance of
+/// 1e-3) leaves a collapse multiplier of the paper's arch that fails its certificate; with the
+/// cleanup pass on (the default) a primal simplex from that point's active set ends at a vertex, whose
+/// λ equals the dual simplex's to 1e-9 and the paper's 0.4346 to its 4 digits, certified, with
+/// a note saying how it was obtained.
+#[test]
+fn an_interior_point_stopped_short_is_cleaned_up_by_crossover() {
+    use voussoir::lp::Method;
+    let st = Structure::new(
+        &arch(&ArchSpec {
+            live: LiveLoad::Full,
+            ..ArchSpec::default()
+        })
+        .unwrap(),
+        BuildOptions::default(),
+    )
+    .unwrap();
+    let exact = limit(&st, &SolverOptions::default())
+        .unwrap()
+        .load_multiplier
+        .unwrap();
+    assert!((exact - 0.4346).abs() < 5e-5, "{exact}");
+    let loose = SolverOptions {
+        method: Method::Clarabel,
+        feasibility_tolerance: 1e-3,
+        cleanup: false,
+        ..SolverOptions::default()
+    };
+    let raw = limit(&st, &loose).unwrap();
+    let c = raw.certificate.expect("a collapse has a certificate");
+    assert!(
+        !c.ok,
+        "the loose interior point should fail its certificate: {c:?}"
+    );
+    assert!(raw.message.starts_with("NOT CERTIFIED"), "{}", raw.message);
+    let r = limit(
+        &st,
+        &SolverOptions {
+            cleanup: true,
+            ..loose
+        },
+    )
+    .unwrap();
+    let c = r.certificate.expect("a collapse has a certificate");
+    assert!(c.ok, "{c:?} {}", r.message);
+    let l = r.load_multiplier.unwrap();
+    assert!((l - exact).abs() <= 1e-9, "{l} against {exact}");
+    assert!(r.message.contains("cleaned up"), "{}", r.message);
+    assert!(!r.message.contains("NOT CERTIFIED"), "{}", r.message);
+}

@@ -30,6 +30,8 @@ pub struct LimitSolution {
     /// A sentence to add to the result's message (how the result was obtained, when not as
     /// asked), or empty.
     pub note: String,
+    /// The solver stopped at reduced accuracy ([`LpSolution::reduced_accuracy`]).
+    pub reduced_accuracy: bool,
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
@@ -53,7 +55,43 @@ fn solve_static<S: Assembly>(
     if sol.status == LpStatus::Optimal && programs::crushing_cap_reached(map, &fp, &sol.x) {
         return solve_widened(map, &dead, &live, opts);
     }
-    Ok((limit_solution(map, &fp, &live, &sol, opts.info()), fp))
+    let s = limit_solution(map, &fp, &live, &sol, opts.info());
+    Ok((cleaned_up(map, &fp, &dead, &live, s, &sol, opts), fp))
+}
+
+/// The cleanup pass: when an interior point's collapse multiplier fails its certificate (or
+/// the solver says it stopped at reduced accuracy), a primal simplex from that point's active
+/// set ([`lp::crossover`]) to an optimal vertex, whose λ and mechanism [`limit_result`] then
+/// certifies again. Where that fails, the uncertified result stays, with a note saying so.
+fn cleaned_up(
+    map: &KinematicMap,
+    fp: &ForceProgram,
+    dead: &[f64],
+    live: &[f64],
+    s: LimitSolution,
+    sol: &LpSolution,
+    opts: &SolverOptions,
+) -> LimitSolution {
+    if !opts.cleanup || !opts.method.is_interior() || !fp.cones.is_empty() {
+        return s;
+    }
+    let dot = |f: &[f64]| Some(f.iter().zip(&s.mechanism).map(|(a, b)| a * b).sum::<f64>());
+    let failed = limit_certificate(map, &s, dot(dead), dot(live)).is_some_and(|c| !c.ok);
+    if !(failed || sol.reduced_accuracy) || s.status != LimitStatus::Collapse {
+        return s;
+    }
+    match lp::crossover(&fp.lp, sol, opts) {
+        Ok(vertex) => {
+            let mut c = limit_solution(map, fp, live, &vertex, s.solver.clone());
+            c.iterations += s.iterations;
+            c.note = "cleaned up: a primal simplex from the interior point's active set to a vertex (crossover)".into();
+            c
+        }
+        Err(e) => LimitSolution {
+            note: format!("the cleanup pass failed: {e}"),
+            ..s
+        },
+    }
 }
 
 /// The static program again with crushing polygons reaching further (×64 each time, at last
@@ -234,6 +272,7 @@ pub fn limit_solution(
         solver: solver.clone(),
         least: None,
         note: String::new(),
+        reduced_accuracy: sol.reduced_accuracy,
     };
     match status {
         LpStatus::Unbounded => return none(LimitStatus::Locked),
@@ -263,6 +302,7 @@ pub fn limit_solution(
         solver,
         least: None,
         note: String::new(),
+        reduced_accuracy: sol.reduced_accuracy,
     }
 }
 
@@ -404,6 +444,11 @@ pub fn limit_result<S: Assembly>(
         ));
     }
     let certificate = limit_certificate(map, s, wd, wl);
+    if certificate.is_none() && s.reduced_accuracy && s.lambda.is_some() {
+        message = format!(
+            "NOT CERTIFIED (the solver stopped at reduced accuracy; try another --method): {message}"
+        );
+    }
     if let Some(c) = certificate.as_ref().filter(|c| !c.ok) {
         message = format!(
             "NOT CERTIFIED (gap {:.1e}, admissibility {:.1e}: the solver stopped short of the optimum; try another --method or a tighter --solver-tolerance): {message}",

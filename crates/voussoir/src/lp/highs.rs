@@ -193,6 +193,7 @@ impl Backend for Highs {
                         col_dual: vec![],
                         iterations,
                         dual_objective: f64::NAN,
+                        reduced_accuracy: false,
                     },
                     basis: None,
                 });
@@ -206,6 +207,7 @@ impl Backend for Highs {
                 col_dual: s.dual_columns().to_vec(),
                 iterations,
                 dual_objective: f64::NAN,
+                reduced_accuracy: false,
             };
             let basis = if o.method.is_simplex() {
                 let mut cs = vec![0i32; lp.num_cols()];
@@ -224,5 +226,135 @@ impl Backend for Highs {
             };
             return Ok(Solved { solution, basis });
         }
+    }
+}
+
+/// HiGHS's presolve as a service to a backend that has none (Clarabel): the reduced program,
+/// and the way back from its solution to one of the original program (HiGHS's postsolve,
+/// which takes a primal-dual pair without a basis, as from an interior point).
+pub struct Presolved {
+    model: highs::Model,
+    /// The reduced program.
+    pub lp: LinearProgram,
+}
+
+/// Presolve `lp` with HiGHS. `None` when presolve did not reduce it, or concluded on its own
+/// (infeasible, unbounded, an error): the caller then solves `lp` as it is, so that such a
+/// conclusion comes from the solver on the original program.
+pub fn presolve(lp: &LinearProgram, o: &SolverOptions) -> Result<Option<Presolved>> {
+    use highs_sys::*;
+    let mut model = build(lp)?;
+    model.make_quiet();
+    opt(&mut model, "output_flag", o.log)?;
+    if o.log {
+        opt(&mut model, "log_to_console", true)?;
+        opt(&mut model, "presolve_rule_logging", true)?;
+    }
+    opt(&mut model, "presolve", "on")?;
+    opt(&mut model, "random_seed", 0)?;
+    opt(&mut model, "threads", o.threads.max(1) as i32)?;
+    // HiGHS takes tolerances of 1e-10 and more; the interior point after it may be asked for less.
+    let tol = o.feasibility_tolerance.clamp(1e-10, 1e-4);
+    opt(&mut model, "primal_feasibility_tolerance", tol)?;
+    opt(&mut model, "dual_feasibility_tolerance", tol)?;
+    let p = model.as_mut_ptr();
+    // SAFETY: `p` is the live HiGHS instance owned by `model`; the arrays handed to
+    // Highs_getPresolvedLp have the sizes HiGHS reports for the presolved program.
+    unsafe {
+        if Highs_presolve(p) != kHighsStatusOk || Highs_getModelStatus(p) != kHighsModelStatusNotset
+        {
+            return Ok(None);
+        }
+        let (nc, nr, nz) = (
+            Highs_getPresolvedNumCol(p),
+            Highs_getPresolvedNumRow(p),
+            Highs_getPresolvedNumNz(p),
+        );
+        if nc <= 0 || (nc as usize == lp.num_cols() && nr as usize == lp.num_rows()) {
+            return Ok(None);
+        }
+        let (ncu, nru, nzu) = (nc as usize, nr as usize, nz as usize);
+        let (mut c, mut cl, mut cu) = (vec![0.0; ncu], vec![0.0; ncu], vec![0.0; ncu]);
+        let (mut rl, mut ru) = (vec![0.0; nru], vec![0.0; nru]);
+        let mut start = vec![0 as HighsInt; ncu + 1];
+        let (mut index, mut value) = (vec![0 as HighsInt; nzu], vec![0.0; nzu]);
+        let (mut gc, mut gr, mut gz, mut sense, mut offset) = (0, 0, 0, 0, 0.0);
+        let got = Highs_getPresolvedLp(
+            p,
+            kHighsMatrixFormatColwise,
+            &mut gc,
+            &mut gr,
+            &mut gz,
+            &mut sense,
+            &mut offset,
+            c.as_mut_ptr(),
+            cl.as_mut_ptr(),
+            cu.as_mut_ptr(),
+            rl.as_mut_ptr(),
+            ru.as_mut_ptr(),
+            start.as_mut_ptr(),
+            index.as_mut_ptr(),
+            value.as_mut_ptr(),
+            std::ptr::null_mut(),
+        );
+        if got == kHighsStatusError || gc != nc || gr != nr || gz != nz {
+            return Ok(None);
+        }
+        start[ncu] = nz;
+        let reduced = LinearProgram {
+            maximise: sense == kHighsObjSenseMaximize,
+            cost: c,
+            col_lower: cl,
+            col_upper: cu,
+            row_lower: rl,
+            row_upper: ru,
+            col_start: start.into_iter().map(|s| s as usize).collect(),
+            row_index: index.into_iter().map(|i| i as usize).collect(),
+            value,
+        };
+        Ok(Some(Presolved { model, lp: reduced }))
+    }
+}
+
+impl Presolved {
+    /// The solution of the original program from an optimal one of the reduced program (its
+    /// objective recomputed on the original; no dual objective, as from HiGHS's own solves).
+    /// `None` when HiGHS cannot postsolve it.
+    pub fn postsolve(mut self, original: &LinearProgram, s: &LpSolution) -> Option<LpSolution> {
+        use highs_sys::*;
+        let p = self.model.as_mut_ptr();
+        let (n, m) = (original.num_cols(), original.num_rows());
+        let (mut x, mut cd, mut rv, mut rd) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; m], vec![0.0; m]);
+        // SAFETY: `p` is the live HiGHS instance that presolved `original`; the solution has
+        // the reduced program's sizes (checked) and the output arrays the original's.
+        unsafe {
+            if s.x.len() != self.lp.num_cols()
+                || s.col_dual.len() != self.lp.num_cols()
+                || s.row_dual.len() != self.lp.num_rows()
+                || Highs_postsolve(p, s.x.as_ptr(), s.col_dual.as_ptr(), s.row_dual.as_ptr())
+                    == kHighsStatusError
+                || Highs_getSolution(
+                    p,
+                    x.as_mut_ptr(),
+                    cd.as_mut_ptr(),
+                    rv.as_mut_ptr(),
+                    rd.as_mut_ptr(),
+                ) == kHighsStatusError
+            {
+                return None;
+            }
+        }
+        let objective = original.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
+        Some(LpSolution {
+            status: LpStatus::Optimal,
+            objective,
+            x,
+            row_dual: rd,
+            col_dual: cd,
+            iterations: s.iterations,
+            dual_objective: f64::NAN,
+            reduced_accuracy: s.reduced_accuracy,
+        })
     }
 }

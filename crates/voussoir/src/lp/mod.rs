@@ -195,6 +195,13 @@ impl Method {
     pub fn is_simplex(self) -> bool {
         matches!(self, Method::DualSimplex | Method::PrimalSimplex)
     }
+    /// Whether the method ends at an interior (non-vertex) point, without crossover.
+    pub fn is_interior(self) -> bool {
+        matches!(
+            self,
+            Method::IpmNoCrossover | Method::Pdlp | Method::Clarabel
+        )
+    }
 }
 
 /// Solver settings: one documented struct with defaults (Clarabel's habit).
@@ -209,6 +216,9 @@ pub struct SolverOptions {
     pub threads: usize,
     /// Let the backend print its own log on standard output (diagnostics; off by default).
     pub log: bool,
+    /// After an interior point whose result an analysis cannot certify, run the cleanup pass
+    /// ([`crossover`] to an optimal vertex). On by default.
+    pub cleanup: bool,
 }
 
 impl Default for SolverOptions {
@@ -220,6 +230,7 @@ impl Default for SolverOptions {
             feasibility_tolerance: 1e-9,
             threads: 1,
             log: false,
+            cleanup: true,
         }
     }
 }
@@ -255,6 +266,10 @@ pub struct LpSolution {
     /// solver gives none: HiGHS's simplex, whose optimal bases have no gap). For a program with
     /// cones it is the value the dual side certifies, cone terms included.
     pub dual_objective: f64,
+    /// The solver stopped at reduced accuracy (Clarabel's "almost solved"): optimal only to a
+    /// looser tolerance. The analyses certify such a solution themselves or say that it is
+    /// not certified.
+    pub reduced_accuracy: bool,
 }
 
 /// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.
@@ -382,6 +397,80 @@ pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
             Err(_) => backend.solve(lp, &[], opts, None)?.solution,
         },
     })
+}
+
+/// The cleanup pass after an interior point that stopped short: a short primal simplex from
+/// the interior point's active set. The `m` columns and rows (m = rows of `lp`) farthest from
+/// their bounds relative to their duals start basic (free columns first), every other one
+/// nonbasic at its nearer bound; HiGHS repairs a singular start and ends at an optimal vertex,
+/// whose duals are exact to the simplex tolerances.
+pub fn crossover(
+    lp: &LinearProgram,
+    start: &LpSolution,
+    opts: &SolverOptions,
+) -> Result<LpSolution> {
+    let (n, m) = (lp.num_cols(), lp.num_rows());
+    if start.x.len() != n || start.col_dual.len() != n || start.row_dual.len() != m {
+        return Err(Error::Solver(
+            "cleanup: the interior point does not fit the program".into(),
+        ));
+    }
+    let activity = lp.row_activity(&start.x);
+    // How basic a variable looks: its distance to the nearer bound over the size of its dual.
+    let score = |v: f64, lo: f64, hi: f64, dual: f64| {
+        if lo == f64::NEG_INFINITY && hi == f64::INFINITY {
+            return f64::INFINITY;
+        }
+        let gap = (v - lo).abs().min((hi - v).abs());
+        gap / (dual.abs() + 1e-300)
+    };
+    let nearer = |v: f64, lo: f64, hi: f64| {
+        if lo == f64::NEG_INFINITY && hi == f64::INFINITY {
+            BasisStatus::Zero
+        } else if (v - lo).abs() <= (hi - v).abs() {
+            BasisStatus::Lower
+        } else {
+            BasisStatus::Upper
+        }
+    };
+    let mut order: Vec<(f64, usize)> = (0..n)
+        .map(|j| {
+            let x = start.x[j];
+            (
+                score(x, lp.col_lower[j], lp.col_upper[j], start.col_dual[j]),
+                j,
+            )
+        })
+        .chain((0..m).map(|i| {
+            let r = activity[i];
+            (
+                score(r, lp.row_lower[i], lp.row_upper[i], start.row_dual[i]),
+                n + i,
+            )
+        }))
+        .collect();
+    order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    let mut basis = Basis {
+        cols: (0..n)
+            .map(|j| nearer(start.x[j], lp.col_lower[j], lp.col_upper[j]))
+            .collect(),
+        rows: (0..m)
+            .map(|i| nearer(activity[i], lp.row_lower[i], lp.row_upper[i]))
+            .collect(),
+    };
+    for &(_, k) in order.iter().take(m) {
+        if k < n {
+            basis.cols[k] = BasisStatus::Basic;
+        } else {
+            basis.rows[k - n] = BasisStatus::Basic;
+        }
+    }
+    let o = SolverOptions {
+        method: Method::PrimalSimplex,
+        ..*opts
+    };
+    let mut b = Some(basis);
+    solve_warm(lp, &o, &mut b)
 }
 
 /// Solve `lp` starting from `basis` (a basis of the previous program of the same shape, if

@@ -332,3 +332,40 @@ fn an_interior_point_stopped_short_is_cleaned_up_by_crossover() {
     assert!(r.message.contains("cleaned up"), "{}", r.message);
     assert!(!r.message.contains("NOT CERTIFIED"), "{}", r.message);
 }
+
+/// Issue 18: a no-sliding running-bond wall of 2,178 units (33 courses of 66; 26,000 force-LP
+/// columns) goes through HiGHS's presolve before Clarabel. Its collapse under the tilting-table
+/// load is the whole wall overturning about its right toe, λ = B/H = 66·0.25 / (33·0.055) =
+/// 9.090909… (closed form); with and without presolve the λ is that to 1e-7, certified.
+#[test]
+fn a_presolved_interior_point_gives_the_closed_form_collapse_of_a_large_wall() {
+    use voussoir::bench::wall_of;
+    use voussoir::generate::wall;
+    use voussoir::lp::clarabel::{presolve_pays, PRESOLVE_MIN_COLUMNS};
+    use voussoir::lp::Method;
+    let spec = wall_of(2178, LiveLoad::Horizontal);
+    assert_eq!((spec.courses, spec.units), (33, 66));
+    let st = Structure::new(&wall(&spec).unwrap(), BuildOptions::default()).unwrap();
+    let exact = 66.0 * 0.25 / (33.0 * 0.055);
+    for presolve in [true, false] {
+        let o = SolverOptions {
+            method: Method::Clarabel,
+            presolve,
+            ..SolverOptions::default()
+        };
+        let r = limit(&st, &o).unwrap();
+        let l = r.load_multiplier.unwrap();
+        assert!((l - exact).abs() <= 1e-7 * exact, "presolve {presolve}: λ {l}");
+        let c = r.certificate.expect("a collapse has a certificate");
+        assert!(c.ok, "presolve {presolve}: {c:?}");
+        assert!(!r.message.contains("cleaned up"), "{}", r.message);
+    }
+    let lp = voussoir::programs::limit_force_program(
+        &voussoir::discretize::KinematicMap::new(&st),
+        &st.load_vector(false),
+        &st.load_vector(true),
+    )
+    .lp;
+    assert!(lp.num_cols() >= PRESOLVE_MIN_COLUMNS);
+    assert!(presolve_pays(&lp), "the wall's limit LP is not presolved");
+}

@@ -226,6 +226,19 @@ fn overhanging_block_that_stands_only_when_pushed_is_not_a_collapse() {
     assert!(r.least_load_multiplier.is_none_or(|m| m <= 0.0));
 }
 
+/// The paper's arch with a live load over its whole span.
+fn paper_arch_with_full_live_load() -> Structure {
+    Structure::new(
+        &arch(&ArchSpec {
+            live: LiveLoad::Full,
+            ..ArchSpec::default()
+        })
+        .unwrap(),
+        BuildOptions::default(),
+    )
+    .unwrap()
+}
+
 /// Issue 18, item 3: every collapse multiplier carries its certificate, and one the solver did
 /// not reach is said to be not certified. The paper arch (λ = 0.4346) is certified with the
 /// simplex and with Clarabel; the same solution with λ moved 1 % off the kinematic multiplier
@@ -236,15 +249,7 @@ fn collapse_multipliers_carry_their_certificate_and_a_short_one_is_flagged() {
     use voussoir::analysis::limit::{limit_result, solve_limit};
     use voussoir::discretize::KinematicMap;
     use voussoir::lp::Method;
-    let st = Structure::new(
-        &arch(&ArchSpec {
-            live: LiveLoad::Full,
-            ..ArchSpec::default()
-        })
-        .unwrap(),
-        BuildOptions::default(),
-    )
-    .unwrap();
+    let st = paper_arch_with_full_live_load();
     for method in [Method::DualSimplex, Method::Clarabel] {
         let o = SolverOptions {
             method,
@@ -284,21 +289,13 @@ fn collapse_multipliers_carry_their_certificate_and_a_short_one_is_flagged() {
 
 /// The cleanup pass (issue 18): an interior point stopped early (Clarabel at a tolerance of
 /// 1e-3) leaves a collapse multiplier of the paper's arch that fails its certificate; with the
-/// cleanup pass on (the default) a primal simplex from that point's active set ends at a vertex, whose
-/// λ equals the dual simplex's to 1e-9 and the paper's 0.4346 to its 4 digits, certified, with
+/// cleanup pass on (the default) a primal simplex from that point's active set ends at a
+/// vertex, whose λ equals the dual simplex's to 1e-9 and the paper's 0.4346 to its 4 digits, certified, with
 /// a note saying how it was obtained.
 #[test]
 fn an_interior_point_stopped_short_is_cleaned_up_by_crossover() {
     use voussoir::lp::Method;
-    let st = Structure::new(
-        &arch(&ArchSpec {
-            live: LiveLoad::Full,
-            ..ArchSpec::default()
-        })
-        .unwrap(),
-        BuildOptions::default(),
-    )
-    .unwrap();
+    let st = paper_arch_with_full_live_load();
     let exact = limit(&st, &SolverOptions::default())
         .unwrap()
         .load_multiplier
@@ -355,7 +352,10 @@ fn a_presolved_interior_point_gives_the_closed_form_collapse_of_a_large_wall() {
         };
         let r = limit(&st, &o).unwrap();
         let l = r.load_multiplier.unwrap();
-        assert!((l - exact).abs() <= 1e-7 * exact, "presolve {presolve}: λ {l}");
+        assert!(
+            (l - exact).abs() <= 1e-7 * exact,
+            "presolve {presolve}: λ {l}"
+        );
         let c = r.certificate.expect("a collapse has a certificate");
         assert!(c.ok, "presolve {presolve}: {c:?}");
         assert!(!r.message.contains("cleaned up"), "{}", r.message);

@@ -182,6 +182,13 @@ pub fn solve_limit_nonassociative<S: Assembly>(
     opts: &SolverOptions,
     o: &NonAssociativeOptions,
 ) -> Result<(Option<f64>, Iterated<LimitSolution>)> {
+    // No cleanup pass inside the iteration: each step is a fixed-point update, and a vertex in
+    // place of the interior point changes the path the iteration takes (it no longer reached a
+    // multiplier in one settled capacity step); the final result is certified as a whole.
+    let opts = &SolverOptions {
+        cleanup: false,
+        ..*opts
+    };
     iterate(
         map,
         o,

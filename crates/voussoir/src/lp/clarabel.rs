@@ -26,7 +26,7 @@ impl Backend for Clarabel {
         let solution = if cones.is_empty() && o.presolve && presolve_pays(lp) {
             solve_presolved(lp, o)?
         } else {
-            solve_clarabel(lp, cones, o)?
+            solve_clarabel(lp, cones, o, large(lp, cones))?
         };
         Ok(Solved {
             solution,
@@ -45,7 +45,7 @@ impl Backend for Clarabel {
         o: &SolverOptions,
     ) -> Result<Solved> {
         Ok(Solved {
-            solution: solve_clarabel_with_cones(lp, o, &[], quadratic)?,
+            solution: solve_clarabel_with_cones(lp, o, &[], quadratic, false)?,
             basis: None,
         })
     }
@@ -56,6 +56,14 @@ impl Backend for Clarabel {
 /// given, so that its duals are Clarabel's own: HiGHS's postsolve without a basis loosened the
 /// duals of a small frictional settlement to a gap of 7e-6 (`tests/nonassociative_settlement`).
 pub const PRESOLVE_MIN_COLUMNS: usize = 20_000;
+
+/// Whether a program is a large plain LP (at least [`PRESOLVE_MIN_COLUMNS`] columns, no
+/// cones), solved with the tighter settings of `solve_clarabel_with_cones`. Small programs keep
+/// Clarabel's defaults: with the tighter ones the non-associative friction iteration on a
+/// 40-block wall cycled among three values instead of converging (`tests/joint_laws_cli.rs`).
+fn large(lp: &LinearProgram, cones: &[Cone3]) -> bool {
+    cones.is_empty() && lp.num_cols() >= PRESOLVE_MIN_COLUMNS
+}
 
 /// Whether an LP goes through HiGHS's presolve before Clarabel: at least
 /// [`PRESOLVE_MIN_COLUMNS`] columns, and every row an equation (the force LPs of no-sliding
@@ -81,21 +89,26 @@ pub fn presolve_pays(lp: &LinearProgram) -> bool {
 fn solve_presolved(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
     // A presolve that fails is no reason not to solve: the program goes to Clarabel as it is.
     if let Ok(Some(pre)) = super::highs::presolve(lp, o) {
-        let reduced = solve_clarabel(&pre.lp, &[], o)?;
+        let reduced = solve_clarabel(&pre.lp, &[], o, true)?;
         if reduced.status == LpStatus::Optimal {
             if let Some(s) = pre.postsolve(lp, &reduced) {
                 return Ok(s);
             }
         }
     }
-    solve_clarabel(lp, &[], o)
+    solve_clarabel(lp, &[], o, true)
 }
 
 /// Solve with Clarabel: `min cᵀx` with `A x + s = b`, `s` in the zero cone (equality rows and
 /// fixed variables) or the non-negative cone (each finite side of a range row or bound). Row
 /// duals are returned with HiGHS's convention (`c − Aᵀy` are the reduced costs of a
 /// minimisation; negated for a maximisation).
-fn solve_clarabel(lp: &LinearProgram, cones: &[Cone3], o: &SolverOptions) -> Result<LpSolution> {
+fn solve_clarabel(
+    lp: &LinearProgram,
+    cones: &[Cone3],
+    o: &SolverOptions,
+    tight: bool,
+) -> Result<LpSolution> {
     // Identical columns (same entries, cost and bounds, each free or non-negative, in no cone)
     // are one variable for the solver: in the force LP the two shear forces of a straight
     // joint have the same column (a singular KKT system otherwise, which the cones' extreme
@@ -117,7 +130,7 @@ fn solve_clarabel(lp: &LinearProgram, cones: &[Cone3], o: &SolverOptions) -> Res
                 .map(|(e, b)| (e.into_iter().map(|(j, v)| (map[j], v)).collect(), b))
         })
         .collect();
-    let mut sol = solve_clarabel_with_cones(&reduced, o, &cones, &[])?;
+    let mut sol = solve_clarabel_with_cones(&reduced, o, &cones, &[], tight)?;
     if sol.status == LpStatus::Optimal {
         let mut x = vec![0.0; lp.num_cols()];
         let mut col_dual = vec![0.0; lp.num_cols()];
@@ -175,12 +188,14 @@ fn merge_duplicate_columns(lp: &LinearProgram, keep: &[bool]) -> (LinearProgram,
 }
 
 /// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP) and
-/// a quadratic term `½ xᵀPx` (upper triangle triplets; none for a plain LP or cone program).
+/// a quadratic term `½ xᵀPx` (upper triangle triplets; none for a plain LP or cone program);
+/// `tight`: the settings of a large plain LP ([`large`]).
 fn solve_clarabel_with_cones(
     lp: &LinearProgram,
     o: &SolverOptions,
     socs: &[Cone3],
     quadratic: &[(usize, usize, f64)],
+    tight: bool,
 ) -> Result<LpSolution> {
     use clarabel::algebra::CscMatrix;
     use clarabel::solver::{
@@ -265,8 +280,8 @@ fn solve_clarabel_with_cones(
     // mechanism is read from the duals, and with the default regularisation the 64,000-unit
     // limit LP ended after 73 iterations at a λ 1 % low with a mechanism violating the joints
     // by 3e-3; with these settings it ends after 16 iterations, certified (docs/performance.md).
-    // Programs with cones keep Clarabel's defaults.
-    let plain = socs.is_empty() && quadratic.is_empty();
+    // Programs with cones and small LPs ([`large`]) keep Clarabel's defaults.
+    let plain = tight && socs.is_empty() && quadratic.is_empty();
     let tol = if plain {
         0.1 * o.feasibility_tolerance
     } else {

@@ -341,16 +341,6 @@ pub fn bench_run(
     Ok(Some(row))
 }
 
-/// Time one settlement analysis of a wall of about `n` units (scenario (a)).
-pub fn bench_settle(n: usize, a: &BenchConfig) -> Result<Row> {
-    bench_run(Scenario::Wall, Analysis::Settle, n, a).map(|r| r.expect("walls settle"))
-}
-
-/// Time one limit analysis (tilting-table load) of a wall of about `n` units (scenario (a)).
-pub fn bench_limit(n: usize, a: &BenchConfig) -> Result<Row> {
-    bench_run(Scenario::Wall, Analysis::Limit, n, a).map(|r| r.expect("walls have a limit"))
-}
-
 fn run_on<S: Assembly>(
     st: &S,
     analysis: Analysis,
@@ -470,9 +460,9 @@ fn settle_on<S: Assembly>(st: &S, a: &BenchConfig, opts: &SolverOptions) -> Resu
     Ok(row)
 }
 
-/// The certificate: λ of the static LP against the kinematic multiplier `−F_D·d` of the
-/// mechanism read from its duals (normalised to `F_L·d = 1`), and the mechanism's admissibility
-/// relative to its largest opening.
+/// The certificate is the result's own ([`crate::result::LimitCertificate`]): λ of the static
+/// LP against the kinematic multiplier `−F_D·d` of the mechanism read from its duals, and the
+/// mechanism's admissibility relative to its largest opening.
 fn limit_on<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<Row> {
     let mut row = empty_row(st, "limit");
     let t = Instant::now();
@@ -487,18 +477,14 @@ fn limit_on<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<Row> {
     row.t_solve = secs(t);
     let t = Instant::now();
     let ls = limit_solution(&map, &fp, &live, &sol, opts.info());
-    let (status, lambda, mechanism) = (ls.status, ls.lambda, ls.mechanism.clone());
+    let (status, lambda) = (ls.status, ls.lambda);
     let r = limit_result(st, &map, &ls);
     let json = serde_json::to_string_pretty(&r)
         .map_err(|e| Error::Request(format!("cannot serialise the result: {e}")))?;
     std::hint::black_box(json.len());
     row.t_output = secs(t);
-    if let (Some(l), false) = (lambda, mechanism.is_empty()) {
-        let kin: f64 = -dead.iter().zip(&mechanism).map(|(f, d)| f * d).sum::<f64>();
-        let (open, _) = map.jumps(&mechanism, 0.0);
-        let scale = open.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(1e-300);
-        row.gap = (l - kin).abs() / l.abs().max(1e-12);
-        row.violation = kinematic_violation(&map, &mechanism) / scale;
+    if let Some(c) = &r.certificate {
+        (row.gap, row.violation) = (c.gap, c.admissibility);
     }
     row.outcome = match lambda {
         Some(l) => format!("λ = {l:.6}"),

@@ -72,7 +72,7 @@ fn large(lp: &LinearProgram, cones: &[Cone3]) -> bool {
 /// 4,000 friction-wall units and 1e-2 at 16,000 (measured): those programs go to Clarabel as
 /// they are.
 pub fn presolve_pays(lp: &LinearProgram) -> bool {
-    lp.num_cols() >= PRESOLVE_MIN_COLUMNS
+    large(lp, &[])
         && lp
             .row_lower
             .iter()
@@ -189,7 +189,7 @@ fn merge_duplicate_columns(lp: &LinearProgram, keep: &[bool]) -> (LinearProgram,
 
 /// Solve `lp` with Clarabel, with extra second-order cones appended (none for a plain LP) and
 /// a quadratic term `½ xᵀPx` (upper triangle triplets; none for a plain LP or cone program);
-/// `tight`: the settings of a large plain LP ([`large`]).
+/// `tight`: the settings of a large plain LP ([`large`]; never with cones or a quadratic term).
 fn solve_clarabel_with_cones(
     lp: &LinearProgram,
     o: &SolverOptions,
@@ -281,8 +281,7 @@ fn solve_clarabel_with_cones(
     // limit LP ended after 73 iterations at a λ 1 % low with a mechanism violating the joints
     // by 3e-3; with these settings it ends after 16 iterations, certified (docs/performance.md).
     // Programs with cones and small LPs ([`large`]) keep Clarabel's defaults.
-    let plain = tight && socs.is_empty() && quadratic.is_empty();
-    let tol = if plain {
+    let tol = if tight {
         0.1 * o.feasibility_tolerance
     } else {
         o.feasibility_tolerance
@@ -295,7 +294,7 @@ fn solve_clarabel_with_cones(
         tol_feas: tol,
         time_limit: o.time_limit.unwrap_or(f64::INFINITY),
         max_iter: 500,
-        static_regularization_constant: if plain { 1e-10 } else { 1e-8 },
+        static_regularization_constant: if tight { 1e-10 } else { 1e-8 },
         direct_solve_method: "qdldl".to_string(),
         ..DefaultSettings::default()
     };

@@ -17,9 +17,22 @@ fn opt<V: highs::HighsOptionValue>(m: &mut highs::Model, k: &str, v: V) -> Resul
         .map_err(|e| Error::Solver(format!("HiGHS option {k}: {e:?}")))
 }
 
-fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
+/// The settings every HiGHS run shares: quiet unless `o.log`, deterministic, `o.threads`, and
+/// the feasibility tolerances `tol`.
+fn common(m: &mut highs::Model, o: &SolverOptions, tol: f64) -> Result<()> {
     m.make_quiet();
-    opt(m, "output_flag", false)?;
+    opt(m, "output_flag", o.log)?;
+    if o.log {
+        opt(m, "log_to_console", true)?;
+    }
+    opt(m, "random_seed", 0)?;
+    opt(m, "threads", o.threads.max(1) as i32)?;
+    opt(m, "primal_feasibility_tolerance", tol)?;
+    opt(m, "dual_feasibility_tolerance", tol)
+}
+
+fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
+    common(m, o, o.feasibility_tolerance)?;
     opt(m, "presolve", if o.presolve { "on" } else { "off" })?;
     match o.method {
         Method::DualSimplex => {
@@ -46,16 +59,8 @@ fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
             ))
         }
     }
-    opt(m, "primal_feasibility_tolerance", o.feasibility_tolerance)?;
-    opt(m, "dual_feasibility_tolerance", o.feasibility_tolerance)?;
-    opt(m, "threads", o.threads.max(1) as i32)?;
-    opt(m, "random_seed", 0)?;
     if let Some(t) = o.time_limit {
         opt(m, "time_limit", t)?;
-    }
-    if o.log {
-        opt(m, "output_flag", true)?;
-        opt(m, "log_to_console", true)?;
     }
     Ok(())
 }
@@ -244,19 +249,12 @@ pub struct Presolved {
 pub fn presolve(lp: &LinearProgram, o: &SolverOptions) -> Result<Option<Presolved>> {
     use highs_sys::*;
     let mut model = build(lp)?;
-    model.make_quiet();
-    opt(&mut model, "output_flag", o.log)?;
+    // HiGHS takes tolerances of 1e-10 and more; the interior point after it may be asked for less.
+    common(&mut model, o, o.feasibility_tolerance.clamp(1e-10, 1e-4))?;
     if o.log {
-        opt(&mut model, "log_to_console", true)?;
         opt(&mut model, "presolve_rule_logging", true)?;
     }
     opt(&mut model, "presolve", "on")?;
-    opt(&mut model, "random_seed", 0)?;
-    opt(&mut model, "threads", o.threads.max(1) as i32)?;
-    // HiGHS takes tolerances of 1e-10 and more; the interior point after it may be asked for less.
-    let tol = o.feasibility_tolerance.clamp(1e-10, 1e-4);
-    opt(&mut model, "primal_feasibility_tolerance", tol)?;
-    opt(&mut model, "dual_feasibility_tolerance", tol)?;
     let p = model.as_mut_ptr();
     // SAFETY: `p` is the live HiGHS instance owned by `model`; the arrays handed to
     // Highs_getPresolvedLp have the sizes HiGHS reports for the presolved program.

@@ -75,8 +75,8 @@ fn cleaned_up(
     if !opts.cleanup || !opts.method.is_interior() || !fp.cones.is_empty() {
         return s;
     }
-    let dot = |f: &[f64]| Some(f.iter().zip(&s.mechanism).map(|(a, b)| a * b).sum::<f64>());
-    let failed = limit_certificate(map, &s, dot(dead), dot(live)).is_some_and(|c| !c.ok);
+    let (wd, wl) = load_works(&s.mechanism, dead, live);
+    let failed = limit_certificate(map, &s, wd, wl).is_some_and(|c| !c.ok);
     if !(failed || sol.reduced_accuracy) || s.status != LimitStatus::Collapse {
         return s;
     }
@@ -92,6 +92,15 @@ fn cleaned_up(
             ..s
         },
     }
+}
+
+/// The work of the dead and of the live loads on a mechanism (`None` without one).
+fn load_works(mechanism: &[f64], dead: &[f64], live: &[f64]) -> (Option<f64>, Option<f64>) {
+    if mechanism.is_empty() {
+        return (None, None);
+    }
+    let work = |f: &[f64]| Some(f.iter().zip(mechanism).map(|(a, b)| a * b).sum::<f64>());
+    (work(dead), work(live))
 }
 
 /// The static program again with crushing polygons reaching further (×64 each time, at last
@@ -407,15 +416,7 @@ pub fn limit_result<S: Assembly>(
         s.mechanism.clone()
     };
     let rep = report(st, map, &d, 0.0, &s.pn, &s.pt);
-    let (wd, wl) = if s.mechanism.is_empty() {
-        (None, None)
-    } else {
-        let dot = |f: Vec<f64>| f.iter().zip(&d).map(|(a, b)| a * b).sum::<f64>();
-        (
-            Some(dot(st.load_vector(false))),
-            Some(dot(st.load_vector(true))),
-        )
-    };
+    let (wd, wl) = load_works(&s.mechanism, &st.load_vector(false), &st.load_vector(true));
     let mut message = match (s.status, s.lambda) {
         (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
             "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",

@@ -355,7 +355,7 @@ fn solve_clarabel_with_cones(
             }
         })
         .sum();
-    let objective: f64 = lp.cost.iter().zip(&x).map(|(c, v)| c * v).sum::<f64>() + quad;
+    let objective = lp.objective(&x) + quad;
     Ok(LpSolution {
         status,
         objective,

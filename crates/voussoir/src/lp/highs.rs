@@ -343,10 +343,9 @@ impl Presolved {
                 return None;
             }
         }
-        let objective = original.cost.iter().zip(&x).map(|(c, v)| c * v).sum();
         Some(LpSolution {
             status: LpStatus::Optimal,
-            objective,
+            objective: original.objective(&x),
             x,
             row_dual: rd,
             col_dual: cd,

@@ -82,6 +82,10 @@ impl LinearProgram {
     pub fn num_cols(&self) -> usize {
         self.cost.len()
     }
+    /// The objective `cᵀx` at `x`.
+    pub fn objective(&self, x: &[f64]) -> f64 {
+        self.cost.iter().zip(x).map(|(c, v)| c * v).sum()
+    }
     pub fn num_rows(&self) -> usize {
         self.row_lower.len()
     }
@@ -417,15 +421,16 @@ pub fn crossover(
     }
     let activity = lp.row_activity(&start.x);
     // How basic a variable looks: its distance to the nearer bound over the size of its dual.
+    let free = |lo: f64, hi: f64| lo == f64::NEG_INFINITY && hi == f64::INFINITY;
     let score = |v: f64, lo: f64, hi: f64, dual: f64| {
-        if lo == f64::NEG_INFINITY && hi == f64::INFINITY {
+        if free(lo, hi) {
             return f64::INFINITY;
         }
         let gap = (v - lo).abs().min((hi - v).abs());
         gap / (dual.abs() + 1e-300)
     };
     let nearer = |v: f64, lo: f64, hi: f64| {
-        if lo == f64::NEG_INFINITY && hi == f64::INFINITY {
+        if free(lo, hi) {
             BasisStatus::Zero
         } else if (v - lo).abs() <= (hi - v).abs() {
             BasisStatus::Lower

@@ -92,6 +92,10 @@ pub struct BenchArgs {
     /// Solver time limit per LP, in seconds.
     #[arg(long, value_name = "S")]
     pub time_limit: Option<f64>,
+    /// Friction in the limit analyses of 3D models: the inscribed pyramid (LP, the default) or
+    /// the exact Coulomb cone (a second-order cone per point, Clarabel).
+    #[arg(long, value_enum, default_value = "pyramid")]
+    pub friction_cone: crate::common::FrictionConeArg,
     /// Also time structure building and interface detection alone (no solve) at these sizes.
     #[arg(long, value_delimiter = ',', default_value = "100000")]
     pub geometry_sizes: Vec<usize>,
@@ -119,6 +123,7 @@ impl BenchArgs {
             presolve: !self.no_presolve,
             tolerance: self.solver_tolerance,
             time_limit: self.time_limit,
+            exact_cone: self.friction_cone == crate::common::FrictionConeArg::Exact,
         }
     }
 }

@@ -60,6 +60,9 @@ pub struct BenchConfig {
     pub tolerance: f64,
     /// Solver time limit per LP, seconds.
     pub time_limit: Option<f64>,
+    /// Limit analyses of frictional 3D models with the exact Coulomb cone (a second-order cone
+    /// per point, Clarabel) instead of the inscribed pyramid.
+    pub exact_cone: bool,
 }
 
 impl Default for BenchConfig {
@@ -70,6 +73,7 @@ impl Default for BenchConfig {
             presolve: true,
             tolerance: 1e-9,
             time_limit: None,
+            exact_cone: false,
         }
     }
 }
@@ -112,6 +116,7 @@ fn method_name(m: Method) -> &'static str {
 }
 
 /// One timed run.
+#[derive(Debug)]
 pub struct Row {
     pub scenario: &'static str,
     pub analysis: &'static str,
@@ -358,7 +363,7 @@ fn run_on<S: Assembly>(
     };
     let mut row = match analysis {
         Analysis::Settle => settle_on(st, a, &opts)?,
-        Analysis::Limit => limit_on(st, &opts)?,
+        Analysis::Limit => limit_on(st, &opts, a.exact_cone)?,
     };
     row.method = method_name(method).to_string();
     (row.t_gen, row.t_build, row.t_detect) = phases;
@@ -463,13 +468,17 @@ fn settle_on<S: Assembly>(st: &S, a: &BenchConfig, opts: &SolverOptions) -> Resu
 /// The certificate is the result's own ([`crate::result::LimitCertificate`]): λ of the static
 /// LP against the kinematic multiplier `−F_D·d` of the mechanism read from its duals, and the
 /// mechanism's admissibility relative to its largest opening.
-fn limit_on<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<Row> {
+fn limit_on<S: Assembly>(st: &S, opts: &SolverOptions, exact_cone: bool) -> Result<Row> {
     let mut row = empty_row(st, "limit");
     let t = Instant::now();
     let map = KinematicMap::new(st);
     let dead = st.load_vector(false);
     let live = st.load_vector(true);
-    let fp = programs::limit_force_program(&map, &dead, &live);
+    let fp = if exact_cone {
+        programs::limit_force_program_exact(&map, &dead, &live)
+    } else {
+        programs::limit_force_program(&map, &dead, &live)
+    };
     row.t_assemble = secs(t);
     (row.rows, row.cols, row.nnz) = (fp.lp.num_rows(), fp.lp.num_cols(), fp.lp.num_nonzeros());
     let t = Instant::now();

@@ -450,7 +450,7 @@ fn settle_on<S: Assembly>(st: &S, a: &BenchConfig, opts: &SolverOptions) -> Resu
     row.violation = if s.mechanism.is_empty() {
         f64::NAN
     } else {
-        kinematic_violation(&map, &s.mechanism) / u
+        kinematic_violation(&map, &s.mechanism, 1.0) / u
     };
     // |primal − dual| relative to the larger of the two and of the work scale W·u (total
     // weight times the settlement): where the optimum is 0 (scenario (a): the wall bridges the

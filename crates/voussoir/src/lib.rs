@@ -48,6 +48,7 @@ pub mod model3d;
 pub mod programs;
 pub mod programs_identify;
 pub mod result;
+pub mod scale;
 pub mod settlement_input;
 pub mod structure;
 pub mod sweep;

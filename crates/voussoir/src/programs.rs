@@ -237,21 +237,9 @@ fn crushing_joints(
     })
 }
 
-/// The force scale of a load vector: the sum of the magnitudes of its block forces (the total
-/// weight, for the dead loads).
+/// The force scale of a load vector ([`crate::scale::force_scale`]).
 fn force_scale(map: &KinematicMap, loads: &[f64]) -> f64 {
-    let nd = map.dofs_per_block;
-    let translations = if nd == 3 { 2 } else { 3 };
-    loads
-        .chunks(nd)
-        .map(|f| {
-            f[..translations.min(f.len())]
-                .iter()
-                .map(|v| v * v)
-                .sum::<f64>()
-                .sqrt()
-        })
-        .sum()
+    crate::scale::force_scale(map.dofs_per_block, loads)
 }
 
 /// Where the vertices of a joint's crushing polygon lie, for `k` facets: at 0 and at forces

@@ -509,7 +509,7 @@ fn static_lambda_equals_kinematic_lambda_and_the_mechanism_is_admissible() {
                 d[0].abs().max(d[1].abs()).max(d[2].abs() * size(&m))
             })
             .fold(0.0f64, f64::max);
-        let v = kinematic_violation(&l.map, &l.mechanism);
+        let v = kinematic_violation(&l.map, &l.mechanism, 0.0);
         prop_assert!(
             v <= REL * big,
             "kinematic violation {v} (mechanism size {big})"

@@ -226,9 +226,22 @@ pub fn canonical_mechanism(
         copts.dual_threshold,
     );
     let (area_cost, area_const) = programs::crack_area_cost(map, weights, klp.num_cols());
+    // The crack area of a mechanism, with round-off (below the opening tolerance of the sum of
+    // its terms' magnitudes, crate::scale) reported as zero: a rigid motion cracks nothing.
     let area_of = |d: &[f64]| -> f64 {
         let y: Vec<f64> = d.iter().map(|v| -v).collect();
-        dot(&area_cost[..nd], &y) + area_const
+        let a = dot(&area_cost[..nd], &y) + area_const;
+        let size: f64 = area_cost[..nd]
+            .iter()
+            .zip(&y)
+            .map(|(c, v)| (c * v).abs())
+            .sum::<f64>()
+            + area_const.abs();
+        if a.abs() <= crate::scale::OPEN_TOLERANCE * size {
+            0.0
+        } else {
+            a
+        }
     };
     let crack_area_solver = area_of(raw);
     // Stage 2: least crack area on the optimal face.

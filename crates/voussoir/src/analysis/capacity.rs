@@ -107,8 +107,7 @@ pub fn closing_joints<S: Assembly>(st: &S, map: &KinematicMap, d: &[f64]) -> Vec
         return vec![];
     }
     let (rate, _) = map.jumps(d, 0.0);
-    let scale = rate.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-    let tol = OPEN_TOLERANCE * scale;
+    let tol = OPEN_TOLERANCE * crate::scale::motion_scale(map, d, 0.0);
     let mut out: Vec<usize> = map
         .points
         .iter()

@@ -319,8 +319,7 @@ pub fn incremental_with(
             f64::INFINITY
         };
         let (rate, _) = map.jumps(d, 0.0);
-        let rscale = rate.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-        let rtol = OPEN_TOLERANCE * rscale;
+        let rtol = OPEN_TOLERANCE * crate::scale::motion_scale(&map, d, 0.0);
         let mut alpha = alpha_step;
         for k in 0..map.num_points() {
             if map.gap[k] > 0.0 && rate[k] < -rtol {
@@ -468,7 +467,7 @@ pub fn incremental_with(
 /// Whether mechanism `d` closes an open point.
 fn closes_a_gap(map: &KinematicMap, d: &[f64]) -> bool {
     let (rate, _) = map.jumps(d, 0.0);
-    let tol = OPEN_TOLERANCE * rate.iter().fold(0.0f64, |m, o| m.max(o.abs()));
+    let tol = OPEN_TOLERANCE * crate::scale::motion_scale(map, d, 0.0);
     (0..map.num_points()).any(|k| map.gap[k] > 0.0 && rate[k] < -tol)
 }
 

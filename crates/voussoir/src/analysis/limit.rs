@@ -76,7 +76,8 @@ fn cleaned_up(
         return s;
     }
     let (wd, wl) = load_works(&s.mechanism, dead, live);
-    let failed = limit_certificate(map, &s, wd, wl).is_some_and(|c| !c.ok);
+    let unit = crate::scale::lambda_unit(map.dofs_per_block, dead, live);
+    let failed = limit_certificate(map, &s, wd, wl, unit).is_some_and(|c| !c.ok);
     if !(failed || sol.reduced_accuracy) || s.status != LimitStatus::Collapse {
         return s;
     }
@@ -210,6 +211,7 @@ pub fn solve_limit_conic<S: Assembly>(
     let solver = crate::lp::SolverInfo {
         solver: crate::lp::cone_backend(&o).name().to_string(),
         method: crate::lp::Method::Clarabel,
+        tried: Vec::new(),
     };
     // Crushing cones (2D) have a polygon to check them by; the 3D friction cones do not.
     let crushing = map.tangents_per_point == 1 && !fp.cones.is_empty();
@@ -271,6 +273,12 @@ pub fn limit_solution(
     solver: SolverInfo,
 ) -> LimitSolution {
     let (status, x, row_dual, iterations) = (sol.status, &sol.x, &sol.row_dual, sol.iterations);
+    // The method that answered, where the requested one failed (lp::fallback_chain).
+    let solver = if sol.tried.is_empty() {
+        solver
+    } else {
+        sol.solver_info()
+    };
     let none = |status| LimitSolution {
         status,
         lambda: None,
@@ -289,6 +297,24 @@ pub fn limit_solution(
         LpStatus::Optimal => {}
     }
     let lambda = x[fp.lambda.expect("program has λ")];
+    // A multiplier within round-off of zero is zero (crate::scale::LAMBDA_ZERO): the structure
+    // stands with no reserve, as the exact answer says; only a clearly negative one means
+    // that it cannot stand.
+    let unit = if fp.force_scale > 0.0 {
+        let fl = crate::scale::force_scale(map.dofs_per_block, live);
+        if fl > 0.0 && (fp.force_scale / fl).is_finite() {
+            fp.force_scale / fl
+        } else {
+            1.0
+        }
+    } else {
+        1.0
+    };
+    let lambda = if lambda.abs() <= crate::scale::LAMBDA_ZERO * unit {
+        0.0
+    } else {
+        lambda
+    };
     let (pn, pt) = fp.forces(x);
     let y = &row_dual[..map.num_dofs];
     let wl: f64 = live.iter().zip(y).map(|(a, b)| a * b).sum();
@@ -377,6 +403,7 @@ fn limit_certificate(
     s: &LimitSolution,
     wd: Option<f64>,
     wl: Option<f64>,
+    lambda_unit: f64,
 ) -> Option<LimitCertificate> {
     let plain = map.shear_limits.is_none()
         && map
@@ -389,11 +416,13 @@ fn limit_certificate(
     if !plain || s.mechanism.is_empty() || wl.abs() < 1e-300 {
         return None;
     }
-    let gap = (l + wd / wl).abs() / l.abs().max(1e-12);
-    let (open, _) = map.jumps(&s.mechanism, 0.0);
-    let scale = open.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    // On the problem's own scale (crate::scale): λ against the mechanism's λ relative to
+    // max(|λ|, 1e-3 λ_unit); the mechanism, a rate with the supports held still (support
+    // motions play no part in a collapse mechanism), against its own motion scale.
+    let gap = crate::scale::relative_gap(l, -wd / wl, lambda_unit);
+    let scale = crate::scale::motion_scale(map, &s.mechanism, 0.0);
     let admissibility = if scale > 0.0 {
-        crate::analysis::settlement::kinematic_violation(map, &s.mechanism) / scale
+        crate::analysis::settlement::kinematic_violation(map, &s.mechanism, 0.0) / scale
     } else {
         0.0
     };
@@ -416,7 +445,9 @@ pub fn limit_result<S: Assembly>(
         s.mechanism.clone()
     };
     let rep = report(st, map, &d, 0.0, &s.pn, &s.pt);
-    let (wd, wl) = load_works(&s.mechanism, &st.load_vector(false), &st.load_vector(true));
+    let (dead, live) = (st.load_vector(false), st.load_vector(true));
+    let (wd, wl) = load_works(&s.mechanism, &dead, &live);
+    let unit = crate::scale::lambda_unit(map.dofs_per_block, &dead, &live);
     let mut message = match (s.status, s.lambda) {
         (LimitStatus::NoEquilibrium, Some(l)) if s.least.is_some_and(|m| m > 0.0) => format!(
             "{}: it stands only with the live load, for λ between {:.6} and {l:.6}",
@@ -444,7 +475,7 @@ pub fn limit_result<S: Assembly>(
             closing.iter().map(|j| j.to_string()).collect::<Vec<_>>().join(", ")
         ));
     }
-    let certificate = limit_certificate(map, s, wd, wl);
+    let certificate = limit_certificate(map, s, wd, wl, unit);
     if certificate.is_none() && s.reduced_accuracy && s.lambda.is_some() {
         message = format!(
             "NOT CERTIFIED (the solver stopped at reduced accuracy; try another --method): {message}"
@@ -458,6 +489,9 @@ pub fn limit_result<S: Assembly>(
     }
     if !s.note.is_empty() {
         message = format!("{message} ({})", s.note);
+    }
+    if let Some(n) = s.solver.fallback_note() {
+        message = format!("{message} ({n})");
     }
     LimitResult {
         status: s.status,

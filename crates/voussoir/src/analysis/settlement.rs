@@ -79,11 +79,12 @@ pub fn solve_settlement<S: Assembly>(
         return Ok(SettlementSolution::without_mechanism(
             status,
             map,
-            opts.info(),
+            primal.solver_info(),
         ));
     }
     let fp = programs::settlement_force_program(map, &dead);
     let dual = fp.solve(opts)?;
+    let solver = primal.solver_info().merged(&dual.solver_info());
     let (pn, pt, dval) = if dual.status == LpStatus::Optimal {
         let (pn, pt) = fp.forces(&dual.x);
         (pn, pt, dual.objective)
@@ -97,7 +98,7 @@ pub fn solve_settlement<S: Assembly>(
         pt,
         primal: mp.objective_sign * primal.objective,
         dual: dval,
-        solver: opts.info(),
+        solver,
     })
 }
 
@@ -121,6 +122,7 @@ pub fn solve_settlement_conic<S: Assembly>(
     let solver = lp::SolverInfo {
         solver: lp::cone_backend(&o).name().to_string(),
         method: lp::Method::Clarabel,
+        tried: Vec::new(),
     };
     let mut s = settlement_from_force_solution(st, map, &fp, &sol, solver);
     if s.status == SettlementStatus::Mechanism && sol.dual_objective.is_finite() {
@@ -189,12 +191,15 @@ pub fn settlement_result<S: Assembly>(
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
-    // Scale for the gap: total dead load times the largest prescribed motion.
-    let wtot: f64 = st.load_vector(false).iter().map(|f| f.abs()).sum();
-    let umax = largest_support_motion(st);
-    let floor = (1e-9 * wtot * umax).max(1e-300);
-    let gap = (s.primal - s.dual).abs() / s.primal.abs().max(s.dual.abs()).max(floor);
-    let gap = if gap.is_nan() { f64::INFINITY } else { gap };
+    // The gap on the problem's own work scale (crate::scale): the total dead load times the
+    // largest displacement the support motions give a contact point.
+    let wscale = crate::scale::settlement_work_scale(map, &st.load_vector(false));
+    let gap = crate::scale::relative_gap(s.primal, s.dual, wscale);
+    // Works of round-off size on that scale (a rigid settlement's) are reported as zero.
+    let (primal, dual) = (
+        crate::result::clean(s.primal, wscale),
+        crate::result::clean(s.dual, wscale),
+    );
     let complementarity = rep
         .openings
         .iter()
@@ -208,6 +213,9 @@ pub fn settlement_result<S: Assembly>(
         .fold(0.0f64, |m, (a, b)| m.max((a + b).abs()));
     let ok = gap <= GAP_TOLERANCE;
     let mut message = s.status.sentence().to_string();
+    if let Some(n) = s.solver.fallback_note() {
+        message = format!("{message} ({n})");
+    }
     if !ok {
         message = format!(
             "WARNING: the duality gap {gap:.3e} exceeds {GAP_TOLERANCE:.0e}: the result is not certified; {message}"
@@ -217,12 +225,12 @@ pub fn settlement_result<S: Assembly>(
         status: s.status,
         message,
         solver: s.solver.clone(),
-        work_dead_loads: Some(s.primal),
-        work_reactions: Some(s.dual),
+        work_dead_loads: Some(primal),
+        work_reactions: Some(dual),
         duality_gap: Some(gap),
         certificate: Some(Certificate {
-            primal: s.primal,
-            dual: s.dual,
+            primal,
+            dual,
             relative_gap: gap,
             complementarity,
             equilibrium_residual,
@@ -257,11 +265,12 @@ pub enum SettlementForm {
 }
 
 /// Largest violation of kinematic admissibility of block motions `d` (with the prescribed
-/// support motions): interpenetration `max(0, −(N d + g_n))` at contact points, `|N d + g_n|`
-/// at bilateral points, and sliding `|T d + g_t|` on joints without friction, over points that
-/// carry force.
-pub fn kinematic_violation(map: &KinematicMap, d: &[f64]) -> f64 {
-    let (open, slide) = map.jumps(d, 1.0);
+/// support motions scaled by `support_scale`: 1 for a settlement, 0 for a collapse mechanism,
+/// which is a rate with the supports held still): interpenetration `max(0, −(N d + g_n))` at
+/// contact points, `|N d + g_n|` at bilateral points, and sliding `|T d + g_t|` on joints
+/// without friction, over points that carry force.
+pub fn kinematic_violation(map: &KinematicMap, d: &[f64], support_scale: f64) -> f64 {
+    let (open, slide) = map.jumps(d, support_scale);
     let mut v = 0.0f64;
     for k in 0..map.num_points() {
         // A point with a gap (an existing crack) may close it, not pass through it.
@@ -296,6 +305,12 @@ pub fn settlement_from_force_solution<S: Assembly>(
     sol: &lp::LpSolution,
     solver: lp::SolverInfo,
 ) -> SettlementSolution {
+    // The method that answered, where the requested one failed (lp::fallback_chain).
+    let solver = if sol.tried.is_empty() {
+        solver
+    } else {
+        sol.solver_info()
+    };
     let status = match sol.status {
         LpStatus::Optimal => SettlementStatus::Mechanism,
         // No equilibrium under the dead loads: the primal is unbounded.
@@ -353,8 +368,8 @@ pub fn settlement_result_checked<S: Assembly>(
 ) -> SettlementResult<S::D> {
     let mut r = settlement_result(st, map, s);
     if s.status == SettlementStatus::Mechanism {
-        let umax = largest_support_motion(st);
-        let v = kinematic_violation(map, &s.mechanism);
+        let umax = crate::scale::motion_scale(map, &s.mechanism, 1.0);
+        let v = kinematic_violation(map, &s.mechanism, 1.0);
         if v > 1e-6 * umax.max(1e-300) {
             if let Some(c) = r.certificate.as_mut() {
                 c.ok = false;
@@ -543,11 +558,4 @@ impl<S: Assembly> SettlementPath<S> {
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// The largest component of any support's prescribed motion.
-fn largest_support_motion<S: Assembly>(st: &S) -> f64 {
-    (0..st.num_supports())
-        .flat_map(|k| st.support_motion(k).iter())
-        .fold(0.0f64, |m, x| m.max(x.abs()))
 }

@@ -1,7 +1,9 @@
 //! The Clarabel backend: an interior-point method (direct sparse LDLᵀ, QDLDL) for LPs and for
 //! programs with second-order cones (exact crushing domains). The only file that names Clarabel.
 
-use super::{Backend, Basis, Cone3, LinearProgram, LpSolution, LpStatus, Solved, SolverOptions};
+use super::{
+    Backend, Basis, Cone3, LinearProgram, LpSolution, LpStatus, Method, Solved, SolverOptions,
+};
 use crate::error::{Error, Result};
 
 /// The Clarabel backend. It has no basis: warm starts solve from scratch.
@@ -293,7 +295,9 @@ fn solve_clarabel_with_cones(
         tol_gap_rel: tol,
         tol_feas: tol,
         time_limit: o.time_limit.unwrap_or(f64::INFINITY),
-        max_iter: 500,
+        max_iter: o
+            .iteration_limit
+            .map_or(500, |n| n.min(u32::MAX as usize) as u32),
         static_regularization_constant: if tight { 1e-10 } else { 1e-8 },
         direct_solve_method: "qdldl".to_string(),
         ..DefaultSettings::default()
@@ -322,6 +326,8 @@ fn solve_clarabel_with_cones(
             iterations,
             dual_objective: f64::NAN,
             reduced_accuracy: false,
+            method: Method::Clarabel,
+            tried: Vec::new(),
         });
     }
     // Clarabel's z ≥ 0 multiplies `A x + s = b` in `min qᵀx`: q + Aᵀz = 0 in its convention, so the
@@ -366,5 +372,7 @@ fn solve_clarabel_with_cones(
         // Clarabel minimises `sign·cᵀx`; its dual cost is in that sense.
         dual_objective: sign * solver.info.cost_dual,
         reduced_accuracy,
+        method: Method::Clarabel,
+        tried: Vec::new(),
     })
 }

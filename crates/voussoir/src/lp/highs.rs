@@ -62,6 +62,11 @@ fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
     if let Some(t) = o.time_limit {
         opt(m, "time_limit", t)?;
     }
+    if let Some(n) = o.iteration_limit {
+        let n = n.min(i32::MAX as usize) as i32;
+        opt(m, "simplex_iteration_limit", n)?;
+        opt(m, "ipm_iteration_limit", n)?;
+    }
     Ok(())
 }
 
@@ -199,6 +204,8 @@ impl Backend for Highs {
                         iterations,
                         dual_objective: f64::NAN,
                         reduced_accuracy: false,
+                        method: o.method,
+                        tried: Vec::new(),
                     },
                     basis: None,
                 });
@@ -213,6 +220,8 @@ impl Backend for Highs {
                 iterations,
                 dual_objective: f64::NAN,
                 reduced_accuracy: false,
+                method: o.method,
+                tried: Vec::new(),
             };
             let basis = if o.method.is_simplex() {
                 let mut cs = vec![0i32; lp.num_cols()];
@@ -352,6 +361,8 @@ impl Presolved {
             iterations: s.iterations,
             dual_objective: f64::NAN,
             reduced_accuracy: s.reduced_accuracy,
+            method: s.method,
+            tried: s.tried.clone(),
         })
     }
 }

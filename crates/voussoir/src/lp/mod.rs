@@ -223,6 +223,11 @@ pub struct SolverOptions {
     /// After an interior point whose result an analysis cannot certify, run the cleanup pass
     /// ([`crossover`] to an optimal vertex). On by default.
     pub cleanup: bool,
+    /// Iterations allowed to the requested method (`None`: the backend's own limit). It holds
+    /// for `method` only: where that method stops at the limit, the methods after it in its
+    /// [`fallback_chain`] run with their own limits (diagnostics, and the test that a backend
+    /// failure is recovered).
+    pub iteration_limit: Option<usize>,
 }
 
 impl Default for SolverOptions {
@@ -235,6 +240,7 @@ impl Default for SolverOptions {
             threads: 1,
             log: false,
             cleanup: true,
+            iteration_limit: None,
         }
     }
 }
@@ -245,6 +251,7 @@ impl SolverOptions {
         SolverInfo {
             solver: self.method.backend().name().to_string(),
             method: self.method,
+            tried: Vec::new(),
         }
     }
 }
@@ -255,6 +262,42 @@ pub struct SolverInfo {
     /// `highs` or `clarabel`.
     pub solver: String,
     pub method: Method,
+    /// The methods that failed before this one answered, each as `method: why`
+    /// ([`fallback_chain`]); empty (and not written) when the requested method answered.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub tried: Vec<String>,
+}
+
+impl SolverInfo {
+    /// One sentence on how the answer was obtained when the requested method failed
+    /// ("dual-simplex, after ipm: HiGHS run failed: Error"), or `None`.
+    pub fn fallback_note(&self) -> Option<String> {
+        (!self.tried.is_empty()).then(|| {
+            format!(
+                "solved by {} after {} failed ({})",
+                self.method.name(),
+                self.tried
+                    .iter()
+                    .map(|t| t.split(':').next().unwrap_or(t))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                self.tried.join("; ")
+            )
+        })
+    }
+
+    /// The methods tried by both of two solves (a settlement's two programs), in order.
+    pub fn merged(mut self, other: &SolverInfo) -> SolverInfo {
+        for t in &other.tried {
+            if !self.tried.contains(t) {
+                self.tried.push(t.clone());
+            }
+        }
+        if other.method != self.method && self.tried.is_empty() {
+            return other.clone();
+        }
+        self
+    }
 }
 
 /// A solution (primal values and duals); vectors are empty unless `status` is optimal.
@@ -274,6 +317,21 @@ pub struct LpSolution {
     /// looser tolerance. The analyses certify such a solution themselves or say that it is
     /// not certified.
     pub reduced_accuracy: bool,
+    /// The method that produced this solution (after any fallback).
+    pub method: Method,
+    /// The methods that failed before it, each as `method: why` ([`fallback_chain`]).
+    pub tried: Vec<String>,
+}
+
+impl LpSolution {
+    /// The solver and method that produced this solution, and what failed before it.
+    pub fn solver_info(&self) -> SolverInfo {
+        SolverInfo {
+            solver: self.method.backend().name().to_string(),
+            method: self.method,
+            tried: self.tried.clone(),
+        }
+    }
 }
 
 /// A second-order cone over three affine rows `s_i = b_i − a_iᵀx`: `‖(s_1, s_2)‖ ≤ s_0`.
@@ -392,6 +450,57 @@ fn check_numbers(lp: &LinearProgram) -> Result<()> {
 /// The program is solved in nondimensional form ([`scale`]); the solution is in its units.
 pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
+    with_fallback(opts, |o| solve_once(lp, o))
+}
+
+/// The methods tried, in order, when a solve with `method` fails (the backend's error, a
+/// status other than optimal, infeasible or unbounded — HiGHS's "Error", an iteration or time
+/// limit, Clarabel's numerical stops). Each later method is of another kind (simplex, HiGHS's
+/// interior point, Clarabel's), so that one kind's numerical trouble is answered by another.
+/// The requested method always comes first: where it answers, nothing changes.
+pub fn fallback_chain(method: Method) -> &'static [Method] {
+    use Method::*;
+    match method {
+        DualSimplex => &[DualSimplex, PrimalSimplex, Ipm, Clarabel],
+        PrimalSimplex => &[PrimalSimplex, DualSimplex, Ipm, Clarabel],
+        Ipm => &[Ipm, DualSimplex, Clarabel],
+        IpmNoCrossover => &[IpmNoCrossover, Ipm, DualSimplex, Clarabel],
+        Choose => &[Choose, DualSimplex, Clarabel],
+        Pdlp => &[Pdlp, Ipm, DualSimplex],
+        Clarabel => &[Clarabel, Ipm, DualSimplex],
+    }
+}
+
+/// Run `solve` with each method of [`fallback_chain`] until one answers; the solution states
+/// its method and what failed before it. Only when every method fails: one line naming them.
+fn with_fallback(
+    opts: &SolverOptions,
+    mut solve: impl FnMut(&SolverOptions) -> Result<LpSolution>,
+) -> Result<LpSolution> {
+    let mut tried = Vec::new();
+    for (k, &method) in fallback_chain(opts.method).iter().enumerate() {
+        let o = SolverOptions {
+            method,
+            iteration_limit: if k == 0 { opts.iteration_limit } else { None },
+            ..*opts
+        };
+        match solve(&o) {
+            Ok(mut s) => {
+                s.method = method;
+                s.tried = tried;
+                return Ok(s);
+            }
+            Err(e) => tried.push(format!("{}: {}", method.name(), e.to_string().trim())),
+        }
+    }
+    Err(Error::Solver(format!(
+        "every method failed: {}",
+        tried.join("; ")
+    )))
+}
+
+/// [`solve`] with `opts.method` alone.
+fn solve_once(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     let backend = opts.method.backend();
     Ok(match Scaling::needed(lp, &[]) {
         None => backend.solve(lp, &[], opts, None)?.solution,
@@ -486,6 +595,15 @@ pub fn solve_warm(
     basis: &mut Option<Basis>,
 ) -> Result<LpSolution> {
     check_numbers(lp)?;
+    with_fallback(opts, |o| solve_warm_once(lp, o, basis))
+}
+
+/// [`solve_warm`] with `opts.method` alone.
+fn solve_warm_once(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    basis: &mut Option<Basis>,
+) -> Result<LpSolution> {
     let start = basis
         .as_ref()
         .filter(|b| b.cols.len() == lp.num_cols() && b.rows.len() == lp.num_rows())

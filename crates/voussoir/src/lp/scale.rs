@@ -70,7 +70,8 @@ fn geometric(a: &[f64]) -> f64 {
         .iter()
         .filter(|&&v| v >= ROUND_OFF * max)
         .fold(max, |m, &v| m.min(v));
-    1.0 / (min * max).sqrt()
+    // √min·√max, not √(min·max): the product of two magnitudes of 1e-200 underflows.
+    1.0 / (min.sqrt() * max.sqrt())
 }
 
 impl Scaling {

@@ -269,9 +269,14 @@ pub fn report<S: Assembly>(
 ) -> JointReport<S::D> {
     let (nd, nt) = (<S::D as Dim>::DOFS, <S::D as Dim>::TANGENTS);
     let (open, slide) = map.jumps(d, support_scale);
-    let mscale = max_abs(&open).max(max_abs(&slide)).max(1e-300);
+    // Open, sliding and round-off are judged on the motion's own scale (crate::scale): a
+    // rigid motion of the whole structure opens nothing, however small its round-off.
+    let mscale = crate::scale::motion_scale(map, d, support_scale)
+        .max(max_abs(&open))
+        .max(max_abs(&slide))
+        .max(1e-300);
     let fscale = max_abs(pn).max(max_abs(pt)).max(1e-300);
-    let open_tol = 1e-7 * mscale;
+    let open_tol = crate::scale::OPEN_TOLERANCE * mscale;
     let dscale = max_abs(d).max(1e-300);
     let blocks = (0..st.num_blocks())
         .map(|i| {

@@ -84,7 +84,7 @@ pub trait Assembly: Clone + Send + Sync {
         support_scale: f64,
     ) -> (Vec<Vec<f64>>, f64) {
         let (open, _) = map.jumps(d, support_scale);
-        let scale = open.iter().fold(0.0f64, |m, o| m.max(o.abs()));
+        let scale = crate::scale::motion_scale(map, d, support_scale);
         let mut out: Vec<Vec<f64>> = map
             .joint_start
             .windows(2)
@@ -97,7 +97,8 @@ pub trait Assembly: Clone + Send + Sync {
     }
 
     /// Move the structure by the mechanism `d` scaled by `s`: points whose opening
-    /// `s·(N d + g_n)` exceeds `1e-7` of the largest opening get that gap and carry no force.
+    /// `s·(N d + g_n)` exceeds `1e-7` of the motion scale ([`crate::scale`]) get that gap and
+    /// carry no force.
     fn deform(&self, d: &[f64], s: f64) -> Result<Self> {
         let n = Self::D::DOFS * self.num_blocks();
         if d.len() != n {

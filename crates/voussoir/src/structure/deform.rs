@@ -6,7 +6,7 @@
 use super::Structure;
 
 /// Relative threshold below which an opening counts as closed (same as the reports').
-pub const OPEN_TOLERANCE: f64 = 1e-7;
+pub use crate::scale::OPEN_TOLERANCE;
 
 impl Structure {
     /// Magnitude of a set of support motions: the largest translation (or rotation if none).

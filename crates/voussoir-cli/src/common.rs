@@ -440,7 +440,11 @@ impl Input {
 
     /// Load a 3D model, apply a support motion, validate and find its joints, for a command
     /// whose programs are LPs (the friction pyramid): `--friction-cone exact` is refused.
-    pub fn structure3d(&self, model: Model3d, motion: Option<&Motion>) -> Result<Structure3d, Fail> {
+    pub fn structure3d(
+        &self,
+        model: Model3d,
+        motion: Option<&Motion>,
+    ) -> Result<Structure3d, Fail> {
         if self.exact_friction_cone {
             return Err(Fail(
                 "--friction-cone exact is not solved by this command (limit, settle and tilt solve the exact cone; here the friction cone is the inscribed pyramid of --friction-facets)".into(),

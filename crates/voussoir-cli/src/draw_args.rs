@@ -39,7 +39,8 @@ pub struct DrawArgs {
     pub title: Option<String>,
     /// 3D models: write the result for ParaView: `.vtu` (the blocks, with their displacement
     /// and rotation) or `.vtm` (a multiblock of blocks, contact points, cracked interfaces and
-    /// supports, written beside it as FILE_blocks.vtu, …).
+    /// supports, written beside it as FILE_blocks.vtu, …). A directory, or a path ending in
+    /// `/`, is refused before the analysis runs.
     #[arg(long, value_name = "FILE")]
     pub vtk: Option<PathBuf>,
     /// 3D models: the view of --svg/--png: axonometric (default), plan or elevation (from −y).
@@ -126,9 +127,7 @@ impl DrawArgs {
         }
         if let Some(path) = &self.vtk {
             match vtk_kind(path)? {
-                VtkKind::Blocks => {
-                    crate::outputs::stage(path, &voussoir_io::vtk::blocks_vtu(r)?)?
-                }
+                VtkKind::Blocks => crate::outputs::stage(path, &voussoir_io::vtk::blocks_vtu(r)?)?,
                 VtkKind::Multiblock(name) => {
                     let dir = path.parent().unwrap_or(Path::new(""));
                     for (file, bytes) in voussoir_io::vtk::multiblock(r, &name, true)? {

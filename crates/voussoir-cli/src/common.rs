@@ -167,6 +167,27 @@ impl CrushingArgs {
     pub fn given(&self) -> bool {
         self.crushing == CrushingArg::Conic || self.facets.is_some()
     }
+
+    /// Refuse `--crushing conic` and `--facets` on a structure none of whose blocks has a
+    /// compressive strength (neither `--compressive-strength` nor the model's materials): its
+    /// joints cannot crush, so the crushing model would play no part.
+    pub fn check_strength(&self, st: &Structure) -> Result<(), Fail> {
+        if st
+            .blocks
+            .iter()
+            .any(|b| b.material.compressive_strength.is_some())
+        {
+            return Ok(());
+        }
+        let flag = match (self.crushing, self.facets) {
+            (CrushingArg::Conic, _) => "--crushing conic".to_string(),
+            (_, Some(n)) => format!("--facets {n}"),
+            _ => return Ok(()),
+        };
+        Err(Fail(format!(
+            "{flag} needs a compressive strength: give --compressive-strength KPA or compressive_strength in the model's materials (without one no joint can crush)"
+        )))
+    }
 }
 
 /// Which LPs a settlement analysis solves.
@@ -417,8 +438,24 @@ impl Input {
         Ok(m)
     }
 
-    /// Load a 3D model, apply a support motion, validate and find its joints.
+    /// Load a 3D model, apply a support motion, validate and find its joints, for a command
+    /// whose programs are LPs (the friction pyramid): `--friction-cone exact` is refused.
     pub fn structure3d(
+        &self,
+        model: Model3d,
+        motion: Option<&Motion>,
+    ) -> Result<Structure3d, Fail> {
+        if self.exact_friction_cone {
+            return Err(Fail(
+                "--friction-cone exact is not solved by this command (limit, settle and tilt solve the exact cone; here the friction cone is the inscribed pyramid of --friction-facets)".into(),
+            ));
+        }
+        self.structure3d_any_cone(model, motion)
+    }
+
+    /// [`Input::structure3d`] for the commands that honour `--friction-cone exact` themselves
+    /// (limit, settle, tilt).
+    pub fn structure3d_any_cone(
         &self,
         mut model: Model3d,
         motion: Option<&Motion>,
@@ -435,6 +472,16 @@ impl Input {
             eprintln!("warning: {w}");
         }
         Ok(st)
+    }
+
+    /// `--friction-facets` and `--friction-cone` refused for a 2D model.
+    pub fn refuse_3d_friction(&self) -> Result<(), Fail> {
+        if self.friction_facets.is_some() || self.exact_friction_cone {
+            return Err(Fail(
+                "--friction-facets and --friction-cone apply to 3D models (a 2D joint's friction is exact)".into(),
+            ));
+        }
+        Ok(())
     }
 
     /// Read the model (JSON, or DXF by extension) and apply the material overrides.
@@ -455,11 +502,7 @@ impl Input {
         mut model: Model,
         motion: Option<&Motion>,
     ) -> Result<Structure, Fail> {
-        if self.friction_facets.is_some() || self.exact_friction_cone {
-            return Err(Fail(
-                "--friction-facets and --friction-cone apply to 3D models (a 2D joint's friction is exact)".into(),
-            ));
-        }
+        self.refuse_3d_friction()?;
         if let Some(s) = motion {
             s.apply(&mut model)?;
         }
@@ -509,18 +552,41 @@ pub fn out(text: &str) {
     let _ = o.write_all(text.as_bytes()).and_then(|_| o.flush());
 }
 
-fn hinge_list<S: Assembly>(st: &S, hinges: &[Hinge<S::D>]) -> String {
+/// The hinges of a result, one line per hinged joint with its hinge points (one in 2D; in 3D
+/// one is a pivot, two or more a hinge line), under a heading that counts joints as the
+/// figures do ("9 hinged joints") and, where they differ, the points.
+fn hinges_section<S: Assembly>(st: &S, heading: &str, hinges: &[Hinge<S::D>]) -> String {
     let mut s = String::new();
+    if hinges.is_empty() {
+        return s;
+    }
+    let mut groups: std::collections::BTreeMap<usize, Vec<&Hinge<S::D>>> = Default::default();
     for h in hinges {
-        let (a, b) = st.joint_bodies(h.joint);
-        let at: Vec<String> = <S::D as Spatial>::coords(&h.at)
+        groups.entry(h.joint).or_default().push(h);
+    }
+    let joints = groups.len();
+    let plural = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+    let _ = write!(s, "{heading}: {}", plural(joints, "hinged joint"));
+    if hinges.len() != joints {
+        let _ = write!(s, " ({})", plural(hinges.len(), "hinge point"));
+    }
+    s.push('\n');
+    for (joint, pts) in &groups {
+        let (a, b) = st.joint_bodies(*joint);
+        let at: Vec<String> = pts
             .iter()
-            .map(|x| format!("{x:.4}"))
+            .map(|h| {
+                let c: Vec<String> = <S::D as Spatial>::coords(&h.at)
+                    .iter()
+                    .map(|x| format!("{x:.4}"))
+                    .collect();
+                format!("({})", c.join(", "))
+            })
             .collect();
         let _ = writeln!(
             s,
-            "  joint {:>4} ({} | {}) at ({})",
-            h.joint,
+            "  joint {:>4} ({} | {}) at {}",
+            joint,
             name(st, a),
             name(st, b),
             at.join(", ")
@@ -550,10 +616,11 @@ pub fn limit_summary<S: Assembly>(st: &S, r: &LimitResult<S::D>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", structure_line(st));
     let _ = writeln!(s, "{}", r.message);
-    if !r.hinges.is_empty() {
-        let _ = writeln!(s, "hinges of the collapse mechanism ({}):", r.hinges.len());
-        s.push_str(&hinge_list(st, &r.hinges));
-    }
+    s.push_str(&hinges_section(
+        st,
+        "hinges of the collapse mechanism",
+        &r.hinges,
+    ));
     s
 }
 
@@ -567,10 +634,7 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
             "work of dead loads {p:.6e} kN·m, work on supports {d:.6e} kN·m, relative gap {g:.2e}"
         );
     }
-    if !r.hinges.is_empty() {
-        let _ = writeln!(s, "hinges ({}):", r.hinges.len());
-        s.push_str(&hinge_list(st, &r.hinges));
-    }
+    s.push_str(&hinges_section(st, "hinges", &r.hinges));
     let open = r
         .joints
         .iter()

@@ -39,7 +39,8 @@ pub struct DrawArgs {
     pub title: Option<String>,
     /// 3D models: write the result for ParaView: `.vtu` (the blocks, with their displacement
     /// and rotation) or `.vtm` (a multiblock of blocks, contact points, cracked interfaces and
-    /// supports, written beside it as FILE_blocks.vtu, …).
+    /// supports, written beside it as FILE_blocks.vtu, …). A directory, or a path ending in
+    /// `/`, is refused before the analysis runs.
     #[arg(long, value_name = "FILE")]
     pub vtk: Option<PathBuf>,
     /// 3D models: the view of --svg/--png: axonometric (default), plan or elevation (from −y).
@@ -125,23 +126,13 @@ impl DrawArgs {
             write_drawing(&d.svg, self.svg.as_deref(), self.png.as_deref())?;
         }
         if let Some(path) = &self.vtk {
-            let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
-            match ext {
-                "vtu" => crate::outputs::stage(path, &voussoir_io::vtk::blocks_vtu(r)?)?,
-                "vtm" => {
-                    let name = path.file_name().and_then(|n| n.to_str()).ok_or_else(|| {
-                        Fail(format!("--vtk {}: not a file name", path.display()))
-                    })?;
+            match vtk_kind(path)? {
+                VtkKind::Blocks => crate::outputs::stage(path, &voussoir_io::vtk::blocks_vtu(r)?)?,
+                VtkKind::Multiblock(name) => {
                     let dir = path.parent().unwrap_or(Path::new(""));
-                    for (file, bytes) in voussoir_io::vtk::multiblock(r, name, true)? {
+                    for (file, bytes) in voussoir_io::vtk::multiblock(r, &name, true)? {
                         crate::outputs::stage(&dir.join(file), &bytes)?;
                     }
-                }
-                _ => {
-                    return Err(Fail(format!(
-                        "--vtk {}: the file must end in .vtu (blocks) or .vtm (blocks, contacts, cracks, supports)",
-                        path.display()
-                    )))
                 }
             }
         }
@@ -159,6 +150,9 @@ impl DrawArgs {
             if !(s.is_finite() && s >= 0.0) {
                 return Err(Fail(format!("--scale {s}: expected a finite number ≥ 0")));
             }
+        }
+        if let Some(p) = &self.vtk {
+            vtk_kind(p)?;
         }
         Ok(())
     }
@@ -266,6 +260,44 @@ impl DrawArgs {
         self.emit_scene(Scene::settlement(r), || {
             draw::settlement_report(r, &self.report_options(source))
         })
+    }
+}
+
+/// What `--vtk PATH` writes.
+enum VtkKind {
+    /// `.vtu`: the blocks.
+    Blocks,
+    /// `.vtm` (its file name): the multiblock and its pieces beside it.
+    Multiblock(String),
+}
+
+/// `--vtk PATH` checked before any work: a file name (not a directory, no trailing slash)
+/// ending in .vtu or .vtm.
+fn vtk_kind(path: &Path) -> Result<VtkKind, Fail> {
+    let shown = path.display();
+    let text = path.as_os_str().to_string_lossy();
+    let name = path.file_name().and_then(|n| n.to_str());
+    // The last component as typed: "out.vtm/", "out/." and ".." name directories.
+    let last = text
+        .rsplit(['/', std::path::MAIN_SEPARATOR])
+        .next()
+        .unwrap_or("");
+    if matches!(last, "" | "." | "..") || path.is_dir() {
+        return Err(Fail(format!(
+            "--vtk {shown}: names a directory; give a file, FILE.vtu or FILE.vtm"
+        )));
+    }
+    let Some(name) = name else {
+        return Err(Fail(format!(
+            "--vtk {shown}: not a file name; give FILE.vtu or FILE.vtm"
+        )));
+    };
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("vtu") => Ok(VtkKind::Blocks),
+        Some("vtm") => Ok(VtkKind::Multiblock(name.to_string())),
+        _ => Err(Fail(format!(
+            "--vtk {shown}: the file must end in .vtu (blocks) or .vtm (blocks, contacts, cracks, supports)"
+        ))),
     }
 }
 

@@ -91,6 +91,48 @@ pub enum LiveArg {
     #[value(alias = "tilt", alias = "seismic")]
     Horizontal,
 }
+/// The live loads of `gen wall`: a wall has no halves of a span.
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum WallLiveArg {
+    /// No live load.
+    None,
+    /// Vertical, 1 kN/m² on the top course.
+    #[value(alias = "uniform", alias = "all")]
+    Full,
+    /// Horizontal, equal to each block's weight, along +x (tilting table).
+    #[value(alias = "tilt", alias = "seismic")]
+    Horizontal,
+}
+impl From<WallLiveArg> for LiveLoad {
+    fn from(l: WallLiveArg) -> Self {
+        match l {
+            WallLiveArg::None => LiveLoad::None,
+            WallLiveArg::Full => LiveLoad::Full,
+            WallLiveArg::Horizontal => LiveLoad::Horizontal,
+        }
+    }
+}
+
+/// The live loads of `gen facade`: none or the tilting table's. (`left` is not a horizontal
+/// load towards −x: for an arch it is a vertical load on the left half; a façade's loads go
+/// along +x, and `voussoir tilt --direction -x` tilts it the other way.)
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub enum FacadeLiveArg {
+    /// No live load.
+    None,
+    /// Horizontal, equal to each block's weight, along +x (tilting table).
+    #[value(alias = "tilt", alias = "seismic")]
+    Horizontal,
+}
+impl From<FacadeLiveArg> for LiveLoad {
+    fn from(l: FacadeLiveArg) -> Self {
+        match l {
+            FacadeLiveArg::None => LiveLoad::None,
+            FacadeLiveArg::Horizontal => LiveLoad::Horizontal,
+        }
+    }
+}
+
 impl From<LiveArg> for LiveLoad {
     fn from(l: LiveArg) -> Self {
         match l {
@@ -202,7 +244,7 @@ pub struct WallArgs {
     /// Live load: none, horizontal (tilting table: each block's weight, along +x) or full
     /// (1 kN/m² on the top course).
     #[arg(long, value_enum, ignore_case = true, default_value = "none")]
-    pub live: LiveArg,
+    pub live: WallLiveArg,
     #[command(flatten)]
     pub out: Output,
 }
@@ -424,9 +466,10 @@ pub struct FacadeArgs {
     /// Out-of-plane thickness in m.
     #[arg(long, default_value_t = 1.0, value_name = "M")]
     pub thickness: f64,
-    /// Live load: none or horizontal (tilting table).
+    /// Live load: none or horizontal (tilting table: each block's weight, along +x; `voussoir
+    /// tilt --direction -x` loads the façade the other way).
     #[arg(long, value_enum, ignore_case = true, default_value = "none")]
-    pub live: LiveArg,
+    pub live: FacadeLiveArg,
     #[command(flatten)]
     pub out: Output,
 }

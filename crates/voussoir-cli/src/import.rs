@@ -70,7 +70,7 @@ pub struct DxfArgs {
     #[arg(long, value_name = "M")]
     pub merge_tolerance: Option<f64>,
     /// Live load added to the model (drawings carry none) [default: horizontal].
-    #[arg(long = "dxf-live", value_enum, ignore_case = true)]
+    #[arg(long = "dxf-live", id = "dxf_live", value_enum, ignore_case = true)]
     pub live: Option<DxfLiveArg>,
     #[command(flatten)]
     pub mesh: MeshArgs,
@@ -93,7 +93,7 @@ pub struct MeshArgs {
     #[arg(long, value_name = "M")]
     pub weld: Option<f64>,
     /// Live load added to the model (meshes carry none) [default: horizontal].
-    #[arg(long = "mesh-live", value_enum, ignore_case = true)]
+    #[arg(long = "mesh-live", id = "mesh_live", value_enum, ignore_case = true)]
     pub live: Option<DxfLiveArg>,
 }
 

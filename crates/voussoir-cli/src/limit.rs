@@ -48,6 +48,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
             let st = c.input.structure_of(model, None)?;
+            a.crushing.check_strength(&st)?;
             let r = match (
                 a.crushing.non_associative(),
                 a.canonical.options(),
@@ -82,7 +83,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                     "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),
                 ));
             }
-            let st = c.input.structure3d(model, None)?;
+            let st = c.input.structure3d_any_cone(model, None)?;
             let cone = if c.input.exact_friction_cone {
                 Crushing::Conic
             } else {

@@ -48,9 +48,22 @@ impl SettleCmdArgs {
             && self.form.settlement_form.form() != SettlementForm::Both
         {
             return Err(Fail(
-                "--crushing, --facets and --non-associative go with --form both (the default)"
+                "--crushing, --facets and --non-associative go with --settlement-form both (the default)"
                     .into(),
             ));
+        }
+        if self.model.friction_cone == Some(crate::common::FrictionConeArg::Exact) {
+            if self.crushing.non_associative {
+                return Err(Fail(
+                    "--non-associative goes with the friction pyramid, not --friction-cone exact"
+                        .into(),
+                ));
+            }
+            if self.form.settlement_form.form() != SettlementForm::Both {
+                return Err(Fail(
+                    "--friction-cone exact goes with --settlement-form both (the default): the cone program is solved whole".into(),
+                ));
+            }
         }
         Ok(SettleConfig {
             crushing,
@@ -71,7 +84,8 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
     a.draw.check_2d()?;
     c.motion.apply(&mut model)?;
     // The model is validated first, so that a bad model is named before a missing motion.
-    let st = voussoir::Structure::new(&model, c.input.build)?;
+    let st = c.input.structure_of(model.clone(), None)?;
+    a.crushing.check_strength(&st)?;
     if !common::has_support_motion(&model) {
         return Err(Fail(
             "settle needs a support motion: give --move NAME=u,v[,θ] or --profile (the model's supports do not move)"
@@ -111,11 +125,9 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
             "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
         ));
     }
+    // --friction-facets and --friction-cone are honoured here (as by limit and tilt).
     c.motion.apply(&mut model)?;
-    let st = voussoir::Structure3d::new(&model, c.input.build)?;
-    for w in model.warnings() {
-        eprintln!("warning: {w}");
-    }
+    let st = c.input.structure3d_any_cone(model.clone(), None)?;
     if !model
         .supports
         .iter()
@@ -136,6 +148,11 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
             DEFAULT_FACETS,
             &o,
         )?,
+        // The exact friction cone: the force program with a second-order cone per frictional
+        // point (Clarabel), the mechanism from its equilibrium duals.
+        (SettlementForm::Both, None) if c.input.exact_friction_cone => {
+            settle_crushing(&st, &c.input.solver3d, Crushing::Conic, DEFAULT_FACETS)?
+        }
         (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
         (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };

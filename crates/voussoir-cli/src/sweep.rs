@@ -114,7 +114,7 @@ fn write_outputs(
 
 pub fn run(a: SweepArgs) -> Result<(), Fail> {
     // Flags resolved before any work (a DXF flag on a JSON model, bad numbers).
-    a.model.resolve()?;
+    let input = a.model.resolve()?;
     let modes = [
         a.steps.is_some(),
         a.directions.is_some(),
@@ -151,6 +151,8 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
     };
     let n = kind.count();
     let (mut model, _) = a.model.dxf.read(&a.model.model)?;
+    // Sweeps are 2D: the 3D friction flags are refused as for any 2D model.
+    input.refuse_3d_friction()?;
     a.model.override_materials(&mut model)?;
     a.settle.apply(&mut model)?;
     let spec = SweepSpec {

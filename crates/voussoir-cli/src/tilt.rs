@@ -17,17 +17,18 @@ pub enum TiltDirection {
 
 #[derive(Args)]
 pub struct TiltArgs {
-    /// Direction the table tilts towards (the structure tends to fall that way).
+    /// Direction the table tilts towards (the structure tends to fall that way) [default: +x].
+    /// In 3D, +x is azimuth 0° and -x azimuth 180°.
     #[arg(
         long,
         value_enum,
-        default_value = "+x",
         allow_hyphen_values = true,
-        ignore_case = true
+        ignore_case = true,
+        conflicts_with = "azimuth"
     )]
-    pub direction: TiltDirection,
+    pub direction: Option<TiltDirection>,
     /// 3D models: azimuth of the tilt in degrees from x towards y (the structure tends to fall
-    /// that way; default 0, towards +x).
+    /// that way; default 0, towards +x); any finite angle, taken modulo 360°.
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub azimuth: Option<f64>,
     #[command(flatten)]
@@ -43,22 +44,21 @@ pub struct TiltArgs {
 pub fn run(a: TiltArgs) -> Result<(), Fail> {
     a.draw.check()?;
     let input = a.model.resolve()?;
-    let dir = match a.direction {
+    let dir = match a.direction.unwrap_or(TiltDirection::PlusX) {
         TiltDirection::PlusX => 1.0,
         TiltDirection::MinusX => -1.0,
     };
-    if let Some(az) = a.azimuth {
-        if !az.is_finite() {
-            return Err(Fail(format!(
-                "--azimuth {az}: must be a finite number of degrees"
-            )));
-        }
-    }
+    let azimuth = a.azimuth.map(normalise_azimuth).transpose()?;
     let model = match input.load_any()? {
         AnyModel::Planar(m) => m,
         AnyModel::Spatial(m) => {
-            let st = input.structure3d(m, None)?;
-            let az = a.azimuth.unwrap_or(0.0);
+            let st = input.structure3d_any_cone(m, None)?;
+            // --direction in 3D: +x is azimuth 0°, -x azimuth 180°.
+            let (az, towards) = match (azimuth, a.direction) {
+                (Some(az), _) => (az, format!("azimuth {az}°")),
+                (None, Some(TiltDirection::MinusX)) => (180.0, "−x (azimuth 180°)".to_string()),
+                (None, _) => (0.0, "+x (azimuth 0°)".to_string()),
+            };
             let r = if input.exact_friction_cone {
                 voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &input.solver3d)?
             } else {
@@ -72,7 +72,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                     Some(t) => {
                         let _ = writeln!(
                             s,
-                            "critical tilt angle {t:.4}° towards azimuth {az}° (tan α = λ = {:.6})",
+                            "critical tilt angle {t:.4}° towards {towards} (tan α = λ = {:.6})",
                             t.to_radians().tan()
                         );
                     }
@@ -111,4 +111,16 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
         }
         s
     })
+}
+
+/// `--azimuth DEG` checked (finite) and taken into [0, 360).
+fn normalise_azimuth(az: f64) -> Result<f64, Fail> {
+    if !az.is_finite() {
+        return Err(Fail(format!(
+            "--azimuth {az}: must be a finite number of degrees"
+        )));
+    }
+    let r = az.rem_euclid(360.0);
+    // rem_euclid rounds a tiny negative angle up to 360 itself; -0 prints as "-0".
+    Ok(if r >= 360.0 || r == 0.0 { 0.0 } else { r })
 }

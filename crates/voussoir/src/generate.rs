@@ -441,6 +441,10 @@ impl Default for WallSpec {
 /// whole units and a half unit at each end. Courses alternate.
 pub fn wall(s: &WallSpec) -> Result<Model> {
     req(
+        !matches!(s.live, LiveLoad::Left | LiveLoad::Right),
+        "a wall's live load is none, full (the top course) or horizontal (left and right are the halves of an arch's span)",
+    )?;
+    req(
         s.courses >= 1 && s.units >= 1,
         "a wall needs at least one course and one unit",
     )?;

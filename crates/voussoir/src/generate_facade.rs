@@ -506,6 +506,11 @@ fn course_lines(top: f64, h: f64, levels: &[f64]) -> Vec<f64> {
 
 /// Generate a façade.
 pub fn facade(s: &FacadeSpec) -> Result<Model> {
+    if !matches!(s.live, LiveLoad::None | LiveLoad::Horizontal) {
+        return Err(Error::Request(
+            "a façade's live load is none or horizontal (each block's weight along +x); full, left and right are vertical loads on an arch's span".into(),
+        ));
+    }
     let [ex, ey] = s.element;
     let ok = s.width > 0.0
         && s.height > 0.0

@@ -20,7 +20,7 @@
 //! | settlement, motion form (primal): `max F_D·d`, `N d + g_n ≥ 0`, `T d + g_t = 0` | (62)–(66) | [`settlement_motion_program`] |
 //! | limit analysis, static: `max λ`, `F_D + λF_L + Nᵀp_n + Tᵀp_t = 0`, `p_n ≥ 0` | Remark 3 | [`limit_force_program`] (and [`limit_force_program_fixed_topology`] for warm-started sequences) |
 //! | limit analysis, kinematic: `F_L·d = 1`, `λ = −F_D·d` | Remark 3 | the row duals of the static program ([`crate::analysis::limit`]) |
-//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))` | (finite strength) | [`ForceProgram::cones`] from [`limit_force_program_conic`], [`settlement_force_program_conic`] |
+//! | exact crushing domain `|M| ≤ N(t/2 − N/(2 f_c w))`; exact 3D friction cone `‖p_t‖ ≤ μ p_n + c` | (finite strength; 3D friction) | [`ForceProgram::cones`] from [`limit_force_program_conic`], [`limit_force_program_exact`], [`settlement_force_program_conic`] |
 //! | a dead-load ray (no λ in equilibrium) | — | [`dead_load_ray_program`] |
 //! | equilibrium under dead loads alone (does it stand; geometric safety factor) | safe theorem | [`equilibrium_program`] |
 //! | least / largest reaction component over admissible states (thrust range) | safe theorem | [`reaction_extreme_program`] |
@@ -484,13 +484,20 @@ pub fn limit_force_program_conic(map: &KinematicMap, dead: &[f64], live: &[f64])
 
 /// [`settlement_force_program`] with the exact crushing domain of [`limit_force_program_conic`]
 /// instead of the inscribed polygon: `min g·p` over forces in equilibrium with the dead loads
-/// whose joint resultants lie in `|M| ≤ N (t/2 − N/(2 f_c w))`. Its mechanism is read from the
-/// equilibrium rows' duals (there is no LP dual to build).
+/// whose joint resultants lie in `|M| ≤ N (t/2 − N/(2 f_c w))`, and in 3D the exact friction
+/// cone `‖p_t‖ ≤ μ p_n + c` instead of the inscribed pyramid (as [`limit_force_program_exact`]).
+/// Its mechanism is read from the equilibrium rows' duals (there is no LP dual to build).
 pub fn settlement_force_program_conic(map: &KinematicMap, dead: &[f64]) -> ForceProgram {
     let mut m = map.clone();
     m.facets = 0;
+    if m.tangents_per_point > 1 {
+        m.friction_facets = 0;
+    }
     let mut fp = settlement_force_program(&m, dead);
     crushing_cones(map, &mut fp);
+    if m.tangents_per_point > 1 {
+        friction_cones(&m, &mut fp);
+    }
     fp
 }
 

@@ -86,7 +86,7 @@ impl<'a> Scene<'a> {
         match r.load_multiplier {
             Some(l) if r.status == LimitStatus::Collapse => info.push(format!(
                 "collapse load multiplier λ = {l:.4}   ·   {}",
-                plural(r.hinges.len(), "hinge")
+                plural(hinged_joints(&r.hinges), "hinge")
             )),
             _ => info.push(r.message.clone()),
         }
@@ -114,7 +114,7 @@ impl<'a> Scene<'a> {
             .iter()
             .filter(|j| j.state == JointState::Open)
             .count();
-        let mut line = plural(r.hinges.len(), "hinge");
+        let mut line = plural(hinged_joints(&r.hinges), "hinge");
         if open > 0 {
             let _ = write!(line, ", {}", plural(open, "open joint"));
         }
@@ -1176,6 +1176,16 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     }
 }
 
+/// The number of hinged joints among `hinges` (a joint's hinge points counted once, as the
+/// summaries and the 3D figures count them).
+fn hinged_joints(hinges: &[voussoir::result::Hinge]) -> usize {
+    hinges
+        .iter()
+        .map(|h| h.joint)
+        .collect::<std::collections::BTreeSet<_>>()
+        .len()
+}
+
 /// Chains of (body a, centre of pressure) ordered along the structure. A body touched by more
 /// than two loaded joints (walls) gives no line: each centre of pressure is its own chain.
 fn thrust_chains(
@@ -1211,6 +1221,21 @@ fn thrust_chains(
             .zip(&carrier)
             .map(|(e, c)| vec![(*c, e.2)])
             .collect();
+    }
+    // Two centres of pressure are joined only through a block they both bear on: a support
+    // ends the chain (an arch whose two springings stand on one support is one chain from
+    // springing to springing, not a loop closed by a line across the opening). Each joint's end
+    // on a support becomes a node of its own.
+    let mut n = n;
+    for (e, (a, c, _)) in edges.iter_mut().enumerate() {
+        for v in [a, c] {
+            if *v >= b.nb {
+                adj[*v].retain(|&x| x != e);
+                *v = n;
+                adj.push(vec![e]);
+                n += 1;
+            }
+        }
     }
     let mut used = vec![false; edges.len()];
     let mut chains = Vec::new();

@@ -7,7 +7,6 @@ use voussoir::analysis::safety::{safety, SafetyOptions};
 use voussoir::analysis::settlement::{settle, SettlementStatus};
 use voussoir::lp::SolverOptions;
 use voussoir::model::{Material, Model};
-use voussoir::model3d::{Block3d, Load3d, Loads3d, Model3d, Support3d};
 use voussoir::result::JointState;
 use voussoir::{BuildOptions, Structure, Structure3d};
 
@@ -40,28 +39,8 @@ fn box2d(b: f64, h: f64, motion: [f64; 3], unit_weight: f64) -> Structure {
     Structure::new(&m, BuildOptions::default()).unwrap()
 }
 
-fn cuboid(lo: [f64; 3], hi: [f64; 3]) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
-    let v = (0..8)
-        .map(|i| {
-            [
-                if i & 1 == 0 { lo[0] } else { hi[0] },
-                if i & 2 == 0 { lo[1] } else { hi[1] },
-                if i & 4 == 0 { lo[2] } else { hi[2] },
-            ]
-        })
-        .collect();
-    let f = vec![
-        vec![0, 2, 3, 1],
-        vec![4, 5, 7, 6],
-        vec![0, 1, 5, 4],
-        vec![2, 6, 7, 3],
-        vec![0, 4, 6, 2],
-        vec![1, 3, 7, 5],
-    ];
-    (v, f)
-}
-
-/// A 3D box `b × d × h` on a base, horizontal live load along +x equal to its weight.
+/// A 3D box `b × d × h` on a base (the `block` generator), horizontal live load along +x
+/// equal to its weight, with the base's motion and the joints' friction set.
 fn box3d(
     b: f64,
     d: f64,
@@ -70,31 +49,9 @@ fn box3d(
     unit_weight: f64,
     friction: Option<f64>,
 ) -> Structure3d {
-    let (vertices, faces) = cuboid([0.0, 0.0, 0.0], [b, d, h]);
-    let (sv, sf) = cuboid([-1.0, -1.0, -0.5], [b + 1.0, d + 1.0, 0.0]);
-    let m = Model3d {
-        blocks: vec![Block3d {
-            vertices,
-            faces,
-            material: None,
-        }],
-        supports: vec![Support3d {
-            name: "base".into(),
-            vertices: sv,
-            faces: sf,
-            motion,
-            connection: Default::default(),
-        }],
-        loads: Loads3d {
-            live: vec![Load3d::Body {
-                coefficients: [1.0, 0.0, 0.0],
-                blocks: None,
-            }],
-            ..Loads3d::default()
-        },
-        materials: material(unit_weight, friction),
-        ..Model3d::default()
-    };
+    let mut m = voussoir::generate3d::block([b, d, h], 0.0, unit_weight).unwrap();
+    m.supports[0].motion = motion;
+    m.materials = material(unit_weight, friction);
     Structure3d::new(&m, BuildOptions::default()).unwrap()
 }
 

@@ -103,6 +103,12 @@ impl DrawArgs {
         r: &impl voussoir_io::result3d::Result3d,
         source: &Path,
     ) -> Result<(), Fail> {
+        // The 3D drawing shows contact points by state, not force arrows: refused, not ignored.
+        if self.forces && (self.svg.is_some() || self.png.is_some()) {
+            return Err(Fail(
+                "--forces draws contact-force arrows on 2D drawings only; a 3D result's forces are in -o/--json and in --vtk (the contact points' forces)".into(),
+            ));
+        }
         if let Some(path) = &self.report {
             let title = self.title.clone().unwrap_or_else(|| r.title());
             let html =

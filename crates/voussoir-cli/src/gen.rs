@@ -266,7 +266,9 @@ fn write_json<T: serde::Serialize>(
     let json = voussoir_io::files::to_json(model)?;
     match &out.output {
         Some(p) => {
+            // Written now, so that the line saying so is printed only once it is true.
             crate::outputs::stage(p, json.as_bytes())?;
+            crate::outputs::commit()?;
             eprintln!(
                 "wrote {} ({blocks} blocks, {supports} supports)",
                 p.display()

@@ -133,6 +133,14 @@ impl Motion {
             .iter()
             .map(|m| parse_move(m))
             .collect::<Result<Vec<_>, _>>()?;
+        // One motion per support: a second `--move` of the same support would silently win.
+        for (k, (name, _)) in moves.iter().enumerate() {
+            if moves[..k].iter().any(|(n, _)| n == name) {
+                return Err(IoError(format!(
+                    "--move {name}=…: support '{name}' is moved twice; give one --move per support"
+                )));
+            }
+        }
         let profile = match profile {
             Some(p) => Some(parse_profile(p)?),
             None => None,

@@ -97,9 +97,10 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                 ));
             }
             let st = input.structure3d(model, Some(&motion))?;
-            // In 3D the conic joint law is the exact Coulomb cone (as `limit --friction-cone
-            // exact`): every limit analysis of the curve, and the settlement, are solved as
-            // second-order cone programs.
+            // In 3D the conic joint law of a limit analysis is the exact Coulomb cone (as
+            // `limit --friction-cone exact`): every limit analysis of the curve is a
+            // second-order cone program. The settlement that deforms the geometry is solved by
+            // the library's conic settlement program (`solve_settlement_conic`).
             let opts = CapacityOptions {
                 crushing: if exact {
                     Crushing::Conic
@@ -118,7 +119,9 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             a.out.emit(&r, || {
                 let mut s = summary(&st, &r);
                 if exact {
-                    s.push_str("friction: the exact Coulomb cone (second-order cone programs)\n");
+                    s.push_str(
+                        "friction: the exact Coulomb cone in every limit analysis (second-order cone programs)\n",
+                    );
                 }
                 s
             })
@@ -178,16 +181,20 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         unit.noun(),
         r.max_settlement * k
     );
-    let hinges: Vec<String> = r
-        .settlement_hinges
-        .iter()
-        .map(|h| h.joint.to_string())
-        .collect();
-    let _ = writeln!(
-        s,
-        "hinges opened by the settlement: joints {}",
-        hinges.join(", ")
-    );
+    // One entry per hinged joint (a 3D hinge line has several points on one joint).
+    let mut joints: Vec<usize> = r.settlement_hinges.iter().map(|h| h.joint).collect();
+    joints.sort_unstable();
+    joints.dedup();
+    let hinges: Vec<String> = joints.iter().map(|j| j.to_string()).collect();
+    if hinges.is_empty() {
+        let _ = writeln!(s, "hinges opened by the settlement: none");
+    } else {
+        let _ = writeln!(
+            s,
+            "hinges opened by the settlement: joints {}",
+            hinges.join(", ")
+        );
+    }
     if let Some(z) = r.zero_capacity_settlement {
         let _ = writeln!(
             s,

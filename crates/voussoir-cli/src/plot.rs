@@ -265,17 +265,15 @@ fn check_flags(a: &PlotArgs, saved: &Saved, report: bool) -> Result<(), Fail> {
         }
         return Ok(());
     }
-    if matches!(saved, Saved::Model(_) | Saved::Model3d(_)) {
-        if a.scale.is_some() || a.undeformed {
-            return Err(Fail(format!(
-                "{}: a model has no displacements to draw",
-                if a.scale.is_some() {
-                    "--scale"
-                } else {
-                    "--undeformed"
-                }
-            )));
-        }
+    if matches!(saved, Saved::Model(_) | Saved::Model3d(_)) && (a.scale.is_some() || a.undeformed) {
+        return Err(Fail(format!(
+            "{}: a model has no displacements to draw",
+            if a.scale.is_some() {
+                "--scale"
+            } else {
+                "--undeformed"
+            }
+        )));
     }
     if saved.is_3d() {
         if a.forces {

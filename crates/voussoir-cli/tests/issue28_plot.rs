@@ -160,7 +160,16 @@ fn issue28_item6_plot_redraws_every_2d_result() {
     std::fs::write(d.join("box.json"), BOX_2D).unwrap();
     run(
         &d,
-        &["gen", "arch", "--voussoirs", "16", "--live", "left", "-o", "arch.json"],
+        &[
+            "gen",
+            "arch",
+            "--voussoirs",
+            "16",
+            "--live",
+            "left",
+            "-o",
+            "arch.json",
+        ],
     );
 
     // The model: 16 blocks.
@@ -168,7 +177,9 @@ fn issue28_item6_plot_redraws_every_2d_result() {
 
     // Limit: the box overturns at λ = b/h = 0.5; the figure's λ is r.json's.
     run(&d, &["limit", "box.json", "-o", "bl.json"]);
-    let l = json(&d.join("bl.json"))["load_multiplier"].as_f64().unwrap();
+    let l = json(&d.join("bl.json"))["load_multiplier"]
+        .as_f64()
+        .unwrap();
     assert!((l - 0.5).abs() < 1e-6, "λ = {l}");
     let svg = replot(&d, "bl.json");
     assert!((lambda_in(&svg) - l).abs() <= 5e-5);
@@ -176,13 +187,22 @@ fn issue28_item6_plot_redraws_every_2d_result() {
     run(&d, &["limit", "arch.json", "-o", "al.json"]);
     let svg = replot(&d, "al.json");
     assert_eq!(blocks_2d(&svg), 16);
-    let l = json(&d.join("al.json"))["load_multiplier"].as_f64().unwrap();
+    let l = json(&d.join("al.json"))["load_multiplier"]
+        .as_f64()
+        .unwrap();
     assert!((lambda_in(&svg) - l).abs() <= 5e-5);
 
     // Settlement: 16 blocks; the figure states the 10 mm the command prescribed.
     run(
         &d,
-        &["settle", "arch.json", "--move", "right=0.01,0", "-o", "as.json"],
+        &[
+            "settle",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "-o",
+            "as.json",
+        ],
     );
     let svg = replot(&d, "as.json");
     assert_eq!(blocks_2d(&svg), 16);
@@ -200,7 +220,14 @@ fn issue28_item6_plot_redraws_every_2d_result() {
     run(
         &d,
         &[
-            "capacity", "arch.json", "--move", "right=0.01,0", "--steps", "8", "-o", "ac.json",
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--steps",
+            "8",
+            "-o",
+            "ac.json",
         ],
     );
     let r = json(&d.join("ac.json"));
@@ -211,14 +238,25 @@ fn issue28_item6_plot_redraws_every_2d_result() {
     let markers = attrs(&svg, MARKER, "cx").len();
     assert_eq!(markers, valid);
     let l0 = curve[0]["load_multiplier"].as_f64().unwrap();
-    assert!(svg.contains(&format!("λ₀ = {}", voussoir_io::draw::svg::fmt_fixed(l0, 3))));
+    assert!(svg.contains(&format!(
+        "λ₀ = {}",
+        voussoir_io::draw::svg::fmt_fixed(l0, 3)
+    )));
     assert!(svg.contains("settlement s (cm)"));
 
     // Incremental: the peak is marked with r.json's value.
     run(
         &d,
         &[
-            "incremental", "arch.json", "--control", "0,3", "--max", "4mm", "--step", "1mm", "-o",
+            "incremental",
+            "arch.json",
+            "--control",
+            "0,3",
+            "--max",
+            "4mm",
+            "--step",
+            "1mm",
+            "-o",
             "ai.json",
         ],
     );
@@ -249,7 +287,13 @@ fn issue28_item6_plot_redraws_every_2d_result() {
     run(
         &d,
         &[
-            "identify", "parch.json", "--cracks", "obs.json", "--unknown", "right=u,v", "-o",
+            "identify",
+            "parch.json",
+            "--cracks",
+            "obs.json",
+            "--unknown",
+            "right=u,v",
+            "-o",
             "id.json",
         ],
     );
@@ -268,7 +312,16 @@ fn issue28_item6_plot_redraws_every_3d_result() {
     run(
         &d,
         &[
-            "gen", "vault", "--voussoirs", "8", "--rings", "2", "--live", "left", "-o", "v.json",
+            "gen",
+            "vault",
+            "--voussoirs",
+            "8",
+            "--rings",
+            "2",
+            "--live",
+            "left",
+            "-o",
+            "v.json",
         ],
     );
 
@@ -278,15 +331,38 @@ fn issue28_item6_plot_redraws_every_3d_result() {
 
     // Limit: the 1 × 1 × 2 box overturns at λ = 0.5 (was: "missing field `theta`").
     run(&d, &["limit", "box.json", "-o", "bl.json"]);
-    let l = json(&d.join("bl.json"))["load_multiplier"].as_f64().unwrap();
+    let l = json(&d.join("bl.json"))["load_multiplier"]
+        .as_f64()
+        .unwrap();
     assert!((l - 0.5).abs() < 1e-6, "λ = {l}");
     let svg = replot(&d, "bl.json");
     assert!((lambda_in(&svg) - l).abs() <= 5e-5);
     run(&d, &["limit", "v.json", "-o", "vl.json"]);
     let svg = replot(&d, "vl.json");
     assert_eq!(blocks_3d(&svg), 16);
-    let l = json(&d.join("vl.json"))["load_multiplier"].as_f64().unwrap();
+    let l = json(&d.join("vl.json"))["load_multiplier"]
+        .as_f64()
+        .unwrap();
     assert!((lambda_in(&svg) - l).abs() <= 5e-5);
+    // Every label of the legend lies within the figure (the live-load entry ran off its right
+    // edge): a label at x of font size f ends before the width.
+    let (w, _) = svg_size(&svg);
+    for tag in svg.split("<text ").skip(1) {
+        let num = |k: &str| -> Option<f64> {
+            let key = format!("{k}=\"");
+            let i = tag.find(&key)? + key.len();
+            tag[i..i + tag[i..].find('"')?].parse().ok()
+        };
+        let (Some(x), Some(f)) = (num("x"), num("font-size")) else {
+            continue;
+        };
+        if tag.contains("text-anchor") {
+            continue;
+        }
+        let label = &tag[tag.find('>').unwrap() + 1..tag.find("</text>").unwrap()];
+        let end = x + voussoir_io::draw::svg::text_width(label, f);
+        assert!(end <= w, "{label:?} ends at {end} > {w}");
+    }
     // Another view of the same result.
     run(&d, &["plot", "vl.json", "-o", "plan.svg", "--view", "plan"]);
     assert!(read(&d.join("plan.svg")).contains("plan (seen from above)"));
@@ -295,12 +371,20 @@ fn issue28_item6_plot_redraws_every_3d_result() {
     run(
         &d,
         &[
-            "settle", "v.json", "--move", "right=0.01,0,-0.01", "-o", "vs.json",
+            "settle",
+            "v.json",
+            "--move",
+            "right=0.01,0,-0.01",
+            "-o",
+            "vs.json",
         ],
     );
     let svg = replot(&d, "vs.json");
     assert_eq!(blocks_3d(&svg), 16);
-    assert!(svg.contains("right u = 10 mm, w = -10 mm"), "support motion");
+    assert!(
+        svg.contains("right u = 10 mm, w = -10 mm"),
+        "support motion"
+    );
 
     // Tilt: the box tips at α = atan(1/2).
     run(&d, &["tilt", "box.json", "-o", "bt.json"]);
@@ -320,7 +404,13 @@ fn issue28_item6_plot_redraws_every_3d_result() {
     run(
         &d,
         &[
-            "capacity", "v.json", "--move", "right=0.01,0,-0.01", "--steps", "6", "-o",
+            "capacity",
+            "v.json",
+            "--move",
+            "right=0.01,0,-0.01",
+            "--steps",
+            "6",
+            "-o",
             "vc.json",
         ],
     );
@@ -332,7 +422,10 @@ fn issue28_item6_plot_redraws_every_3d_result() {
     let svg = replot(&d, "vc.json");
     assert_eq!(attrs(&svg, MARKER, "cx").len(), valid);
     let l0 = curve[0]["load_multiplier"].as_f64().unwrap();
-    assert!(svg.contains(&format!("λ₀ = {}", voussoir_io::draw::svg::fmt_fixed(l0, 3))));
+    assert!(svg.contains(&format!(
+        "λ₀ = {}",
+        voussoir_io::draw::svg::fmt_fixed(l0, 3)
+    )));
     // The report draws the 3D settlement mechanism beside the curve.
     let html = read(&d.join("vc.html"));
     assert!(html.contains("Settlement mechanism at the largest settlement"));
@@ -347,14 +440,35 @@ fn issue28_item6_capacity_draws_a_3d_curve() {
     run(
         &d,
         &[
-            "gen", "vault", "--voussoirs", "8", "--rings", "2", "--live", "left", "-o", "v.json",
+            "gen",
+            "vault",
+            "--voussoirs",
+            "8",
+            "--rings",
+            "2",
+            "--live",
+            "left",
+            "-o",
+            "v.json",
         ],
     );
     let out = run(
         &d,
         &[
-            "capacity", "v.json", "--move", "right=0.01,0,-0.01", "--steps", "5", "-o", "c.json",
-            "--png", "c.png", "--svg", "c.svg", "--report", "c.html",
+            "capacity",
+            "v.json",
+            "--move",
+            "right=0.01,0,-0.01",
+            "--steps",
+            "5",
+            "-o",
+            "c.json",
+            "--png",
+            "c.png",
+            "--svg",
+            "c.svg",
+            "--report",
+            "c.html",
         ],
     );
     assert!(out.contains("largest settlement 1.4142 cm"), "{out}");
@@ -388,7 +502,13 @@ fn issue28_item6_capacity_draws_a_3d_curve() {
     let e = refused(
         &d,
         &[
-            "capacity", "v.json", "--move", "right=0.01,0,-0.01", "--steps", "2", "--vtk",
+            "capacity",
+            "v.json",
+            "--move",
+            "right=0.01,0,-0.01",
+            "--steps",
+            "2",
+            "--vtk",
             "x.vtu",
         ],
     );
@@ -402,13 +522,30 @@ fn issue28_item10_a_rotation_driven_capacity_curve_is_in_mrad() {
     let d = tmpdir("rot");
     run(
         &d,
-        &["gen", "arch", "--voussoirs", "16", "--live", "left", "-o", "arch.json"],
+        &[
+            "gen",
+            "arch",
+            "--voussoirs",
+            "16",
+            "--live",
+            "left",
+            "-o",
+            "arch.json",
+        ],
     );
     let out = run(
         &d,
         &[
-            "capacity", "arch.json", "--move", "right=0,0,0.5", "--steps", "4", "-o", "r.json",
-            "--svg", "r.svg",
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0,0,0.5",
+            "--steps",
+            "4",
+            "-o",
+            "r.json",
+            "--svg",
+            "r.svg",
         ],
     );
     // 0.5° = 8.7266 mrad.
@@ -430,7 +567,14 @@ fn issue28_item10_a_rotation_driven_capacity_curve_is_in_mrad() {
     run(
         &d,
         &[
-            "capacity", "arch.json", "--move", "right=0.01,0", "--steps", "2", "-o", "t.json",
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--steps",
+            "2",
+            "-o",
+            "t.json",
         ],
     );
     let e = refused(&d, &["plot", "t.json", "r.json", "-o", "both.svg"]);
@@ -439,13 +583,28 @@ fn issue28_item10_a_rotation_driven_capacity_curve_is_in_mrad() {
     run(
         &d,
         &[
-            "gen", "vault", "--voussoirs", "8", "--rings", "2", "--live", "left", "-o", "v.json",
+            "gen",
+            "vault",
+            "--voussoirs",
+            "8",
+            "--rings",
+            "2",
+            "--live",
+            "left",
+            "-o",
+            "v.json",
         ],
     );
     let out = run(
         &d,
         &[
-            "capacity", "v.json", "--move", "right=0,0,0,0,0.5,0", "--steps", "2", "--svg",
+            "capacity",
+            "v.json",
+            "--move",
+            "right=0,0,0,0,0.5,0",
+            "--steps",
+            "2",
+            "--svg",
             "v.svg",
         ],
     );
@@ -462,7 +621,16 @@ fn issue28_item11_capacity_prints_every_step_or_says_which() {
     let d = tmpdir("rows");
     run(
         &d,
-        &["gen", "arch", "--voussoirs", "16", "--live", "left", "-o", "arch.json"],
+        &[
+            "gen",
+            "arch",
+            "--voussoirs",
+            "16",
+            "--live",
+            "left",
+            "-o",
+            "arch.json",
+        ],
     );
     let rows = |out: &str| -> Vec<f64> {
         let start = out.lines().position(|l| l.contains("s (cm)")).unwrap() + 1;
@@ -474,7 +642,14 @@ fn issue28_item11_capacity_prints_every_step_or_says_which() {
     };
     let out = run(
         &d,
-        &["capacity", "arch.json", "--move", "right=0.01,0", "--steps", "40"],
+        &[
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--steps",
+            "40",
+        ],
     );
     let s = rows(&out);
     assert_eq!(s.len(), 41, "{out}");
@@ -485,7 +660,14 @@ fn issue28_item11_capacity_prints_every_step_or_says_which() {
     assert!(!out.contains("shown"));
     let out = run(
         &d,
-        &["capacity", "arch.json", "--move", "right=0.01,0", "--steps", "150"],
+        &[
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--steps",
+            "150",
+        ],
     );
     assert!(
         out.contains("(every 2nd of 150 steps shown, and the last; all in -o/--json)"),
@@ -504,8 +686,15 @@ fn issue28_item4_capacity_honours_the_exact_friction_cone() {
     run(&d, &["gen", "block", "--azimuth", "22.5", "-o", "b.json"]);
     let lambda0 = |extra: &[&str]| -> f64 {
         let mut args = vec![
-            "capacity", "b.json", "--friction", "0.3", "--move", "base=0,0,-0.01", "--steps",
-            "2", "--json",
+            "capacity",
+            "b.json",
+            "--friction",
+            "0.3",
+            "--move",
+            "base=0,0,-0.01",
+            "--steps",
+            "2",
+            "--json",
         ];
         args.extend_from_slice(extra);
         let r: serde_json::Value = serde_json::from_str(&run(&d, &args)).unwrap();
@@ -516,12 +705,22 @@ fn issue28_item4_capacity_honours_the_exact_friction_cone() {
     assert!((exact - 0.3).abs() < 1e-6, "exact cone λ = {exact}");
     // The inscribed pyramid of 8 facets resists between μ·cos(π/8) and μ.
     let lo = 0.3 * (std::f64::consts::PI / 8.0).cos();
-    assert!(pyramid >= lo - 1e-6 && pyramid < exact - 1e-3, "pyramid λ = {pyramid}");
+    assert!(
+        pyramid >= lo - 1e-6 && pyramid < exact - 1e-3,
+        "pyramid λ = {pyramid}"
+    );
     let e = refused(
         &d,
         &[
-            "capacity", "b.json", "--friction", "0.3", "--move", "base=0,0,-0.01",
-            "--friction-cone", "exact", "--non-associative",
+            "capacity",
+            "b.json",
+            "--friction",
+            "0.3",
+            "--move",
+            "base=0,0,-0.01",
+            "--friction-cone",
+            "exact",
+            "--non-associative",
         ],
     );
     assert!(e.contains("--non-associative"), "{e}");
@@ -537,13 +736,34 @@ fn issue28_item6_plot_refuses_flags_that_do_not_apply() {
     run(&d, &["limit", "b2.json", "-o", "l2.json"]);
     run(&d, &["safety", "b2.json", "-o", "s2.json"]);
     for (args, needle) in [
-        (&["plot", "l3.json", "-o", "x.png", "--forces"][..], "--forces"),
-        (&["plot", "l2.json", "-o", "x.png", "--view", "plan"][..], "--view"),
-        (&["plot", "s2.json", "-o", "x.png", "--scale", "2"][..], "--scale"),
-        (&["plot", "l2.json", "-o", "x.html", "--width", "500"][..], "--width"),
-        (&["plot", "l3.json", "-o", "x.html", "--scale", "2"][..], "--scale"),
-        (&["plot", "b3.json", "-o", "x.png", "--undeformed"][..], "--undeformed"),
-        (&["plot", "l2.json", "-o", "x.png", "--label", "a"][..], "--label"),
+        (
+            &["plot", "l3.json", "-o", "x.png", "--forces"][..],
+            "--forces",
+        ),
+        (
+            &["plot", "l2.json", "-o", "x.png", "--view", "plan"][..],
+            "--view",
+        ),
+        (
+            &["plot", "s2.json", "-o", "x.png", "--scale", "2"][..],
+            "--scale",
+        ),
+        (
+            &["plot", "l2.json", "-o", "x.html", "--width", "500"][..],
+            "--width",
+        ),
+        (
+            &["plot", "l3.json", "-o", "x.html", "--scale", "2"][..],
+            "--scale",
+        ),
+        (
+            &["plot", "b3.json", "-o", "x.png", "--undeformed"][..],
+            "--undeformed",
+        ),
+        (
+            &["plot", "l2.json", "-o", "x.png", "--label", "a"][..],
+            "--label",
+        ),
     ] {
         let e = refused(&d, args);
         assert!(e.contains(needle), "{args:?}: {e}");

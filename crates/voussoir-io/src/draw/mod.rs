@@ -143,8 +143,17 @@ pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
     // Duplicate keys are refused as the analyses' readers refuse them (a `Value` would keep the
     // last one silently).
     crate::files::unique_keys(text).map_err(|e| IoError(format!("invalid JSON: {e}")))?;
-    let v: serde_json::Value =
-        serde_json::from_str(text).map_err(|e| IoError(format!("not JSON: {e}")))?;
+    let v: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+        let lines = text.lines().filter(|l| !l.trim().is_empty()).count();
+        let first = text.lines().next().unwrap_or("");
+        if lines > 1 && serde_json::from_str::<serde_json::Map<_, _>>(first).is_ok() {
+            IoError(
+                "JSON lines (as `sweep --jsonl` writes): voussoir plot draws one result per file; a sweep's distribution of λ is drawn by `sweep --capacity --svg/--png/--report`".into(),
+            )
+        } else {
+            IoError(format!("not JSON: {e}"))
+        }
+    })?;
     let obj = v
         .as_object()
         .ok_or_else(|| IoError("expected a JSON object (a saved result or a model)".into()))?;

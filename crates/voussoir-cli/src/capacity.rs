@@ -4,7 +4,8 @@
 use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
 use clap::Args;
 use std::fmt::Write as _;
-use voussoir::analysis::capacity::{capacity, CapacityOptions, CapacityResult};
+use voussoir::analysis::capacity::{capacity, CapacityOptions, CapacityResult, SettlementUnit};
+use voussoir::analysis::limit::Crushing;
 use voussoir::model3d::AnyModel;
 use voussoir::Assembly;
 use voussoir_io::draw::capacity::LinearFitText;
@@ -17,7 +18,8 @@ pub struct CapacityArgs {
     #[command(flatten)]
     pub settle: SettleArgs,
     /// Number of intervals of the curve (it has N + 1 points from 0 to the largest
-    /// settlement).
+    /// settlement). The summary prints every point up to 100 steps; beyond, every k-th (and
+    /// the last), and says so; -o and --json hold them all.
     #[arg(long, default_value_t = 40, value_name = "N")]
     pub steps: usize,
     /// Keep `fixed` supports tied to their blocks after the settlement (default: they act as
@@ -81,14 +83,30 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             a.out.emit(&r, || summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
-            a.draw.refuse_3d()?;
+            a.draw.refuse_3d_curve()?;
             if a.crushing.given() {
                 return Err(Fail(
                     "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
                 ));
             }
+            let exact = input.exact_friction_cone;
+            if exact && nonassociative.is_some() {
+                return Err(Fail(
+                    "--non-associative goes with the friction pyramid, not --friction-cone exact"
+                        .into(),
+                ));
+            }
             let st = input.structure3d(model, Some(&motion))?;
+            // In 3D the conic joint law of a limit analysis is the exact Coulomb cone (as
+            // `limit --friction-cone exact`): every limit analysis of the curve is a
+            // second-order cone program. The settlement that deforms the geometry is solved by
+            // the library's conic settlement program (`solve_settlement_conic`).
             let opts = CapacityOptions {
+                crushing: if exact {
+                    Crushing::Conic
+                } else {
+                    Crushing::Linear
+                },
                 solver: if nonassociative.is_some() {
                     crate::common::iteration_solver(&a.model, &input.solver3d)
                 } else {
@@ -97,9 +115,45 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                 ..opts
             };
             let r = capacity(&st, &opts)?;
-            a.out.emit(&r, || summary(&st, &r))
+            a.draw.emit_capacity(&r, &input.path)?;
+            a.out.emit(&r, || {
+                let mut s = summary(&st, &r);
+                if exact {
+                    s.push_str(
+                        "friction: the exact Coulomb cone in every limit analysis (second-order cone programs)\n",
+                    );
+                }
+                s
+            })
         }
     }
+}
+
+/// Most rows of the summary's table: beyond, every k-th point is printed (and the last).
+const MAX_ROWS: usize = 101;
+
+/// "2nd", "3rd", "11th", "22nd".
+fn ordinal(k: usize) -> String {
+    let suffix = match (k % 10, k % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{k}{suffix}")
+}
+
+/// A support's direction per unit settlement: the translation, or the rotation when the
+/// settlement is a rotation (2D: θ; 3D: θx, θy, θz; in rad per rad).
+fn direction_text(motion: &[f64], unit: SettlementUnit) -> String {
+    let n = SettlementUnit::translations(motion.len());
+    let part = match unit {
+        SettlementUnit::Translation => &motion[..n],
+        SettlementUnit::Rotation => &motion[n..],
+    };
+    let m: Vec<String> = part.iter().map(|x| format!("{x:.3}")).collect();
+    m.join(", ")
 }
 
 fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
@@ -109,38 +163,46 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
     if r.curve.is_empty() {
         return s;
     }
+    let unit = r.unit();
+    let (k, u) = (unit.factor(), unit.shown());
     let moving: Vec<String> = r
         .direction
         .iter()
-        .map(|d| {
-            let m: Vec<String> = d.motion.iter().map(|x| format!("{x:.3}")).collect();
-            // The translation: (u, v) in 2D, (u, v, w) in 3D.
-            let n = if m.len() == 3 { 2 } else { 3 };
-            format!("{} ({})", d.support, m[..n].join(", "))
-        })
+        .map(|d| format!("{} ({})", d.support, direction_text(&d.motion, unit)))
         .collect();
+    let what = match unit {
+        SettlementUnit::Translation => "settlement direction",
+        SettlementUnit::Rotation => "support rotation direction (rad per rad)",
+    };
     let _ = writeln!(
         s,
-        "settlement direction: {}; largest settlement {:.4} cm",
+        "{what}: {}; largest {} {:.4} {u}",
         moving.join(", "),
-        r.max_settlement * 100.0
+        unit.noun(),
+        r.max_settlement * k
     );
-    let hinges: Vec<String> = r
-        .settlement_hinges
-        .iter()
-        .map(|h| h.joint.to_string())
-        .collect();
-    let _ = writeln!(
-        s,
-        "hinges opened by the settlement: joints {}",
-        hinges.join(", ")
-    );
+    // One entry per hinged joint (a 3D hinge line has several points on one joint).
+    let mut joints: Vec<usize> = r.settlement_hinges.iter().map(|h| h.joint).collect();
+    joints.sort_unstable();
+    joints.dedup();
+    let hinges: Vec<String> = joints.iter().map(|j| j.to_string()).collect();
+    if hinges.is_empty() {
+        let _ = writeln!(s, "hinges opened by the settlement: none");
+    } else {
+        let _ = writeln!(
+            s,
+            "hinges opened by the settlement: joints {}",
+            hinges.join(", ")
+        );
+    }
     if let Some(z) = r.zero_capacity_settlement {
         let _ = writeln!(
             s,
-            "zero-capacity settlement: {:.5} m ({:.3} cm)",
+            "zero-capacity {}: {:.5} {} ({:.3} {u})",
+            unit.noun(),
             z,
-            z * 100.0
+            unit.si(),
+            z * k
         );
     }
     match voussoir_io::draw::capacity::linear_fit_text(r) {
@@ -152,10 +214,24 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         }
         None => {}
     }
-    let _ = writeln!(s, "{:>12}  {:>12}  valid", "s (cm)", "λ");
-    let every = (r.curve.len() / 20).max(1);
+    let n = r.curve.len();
+    let every = if n <= MAX_ROWS {
+        1
+    } else {
+        (n - 1).div_ceil(MAX_ROWS - 1)
+    };
+    let head = format!("s ({u})");
+    if every > 1 {
+        let _ = writeln!(
+            s,
+            "(every {} of {} steps shown, and the last; all in -o/--json)",
+            ordinal(every),
+            n - 1
+        );
+    }
+    let _ = writeln!(s, "{head:>12}  {:>12}  valid", "λ");
     for (i, p) in r.curve.iter().enumerate() {
-        if i % every != 0 && i + 1 != r.curve.len() {
+        if i % every != 0 && i + 1 != n {
             continue;
         }
         let l = p
@@ -166,7 +242,7 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         } else {
             format!("no (closes joints {:?})", p.closing_joints)
         };
-        let _ = writeln!(s, "{:>12.5}  {:>12}  {}", p.settlement * 100.0, l, v);
+        let _ = writeln!(s, "{:>12.5}  {:>12}  {}", p.settlement * k, l, v);
     }
     let _ = writeln!(
         s,

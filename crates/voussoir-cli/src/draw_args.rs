@@ -87,11 +87,17 @@ impl DrawArgs {
         Ok(())
     }
 
-    /// Flags on a 3D result whose figure is a curve (capacity): only the VTK-less JSON for now.
-    pub fn refuse_3d(&self) -> Result<(), Fail> {
-        if self.any() || self.vtk.is_some() {
+    /// Flags of a 3D structure drawing that a capacity result (its figure is the λ(s) curve)
+    /// does not take: `--vtk` and `--view`.
+    pub fn refuse_3d_curve(&self) -> Result<(), Fail> {
+        if self.vtk.is_some() {
             return Err(Fail(
-                "--svg, --png, --report and --vtk draw the structure of a limit, settle or tilt result; a 3D capacity curve is written as JSON (-o)".into(),
+                "--vtk writes the structure of a limit, settle or tilt result; a capacity result is the λ(s) curve (--svg, --png, --report; the settlement mechanism: `settle --vtk`)".into(),
+            ));
+        }
+        if self.view.is_some() {
+            return Err(Fail(
+                "--view chooses the view of a 3D structure drawing; the capacity figure is the λ(s) curve".into(),
             ));
         }
         Ok(())
@@ -209,27 +215,20 @@ impl DrawArgs {
     /// Tilting table: the collapse mechanism at the critical tilt (the live load is the
     /// horizontal λ·W of every block, λ = tan α); the report is the limit analysis' report.
     pub fn emit_tilt(&self, r: &TiltResult, source: &Path) -> Result<(), Fail> {
-        let mut scene = Scene::limit(&r.limit);
-        let towards = if r.direction > 0.0 { "+x" } else { "−x" };
-        if let Some(a) = r.tilt_angle {
-            scene.title = format!("Tilting table: collapse mechanism towards {towards}");
-            scene.info.insert(
-                0,
-                format!("critical tilt angle α = {a:.3}°   ·   live load: horizontal, λ = tan α"),
-            );
-        }
-        let mut ro = self.report_options(source);
-        if ro.title.is_none() {
-            ro.title = Some(scene.title.clone());
-        }
-        self.emit_scene(scene, || draw::limit_report(&r.limit, &ro))
+        self.emit_scene(draw::tilt_scene(r), || {
+            draw::tilt_report(r, &self.report_options(source))
+        })
     }
 
     /// Capacity analysis: the figure is the λ–settlement curve; the report adds the settlement
     /// mechanism and the table of steps.
-    pub fn emit_capacity(&self, r: &CapacityResult, source: &Path) -> Result<(), Fail> {
+    pub fn emit_capacity<D: draw::capacity::CapacityFigures>(
+        &self,
+        r: &CapacityResult<D>,
+        source: &Path,
+    ) -> Result<(), Fail> {
         self.emit_curve(
-            "Collapse load multiplier after settlement",
+            draw::CAPACITY_TITLE,
             |title| draw::capacity_plot(&[("λ(s)", r)], title).svg,
             || draw::capacity_report(r, &self.report_options(source)).to_html(),
         )
@@ -239,7 +238,7 @@ impl DrawArgs {
     /// the mechanisms and the events.
     pub fn emit_incremental(&self, r: &IncrementalResult, source: &Path) -> Result<(), Fail> {
         self.emit_curve(
-            "Load multiplier against control displacement",
+            draw::INCREMENTAL_TITLE,
             |title| draw::incremental_plot(&[("λ(dx)", r)], title).svg,
             || draw::incremental_report(r, &self.report_options(source)).to_html(),
         )

@@ -75,8 +75,9 @@ enum Command {
     /// Inverse settlement analysis: the support motions whose settlement mechanism opens the
     /// observed cracks, with misfits, a forward-analysis certificate and identifiability.
     Identify(identify::IdentifyArgs),
-    /// Draw a saved result (limit, settlement, capacity, incremental; several curves on one
-    /// plot) or a model: `-o fig.svg`, `fig.png` or `report.html`.
+    /// Draw what an analysis wrote with -o (limit, settle, capacity, tilt, incremental, identify,
+    /// safety; 2D or 3D; several curves on one plot) or a model: `-o fig.svg`, `fig.png` or
+    /// `report.html`.
     Plot(plot::PlotArgs),
     /// Many settlement analyses in parallel: magnitudes, directions or Monte Carlo samples of
     /// the support motions, with --capacity the capacity after each (distribution of λ); JSON

@@ -714,7 +714,42 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
         .collect();
     let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
-    let legend_h = if opts.legend { 58.0 } else { 8.0 };
+    // The legend's first row wraps when its items are wider than the figure: the items it may
+    // hold (a superset of those drawn below), measured as drawn.
+    let legend_fs = 12.5;
+    let legend_rows = if opts.legend {
+        let live_max_l = human(live_max, 3);
+        let dead_max_l = human(dead_max, 3);
+        let live_label = format!("live load × λ (largest {live_max_l} kN)");
+        let dead_label = format!("dead load (largest {dead_max_l} kN)");
+        let items: Vec<&str> = [
+            (has_motion && opts.undeformed, "undeformed"),
+            (show_supports && !g.supports.is_empty(), "support"),
+            (opts.hinges && !r.hinges().is_empty(), "hinge (point, line)"),
+            (
+                opts.cracks && r.joints().iter().any(|j| j.state != JointState::Closed),
+                "crack (joint not closed)",
+            ),
+            (
+                opts.thrust_points && !r.thrust_line().is_empty(),
+                "centre of pressure",
+            ),
+            (loads.iter().any(|l| l.3), live_label.as_str()),
+            (loads.iter().any(|l| !l.3), dead_label.as_str()),
+        ]
+        .iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, l)| *l)
+        .collect();
+        legend_row_count(&items, legend_fs, width - 2.0 * margin)
+    } else {
+        0
+    };
+    let legend_h = if opts.legend {
+        58.0 + 22.0 * (legend_rows.max(1) - 1) as f64
+    } else {
+        8.0
+    };
     let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
     let (draw_w, draw_h) = (bw * k, bh * k);
     let height = (title_h + margin + draw_h + margin + legend_h).ceil();
@@ -1168,9 +1203,9 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     }
 
     if opts.legend {
-        let fs = 12.5;
+        let fs = legend_fs;
         let top = height - legend_h;
-        let y = top + 16.0;
+        let mut y = top + 16.0;
         let _ = writeln!(
             o,
             "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#dddddd\" stroke-width=\"1\"/>",
@@ -1180,7 +1215,13 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
             num(top)
         );
         let mut x = margin;
+        let right_end = width - margin;
         let mut put = |o: &mut String, symbol: &str, label: &str| {
+            let w = legend_item_width(label, fs);
+            if x > margin && x + w - 22.0 > right_end {
+                x = margin;
+                y += 22.0;
+            }
             let _ = writeln!(
                 o,
                 "<g transform=\"translate({} {})\">{symbol}</g>",
@@ -1194,7 +1235,7 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
                 num(y + 4.5),
                 esc(label)
             );
-            x += 28.0 + text_width(label, fs) + 22.0;
+            x += w;
         };
         if has_motion && opts.undeformed {
             put(&mut o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed");
@@ -1232,8 +1273,8 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
                 &format!("dead load (largest {} kN)", human(dead_max, 3)),
             );
         }
-        // Second row: scale bar (lengths in the picture plane), displacement scale, view.
-        let y2 = y + 24.0;
+        // Last row: scale bar (lengths in the picture plane), displacement scale, view.
+        let y2 = top + 16.0 + 22.0 * (legend_rows.max(1) - 1) as f64 + 24.0;
         let bx = margin;
         let bar_end = scale_bar(&mut o, bx, y2, size, k, fs);
         let mut tx = bar_end + 30.0;
@@ -1271,6 +1312,25 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         camera: cam,
         deformed: has_motion,
     })
+}
+
+/// Width of a legend item: its symbol, its label and the gap after it.
+fn legend_item_width(label: &str, fs: f64) -> f64 {
+    28.0 + text_width(label, fs) + 22.0
+}
+
+/// Rows that legend items with these labels take within `avail` pixels (at least 1).
+fn legend_row_count(labels: &[&str], fs: f64, avail: f64) -> usize {
+    let (mut rows, mut x) = (1, 0.0);
+    for l in labels {
+        let w = legend_item_width(l, fs);
+        if x > 0.0 && x + w - 22.0 > avail {
+            rows += 1;
+            x = 0.0;
+        }
+        x += w;
+    }
+    rows
 }
 
 /// The drawing as PNG ([`crate::draw::PNG_ZOOM`] pixels per SVG pixel), with the drawing used.

@@ -64,12 +64,16 @@ pub fn report3d_html(
     let mut rows = r.key_numbers();
     rows.push((
         "model".into(),
-        format!(
-            "{} blocks, {} supports, {} joints",
-            g.blocks.len(),
-            g.supports.len(),
-            r.joints().len()
-        ),
+        if r.joints().is_empty() {
+            format!("{} blocks, {} supports", g.blocks.len(), g.supports.len())
+        } else {
+            format!(
+                "{} blocks, {} supports, {} joints",
+                g.blocks.len(),
+                g.supports.len(),
+                r.joints().len()
+            )
+        },
     ));
     rows.push((
         "motions".into(),

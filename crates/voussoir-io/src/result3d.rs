@@ -8,9 +8,10 @@
 
 use crate::draw::MotionUnits;
 use crate::IoError;
-use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
+use voussoir::analysis::tilt::TiltResult;
+use voussoir::analysis::{CapacityResult, LimitResult, LimitStatus, SettlementResult};
 use voussoir::dim::Three;
-use voussoir::result::spatial::SpatialShapes;
+use voussoir::result::spatial::{SpatialMotion, SpatialShapes};
 use voussoir::result::{BlockMotion, BodyName, Hinge, JointResult, JointState, ThrustPoint};
 
 /// A 3D result that can be written to VTK or drawn: a limit or a settlement result.
@@ -219,6 +220,311 @@ impl Result3d for SettlementResult<Three> {
         k.push(("cracked joints".to_string(), crack_summary(&self.joints)));
         k
     }
+}
+
+/// The tilting-table result: its limit analysis, titled and summed up by the tilt angle.
+impl Result3d for TiltResult<Three> {
+    fn blocks(&self) -> &[BlockMotion<Three>] {
+        self.limit.blocks()
+    }
+    fn joints(&self) -> &[JointResult<Three>] {
+        self.limit.joints()
+    }
+    fn hinges(&self) -> &[Hinge<Three>] {
+        self.limit.hinges()
+    }
+    fn thrust_line(&self) -> &[ThrustPoint<Three>] {
+        self.limit.thrust_line()
+    }
+    fn shapes(&self) -> &SpatialShapes {
+        self.limit.shapes()
+    }
+    fn units(&self) -> MotionUnits {
+        self.limit.units()
+    }
+    fn live_loads(&self) -> bool {
+        true
+    }
+    fn supports_move(&self) -> bool {
+        false
+    }
+    fn title(&self) -> String {
+        match self.tilt_angle {
+            Some(_) => format!(
+                "Tilting table: collapse mechanism towards azimuth {}°",
+                crate::draw::svg::human(self.azimuth.unwrap_or(0.0), 6)
+            ),
+            None => self.limit.title(),
+        }
+    }
+    fn info(&self) -> Vec<String> {
+        let mut info = self.limit.info();
+        if let Some(a) = self.tilt_angle {
+            info.insert(
+                0,
+                format!("critical tilt angle α = {a:.3}°   ·   live load: horizontal, λ = tan α"),
+            );
+        }
+        info
+    }
+    fn key_numbers(&self) -> Vec<(String, String)> {
+        let mut k = vec![(
+            "critical tilt angle α (degrees)".to_string(),
+            num6(self.tilt_angle),
+        )];
+        k.push((
+            "azimuth of the tilt (degrees from x towards y)".to_string(),
+            num6(Some(self.azimuth.unwrap_or(0.0))),
+        ));
+        k.extend(self.limit.key_numbers());
+        k
+    }
+}
+
+/// A 3D figure assembled from parts, drawn and reported as a result is: a model with its loads
+/// (nothing moves) or the settlement mechanism of a capacity analysis (no joint results).
+#[derive(Clone, Debug)]
+pub struct Figure3d {
+    pub shapes: SpatialShapes,
+    pub blocks: Vec<BlockMotion<Three>>,
+    /// Joints, only to say which body carries each hinge (closed, without points).
+    pub joints: Vec<JointResult<Three>>,
+    pub hinges: Vec<Hinge<Three>>,
+    pub units: MotionUnits,
+    pub live_loads: bool,
+    pub supports_move: bool,
+    pub title: String,
+    pub info: Vec<String>,
+}
+
+impl Figure3d {
+    /// A model with its loads.
+    pub fn model(shapes: SpatialShapes) -> Figure3d {
+        let live = shapes.loads.iter().filter(|l| l.live).count();
+        let info = vec![format!(
+            "{}, {}; {}",
+            plural(shapes.blocks.len(), "block"),
+            plural(shapes.supports.len(), "support"),
+            if live == 0 {
+                "no live loads".to_string()
+            } else {
+                format!("{} (arrows)", plural(live, "live load"))
+            }
+        )];
+        Figure3d {
+            shapes,
+            blocks: vec![],
+            joints: vec![],
+            hinges: vec![],
+            units: MotionUnits::Normalised,
+            live_loads: true,
+            supports_move: false,
+            title: "Model and loads".to_string(),
+            info,
+        }
+    }
+
+    /// The settlement mechanism of a capacity analysis at its largest settlement (metres).
+    pub fn capacity_settlement(r: &CapacityResult<Three>) -> Figure3d {
+        let s = if r.max_settlement.is_finite() {
+            r.max_settlement
+        } else {
+            0.0
+        };
+        let blocks = r
+            .settlement_mechanism
+            .iter()
+            .map(|b| BlockMotion {
+                id: b.id,
+                motion: SpatialMotion {
+                    u: b.u * s,
+                    v: b.v * s,
+                    w: b.w * s,
+                    theta_x: b.theta_x * s,
+                    theta_y: b.theta_y * s,
+                    theta_z: b.theta_z * s,
+                },
+            })
+            .collect();
+        let mut info: Vec<String> = support_motion_text(&r.geometry).into_iter().collect();
+        let mut ids: Vec<usize> = r.settlement_hinges.iter().map(|h| h.joint).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        info.push(format!(
+            "hinges opened by the settlement on {}",
+            plural(ids.len(), "joint")
+        ));
+        // The result lists no joints: each hinged joint is given the block its first hinge
+        // point lies on, so that the drawing carries the hinge with that block (at a hinge
+        // both sides move alike, so either side does).
+        let joints = ids
+            .iter()
+            .map(|&id| {
+                let h = r.settlement_hinges.iter().find(|h| h.joint == id);
+                let body = h
+                    .and_then(|h| block_on(&r.geometry, [h.x, h.y, h.z]))
+                    .map_or(BodyName::Block(usize::MAX), BodyName::Block);
+                JointResult {
+                    id,
+                    a: body.clone(),
+                    b: body,
+                    normal: [0.0, 0.0, 1.0],
+                    points: vec![],
+                    normal_force: 0.0,
+                    shear_force: [0.0, 0.0],
+                    eccentricity: None,
+                    state: JointState::Closed,
+                    compressed_depth: None,
+                }
+            })
+            .collect();
+        Figure3d {
+            shapes: r.geometry.clone(),
+            blocks,
+            joints,
+            hinges: r.settlement_hinges.clone(),
+            units: MotionUnits::Metres,
+            live_loads: false,
+            supports_move: true,
+            title: "Settlement mechanism at the largest settlement".to_string(),
+            info,
+        }
+    }
+}
+
+impl Result3d for Figure3d {
+    fn blocks(&self) -> &[BlockMotion<Three>] {
+        &self.blocks
+    }
+    fn joints(&self) -> &[JointResult<Three>] {
+        &self.joints
+    }
+    fn hinges(&self) -> &[Hinge<Three>] {
+        &self.hinges
+    }
+    fn thrust_line(&self) -> &[ThrustPoint<Three>] {
+        &[]
+    }
+    fn shapes(&self) -> &SpatialShapes {
+        &self.shapes
+    }
+    fn units(&self) -> MotionUnits {
+        self.units
+    }
+    fn live_loads(&self) -> bool {
+        self.live_loads
+    }
+    fn supports_move(&self) -> bool {
+        self.supports_move
+    }
+    fn title(&self) -> String {
+        self.title.clone()
+    }
+    fn info(&self) -> Vec<String> {
+        self.info.clone()
+    }
+}
+
+/// The first block with a face through `p` (within 1e-6 of the model's size of the face's
+/// plane, and inside the face's bounding box so enlarged); None if there is none.
+fn block_on(g: &SpatialShapes, p: V3) -> Option<usize> {
+    if !finite(p) {
+        return None;
+    }
+    let size = g
+        .blocks
+        .iter()
+        .flat_map(|b| b.vertices.iter())
+        .fold(0.0f64, |m, v| m.max(norm(sub(*v, p))))
+        .max(1e-300);
+    let tol = 1e-6 * size;
+    g.blocks.iter().position(|b| {
+        b.faces.iter().any(|f| {
+            let pts: Vec<V3> = f
+                .iter()
+                .filter_map(|&i| b.vertices.get(i).copied())
+                .collect();
+            if pts.len() < 3 {
+                return false;
+            }
+            let n = (1..pts.len() - 1).fold([0.0; 3], |a, k| {
+                add(a, cross(sub(pts[k], pts[0]), sub(pts[k + 1], pts[0])))
+            });
+            let l = norm(n);
+            if l.is_nan() || l <= 0.0 {
+                return false;
+            }
+            let inside = (0..3).all(|c| {
+                let lo = pts.iter().fold(f64::INFINITY, |m, q| m.min(q[c]));
+                let hi = pts.iter().fold(f64::NEG_INFINITY, |m, q| m.max(q[c]));
+                p[c] >= lo - tol && p[c] <= hi + tol
+            });
+            inside && (dot(sub(p, pts[0]), n) / l).abs() <= tol
+        })
+    })
+}
+
+/// A 3D model's key numbers for a report: blocks, supports, size, total dead and live loads.
+pub fn model_rows_3d(g: &SpatialShapes, source: &str) -> Vec<(String, String)> {
+    use crate::draw::svg::human;
+    let mut kv = Vec::new();
+    if !source.is_empty() {
+        kv.push(("model".to_string(), source.to_string()));
+    }
+    kv.push(("blocks".into(), g.blocks.len().to_string()));
+    let sup: Vec<String> = g
+        .supports
+        .iter()
+        .map(|s| {
+            format!(
+                "{}{}",
+                s.name,
+                if s.fixed { " (fixed)" } else { " (contact)" }
+            )
+        })
+        .collect();
+    kv.push(("supports".into(), sup.join(", ")));
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for v in g
+        .blocks
+        .iter()
+        .flat_map(|b| b.vertices.iter())
+        .chain(g.supports.iter().flat_map(|s| s.vertices.iter()))
+        .filter(|v| finite(**v))
+    {
+        for c in 0..3 {
+            lo[c] = lo[c].min(v[c]);
+            hi[c] = hi[c].max(v[c]);
+        }
+    }
+    if lo[0] <= hi[0] {
+        kv.push((
+            "extent x × y × z (m)".into(),
+            format!(
+                "{} × {} × {}",
+                human(hi[0] - lo[0], 4),
+                human(hi[1] - lo[1], 4),
+                human(hi[2] - lo[2], 4)
+            ),
+        ));
+    }
+    let total = |live: bool| {
+        g.loads
+            .iter()
+            .filter(|l| l.live == live)
+            .fold([0.0; 3], |a, l| add(a, [l.fx, l.fy, l.fz]))
+    };
+    let show = |f: V3| {
+        format!(
+            "({}, {}, {}) kN",
+            human(f[0], 4),
+            human(f[1], 4),
+            human(f[2], 4)
+        )
+    };
+    kv.push(("total dead load (fx, fy, fz)".into(), show(total(false))));
+    kv.push(("total live load (fx, fy, fz)".into(), show(total(true))));
+    kv
 }
 
 /// "prescribed support motion: right w = −10 mm" for the supports that move (at most three

@@ -558,7 +558,13 @@ fn draw_svg(
             forces,
             ..DrawOptions::default()
         };
-        Ok(draw::draw_saved(&saved, &opts, title.as_deref()).svg)
+        if forces && saved.is_3d() {
+            return Err(Fail::Model(
+                "forces=True: the 3D drawing shows the centres of pressure, not force arrows"
+                    .into(),
+            ));
+        }
+        Ok(draw::draw_saved(&saved, &opts, title.as_deref())?.svg)
     })
 }
 
@@ -581,8 +587,7 @@ fn report_html(
                 source,
                 scale,
             },
-        )
-        .to_html())
+        )?)
     })
 }
 

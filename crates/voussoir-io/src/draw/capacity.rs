@@ -6,8 +6,11 @@ use super::plot::{plot, Mark, Plot, PlotSpec, Series, SERIES_COLOURS};
 use super::report::{model_summary, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
-use voussoir::analysis::capacity::{CapacityResult, CapacityStatus};
-use voussoir::result::BlockMotion;
+use voussoir::analysis::capacity::{
+    CapacityResult, CapacityStatus, SettlementUnit, SupportDirection,
+};
+use voussoir::dim::{Three, Two};
+use voussoir::result::{BlockMotion, Spatial};
 
 /// Largest deviation from the least-squares line, relative to λ(0), up to which λ(s) is called
 /// linear and its fit is shown (5 %: within the scatter engineers accept for a straight-line
@@ -23,17 +26,16 @@ pub enum LinearFitText {
 }
 
 /// See [`LinearFitText`]; `None` without a fit (fewer than two valid points).
-pub fn linear_fit_text<D: voussoir::result::Spatial>(
-    r: &CapacityResult<D>,
-) -> Option<LinearFitText> {
+pub fn linear_fit_text<D: Spatial>(r: &CapacityResult<D>) -> Option<LinearFitText> {
     let f = r.linear_fit.as_ref()?;
     let dev = human(100.0 * f.max_relative_deviation, 3);
     if f.max_relative_deviation <= LINEAR_FIT_TOLERANCE {
         Some(LinearFitText::Fits(format!(
-            "λ ≈ {} {} {}·s (s in m); largest deviation {} % of λ(0)",
+            "λ ≈ {} {} {}·s (s in {}); largest deviation {} % of λ(0)",
             fmt_fixed(f.intercept, 4),
             if f.slope < 0.0 { "−" } else { "+" },
             human(f.slope.abs(), 4),
+            r.unit().si(),
             dev
         )))
     } else {
@@ -44,15 +46,21 @@ pub fn linear_fit_text<D: voussoir::result::Spatial>(
     }
 }
 
-/// The curve λ(s) of one result as plot series (settlement in cm): the valid points as a solid
-/// line with markers and, if any, the points where the collapse mechanism would close
-/// settlement cracks (standard limit analysis not valid there) dashed.
-pub fn capacity_series(r: &CapacityResult, label: &str, colour: &str) -> Vec<Series> {
+/// The curve λ(s) of one result as plot series (a settlement in cm, a support rotation in mrad:
+/// [`SettlementUnit`]): the valid points as a solid line with markers and, if any, the points
+/// where the collapse mechanism would close settlement cracks (standard limit analysis not valid
+/// there) dashed.
+pub fn capacity_series<D: Spatial>(
+    r: &CapacityResult<D>,
+    label: &str,
+    colour: &str,
+) -> Vec<Series> {
     let n = r.curve.len();
+    let k = r.unit().factor();
     let xy = |i: usize| -> [f64; 2] {
         let p = &r.curve[i];
         match p.load_multiplier {
-            Some(l) if l.is_finite() && p.settlement.is_finite() => [p.settlement * 100.0, l],
+            Some(l) if l.is_finite() && p.settlement.is_finite() => [p.settlement * k, l],
             _ => [f64::NAN, f64::NAN],
         }
     };
@@ -95,20 +103,29 @@ pub fn capacity_series(r: &CapacityResult, label: &str, colour: &str) -> Vec<Ser
     out
 }
 
-/// λ–settlement curves of one or more capacity results on one plot, with the settlement at
-/// which λ reaches zero marked on each.
-pub fn capacity_plot(curves: &[(&str, &CapacityResult)], title: &str) -> Plot {
-    let mut series = Vec::new();
-    let mut marks = Vec::new();
-    for (i, (label, r)) in curves.iter().enumerate() {
+/// What a capacity figure draws of a result, whatever its dimension: the curve's series and
+/// marks, and the unit of its settlement axis.
+pub struct CapacityCurve {
+    pub series: Vec<Series>,
+    pub marks: Vec<Mark>,
+    pub unit: SettlementUnit,
+}
+
+impl CapacityCurve {
+    /// The curve of `r` (the `i`-th of `of` curves on one plot: its colour, and the λ₀ mark
+    /// when it is alone).
+    pub fn of<D: Spatial>(r: &CapacityResult<D>, label: &str, i: usize, of: usize) -> Self {
         let colour = SERIES_COLOURS[i % SERIES_COLOURS.len()];
-        series.extend(capacity_series(r, label, colour));
+        let unit = r.unit();
+        let (k, u) = (unit.factor(), unit.shown());
+        let series = capacity_series(r, label, colour);
+        let mut marks = Vec::new();
         if let Some(s0) = r.zero_capacity_settlement {
             if s0.is_finite() {
                 marks.push(Mark::new(
-                    s0 * 100.0,
+                    s0 * k,
                     0.0,
-                    format!("λ = 0 at s = {} cm", fmt_fixed(s0 * 100.0, 3)),
+                    format!("λ = 0 at s = {} {u}", fmt_fixed(s0 * k, 3)),
                 ));
             }
         }
@@ -121,17 +138,14 @@ pub fn capacity_plot(curves: &[(&str, &CapacityResult)], title: &str) -> Plot {
                 .and_then(|p| p.load_multiplier);
             if let Some(l) = after {
                 marks.push(Mark::new(
-                    sc * 100.0,
+                    sc * k,
                     l,
-                    format!(
-                        "existing cracks closed, s = {} cm",
-                        fmt_fixed(sc * 100.0, 3)
-                    ),
+                    format!("existing cracks closed, s = {} {u}", fmt_fixed(sc * k, 3)),
                 ));
             }
         }
         if let Some(first) = r.curve.first().and_then(|p| p.load_multiplier) {
-            if r.curve.len() > 1 && curves.len() == 1 {
+            if r.curve.len() > 1 && of == 1 {
                 marks.push(Mark::new(
                     0.0,
                     first,
@@ -139,12 +153,55 @@ pub fn capacity_plot(curves: &[(&str, &CapacityResult)], title: &str) -> Plot {
                 ));
             }
         }
+        CapacityCurve {
+            series,
+            marks,
+            unit,
+        }
     }
+}
+
+/// The label of the settlement axis: "settlement s (cm)" or "support rotation s (mrad)".
+pub fn settlement_axis_label(unit: SettlementUnit) -> String {
+    format!("{} s ({})", unit.noun(), unit.shown())
+}
+
+/// λ–settlement curves of one or more capacity results on one plot, with the settlement at
+/// which λ reaches zero marked on each. The settlement axis is in cm, or in mrad when the
+/// supports only rotate ([`SettlementUnit`]).
+pub fn capacity_plot<D: Spatial>(curves: &[(&str, &CapacityResult<D>)], title: &str) -> Plot {
+    let n = curves.len();
+    let c: Vec<CapacityCurve> = curves
+        .iter()
+        .enumerate()
+        .map(|(i, (label, r))| CapacityCurve::of(r, label, i, n))
+        .collect();
+    capacity_curves_plot(&c, title)
+}
+
+/// [`capacity_plot`] of curves of either dimension. Curves of both kinds of settlement (a
+/// translation and a rotation) do not share an axis: the label then names both units (the CLI
+/// refuses to mix them).
+pub fn capacity_curves_plot(curves: &[CapacityCurve], title: &str) -> Plot {
+    let mut series = Vec::new();
+    let mut marks = Vec::new();
+    for c in curves {
+        series.extend(c.series.iter().cloned());
+        marks.extend(c.marks.iter().cloned());
+    }
+    let first = curves
+        .first()
+        .map_or(SettlementUnit::Translation, |c| c.unit);
+    let x_label = if curves.iter().all(|c| c.unit == first) {
+        settlement_axis_label(first)
+    } else {
+        "settlement s (cm) · support rotation s (mrad)".to_string()
+    };
     plot(
         &series,
         &PlotSpec {
             title: title.to_string(),
-            x_label: "settlement s (cm)".into(),
+            x_label,
             y_label: "collapse load multiplier λ".into(),
             marks,
             id: "cap".into(),
@@ -155,19 +212,127 @@ pub fn capacity_plot(curves: &[(&str, &CapacityResult)], title: &str) -> Plot {
 
 /// The settlement mechanism at the largest settlement, in metres (blocks and supports).
 pub fn settlement_motions(r: &CapacityResult) -> Vec<BlockMotion> {
-    let s = if r.max_settlement.is_finite() {
-        r.max_settlement
-    } else {
-        0.0
-    };
+    let s = largest(r);
     r.settlement_mechanism
         .iter()
         .map(|b| BlockMotion::planar(b.id, b.u * s, b.v * s, b.theta * s))
         .collect()
 }
 
-/// Report of a capacity analysis: key numbers, the curve, the settlement mechanism, the table.
-pub fn capacity_report(r: &CapacityResult, opts: &ReportOptions) -> Report {
+fn largest<D: Spatial>(r: &CapacityResult<D>) -> f64 {
+    if r.max_settlement.is_finite() {
+        r.max_settlement
+    } else {
+        0.0
+    }
+}
+
+/// What the capacity report draws and lists in each dimension: the model's key numbers, a
+/// support's direction, and the figure of the settlement mechanism (2D: the scene; 3D: the
+/// axonometric drawing of [`crate::draw3d`]).
+pub trait CapacityFigures: Spatial + Sized {
+    fn model_rows(r: &CapacityResult<Self>, source: &str) -> Vec<(String, String)>;
+    fn direction_text(d: &SupportDirection, unit: SettlementUnit) -> String;
+    /// The settlement mechanism at the largest settlement and its caption, if anything moves.
+    fn mechanism_figure(r: &CapacityResult<Self>, scale: Option<f64>) -> Option<(String, String)>;
+}
+
+/// Components of a support's direction: "(u, v, θ)" with the non-zero ones named.
+fn direction_parts(d: &SupportDirection, names: &[&str], unit: SettlementUnit) -> String {
+    let per = match unit {
+        SettlementUnit::Translation => "per m",
+        SettlementUnit::Rotation => "per rad",
+    };
+    let parts: Vec<String> = names
+        .iter()
+        .zip(&d.motion)
+        .filter(|(_, x)| **x != 0.0)
+        .map(|(n, x)| format!("{n} = {}", human(*x, 4)))
+        .collect();
+    format!("{} ({}) {per}", d.support, parts.join(", "))
+}
+
+impl CapacityFigures for Two {
+    fn model_rows(r: &CapacityResult<Two>, source: &str) -> Vec<(String, String)> {
+        model_summary(&r.geometry, 0, source)
+    }
+    fn direction_text(d: &SupportDirection, unit: SettlementUnit) -> String {
+        direction_parts(d, &["u", "v", "θ"], unit)
+    }
+    fn mechanism_figure(r: &CapacityResult<Two>, scale: Option<f64>) -> Option<(String, String)> {
+        let motions = settlement_motions(r);
+        if motions.is_empty() {
+            return None;
+        }
+        let mut scene = Scene::geometry(
+            &r.geometry,
+            "Settlement mechanism at the largest settlement",
+        );
+        scene.blocks = &motions;
+        scene.hinges = &r.settlement_hinges;
+        scene.units = MotionUnits::Metres;
+        let d = draw(
+            &scene,
+            &DrawOptions {
+                scale,
+                interactive: true,
+                thrust_line: false,
+                id: "fig-cap-mech".into(),
+                ..DrawOptions::default()
+            },
+        );
+        d.deformed.then(|| {
+            (
+                d.svg,
+                format!(
+                    "Settlement mechanism for s = {} (displacements × {}; slider to change), hinges as dots.",
+                    r.unit().show(r.max_settlement, 4),
+                    human(d.scale, 4)
+                ),
+            )
+        })
+    }
+}
+
+impl CapacityFigures for Three {
+    fn model_rows(r: &CapacityResult<Three>, source: &str) -> Vec<(String, String)> {
+        crate::result3d::model_rows_3d(&r.geometry, source)
+    }
+    fn direction_text(d: &SupportDirection, unit: SettlementUnit) -> String {
+        direction_parts(d, &["u", "v", "w", "θx", "θy", "θz"], unit)
+    }
+    fn mechanism_figure(r: &CapacityResult<Three>, scale: Option<f64>) -> Option<(String, String)> {
+        let fig = crate::result3d::Figure3d::capacity_settlement(r);
+        if fig.blocks.is_empty() {
+            return None;
+        }
+        let d = crate::draw3d::draw3d(
+            &fig,
+            &crate::draw3d::Draw3dOptions {
+                scale,
+                id: "fig-cap-mech".into(),
+                ..crate::draw3d::Draw3dOptions::default()
+            },
+        )
+        .ok()?;
+        d.deformed.then(|| {
+            (
+                d.svg,
+                format!(
+                    "Settlement mechanism for s = {} (displacements × {}), hinges as dots.",
+                    r.unit().show(r.max_settlement, 4),
+                    human(d.scale, 4)
+                ),
+            )
+        })
+    }
+}
+
+/// Report of a capacity analysis (2D or 3D): key numbers, the curve, the settlement mechanism,
+/// the table.
+pub fn capacity_report<D: CapacityFigures>(r: &CapacityResult<D>, opts: &ReportOptions) -> Report {
+    let unit = r.unit();
+    let (k, u) = (unit.factor(), unit.shown());
     let mut rep = Report::new(
         opts.title
             .clone()
@@ -186,27 +351,20 @@ pub fn capacity_report(r: &CapacityResult, opts: &ReportOptions) -> Report {
     let dir: Vec<String> = r
         .direction
         .iter()
-        .map(|d| {
-            format!(
-                "{} ({}, {}) per m",
-                d.support,
-                human(d.motion[0], 4),
-                human(d.motion[1], 4)
-            )
-        })
+        .map(|d| D::direction_text(d, unit))
         .collect();
-    kv.push(("settlement direction".into(), dir.join("; ")));
+    kv.push((format!("{} direction", unit.noun()), dir.join("; ")));
     kv.push((
-        "largest settlement".into(),
-        format!("{} cm", human(r.max_settlement * 100.0, 4)),
+        format!("largest {}", unit.noun()),
+        format!("{} {u}", human(r.max_settlement * k, 4)),
     ));
     if let Some(l0) = r.curve.first().and_then(|p| p.load_multiplier) {
         kv.push(("λ without settlement".into(), fmt_fixed(l0, 6)));
     }
     kv.push((
-        "settlement at which λ = 0".into(),
+        format!("{} at which λ = 0", unit.noun()),
         r.zero_capacity_settlement
-            .map(|s| format!("{} cm", fmt_fixed(s * 100.0, 4)))
+            .map(|s| format!("{} {u}", fmt_fixed(s * k, 4)))
             .unwrap_or_else(|| "not reached in the range".into()),
     ));
     match linear_fit_text(r) {
@@ -229,42 +387,25 @@ pub fn capacity_report(r: &CapacityResult, opts: &ReportOptions) -> Report {
     ));
     rep.section("Key numbers").key_values(kv);
     rep.section("Model")
-        .key_values(model_summary(&r.geometry, 0, &opts.source));
+        .key_values(D::model_rows(r, &opts.source));
     let sec = rep.section("Figures");
     let p = capacity_plot(&[("λ(s)", r)], "Collapse load multiplier after settlement");
-    sec.figure(p.svg, "Collapse load multiplier λ against the settlement s (limit analysis on the deformed geometry).");
-    let motions = settlement_motions(r);
-    if !motions.is_empty() {
-        let mut scene = Scene::geometry(
-            &r.geometry,
-            "Settlement mechanism at the largest settlement",
-        );
-        scene.blocks = &motions;
-        scene.hinges = &r.settlement_hinges;
-        scene.units = MotionUnits::Metres;
-        let d = draw(
-            &scene,
-            &DrawOptions {
-                scale: opts.scale,
-                interactive: true,
-                thrust_line: false,
-                id: "fig-cap-mech".into(),
-                ..DrawOptions::default()
-            },
-        );
-        if d.deformed {
-            sec.figure(
-                d.svg,
-                format!("Settlement mechanism for s = {} cm (displacements × {}; slider to change), hinges as dots.", human(r.max_settlement * 100.0, 4), human(d.scale, 4)),
-            );
-        }
+    sec.figure(
+        p.svg,
+        format!(
+            "Collapse load multiplier λ against the {} s (limit analysis on the deformed geometry).",
+            unit.noun()
+        ),
+    );
+    if let Some((svg, caption)) = D::mechanism_figure(r, opts.scale) {
+        sec.figure(svg, caption);
     }
     let rows = r
         .curve
         .iter()
         .map(|p| {
             vec![
-                fmt_fixed(p.settlement * 100.0, 4),
+                fmt_fixed(p.settlement * k, 4),
                 p.load_multiplier
                     .map(|l| fmt_fixed(l, 6))
                     .unwrap_or_else(|| "—".into()),
@@ -276,10 +417,14 @@ pub fn capacity_report(r: &CapacityResult, opts: &ReportOptions) -> Report {
         .collect();
     rep.section("Curve").collapsed_table(
         "λ(s) at every step",
-        ["s (cm)", "λ", "status", "valid", "hinges"]
-            .iter()
-            .map(|s| s.to_string())
-            .collect(),
+        [
+            format!("s ({u})"),
+            "λ".into(),
+            "status".into(),
+            "valid".into(),
+            "hinges".into(),
+        ]
+        .to_vec(),
         rows,
     );
     rep

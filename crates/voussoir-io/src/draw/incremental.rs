@@ -138,6 +138,7 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         let d = draw(
             &scene,
             &DrawOptions {
+                scale: opts.scale,
                 interactive: true,
                 thrust_line: false,
                 id: format!("fig-inc-{k}"),

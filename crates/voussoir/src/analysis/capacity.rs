@@ -6,7 +6,7 @@
 //! The supports of the structure carry prescribed motions (`support.motion`): they give the
 //! *direction* of the settlement and its *largest* value. The settlement magnitude `s` is
 //! measured in metres as the largest support translation `max_k |(u_k, v_k)|` (in radians if the
-//! supports only rotate). For the unit settlement (motions divided by that magnitude):
+//! supports only rotate; shown in cm or mrad: [`SettlementUnit`]). For the unit settlement (motions divided by that magnitude):
 //!
 //! 1. the settlement analysis ([`crate::analysis::settlement`]) gives the mechanism `d₁` and the
 //!    openings `o₁ = N d₁ + g_n` per collocation point, per unit of settlement;
@@ -293,15 +293,18 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let linear_fit = fit(&curve);
     let l0 = curve[0].load_multiplier;
     let invalid = curve.iter().filter(|p| !p.valid).count();
+    let unit = SettlementUnit::of(&direction);
     let mut message = match (l0, zero) {
         (Some(l0), Some(z)) => format!(
-            "λ falls from {l0:.6} at no settlement to 0 at a settlement of {:.4} cm",
-            z * 100.0
+            "λ falls from {l0:.6} at no settlement to 0 at a {} of {}",
+            unit.noun(),
+            unit.show(z, 4)
         ),
         (Some(l0), None) => format!(
-            "λ = {l0:.6} at no settlement and {} at the largest settlement {:.4} cm: no zero crossing in the range",
+            "λ = {l0:.6} at no settlement and {} at the largest {} {}: no zero crossing in the range",
             curve.last().and_then(|p| p.load_multiplier).map_or("undefined".to_string(), |l| format!("{l:.6}")),
-            smax * 100.0
+            unit.noun(),
+            unit.show(smax, 4)
         ),
         (None, _) => format!("at no settlement: {}", curve[0].status.sentence()),
     };
@@ -313,8 +316,9 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     }
     if let Some(c) = closed_at {
         message.push_str(&format!(
-            "; the existing cracks close at a settlement of {:.4} cm",
-            c * 100.0
+            "; the existing cracks close at a {} of {}",
+            unit.noun(),
+            unit.show(c, 4)
         ));
     } else if curve
         .last()

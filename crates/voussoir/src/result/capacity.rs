@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct CapacityPoint<D: Spatial = Two> {
-    /// Settlement magnitude s (m).
+    /// Settlement magnitude s (m; rad when the supports only rotate: [`SettlementUnit`]).
     pub settlement: f64,
     /// λ(s): collapse multiplier on the deformed geometry; negative when the dead loads alone
     /// cannot be carried; `null` when locked or without any equilibrium.
@@ -44,8 +44,81 @@ pub struct CapacityMechanism<D: Spatial = Two> {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SupportDirection {
     pub support: String,
-    /// `[u, v, θ]` per metre of settlement (θ in radians).
+    /// `[u, v, θ]` in 2D, `[u, v, w, θx, θy, θz]` in 3D, per unit settlement (per metre, or
+    /// per radian when the supports only rotate; θ in radians).
     pub motion: Vec<f64>,
+}
+
+/// What the settlement magnitude `s` of a capacity analysis measures, and how it is shown.
+///
+/// `s` is the largest support translation, in metres; when no support translates (the
+/// settlement is a rotation of the supports), the largest support rotation, in radians. A
+/// translation is shown in cm and a rotation in mrad (the drawings, the tables and the messages
+/// all follow this choice).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SettlementUnit {
+    /// `s` is a translation (m), shown in cm.
+    Translation,
+    /// `s` is a rotation (rad), shown in mrad.
+    Rotation,
+}
+
+impl SettlementUnit {
+    /// How many of a support motion's `n` components are translations: 2 of `[u, v, θ]`, 3 of
+    /// `[u, v, w, θx, θy, θz]`.
+    pub fn translations(n: usize) -> usize {
+        if n >= 6 {
+            3
+        } else {
+            n.min(2)
+        }
+    }
+
+    /// The kind of settlement whose directions per unit settlement are `direction` (a rotation
+    /// when no moving support translates).
+    pub fn of(direction: &[SupportDirection]) -> SettlementUnit {
+        let translates = direction.iter().any(|d| {
+            let n = SettlementUnit::translations(d.motion.len());
+            d.motion[..n].iter().any(|&x| x != 0.0)
+        });
+        if direction.is_empty() || translates {
+            SettlementUnit::Translation
+        } else {
+            SettlementUnit::Rotation
+        }
+    }
+    /// The SI unit of `s`: "m" or "rad".
+    pub fn si(self) -> &'static str {
+        match self {
+            SettlementUnit::Translation => "m",
+            SettlementUnit::Rotation => "rad",
+        }
+    }
+    /// The unit `s` is shown in: "cm" or "mrad".
+    pub fn shown(self) -> &'static str {
+        match self {
+            SettlementUnit::Translation => "cm",
+            SettlementUnit::Rotation => "mrad",
+        }
+    }
+    /// Factor from the SI unit to the shown one (100 or 1000).
+    pub fn factor(self) -> f64 {
+        match self {
+            SettlementUnit::Translation => 100.0,
+            SettlementUnit::Rotation => 1000.0,
+        }
+    }
+    /// What `s` is called: "settlement" or "support rotation".
+    pub fn noun(self) -> &'static str {
+        match self {
+            SettlementUnit::Translation => "settlement",
+            SettlementUnit::Rotation => "support rotation",
+        }
+    }
+    /// `s` written in the shown unit with `decimals` decimals: "1.4142 cm", "8.7266 mrad".
+    pub fn show(self, s: f64, decimals: usize) -> String {
+        format!("{:.*} {}", decimals, s * self.factor(), self.shown())
+    }
 }
 
 /// Overall outcome.
@@ -66,7 +139,7 @@ pub struct CapacityResult<D: Spatial = Two> {
     pub message: String,
     /// The solver and method that produced the result.
     pub solver: SolverInfo,
-    /// Largest settlement (m, or rad for pure rotations).
+    /// Largest settlement (m, or rad for pure rotations: [`CapacityResult::unit`]).
     pub max_settlement: f64,
     /// Motion of each moving support per unit settlement.
     pub direction: Vec<SupportDirection>,
@@ -91,6 +164,13 @@ pub struct CapacityResult<D: Spatial = Two> {
     pub iterations: i64,
     /// The undeformed geometry.
     pub geometry: D::Shapes,
+}
+
+impl<D: Spatial> CapacityResult<D> {
+    /// What `s` measures (a translation in m or a rotation in rad) and how it is shown.
+    pub fn unit(&self) -> SettlementUnit {
+        SettlementUnit::of(&self.direction)
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -58,8 +58,8 @@ pub struct ModelArgs {
     /// sliding resistance is between μ·cos(π/K) and μ; default 8).
     #[arg(long, value_name = "K")]
     pub friction_facets: Option<usize>,
-    /// 3D models, limit and tilt: `exact` replaces the inscribed pyramid by the exact friction
-    /// cone (a second-order cone program, Clarabel).
+    /// 3D models (limit, settle, tilt, capacity): `exact` replaces the inscribed pyramid by the
+    /// exact friction cone (a second-order cone program, Clarabel).
     #[arg(long, value_enum, value_name = "CONE")]
     pub friction_cone: Option<FrictionConeArg>,
     #[command(flatten)]

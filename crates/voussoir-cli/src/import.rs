@@ -11,6 +11,10 @@ use voussoir::{BuildOptions, Model, Structure, Structure3d};
 use voussoir_io::dxf::{read_dxf, DxfOptions, ImportLive, ImportReport, Units};
 use voussoir_io::mesh::{is_mesh, read_mesh, MeshOptions, MeshReport};
 
+/// The analyses' default geometric tolerance, relative to the bounding-box diagonal (the
+/// default weld of `voussoir import`).
+const DEFAULT_REL_TOLERANCE: f64 = 1e-7;
+
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnitsArg {
     /// Millimetres.
@@ -418,8 +422,8 @@ pub fn export(a: ExportArgs) -> Result<(), Fail> {
     Structure3d::new(&model, BuildOptions::default()).map_err(|e| refuse(e.to_string()))?;
     let obj = voussoir_io::mesh::model_to_obj(&model);
     // The OBJ as `voussoir import` reads it: with the model's own tolerance as the weld if it
-    // has one (said in the summary line), else with the defaults.
-    let weld = model.tolerance.map(|t| {
+    // is wider than the default (said in the summary line), else with the defaults.
+    let weld = model.tolerance.filter(|&t| t > DEFAULT_REL_TOLERANCE).map(|t| {
         let all: Vec<[f64; 3]> = model
             .blocks
             .iter()

@@ -1253,22 +1253,23 @@ pub fn model_to_obj(m: &Model3d) -> String {
         body(&mut s, &format!("block_{i}"), &b.vertices, &b.faces);
     }
     for sp in &m.supports {
-        let name: String = sp
-            .name
-            .chars()
-            .map(|c| if c.is_whitespace() { '_' } else { c })
-            .collect();
-        body(
-            &mut s,
-            &format!("{SUPPORT_PREFIX}{name}"),
-            &sp.vertices,
-            &sp.faces,
-        );
+        body(&mut s, &support_object(&sp.name), &sp.vertices, &sp.faces);
     }
     s
 }
 
-/// Check a model can be written as OBJ: faces refer to existing vertices, coordinates finite.
+/// The OBJ object name of a support: `support_NAME`, whitespace in NAME written as `_`.
+fn support_object(name: &str) -> String {
+    let name: String = name
+        .chars()
+        .map(|c| if c.is_whitespace() { '_' } else { c })
+        .collect();
+    format!("{SUPPORT_PREFIX}{name}")
+}
+
+/// Check a model can be written as OBJ: faces refer to existing vertices, coordinates finite,
+/// support object names distinct. (`voussoir export` also builds the model and reads the OBJ
+/// back before writing it.)
 pub fn check_exportable(m: &Model3d) -> Result<(), IoError> {
     let check = |what: String, v: &[Point3], f: &[Vec<usize>]| -> Result<(), IoError> {
         if let Some(k) = v.iter().position(|p| p.iter().any(|x| !x.is_finite())) {
@@ -1292,8 +1293,17 @@ pub fn check_exportable(m: &Model3d) -> Result<(), IoError> {
     for (i, b) in m.blocks.iter().enumerate() {
         check(format!("block {i}"), &b.vertices, &b.faces)?;
     }
+    let mut objects: BTreeMap<String, &str> = BTreeMap::new();
     for s in &m.supports {
         check(format!("support '{}'", s.name), &s.vertices, &s.faces)?;
+        // Two objects of one name would read back as one body.
+        if let Some(other) = objects.insert(support_object(&s.name), &s.name) {
+            return Err(IoError(format!(
+                "supports '{other}' and '{}' would both be the OBJ object '{}': rename one",
+                s.name,
+                support_object(&s.name)
+            )));
+        }
     }
     Ok(())
 }

@@ -423,18 +423,21 @@ pub fn export(a: ExportArgs) -> Result<(), Fail> {
     let obj = voussoir_io::mesh::model_to_obj(&model);
     // The OBJ as `voussoir import` reads it: with the model's own tolerance as the weld if it
     // is wider than the default (said in the summary line), else with the defaults.
-    let weld = model.tolerance.filter(|&t| t > DEFAULT_REL_TOLERANCE).map(|t| {
-        let all: Vec<[f64; 3]> = model
-            .blocks
-            .iter()
-            .flat_map(|b| b.vertices.iter())
-            .chain(model.supports.iter().flat_map(|s| s.vertices.iter()))
-            .copied()
-            .collect();
-        let [lo, hi] = voussoir::geometry3d::bbox3(&all);
-        let d: f64 = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt();
-        t * d
-    });
+    let weld = model
+        .tolerance
+        .filter(|&t| t > DEFAULT_REL_TOLERANCE)
+        .map(|t| {
+            let all: Vec<[f64; 3]> = model
+                .blocks
+                .iter()
+                .flat_map(|b| b.vertices.iter())
+                .chain(model.supports.iter().flat_map(|s| s.vertices.iter()))
+                .copied()
+                .collect();
+            let [lo, hi] = voussoir::geometry3d::bbox3(&all);
+            let d: f64 = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt();
+            t * d
+        });
     let opts = voussoir_io::mesh::MeshOptions {
         weld,
         ..Default::default()

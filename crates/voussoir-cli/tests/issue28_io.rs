@@ -83,7 +83,10 @@ fn cuboid(lo: [f64; 3], hi: [f64; 3], inward: bool) -> Shape {
 fn join((mut v, mut f): Shape, (v2, f2): Shape) -> Shape {
     let off = v.len();
     v.extend(v2);
-    f.extend(f2.into_iter().map(|g| g.into_iter().map(|i| i + off).collect()));
+    f.extend(
+        f2.into_iter()
+            .map(|g| g.into_iter().map(|i| i + off).collect()),
+    );
     (v, f)
 }
 
@@ -159,7 +162,10 @@ fn issue28_item5_export_refuses_what_no_reader_accepts() {
         ),
         (
             "two_pieces",
-            model(&[join(tall(), cuboid([3.0, 0.0, 0.0], [4.0, 1.0, 1.5], false))]),
+            model(&[join(
+                tall(),
+                cuboid([3.0, 0.0, 0.0], [4.0, 1.0, 1.5], false),
+            )]),
             vec!["block 0", "separate closed surfaces"],
         ),
     ];
@@ -201,7 +207,10 @@ fn issue28_item5_export_refuses_an_obj_that_would_not_read_back() {
     assert!(!obj.exists());
     // Valid at the model's own tolerance 1e-10, but a plate 1e-8 m thin has degenerate sides
     // at the tolerance `voussoir import` reads an OBJ with (1e-7 of the diagonal).
-    let mut m = model(&[tall(), cuboid([0.0, 0.0, 1.5], [1.0, 1.0, 1.5 + 1e-8], false)]);
+    let mut m = model(&[
+        tall(),
+        cuboid([0.0, 0.0, 1.5], [1.0, 1.0, 1.5 + 1e-8], false),
+    ]);
     m["tolerance"] = json!(1e-10);
     let js = write(&d, "thin.json", &m);
     assert!((lambda(&js) - 1.0 / 1.5).abs() < 1e-6);
@@ -269,9 +278,15 @@ fn issue28_item10_export_and_import_report_success_only_after_writing() {
     assert!(obj.exists());
     let before = std::fs::read(&obj).unwrap();
     // The output is the input: only the refusal, no success line, the file untouched.
-    let e = fails(&["export", o, "-o", o], &["refusing to write", "it is the input"]);
+    let e = fails(
+        &["export", o, "-o", o],
+        &["refusing to write", "it is the input"],
+    );
     assert!(!e.contains("written"), "{e}");
-    let e = fails(&["import", o, "-o", o], &["refusing to write", "it is the input"]);
+    let e = fails(
+        &["import", o, "-o", o],
+        &["refusing to write", "it is the input"],
+    );
     assert!(!e.contains("joints"), "{e}");
     assert_eq!(std::fs::read(&obj).unwrap(), before);
     // The output is a directory.
@@ -310,7 +325,11 @@ fn cell_array_types(vtu: &str) -> Vec<(String, String)> {
 fn issue28_item7_every_vtk_piece_declares_signed_connectivity_and_reads_back() {
     use vtkio::model::{DataSet, Vtk};
     let d = tmpdir("vtk");
-    let js = write(&d, "box.json", &model(&[tall(), cuboid([0.0, 0.0, 1.5], [1.0, 1.0, 2.5], false)]));
+    let js = write(
+        &d,
+        "box.json",
+        &model(&[tall(), cuboid([0.0, 0.0, 1.5], [1.0, 1.0, 2.5], false)]),
+    );
     let vtm = d.join("out.vtm");
     ok(&["limit", &js, "--vtk", vtm.to_str().unwrap()]);
     // Two boxes tipping: 2 × 8 vertices and 2 × 6 faces; 2 joints × 4 corners; the base.
@@ -345,7 +364,11 @@ fn issue28_item7_every_vtk_piece_declares_signed_connectivity_and_reads_back() {
             .unwrap()
             .into_loaded_piece_data(None)
             .unwrap();
-        assert_eq!((p.num_points(), p.cells.types.len()), (points, cells), "{file}");
+        assert_eq!(
+            (p.num_points(), p.cells.types.len()),
+            (points, cells),
+            "{file}"
+        );
     }
     // The cracks: at least the joint the mechanism opens, with the same declared types.
     let cracks = std::fs::read_to_string(d.join("out_cracks.vtu")).unwrap();
@@ -353,9 +376,19 @@ fn issue28_item7_every_vtk_piece_declares_signed_connectivity_and_reads_back() {
     // A settlement without cracks (the base moves down rigidly): the cracks block is listed
     // without a file, and none is written.
     let vtm2 = d.join("still.vtm");
-    ok(&["settle", &js, "--move", "base=0,0,-0.01", "--vtk", vtm2.to_str().unwrap()]);
+    ok(&[
+        "settle",
+        &js,
+        "--move",
+        "base=0,0,-0.01",
+        "--vtk",
+        vtm2.to_str().unwrap(),
+    ]);
     let listed = std::fs::read_to_string(&vtm2).unwrap();
-    assert!(listed.contains("<DataSet index=\"2\" name=\"cracks\"/>"), "{listed}");
+    assert!(
+        listed.contains("<DataSet index=\"2\" name=\"cracks\"/>"),
+        "{listed}"
+    );
     assert!(!d.join("still_cracks.vtu").exists());
     assert!(d.join("still_supports.vtu").exists());
 }

@@ -146,7 +146,9 @@ fn as_vtk_writes(
         let from = format!("<DataArray type=\"UInt64\" Name=\"{name}\"");
         let to = format!("<DataArray type=\"Int64\" Name=\"{name}\"");
         if text.matches(&from).count() != 1 {
-            return Err(fail(&format!("the {name} array is not where vtkio writes it")));
+            return Err(fail(&format!(
+                "the {name} array is not where vtkio writes it"
+            )));
         }
         text = text.replacen(&from, &to, 1);
     }
@@ -157,7 +159,10 @@ fn as_vtk_writes(
         format!("<Piece NumberOfCells=\"{cells}\">"),
         piece.clone(),
     ];
-    let Some(tag) = written.iter().find(|t| text.matches(t.as_str()).count() == 1) else {
+    let Some(tag) = written
+        .iter()
+        .find(|t| text.matches(t.as_str()).count() == 1)
+    else {
         return Err(fail("the piece is not where vtkio writes it"));
     };
     text = text.replacen(tag.as_str(), &piece, 1);
@@ -369,7 +374,8 @@ pub fn multiblock(
         .iter()
         .any(|j| j.state != JointState::Closed && !j.points.is_empty());
     // (part, file and bytes; None for an empty block).
-    let mut parts: Vec<(&str, Option<(String, Vec<u8>)>)> = vec![
+    type Part<'a> = (&'a str, Option<(String, Vec<u8>)>);
+    let mut parts: Vec<Part> = vec![
         (
             PARTS[0],
             Some((format!("{stem}_blocks.vtu"), blocks_vtu(r)?)),

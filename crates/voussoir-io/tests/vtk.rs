@@ -243,7 +243,10 @@ fn a_closed_structure_writes_no_crack_file() {
         ]
     );
     let vtm = std::str::from_utf8(&files[0].1).unwrap();
-    assert!(vtm.contains("<DataSet index=\"2\" name=\"cracks\"/>"), "{vtm}");
+    assert!(
+        vtm.contains("<DataSet index=\"2\" name=\"cracks\"/>"),
+        "{vtm}"
+    );
     assert!(vtm.contains("<DataSet index=\"3\" name=\"supports\" file=\"arch_supports.vtu\"/>"));
 }
 

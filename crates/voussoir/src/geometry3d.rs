@@ -950,7 +950,11 @@ fn clean_ring(p: &[P2], tol: f64) -> Vec<P2> {
         return p.to_vec();
     }
     let start = (0..n)
-        .min_by(|&i, &j| p[i][0].total_cmp(&p[j][0]).then(p[i][1].total_cmp(&p[j][1])))
+        .min_by(|&i, &j| {
+            p[i][0]
+                .total_cmp(&p[j][0])
+                .then(p[i][1].total_cmp(&p[j][1]))
+        })
         .unwrap_or(0);
     let ring: Vec<P2> = (0..=n).map(|k| p[(start + k) % n]).collect();
     let m = n; // ring[m] is ring[0] again

@@ -12,6 +12,7 @@ use voussoir::model3d::{Block3d, Load3d, Loads3d, Model3d, Support3d};
 use voussoir::{BuildOptions, Structure3d};
 
 type V3 = [f64; 3];
+type Shape = (Vec<V3>, Vec<Vec<usize>>);
 
 /// Vertices and outward faces of the box `[lo, hi]` (faces turned round if `inward`).
 fn cuboid(lo: V3, hi: V3, inward: bool) -> (Vec<V3>, Vec<Vec<usize>>) {
@@ -47,7 +48,10 @@ fn two_shells(
 ) -> (Vec<V3>, Vec<Vec<usize>>) {
     let off = v.len();
     v.extend(v2);
-    f.extend(f2.into_iter().map(|g| g.into_iter().map(|i| i + off).collect()));
+    f.extend(
+        f2.into_iter()
+            .map(|g| g.into_iter().map(|i| i + off).collect()),
+    );
     (v, f)
 }
 
@@ -102,8 +106,7 @@ fn hollow_block(outer_inward: bool) -> (Vec<V3>, Vec<Vec<usize>>) {
 
 fn build_err(m: &Model3d) -> String {
     Structure3d::new(m, BuildOptions::default())
-        .err()
-        .expect("the model should be refused")
+        .expect_err("the model should be refused")
         .to_string()
 }
 
@@ -119,7 +122,10 @@ fn issue28_item5_a_hollow_block_has_the_hollow_volume_centroid_weight_and_lambda
         let b = &st.blocks[0];
         assert!((b.shape.volume - 1.375).abs() < 1e-12, "{}", b.shape.volume);
         let c = b.shape.centroid;
-        assert!((c[0] - 0.5).abs() < 1e-12 && (c[1] - 0.5).abs() < 1e-12, "{c:?}");
+        assert!(
+            (c[0] - 0.5).abs() < 1e-12 && (c[1] - 0.5).abs() < 1e-12,
+            "{c:?}"
+        );
         assert!((c[2] - 1.0 / 1.375).abs() < 1e-12, "{c:?}");
         assert!((b.weight - 27.5).abs() < 1e-10, "{}", b.weight);
         let r = limit(&st, &SolverOptions::default()).unwrap();
@@ -139,14 +145,17 @@ fn issue28_item5_nested_outward_shells_are_refused_naming_the_block() {
     );
     let e = build_err(&model_of(vec![nested], base()));
     assert!(e.contains("block 0"), "{e}");
-    assert!(e.contains("faces 6–11") && e.contains("count its volume twice"), "{e}");
+    assert!(
+        e.contains("faces 6–11") && e.contains("count its volume twice"),
+        "{e}"
+    );
     assert_eq!(e.lines().count(), 1);
 }
 
 #[test]
 fn issue28_item5_separate_pieces_and_misplaced_cavities_are_refused() {
     let solid = || cuboid([0.0, 0.0, 0.0], [1.0, 1.0, 1.5], false);
-    let cases: Vec<((Vec<V3>, Vec<Vec<usize>>), &str)> = vec![
+    let cases: Vec<(Shape, &str)> = vec![
         // Two boxes side by side as one block.
         (
             two_shells(solid(), cuboid([1.5, 0.0, 0.0], [2.0, 1.0, 1.5], false)),
@@ -159,7 +168,10 @@ fn issue28_item5_separate_pieces_and_misplaced_cavities_are_refused() {
         ),
         // A cavity crossing the block's surface.
         (
-            two_shells(solid(), cuboid([0.25, 0.25, 0.75], [1.25, 0.75, 1.25], true)),
+            two_shells(
+                solid(),
+                cuboid([0.25, 0.25, 0.75], [1.25, 0.75, 1.25], true),
+            ),
             "not strictly inside",
         ),
         // A cavity touching the block's surface (a wall of no thickness).
@@ -178,14 +190,21 @@ fn issue28_item5_separate_pieces_and_misplaced_cavities_are_refused() {
         cuboid([0.4, 0.4, 0.4], [0.8, 0.8, 0.8], true),
     );
     let e = build_err(&model_of(vec![(v, f)], base()));
-    assert!(e.contains("block 0") && e.contains("cavities") && e.contains("overlap"), "{e}");
+    assert!(
+        e.contains("block 0") && e.contains("cavities") && e.contains("overlap"),
+        "{e}"
+    );
     // Two cavities apart: V = 1.5 − 2 · 0.2³ = 1.484.
     let (v, f) = two_shells(
         two_shells(solid(), cuboid([0.1, 0.1, 0.1], [0.3, 0.3, 0.3], true)),
         cuboid([0.6, 0.6, 1.0], [0.8, 0.8, 1.2], true),
     );
     let s = clean_polyhedron("block 0", &v, &f, 1e-9).unwrap();
-    assert!((s.volume - (1.5 - 2.0 * 0.008)).abs() < 1e-12, "{}", s.volume);
+    assert!(
+        (s.volume - (1.5 - 2.0 * 0.008)).abs() < 1e-12,
+        "{}",
+        s.volume
+    );
 }
 
 #[test]
@@ -199,7 +218,9 @@ fn issue28_item5_coordinates_whose_size_overflows_are_refused() {
     assert!(e.contains("overflows"), "{e}");
     // One block alone: its faces' size overflows.
     let (v, f) = cuboid([-1e308, 0.0, 0.0], [1e308, 1.0, 1.0], false);
-    let e = clean_polyhedron("block 0", &v, &f, 1e-7).unwrap_err().to_string();
+    let e = clean_polyhedron("block 0", &v, &f, 1e-7)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("block 0") && e.contains("overflows"), "{e}");
 }
 
@@ -258,7 +279,10 @@ fn issue28_item10_a_20000_gon_contact_keeps_lambda_within_the_tolerance() {
             .unwrap()
             .load_multiplier
             .unwrap();
-        assert!(lambda <= exact + 1e-9, "phase {phase}, {azimuth}°: λ = {lambda} > {exact}");
+        assert!(
+            lambda <= exact + 1e-9,
+            "phase {phase}, {azimuth}°: λ = {lambda} > {exact}"
+        );
         assert!(
             exact - lambda <= tol,
             "phase {phase}, {azimuth}°: λ = {lambda}, closed form {exact}: low by {:.3e} > tol {tol:.3e}",
@@ -298,5 +322,8 @@ fn issue28_item10_every_vertex_of_a_many_vertex_contact_is_within_tol_of_its_pol
             .fold(f64::INFINITY, f64::min);
         worst = worst.max(d);
     }
-    assert!(worst <= tol * (1.0 + 1e-9), "a vertex is {worst:.3e} from the polygon, tol {tol:.1e}");
+    assert!(
+        worst <= tol * (1.0 + 1e-9),
+        "a vertex is {worst:.3e} from the polygon, tol {tol:.1e}"
+    );
 }

@@ -11,6 +11,10 @@ use voussoir::{BuildOptions, Model, Structure, Structure3d};
 use voussoir_io::dxf::{read_dxf, DxfOptions, ImportLive, ImportReport, Units};
 use voussoir_io::mesh::{is_mesh, read_mesh, MeshOptions, MeshReport};
 
+/// The analyses' default geometric tolerance, relative to the bounding-box diagonal (the
+/// default weld of `voussoir import`).
+const DEFAULT_REL_TOLERANCE: f64 = 1e-7;
+
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnitsArg {
     /// Millimetres.
@@ -321,10 +325,7 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
         Some(&rep),
     )?;
     let json = voussoir_io::files::to_json(&model)?;
-    match &a.output {
-        Some(p) => crate::outputs::stage(p, json.as_bytes())?,
-        None => print!("{json}"),
-    }
+    emit(a.output.as_deref(), &json)?;
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
     for n in &rep.notes {
         eprintln!("note: {n}");
@@ -333,6 +334,21 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
         eprintln!("warning: {w}");
     }
     Ok(())
+}
+
+/// Write the model JSON to `output` (committed now, so that the summary printed after it is
+/// only printed once the file is written) or to stdout.
+fn emit(output: Option<&Path>, json: &str) -> Result<(), Fail> {
+    match output {
+        Some(p) => {
+            crate::outputs::stage(p, json.as_bytes())?;
+            crate::outputs::commit()
+        }
+        None => {
+            print!("{json}");
+            Ok(())
+        }
+    }
 }
 
 /// `voussoir import model.obj|model.ply`: read, validate (overlaps and isolated blocks are
@@ -348,10 +364,7 @@ fn run_mesh(a: ImportArgs) -> Result<(), Fail> {
     )
     .map_err(|e| Fail(rep.annotate(&e.to_string())))?;
     let json = voussoir_io::files::to_json(&model)?;
-    match &a.output {
-        Some(p) => crate::outputs::stage(p, json.as_bytes())?,
-        None => print!("{json}"),
-    }
+    emit(a.output.as_deref(), &json)?;
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
     for n in &rep.notes {
         eprintln!("note: {n}");
@@ -374,7 +387,9 @@ pub struct ExportArgs {
     pub dxf: DxfArgs,
 }
 
-/// `voussoir export model.json -o model.obj`.
+/// `voussoir export model.json -o model.obj`: validated as every reader validates it (the model
+/// as the analyses build it, then the OBJ text as `voussoir import` reads it back), so that what
+/// is written is read; a refusal is one line naming the block, and nothing is written.
 pub fn export(a: ExportArgs) -> Result<(), Fail> {
     a.dxf.check()?;
     a.dxf.refuse_foreign(&a.model)?;
@@ -395,14 +410,69 @@ pub fn export(a: ExportArgs) -> Result<(), Fail> {
             )))
         }
     };
-    voussoir_io::mesh::check_exportable(&model)?;
+    let refuse = |why: String| {
+        Fail(format!(
+            "{}: not exported: {}",
+            a.model.display(),
+            annotate_mesh(&why)
+        ))
+    };
+    voussoir_io::mesh::check_exportable(&model).map_err(|e| refuse(e.0))?;
+    // The model as every analysis reads it.
+    Structure3d::new(&model, BuildOptions::default()).map_err(|e| refuse(e.to_string()))?;
     let obj = voussoir_io::mesh::model_to_obj(&model);
+    // The OBJ as `voussoir import` reads it: with the model's own tolerance as the weld if it
+    // is wider than the default (said in the summary line), else with the defaults.
+    let weld = model
+        .tolerance
+        .filter(|&t| t > DEFAULT_REL_TOLERANCE)
+        .map(|t| {
+            let all: Vec<[f64; 3]> = model
+                .blocks
+                .iter()
+                .flat_map(|b| b.vertices.iter())
+                .chain(model.supports.iter().flat_map(|s| s.vertices.iter()))
+                .copied()
+                .collect();
+            let [lo, hi] = voussoir::geometry3d::bbox3(&all);
+            let d: f64 = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt();
+            t * d
+        });
+    let opts = voussoir_io::mesh::MeshOptions {
+        weld,
+        ..Default::default()
+    };
+    let back = voussoir_io::mesh::parse_obj(obj.as_bytes(), &opts, "the exported OBJ")
+        .map_err(|e| e.0)
+        .and_then(|(m, rep)| {
+            Structure3d::new(&m, BuildOptions::default())
+                .map_err(|e| rep.annotate(&e.to_string()))
+                .map(|_| m)
+        })
+        .map_err(|e| refuse(format!("the OBJ would not read back: {e}")))?;
+    if back.blocks.len() != model.blocks.len() || back.supports.len() != model.supports.len() {
+        return Err(refuse(format!(
+            "the OBJ would read back as {} blocks and {} supports, not {} and {}",
+            back.blocks.len(),
+            back.supports.len(),
+            model.blocks.len(),
+            model.supports.len()
+        )));
+    }
     match &a.output {
-        Some(p) => crate::outputs::stage(p, obj.as_bytes())?,
+        Some(p) => {
+            crate::outputs::stage(p, obj.as_bytes())?;
+            // Written before it is reported.
+            crate::outputs::commit()?;
+        }
         None => print!("{obj}"),
     }
+    let hint = match weld {
+        Some(w) => format!("; import it with --weld {w:.3e} (the model's tolerance)"),
+        None => String::new(),
+    };
     eprintln!(
-        "{} blocks, {} supports written as OBJ objects (materials, loads and support motions are not part of OBJ)",
+        "{} blocks, {} supports written as OBJ objects (materials, loads and support motions are not part of OBJ){hint}",
         model.blocks.len(),
         model.supports.len()
     );

@@ -600,6 +600,7 @@ fn clean_body(
         adj[g].push((f, d1 == d2));
     }
     let mut flip = vec![None::<bool>; nf];
+    let mut piece_of = vec![0usize; nf];
     let mut pieces = 0;
     for s in 0..nf {
         if flip[s].is_some() {
@@ -607,6 +608,7 @@ fn clean_body(
         }
         pieces += 1;
         flip[s] = Some(false);
+        piece_of[s] = pieces - 1;
         let mut q = VecDeque::from([s]);
         while let Some(f) = q.pop_front() {
             let ff = flip[f].unwrap_or(false);
@@ -615,6 +617,7 @@ fn clean_body(
                 match flip[g] {
                     None => {
                         flip[g] = Some(want);
+                        piece_of[g] = pieces - 1;
                         q.push_back(g);
                     }
                     Some(h) if h != want => {
@@ -628,17 +631,52 @@ fn clean_body(
             }
         }
     }
-    if pieces > 1 {
-        return err(format!(
-            "{pieces} separate closed surfaces: a block is one piece (give each piece its own object)"
-        ));
-    }
-    let mut reoriented = 0;
-    for (f, fl) in faces.iter_mut().zip(&flip) {
+    // Which faces end up turned round (each reversal toggles).
+    let mut turned = vec![false; nf];
+    for ((f, fl), t) in faces.iter_mut().zip(&flip).zip(turned.iter_mut()) {
         if *fl == Some(true) {
             f.reverse();
-            reoriented += 1;
+            *t = true;
         }
+    }
+    if pieces > 1 {
+        // A block with cavities: the largest piece is the outer surface, every other piece must
+        // lie inside it, and is turned to face into its cavity (opposite to the outer surface),
+        // so that the volumes add up to the hollow block's. The library checks the rest
+        // (strictly inside, no crossing, cavities apart).
+        let mut by_piece: Vec<Vec<usize>> = vec![Vec::new(); pieces];
+        for (k, &p) in piece_of.iter().enumerate() {
+            by_piece[p].push(k);
+        }
+        let piece_faces = |p: usize| -> Vec<Vec<usize>> {
+            by_piece[p].iter().map(|&k| faces[k].clone()).collect()
+        };
+        let vols: Vec<f64> = (0..pieces)
+            .map(|p| volume6(&verts, &piece_faces(p)))
+            .collect();
+        let outer = (0..pieces)
+            .max_by(|&i, &j| vols[i].abs().total_cmp(&vols[j].abs()).then(j.cmp(&i)))
+            .unwrap_or(0);
+        let outer_faces = piece_faces(outer);
+        for p in (0..pieces).filter(|&p| p != outer) {
+            let probe = verts[faces[by_piece[p][0]][0]];
+            let w = voussoir::geometry3d::winding_number(&verts, &outer_faces, probe);
+            if w.abs() < 0.5 {
+                return err(format!(
+                    "{pieces} separate closed surfaces: a block is one piece (give each piece its own object)"
+                ));
+            }
+            if (vols[p] < 0.0) == (vols[outer] < 0.0) {
+                for &k in &by_piece[p] {
+                    faces[k].reverse();
+                    turned[k] = !turned[k];
+                }
+            }
+        }
+        notes.push(format!(
+            "{what}: {} closed surface(s) inside the outer one read as cavities",
+            pieces - 1
+        ));
     }
     let mut vol6 = volume6(&verts, &faces);
     let diag = {
@@ -655,9 +693,12 @@ fn clean_body(
             f.reverse();
         }
         vol6 = -vol6;
-        reoriented = nf - reoriented;
+        for t in turned.iter_mut() {
+            *t = !*t;
+        }
     }
     debug_assert!(vol6 > 0.0);
+    let reoriented = turned.iter().filter(|&&t| t).count();
     if reoriented > 0 && reoriented < nf {
         notes.push(format!(
             "{what}: {reoriented} face(s) turned to face outwards like the others"
@@ -1212,22 +1253,23 @@ pub fn model_to_obj(m: &Model3d) -> String {
         body(&mut s, &format!("block_{i}"), &b.vertices, &b.faces);
     }
     for sp in &m.supports {
-        let name: String = sp
-            .name
-            .chars()
-            .map(|c| if c.is_whitespace() { '_' } else { c })
-            .collect();
-        body(
-            &mut s,
-            &format!("{SUPPORT_PREFIX}{name}"),
-            &sp.vertices,
-            &sp.faces,
-        );
+        body(&mut s, &support_object(&sp.name), &sp.vertices, &sp.faces);
     }
     s
 }
 
-/// Check a model can be written as OBJ: faces refer to existing vertices, coordinates finite.
+/// The OBJ object name of a support: `support_NAME`, whitespace in NAME written as `_`.
+fn support_object(name: &str) -> String {
+    let name: String = name
+        .chars()
+        .map(|c| if c.is_whitespace() { '_' } else { c })
+        .collect();
+    format!("{SUPPORT_PREFIX}{name}")
+}
+
+/// Check a model can be written as OBJ: faces refer to existing vertices, coordinates finite,
+/// support object names distinct. (`voussoir export` also builds the model and reads the OBJ
+/// back before writing it.)
 pub fn check_exportable(m: &Model3d) -> Result<(), IoError> {
     let check = |what: String, v: &[Point3], f: &[Vec<usize>]| -> Result<(), IoError> {
         if let Some(k) = v.iter().position(|p| p.iter().any(|x| !x.is_finite())) {
@@ -1251,8 +1293,17 @@ pub fn check_exportable(m: &Model3d) -> Result<(), IoError> {
     for (i, b) in m.blocks.iter().enumerate() {
         check(format!("block {i}"), &b.vertices, &b.faces)?;
     }
+    let mut objects: BTreeMap<String, &str> = BTreeMap::new();
     for s in &m.supports {
         check(format!("support '{}'", s.name), &s.vertices, &s.faces)?;
+        // Two objects of one name would read back as one body.
+        if let Some(other) = objects.insert(support_object(&s.name), &s.name) {
+            return Err(IoError(format!(
+                "supports '{other}' and '{}' would both be the OBJ object '{}': rename one",
+                s.name,
+                support_object(&s.name)
+            )));
+        }
     }
     Ok(())
 }

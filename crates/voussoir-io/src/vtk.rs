@@ -13,10 +13,13 @@
 //!   order around the joint).
 //! - [`supports_vtu`]: the supports' faces as polygons.
 //! - [`multiblock`]: a `.vtm` naming those pieces, and the pieces, as `(file name, bytes)` so the
-//!   caller writes them all or nothing ([`crate::write_all_or_nothing`]).
+//!   caller writes them all or nothing ([`crate::write_all_or_nothing`]); an empty `cracks`
+//!   block is listed without a file.
 //!
 //! Arrays are written in binary (base64, little endian, UInt64 headers, no compression), so the
 //! values read back are the values written, bit for bit, and the bytes are the same on every run.
+//! Cell connectivity and offsets are `Int64` and cell types `UInt8`, as VTK's own writers use
+//! them (and as meshio reads them), in every piece.
 
 use crate::result3d::{polygon_order, validate, Motions, Result3d, V3};
 use crate::IoError;
@@ -87,6 +90,7 @@ impl Grid {
 
     /// The `.vtu` bytes.
     fn into_bytes(self, title: &str) -> Result<Vec<u8>, IoError> {
+        let (points, cells) = (self.points.len() / 3, self.types.len());
         let vtk = Vtk {
             version: Version::new_xml(1, 0),
             title: title.to_string(),
@@ -110,11 +114,59 @@ impl Grid {
         let mut out = Vec::new();
         vtk.write_xml(&mut out)
             .map_err(|e| IoError(format!("cannot write VTK ({title}): {e}")))?;
+        let mut out = as_vtk_writes(out, points, cells, title)?;
         if !out.ends_with(b"\n") {
             out.push(b'\n');
         }
         Ok(out)
     }
+}
+
+/// vtkio's XML made to read as VTK's own writers write it, in two attributes:
+///
+/// - the cells' `connectivity` and `offsets` are declared `Int64`. vtkio 0.7 holds them as
+///   `u64` and declares them `UInt64`, which ParaView reads but meshio (and numpy code mixing
+///   them with signed indices) does not: meshio fails with `UFuncTypeError`. Every value is a
+///   point index or a count, far below 2⁶³, so its eight little-endian bytes are an `Int64`'s
+///   too: only the declared type changes, the binary data and their headers stay as written;
+/// - the piece states `NumberOfPoints` and `NumberOfCells` even when they are 0 (vtkio leaves
+///   a zero out; the format requires both, and readers such as meshio need them).
+///
+/// Each is expected exactly where vtkio writes it; anything else is an error rather than a
+/// file that half follows the convention.
+fn as_vtk_writes(
+    xml: Vec<u8>,
+    points: usize,
+    cells: usize,
+    title: &str,
+) -> Result<Vec<u8>, IoError> {
+    let fail = |what: &str| IoError(format!("cannot write VTK ({title}): {what}"));
+    let mut text = String::from_utf8(xml).map_err(|_| fail("not UTF-8"))?;
+    for name in ["connectivity", "offsets"] {
+        let from = format!("<DataArray type=\"UInt64\" Name=\"{name}\"");
+        let to = format!("<DataArray type=\"Int64\" Name=\"{name}\"");
+        if text.matches(&from).count() != 1 {
+            return Err(fail(&format!(
+                "the {name} array is not where vtkio writes it"
+            )));
+        }
+        text = text.replacen(&from, &to, 1);
+    }
+    let piece = format!("<Piece NumberOfPoints=\"{points}\" NumberOfCells=\"{cells}\">");
+    let written = [
+        "<Piece>".to_string(),
+        format!("<Piece NumberOfPoints=\"{points}\">"),
+        format!("<Piece NumberOfCells=\"{cells}\">"),
+        piece.clone(),
+    ];
+    let Some(tag) = written
+        .iter()
+        .find(|t| text.matches(t.as_str()).count() == 1)
+    else {
+        return Err(fail("the piece is not where vtkio writes it"));
+    };
+    text = text.replacen(tag.as_str(), &piece, 1);
+    Ok(text.into_bytes())
 }
 
 /// A float array: 1 component as scalars, 3 as vectors, others generic.
@@ -297,6 +349,10 @@ pub const PARTS: [&str; 4] = ["blocks", "contacts", "cracks", "supports"];
 /// `vtm_name` without its `.vtm` extension; the supports only when `supports` is true. The
 /// pieces are named relative to the `.vtm`: write them all into the directory of the `.vtm`.
 /// `vtm_name` must be a plain file name (no directory).
+///
+/// When no joint is cracked, the `cracks` block is listed without a file (`<DataSet index="2"
+/// name="cracks"/>`, as VTK's own writer lists an empty block) and no `_cracks.vtu` is written:
+/// every file the `.vtm` names holds cells (meshio cannot read a grid of zero cells).
 pub fn multiblock(
     r: &(impl Result3d + ?Sized),
     vtm_name: &str,
@@ -313,27 +369,55 @@ pub fn multiblock(
         )));
     }
     let stem = vtm_name.strip_suffix(".vtm").unwrap_or(vtm_name);
-    let mut pieces: Vec<(String, Vec<u8>)> = vec![
-        (format!("{stem}_blocks.vtu"), blocks_vtu(r)?),
-        (format!("{stem}_contacts.vtu"), contacts_vtu(r)?),
-        (format!("{stem}_cracks.vtu"), cracks_vtu(r)?),
+    let cracked = r
+        .joints()
+        .iter()
+        .any(|j| j.state != JointState::Closed && !j.points.is_empty());
+    // (part, file and bytes; None for an empty block).
+    type Part<'a> = (&'a str, Option<(String, Vec<u8>)>);
+    let mut parts: Vec<Part> = vec![
+        (
+            PARTS[0],
+            Some((format!("{stem}_blocks.vtu"), blocks_vtu(r)?)),
+        ),
+        (
+            PARTS[1],
+            Some((format!("{stem}_contacts.vtu"), contacts_vtu(r)?)),
+        ),
+        (
+            PARTS[2],
+            if cracked {
+                Some((format!("{stem}_cracks.vtu"), cracks_vtu(r)?))
+            } else {
+                None
+            },
+        ),
     ];
     if supports {
-        pieces.push((format!("{stem}_supports.vtu"), supports_vtu(r)?));
+        parts.push((
+            PARTS[3],
+            Some((format!("{stem}_supports.vtu"), supports_vtu(r)?)),
+        ));
     }
     let mut vtm = String::from(
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <vtkMultiBlockDataSet>\n",
     );
-    for (i, (file, _)) in pieces.iter().enumerate() {
-        let _ = writeln!(
-            vtm,
-            "    <DataSet index=\"{i}\" name=\"{}\" file=\"{}\"/>",
-            PARTS[i],
-            crate::draw::svg::esc(file)
-        );
+    for (i, (part, piece)) in parts.iter().enumerate() {
+        match piece {
+            Some((file, _)) => {
+                let _ = writeln!(
+                    vtm,
+                    "    <DataSet index=\"{i}\" name=\"{part}\" file=\"{}\"/>",
+                    crate::draw::svg::esc(file)
+                );
+            }
+            None => {
+                let _ = writeln!(vtm, "    <DataSet index=\"{i}\" name=\"{part}\"/>");
+            }
+        }
     }
     vtm.push_str("  </vtkMultiBlockDataSet>\n</VTKFile>\n");
     let mut out = vec![(vtm_name.to_string(), vtm.into_bytes())];
-    out.extend(pieces);
+    out.extend(parts.into_iter().filter_map(|(_, piece)| piece));
     Ok(out)
 }

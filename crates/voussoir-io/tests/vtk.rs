@@ -218,7 +218,7 @@ fn multiblock_names_its_pieces_and_is_deterministic() {
 }
 
 #[test]
-fn a_closed_structure_writes_an_empty_crack_part() {
+fn a_closed_structure_writes_no_crack_file() {
     let mut r = fixture();
     for j in &mut r.joints {
         j.state = voussoir::result::JointState::Closed;
@@ -226,6 +226,28 @@ fn a_closed_structure_writes_an_empty_crack_part() {
     let piece = read(&cracks_vtu(&r).unwrap());
     assert_eq!(piece.cells.types.len(), 0);
     assert_eq!(piece.num_points(), 0);
+    // The piece states its zero counts, as the format requires.
+    let bytes = cracks_vtu(&r).unwrap();
+    let text = std::str::from_utf8(&bytes).unwrap();
+    assert!(text.contains("<Piece NumberOfPoints=\"0\" NumberOfCells=\"0\">"));
+    // In a multiblock the empty block is listed without a file, and no file is written.
+    let files = multiblock(&r, "arch.vtm", true).unwrap();
+    let names: Vec<&str> = files.iter().map(|f| f.0.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "arch.vtm",
+            "arch_blocks.vtu",
+            "arch_contacts.vtu",
+            "arch_supports.vtu"
+        ]
+    );
+    let vtm = std::str::from_utf8(&files[0].1).unwrap();
+    assert!(
+        vtm.contains("<DataSet index=\"2\" name=\"cracks\"/>"),
+        "{vtm}"
+    );
+    assert!(vtm.contains("<DataSet index=\"3\" name=\"supports\" file=\"arch_supports.vtu\"/>"));
 }
 
 #[test]

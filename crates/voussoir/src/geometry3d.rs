@@ -124,6 +124,14 @@ fn bbox3_iter(points: impl Iterator<Item = V3>) -> [V3; 2] {
 /// along it in opposite directions), and a volume above `tol` × the surface area. A
 /// consistently inward surface is turned outward by reversing every face. Vertices are not
 /// merged (faces are connected by index) and unused vertices are kept.
+///
+/// Faces that form several closed shells (sets of faces connected through edges) are a block
+/// with cavities, and accepted, only if the largest shell is the outer surface and every other
+/// one is a cavity: oriented opposite to the outer surface (its faces face into the cavity, out
+/// of the material), strictly inside it (vertices farther than `tol` inside, no edge crossing a
+/// face), apart from the other cavities, enclosing a volume. The signed volumes then add up to
+/// the hollow block's, and so do the moments (centroid). Two shells facing the same way (a
+/// second piece, or an inner shell that would count its volume twice) are refused.
 pub fn clean_polyhedron(
     what: &str,
     vertices: &[[f64; 3]],
@@ -171,15 +179,21 @@ pub fn clean_polyhedron(
         }
     }
     let mut surface = 0.0;
+    let mut face_area = Vec::with_capacity(faces.len());
     for (k, f) in faces.iter().enumerate() {
         let (nvec, c) = newell(vertices, f);
         let twice = norm3(nvec);
         let diam = face_diameter(vertices, f);
-        // NaN (from overflowing coordinates) is degenerate too.
+        if !(twice.is_finite() && diam.is_finite()) {
+            return model_err(format!(
+                "{what}: face {k}'s size overflows (coordinates too large for f64 arithmetic)"
+            ));
+        }
         if !exceeds(0.5 * twice, tol * diam) {
             return model_err(format!("{what}: face {k} is degenerate (zero area)"));
         }
         surface += 0.5 * twice;
+        face_area.push(0.5 * twice);
         let n = scale3(nvec, 1.0 / twice);
         for &i in f {
             let d = dot3(n, sub3(vertices[i], c)).abs();
@@ -231,38 +245,62 @@ pub fn clean_polyhedron(
         }
         i = j;
     }
-    // Divergence theorem: signed tetrahedra (o, v₀, vᵢ, vᵢ₊₁) of each face's fan. The fan of a
-    // planar non-convex face covers it with signed triangles, so this is exact for it too.
+    // Shells: the faces connected through shared edges (every edge has exactly two faces now).
+    let mut parent: Vec<u32> = (0..faces.len() as u32).collect();
+    for pair in edges.chunks_exact(2) {
+        let (ra, rb) = (
+            find(&mut parent, pair[0].2 as u32),
+            find(&mut parent, pair[1].2 as u32),
+        );
+        if ra != rb {
+            parent[ra.max(rb) as usize] = ra.min(rb);
+        }
+    }
+    let mut shell_of = vec![0usize; faces.len()];
+    let mut shells: Vec<Vec<usize>> = Vec::new();
+    let mut index_of_root: HashMap<u32, usize> = HashMap::new();
+    for (k, s) in shell_of.iter_mut().enumerate() {
+        let r = find(&mut parent, k as u32);
+        *s = *index_of_root.entry(r).or_insert_with(|| {
+            shells.push(Vec::new());
+            shells.len() - 1
+        });
+        shells[*s].push(k);
+    }
+    // Divergence theorem: signed tetrahedra (o, v₀, vᵢ, vᵢ₊₁) of each face's fan, summed per
+    // shell. The fan of a planar non-convex face covers it with signed triangles, so this is
+    // exact for it too.
     let o = vertices[faces[0][0]];
-    let mut vol6 = 0.0;
-    let mut mom = [0.0; 3];
-    for f in faces {
+    let mut vol6 = vec![0.0; shells.len()];
+    let mut mom = vec![[0.0; 3]; shells.len()];
+    let mut area = vec![0.0; shells.len()];
+    for (k, f) in faces.iter().enumerate() {
+        let s = shell_of[k];
+        area[s] += face_area[k];
         let a = sub3(vertices[f[0]], o);
         for i in 1..f.len() - 1 {
             let b = sub3(vertices[f[i]], o);
             let c = sub3(vertices[f[i + 1]], o);
             let v6 = dot3(a, cross3(b, c));
-            vol6 += v6;
-            mom = add3(mom, scale3(add3(add3(a, b), c), v6));
+            vol6[s] += v6;
+            mom[s] = add3(mom[s], scale3(add3(add3(a, b), c), v6));
         }
     }
-    let volume = vol6 / 6.0;
+    if shells.len() > 1 {
+        check_cavities(what, vertices, faces, &shells, &vol6, &area, tol)?;
+    }
+    let outer_sign = shells_outer(&vol6).map_or(1.0, |k| vol6[k].signum());
+    let total6: f64 = vol6.iter().sum();
+    let mom = mom.iter().fold([0.0; 3], |s, m| add3(s, *m));
+    let volume = total6 / 6.0;
     if !exceeds(volume.abs(), tol * surface) {
         return model_err(format!("{what}: the polyhedron has zero volume"));
     }
     // Σ V_t (a + b + c)/4 / Σ V_t, with V_t = v6/6: the sixths cancel.
-    let centroid = add3(o, scale3(mom, 1.0 / (4.0 * vol6)));
-    let faces: Vec<Vec<usize>> = if volume < 0.0 {
+    let centroid = add3(o, scale3(mom, 1.0 / (4.0 * total6)));
+    let faces: Vec<Vec<usize>> = if outer_sign < 0.0 {
         // Consistently inward: turn every face round (keeping its first vertex).
-        faces
-            .iter()
-            .map(|f| {
-                let mut g = Vec::with_capacity(f.len());
-                g.push(f[0]);
-                g.extend(f[1..].iter().rev());
-                g
-            })
-            .collect()
+        faces.iter().map(|f| reversed(f)).collect()
     } else {
         faces.to_vec()
     };
@@ -272,6 +310,126 @@ pub fn clean_polyhedron(
         volume: volume.abs(),
         centroid,
     })
+}
+
+/// A face turned round, keeping its first vertex.
+fn reversed(f: &[usize]) -> Vec<usize> {
+    let mut g = Vec::with_capacity(f.len());
+    g.push(f[0]);
+    g.extend(f[1..].iter().rev());
+    g
+}
+
+/// The shell of largest enclosed volume (the outer surface of a block with cavities).
+fn shells_outer(vol6: &[f64]) -> Option<usize> {
+    (0..vol6.len()).max_by(|&i, &j| vol6[i].abs().total_cmp(&vol6[j].abs()).then(j.cmp(&i)))
+}
+
+/// "faces 6–11" or "faces 2, 5, 9, … (12 faces)".
+fn faces_label(list: &[usize]) -> String {
+    let contiguous = list.windows(2).all(|w| w[1] == w[0] + 1);
+    match list {
+        [one] => format!("face {one}"),
+        [first, .., last] if contiguous => format!("faces {first}–{last}"),
+        _ => {
+            let head: Vec<String> = list.iter().take(4).map(|k| k.to_string()).collect();
+            if list.len() > 4 {
+                format!("faces {}, … ({} faces)", head.join(", "), list.len())
+            } else {
+                format!("faces {}", head.join(", "))
+            }
+        }
+    }
+}
+
+/// A polyhedron whose faces form several closed shells is a block with cavities only if one
+/// shell (the largest) is the outer surface and every other one is a cavity: oriented opposite
+/// to it (its faces face into the cavity, i.e. out of the material, so that the signed volumes
+/// add up to the hollow block's), strictly inside it, and apart from the other cavities. Each
+/// shell must enclose a volume.
+fn check_cavities(
+    what: &str,
+    vertices: &[V3],
+    faces: &[Vec<usize>],
+    shells: &[Vec<usize>],
+    vol6: &[f64],
+    area: &[f64],
+    tol: f64,
+) -> Result<()> {
+    let n = shells.len();
+    for s in 0..n {
+        if !exceeds(vol6[s].abs() / 6.0, tol * area[s]) {
+            return model_err(format!(
+                "{what}: the faces form {n} closed surfaces and the one of {} encloses no volume",
+                faces_label(&shells[s])
+            ));
+        }
+    }
+    let Some(outer) = shells_outer(vol6) else {
+        return Ok(());
+    };
+    // Each shell as a solid of its own, faces outward, for the containment tests.
+    let solid_of = |s: usize| -> Solid {
+        let fs = shells[s]
+            .iter()
+            .map(|&k| {
+                if vol6[s] < 0.0 {
+                    reversed(&faces[k])
+                } else {
+                    faces[k].clone()
+                }
+            })
+            .collect();
+        Solid {
+            vertices: vertices.to_vec(),
+            faces: fs,
+            volume: vol6[s].abs() / 6.0,
+            centroid: [0.0; 3],
+        }
+    };
+    let outer_solid = solid_of(outer);
+    let outer_q = QBody::new(&outer_solid, tol);
+    let outer_label = faces_label(&shells[outer]);
+    let mut cavities: Vec<(usize, QBody)> = Vec::new();
+    for s in (0..n).filter(|&s| s != outer) {
+        let solid = solid_of(s);
+        let q = QBody::new(&solid, tol);
+        let mut used: Vec<usize> = shells[s].iter().flat_map(|&k| faces[k].clone()).collect();
+        used.sort_unstable();
+        used.dedup();
+        let inside = used
+            .iter()
+            .all(|&i| outer_q.strictly_contains(vertices[i], tol))
+            && !q.edges.iter().any(|&(p, r)| outer_q.crossed_by(p, r, tol))
+            && !outer_q.edges.iter().any(|&(p, r)| q.crossed_by(p, r, tol));
+        let label = faces_label(&shells[s]);
+        let cavity = (vol6[s] < 0.0) != (vol6[outer] < 0.0);
+        if cavity && !inside {
+            return model_err(format!(
+                "{what}: the closed surface of {label} faces the other way to the outer surface ({outer_label}), as a cavity does, but is not strictly inside it"
+            ));
+        }
+        if !cavity && inside {
+            return model_err(format!(
+                "{what}: the closed surface of {label} lies inside the outer surface ({outer_label}) and faces the same way, which would count its volume twice: a cavity's faces face into the cavity (counter-clockwise seen from inside it), so turn them round, or give the inner body its own block"
+            ));
+        }
+        if !cavity {
+            return model_err(format!(
+                "{what}: the faces form {n} separate closed surfaces ({outer_label}; {label}): a block is one piece, so give each piece its own block"
+            ));
+        }
+        for (t, other) in &cavities {
+            if bodies_overlap(&q, other, tol) {
+                return model_err(format!(
+                    "{what}: the cavities of {label} and {} overlap",
+                    faces_label(&shells[*t])
+                ));
+            }
+        }
+        cavities.push((s, q));
+    }
+    Ok(())
 }
 
 /// One contact interface: a face of body `a` and a face of body `b` coplanar and facing each other.
@@ -776,36 +934,69 @@ fn intersect_group(
     }
 }
 
-/// Remove duplicate and collinear vertices (within `tol`) of a closed ring, in one pass with a
-/// stack plus the wrap-around.
+/// Remove duplicate and nearly collinear vertices of a closed ring, keeping the ring within
+/// `tol` of the one given: a run of vertices is replaced by the segment joining its ends only if
+/// every vertex of the run lies within `tol` of that segment (so a finely divided curve, say a
+/// 20,000-gon, is not shortened by more than `tol` anywhere, however many vertices go).
+///
+/// One pass, O(n): from each kept vertex A the run grows while the next vertex's direction from
+/// A lies in the intersection of the cones of half-angle asin(tol/|p − A|) around the vertices p
+/// already in the run (a "sleeve"), and is no nearer to A than they are (so they project onto
+/// the segment). It starts at the lexicographically smallest vertex (a corner of the convex
+/// hull, always kept) and ends back at it.
 fn clean_ring(p: &[P2], tol: f64) -> Vec<P2> {
-    let d = |a: P2, b: P2| (a[0] - b[0]).hypot(a[1] - b[1]);
-    let mut s: Vec<P2> = Vec::with_capacity(p.len());
-    for &q in p {
-        if s.last().is_some_and(|&t| d(t, q) <= tol) {
-            continue;
-        }
-        while s.len() >= 2 && point_segment_distance(s[s.len() - 1], s[s.len() - 2], q) <= tol {
-            s.pop();
-        }
-        s.push(q);
+    let n = p.len();
+    if n < 3 {
+        return p.to_vec();
     }
-    // Wrap-around: the ring's end against its start.
-    let mut start = 0;
-    while s.len() - start >= 3 {
-        let k = s.len();
-        if d(s[k - 1], s[start]) <= tol
-            || point_segment_distance(s[k - 1], s[k - 2], s[start]) <= tol
-        {
-            s.pop();
-        } else if point_segment_distance(s[start], s[k - 1], s[start + 1]) <= tol {
-            start += 1;
-        } else {
-            break;
+    let start = (0..n)
+        .min_by(|&i, &j| {
+            p[i][0]
+                .total_cmp(&p[j][0])
+                .then(p[i][1].total_cmp(&p[j][1]))
+        })
+        .unwrap_or(0);
+    let ring: Vec<P2> = (0..=n).map(|k| p[(start + k) % n]).collect();
+    let m = n; // ring[m] is ring[0] again
+    let mut out = vec![ring[0]];
+    let mut a = 0;
+    while a < m {
+        let o = ring[a];
+        let (mut lo, mut hi) = (-std::f64::consts::PI, std::f64::consts::PI);
+        let mut rmax: f64 = 0.0;
+        let mut dir: Option<P2> = None;
+        let mut last = None;
+        for (j, q) in ring.iter().enumerate().skip(a + 1) {
+            let v = [q[0] - o[0], q[1] - o[1]];
+            let d = v[0].hypot(v[1]);
+            if !exceeds(d, tol) {
+                continue; // within tol of A: within tol of any segment from A
+            }
+            let r = *dir.get_or_insert([v[0] / d, v[1] / d]);
+            let phi = (r[0] * v[1] - r[1] * v[0]).atan2(r[0] * v[0] + r[1] * v[1]);
+            if phi < lo || phi > hi || d < rmax {
+                break;
+            }
+            last = Some(j);
+            let w = (tol / d).min(1.0).asin();
+            lo = lo.max(phi - w);
+            hi = hi.min(phi + w);
+            rmax = d;
         }
+        let Some(l) = last else { break };
+        if l < m {
+            out.push(ring[l]);
+        }
+        a = l;
     }
-    s.drain(..start);
-    s
+    // A last kept vertex within tol of the first is a duplicate of it.
+    while out.len() > 1 && {
+        let (x, y) = (out[out.len() - 1], out[0]);
+        !exceeds((x[0] - y[0]).hypot(x[1] - y[1]), tol)
+    } {
+        out.pop();
+    }
+    out
 }
 
 /// A face prepared for point queries: plane, in-plane frame and projected polygon.
@@ -900,6 +1091,32 @@ impl QFace {
     }
 }
 
+/// Signed solid angle of triangle `t` seen from `q` (Van Oosterom and Strackee).
+fn solid_angle(t: &[V3; 3], q: V3) -> f64 {
+    let (a, b, c) = (sub3(t[0], q), sub3(t[1], q), sub3(t[2], q));
+    let (la, lb, lc) = (norm3(a), norm3(b), norm3(c));
+    let num = dot3(a, cross3(b, c));
+    let den = la * lb * lc + dot3(a, b) * lc + dot3(a, c) * lb + dot3(b, c) * la;
+    2.0 * num.atan2(den)
+}
+
+/// Generalised winding number of point `q` with respect to the closed surface `faces` (vertex
+/// index lists into `vertices`): 1 inside a counter-clockwise (outward) surface, −1 inside an
+/// inward one, 0 outside; faces of fewer than 3 vertices or with indices out of range are
+/// skipped.
+pub fn winding_number(vertices: &[[f64; 3]], faces: &[Vec<usize>], q: [f64; 3]) -> f64 {
+    let mut w = 0.0;
+    for f in faces {
+        if f.len() < 3 || f.iter().any(|&i| i >= vertices.len()) {
+            continue;
+        }
+        for i in 1..f.len() - 1 {
+            w += solid_angle(&[vertices[f[0]], vertices[f[i]], vertices[f[i + 1]]], q);
+        }
+    }
+    w / (4.0 * std::f64::consts::PI)
+}
+
 /// A body prepared for the exact overlap test.
 struct QBody {
     faces: Vec<QFace>,
@@ -980,15 +1197,7 @@ impl QBody {
     /// Generalised winding number of `q` (1 inside, 0 outside): the signed solid angles of the
     /// fan triangles (Van Oosterom and Strackee) over 4π.
     fn winding(&self, q: V3) -> f64 {
-        let mut w = 0.0;
-        for t in &self.tris {
-            let (a, b, c) = (sub3(t[0], q), sub3(t[1], q), sub3(t[2], q));
-            let (la, lb, lc) = (norm3(a), norm3(b), norm3(c));
-            let num = dot3(a, cross3(b, c));
-            let den = la * lb * lc + dot3(a, b) * lc + dot3(a, c) * lb + dot3(b, c) * la;
-            w += 2.0 * num.atan2(den);
-        }
-        w / (4.0 * std::f64::consts::PI)
+        self.tris.iter().map(|t| solid_angle(t, q)).sum::<f64>() / (4.0 * std::f64::consts::PI)
     }
 
     /// Whether `q` lies inside, farther than `tol` from the surface.

@@ -115,6 +115,13 @@ impl Structure3d {
             let d = Three::sub(hi, lo);
             Three::dot(d, d).sqrt()
         };
+        if diag.is_infinite() {
+            // Every coordinate is finite but the model's size is not: no length, area or
+            // volume of it could be computed.
+            return model_err(
+                "the model's bounding-box diagonal overflows (coordinates too large for f64 arithmetic): scale the model",
+            );
+        }
         let tol = rel
             * if diag.is_finite() && diag > 0.0 {
                 diag

@@ -88,3 +88,69 @@ fn a_settlement_whose_method_fails_is_answered_and_certified() {
     let json = serde_json::to_string(&reference).unwrap();
     assert!(!json.contains("\"tried\""), "{json}");
 }
+
+/// Two boxes on a base, the upper one offset by `e` along x, every length × `s`.
+fn offset_stack(e: f64, s: f64) -> voussoir::Structure3d {
+    let cuboid = |lo: [f64; 3], hi: [f64; 3]| -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
+        let v = (0..8)
+            .map(|i| {
+                [
+                    s * if i & 1 == 0 { lo[0] } else { hi[0] },
+                    s * if i & 2 == 0 { lo[1] } else { hi[1] },
+                    s * if i & 4 == 0 { lo[2] } else { hi[2] },
+                ]
+            })
+            .collect();
+        let f = vec![
+            vec![0, 2, 3, 1],
+            vec![4, 5, 7, 6],
+            vec![0, 1, 5, 4],
+            vec![2, 6, 7, 3],
+            vec![0, 4, 6, 2],
+            vec![1, 3, 7, 5],
+        ];
+        (v, f)
+    };
+    let block = |lo, hi| {
+        let (v, f) = cuboid(lo, hi);
+        serde_json::json!({"vertices": v, "faces": f})
+    };
+    let (bv, bf) = cuboid([-1.0, -1.0, -1.0], [3.0, 2.0, 0.0]);
+    let m: voussoir::model3d::Model3d = serde_json::from_value(serde_json::json!({
+        "blocks": [block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([e, 0.0, 1.0], [1.0 + e, 1.0, 2.0])],
+        "supports": [{"name": "base", "vertices": bv, "faces": bf}]
+    }))
+    .unwrap();
+    voussoir::Structure3d::new(&m, BuildOptions::default()).unwrap()
+}
+
+#[test]
+fn the_safety_factor_of_a_stack_is_exact_at_every_scale_and_with_every_method() {
+    use voussoir::analysis::safety::{safety, SafetyOptions};
+    // By hand (Heyman's geometric factor): the upper box's centroid (x = 0.5 + e) over its
+    // contact [e, 1] (centre (1 + e)/2, half-width (1 − e)/2) needs the fraction
+    // f ≥ (0.5 + e − (1 + e)/2) / ((1 − e)/2) = e / (1 − e); the pair's centroid (0.5 + e/2)
+    // over the base contact [0, 1] needs f ≥ e. With e = 0.3: f = 3/7.
+    let e = 0.3;
+    let hand = e / (1.0 - e);
+    for s in [1.0, 100.0, 0.003] {
+        let st = offset_stack(e, s);
+        for method in [Method::DualSimplex, Method::Ipm, Method::Clarabel] {
+            let o = SafetyOptions {
+                reactions: false,
+                solver: SolverOptions {
+                    method,
+                    ..SolverOptions::default()
+                },
+                ..SafetyOptions::default()
+            };
+            let r = safety(&st, &o).unwrap();
+            let f = r.least_joint_fraction.unwrap();
+            // The bisection's tolerance is 1e-6 on the fraction, from above.
+            assert!(
+                f >= hand - 1e-9 && f <= hand + 1.01e-6,
+                "×{s}, {method:?}: {f} against {hand}"
+            );
+        }
+    }
+}

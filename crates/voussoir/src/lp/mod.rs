@@ -128,6 +128,41 @@ impl LinearProgram {
         }
         out
     }
+    /// The largest violation of the rows and column bounds at `x`, each relative to its own
+    /// scale (a row's `Σ |a_ij x_j|` and the size of its bounds; a column's size and bound):
+    /// how far a point an interior-point method calls feasible is from being so.
+    pub fn relative_violation(&self, x: &[f64]) -> f64 {
+        if x.len() != self.num_cols() {
+            return f64::INFINITY;
+        }
+        let mut act = vec![0.0; self.num_rows()];
+        let mut size = vec![0.0; self.num_rows()];
+        for (j, &xj) in x.iter().enumerate() {
+            for (i, v) in self.column(j) {
+                act[i] += v * xj;
+                size[i] += (v * xj).abs();
+            }
+        }
+        let over = |v: f64, lo: f64, hi: f64, scale: f64| -> f64 {
+            let bound = |b: f64| if b.is_finite() { b.abs() } else { 0.0 };
+            let s = scale.max(bound(lo)).max(bound(hi));
+            let d = (lo - v).max(v - hi).max(0.0);
+            if d == 0.0 {
+                0.0
+            } else if s > 0.0 {
+                d / s
+            } else {
+                f64::INFINITY
+            }
+        };
+        let rows = (0..self.num_rows())
+            .map(|i| over(act[i], self.row_lower[i], self.row_upper[i], size[i]))
+            .fold(0.0f64, f64::max);
+        (0..self.num_cols())
+            .map(|j| over(x[j], self.col_lower[j], self.col_upper[j], x[j].abs()))
+            .fold(rows, f64::max)
+    }
+
     /// `A x` (row activities).
     pub fn row_activity(&self, x: &[f64]) -> Vec<f64> {
         let mut r = vec![0.0; self.num_rows()];

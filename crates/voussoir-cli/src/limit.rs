@@ -106,7 +106,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 }
                 _ => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
             };
-            a.draw.emit_3d(&r, &c.input.path)?;
+            a.draw.with(&a.forces).emit_3d(&r, &c.input.path)?;
             a.out.emit(&r, || {
                 crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
             })

@@ -156,7 +156,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
         (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };
-    a.draw.emit_3d(&r, &c.input.path)?;
+    a.draw.with(&a.forces).emit_3d(&r, &c.input.path)?;
     a.out.emit(&r, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })

@@ -64,7 +64,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
             } else {
                 voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver3d)?
             };
-            a.draw.emit_3d(&r, &input.path)?;
+            a.draw.with(&a.forces).emit_3d(&r, &input.path)?;
             return a.out.emit(&r, || {
                 let mut s = String::new();
                 let _ = writeln!(s, "{}", crate::common::structure_line(&st));

@@ -30,7 +30,8 @@ pub const OPEN_TOLERANCE: f64 = 1e-7;
 /// that scale, not on their own size.
 pub const WORK_FLOOR: f64 = 1e-3;
 
-/// A collapse multiplier within this fraction of [`lambda_unit`] of zero is zero: the interior
+/// A negative collapse multiplier within this fraction of [`lambda_unit`] of zero is zero (a
+/// small positive one is kept: μ = 1e-9 gives λ = 1e-9): the interior
 /// point methods stop within about 1e-9 of the scaled program's optimum, on either side.
 pub const LAMBDA_ZERO: f64 = 1e-8;
 

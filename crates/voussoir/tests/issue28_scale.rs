@@ -104,7 +104,9 @@ fn issue28_item3_zero_friction_with_the_exact_cone_stands_at_lambda_zero() {
     let pyramid = limit(&st, &opts()).unwrap();
     for r in [&cone, &pyramid] {
         assert_eq!(r.status, LimitStatus::Collapse, "{}", r.message);
-        assert_eq!(r.load_multiplier, Some(0.0), "{}", r.message);
+        // Zero to the interior point's round-off (1e-8 of λ_unit = 1), never negative.
+        let l = r.load_multiplier.unwrap();
+        assert!((0.0..=1e-8).contains(&l), "{l}: {}", r.message);
         assert!(!r.message.contains("NOT CERTIFIED"), "{}", r.message);
     }
     let s = safety(&st, &SafetyOptions::default()).unwrap();

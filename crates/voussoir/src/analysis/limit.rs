@@ -297,9 +297,9 @@ pub fn limit_solution(
         LpStatus::Optimal => {}
     }
     let lambda = x[fp.lambda.expect("program has λ")];
-    // A multiplier within round-off of zero is zero (crate::scale::LAMBDA_ZERO): the structure
-    // stands with no reserve, as the exact answer says; only a clearly negative one means
-    // that it cannot stand.
+    // A negative multiplier within round-off of zero is zero (crate::scale::LAMBDA_ZERO): the
+    // structure stands with no reserve, as the exact answer says; only a clearly negative one
+    // means that it cannot stand. A small positive λ (μ = 1e-9) is kept as it is.
     let unit = if fp.force_scale > 0.0 {
         let fl = crate::scale::force_scale(map.dofs_per_block, live);
         if fl > 0.0 && (fp.force_scale / fl).is_finite() {
@@ -310,7 +310,7 @@ pub fn limit_solution(
     } else {
         1.0
     };
-    let lambda = if lambda.abs() <= crate::scale::LAMBDA_ZERO * unit {
+    let lambda = if lambda < 0.0 && -lambda <= crate::scale::LAMBDA_ZERO * unit {
         0.0
     } else {
         lambda

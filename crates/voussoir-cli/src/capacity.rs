@@ -96,7 +96,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                         .into(),
                 ));
             }
-            let st = input.structure3d(model, Some(&motion))?;
+            let st = input.structure3d_any_cone(model, Some(&motion))?;
             // In 3D the conic joint law of a limit analysis is the exact Coulomb cone (as
             // `limit --friction-cone exact`): every limit analysis of the curve is a
             // second-order cone program. The settlement that deforms the geometry is solved by

@@ -447,7 +447,7 @@ impl Input {
     ) -> Result<Structure3d, Fail> {
         if self.exact_friction_cone {
             return Err(Fail(
-                "--friction-cone exact is not solved by this command (limit, settle and tilt solve the exact cone; here the friction cone is the inscribed pyramid of --friction-facets)".into(),
+                "--friction-cone exact is not solved by this command (limit, settle, tilt and capacity solve the exact cone; here the friction cone is the inscribed pyramid of --friction-facets)".into(),
             ));
         }
         self.structure3d_any_cone(model, motion)

@@ -929,6 +929,22 @@ pub fn identify(
             }
         }
     }
+    // The motions that make the observed pattern a settlement mechanism with every width
+    // within its tolerance: the range of each unknown over them (two LPs per unknown), and
+    // the mean of those LPs' motions as one more candidate (the set is convex: the mean is in
+    // it, and away from its vertices, where the forward mechanism may not be unique).
+    let ranges = if pattern_feasible {
+        let (ranges, mean) = within_ranges(&lps, opts.ranges)?;
+        if let Some(a) = mean {
+            cands.push(Candidate {
+                eval: s.evaluate(&a)?,
+                prediction: None,
+            });
+        }
+        ranges
+    } else {
+        vec![Range::default(); unknowns.len()]
+    };
     let lp_best = cands
         .iter()
         .map(|c| c.eval.misfit)
@@ -960,14 +976,23 @@ pub fn identify(
         ));
     }
     // 3. The least misfit of every motion considered; between equal misfits, one within
-    // tolerance, then one opening the observed pattern, then the order above (LP first).
+    // tolerance, then one opening the observed pattern, then one leaving the fewest observed
+    // cracks shut (a motion that explains something over one that explains nothing), then the
+    // order above (LP first).
     let least = cands
         .iter()
         .map(|c| &c.eval)
         .chain(found.iter().map(|f| &f.eval))
         .map(|e| e.misfit)
         .fold(f64::INFINITY, f64::min);
-    let key = |e: &Eval| (!same_misfit(e.misfit, least), !e.within, !e.opens_pattern());
+    let key = |e: &Eval| {
+        (
+            !same_misfit(e.misfit, least),
+            !e.within,
+            !e.opens_pattern(),
+            e.shut.len(),
+        )
+    };
     let best_cand = (0..cands.len()).min_by_key(|&i| key(&cands[i].eval));
     let best_found = (0..found.len()).min_by_key(|&i| key(&found[i].eval));
     let (best, prediction) = match (best_cand, best_found) {
@@ -995,23 +1020,93 @@ pub fn identify(
     let mut minima = vec![minimum(&best, best_flat)];
     minima.extend(others);
     minima.truncate(5);
-    let pattern_witness = cands
-        .iter()
-        .map(|c| &c.eval)
-        .chain(found.iter().map(|f| &f.eval))
-        .filter(|e| e.opens_pattern() || e.within)
-        .min_by(|a, b| a.misfit.total_cmp(&b.misfit));
+    // The least-misfit motions (other than the best) that fit every width within its
+    // tolerance, and that open the observed pattern.
+    let witness = |f: &dyn Fn(&Eval) -> bool| {
+        cands
+            .iter()
+            .map(|c| &c.eval)
+            .chain(found.iter().map(|f| &f.eval))
+            .filter(|e| f(e))
+            .min_by(|a, b| a.misfit.total_cmp(&b.misfit))
+    };
+    let witnesses = Witnesses {
+        within: witness(&|e: &Eval| e.within),
+        pattern: witness(&|e: &Eval| e.opens_pattern()),
+        // Whether some motion with the observed pattern fits every width (the LP's answer).
+        within_lp: pattern_feasible.then_some(ranges[0].feasible),
+    };
     result(
         &s,
-        &lps,
+        &ranges,
         best,
         prediction,
         minima,
         explored,
         pattern_feasible,
         active_set_fixed,
-        pattern_witness,
+        witnesses,
     )
+}
+
+/// Other motions worth naming in the message.
+struct Witnesses<'e> {
+    within: Option<&'e Eval>,
+    pattern: Option<&'e Eval>,
+    within_lp: Option<bool>,
+}
+
+/// One unknown's range over the motions that make the observed pattern a settlement mechanism
+/// with every width within its tolerance (`None`: unbounded or not computed).
+#[derive(Clone, Copy, Debug, Default)]
+struct Range {
+    lo: Option<f64>,
+    hi: Option<f64>,
+    /// Some motion fits every width within its tolerance.
+    feasible: bool,
+    computed: bool,
+}
+
+/// The ranges (every unknown when `all`, else the first one only, not reported: to find one
+/// motion within tolerance) and the mean motion of the LPs that reached an optimum.
+fn within_ranges(lps: &PatternLps, all: bool) -> Result<(Vec<Range>, Option<Vec<f64>>)> {
+    let n = lps.s.unknowns.len();
+    let mut ranges = vec![Range::default(); n];
+    let mut sum = vec![0.0; n];
+    let mut count = 0usize;
+    for (q, range) in ranges.iter_mut().enumerate().take(if all { n } else { 1 }) {
+        range.feasible = true;
+        for sense in [Direction::Minimise, Direction::Maximise] {
+            let rp = lps.program(MisfitMode::WithinTolerance { unknown: q, sense });
+            let sol = lp::solve(&rp.lp, &lps.s.opts.solver)?;
+            let v = match sol.status {
+                LpStatus::Optimal => {
+                    for (acc, a) in sum.iter_mut().zip(rp.amplitudes(&sol.x)) {
+                        *acc += a;
+                    }
+                    count += 1;
+                    Some(sol.x[rp.a[q]])
+                }
+                LpStatus::Unbounded => None,
+                LpStatus::Infeasible => {
+                    range.feasible = false;
+                    None
+                }
+            };
+            if sense == Direction::Minimise {
+                range.lo = v;
+            } else {
+                range.hi = v;
+            }
+        }
+        if !range.feasible {
+            range.lo = None;
+            range.hi = None;
+        }
+        range.computed = all;
+    }
+    let mean = (count > 0).then(|| sum.iter().map(|v| v / count as f64).collect());
+    Ok((ranges, mean))
 }
 
 fn minimum(e: &Eval, flat: bool) -> Minimum {
@@ -1451,14 +1546,14 @@ fn compass(s: &Setup, start: Eval, scales: &[f64]) -> Eval {
 #[allow(clippy::too_many_arguments)]
 fn result(
     s: &Setup,
-    lps: &PatternLps,
+    ranges: &[Range],
     best: Eval,
     prediction: Option<Prediction>,
     minima: Vec<Minimum>,
     explored: bool,
     pattern_feasible: bool,
     active_set_fixed: bool,
-    witness: Option<&Eval>,
+    witnesses: Witnesses,
 ) -> Result<IdentifyResult> {
     let (st0, map) = (&s.st0, &s.map);
     let st_best = s
@@ -1470,33 +1565,20 @@ fn result(
     let certificate = prediction
         .as_ref()
         .map(|p| reproduction(st0, map, &best.forward, &p.open, p.work));
-    let identified = witness.is_some();
+    let identified = best.within
+        || best.opens_pattern()
+        || witnesses.within.is_some()
+        || witnesses.pattern.is_some();
     // Identifiability: the range of each unknown over every motion that makes the observed
     // pattern a settlement mechanism with every width within its tolerance.
     let mut unknown_results = Vec::new();
     for (q, u) in s.unknowns.iter().enumerate() {
-        let (mut lo, mut hi, mut computed) = (None, None, false);
-        let mut feasible = true;
-        if s.opts.ranges && pattern_feasible {
-            computed = true;
-            for sense in [Direction::Minimise, Direction::Maximise] {
-                let rp = lps.program(MisfitMode::WithinTolerance { unknown: q, sense });
-                let sol = lp::solve(&rp.lp, &s.opts.solver)?;
-                let v = match sol.status {
-                    LpStatus::Optimal => Some(sol.x[rp.a[q]]),
-                    LpStatus::Unbounded => None,
-                    LpStatus::Infeasible => {
-                        feasible = false;
-                        None
-                    }
-                };
-                if sense == Direction::Minimise {
-                    lo = v;
-                } else {
-                    hi = v;
-                }
-            }
-        }
+        let Range {
+            lo,
+            hi,
+            feasible,
+            computed,
+        } = ranges[q];
         let value = best.a[q] + 0.0; // no "-0"
         let (identifiable, note) = if !pattern_feasible {
             (
@@ -1550,7 +1632,7 @@ fn result(
     }
     let mut message = if !identified {
         let reason = if pattern_feasible {
-            "every motion that makes it a settlement mechanism leaves an observed crack closed"
+            "the motions that make it a settlement mechanism leave, on their own forward settlement analysis, an observed crack closed or open another"
         } else {
             "no motion within the bounds makes this pattern a settlement mechanism"
         };
@@ -1572,17 +1654,37 @@ fn result(
             "identified: the forward settlement analysis of these support motions reproduces every observed width within its tolerance (misfit {all:.3} tolerances over every observed point, largest {maxm:.3e} m){}",
             why.replace("; it", "; it still")
         )
-    } else if best.opens_pattern() {
-        format!(
-            "identified: the settlement mechanism of these support motions opens the observed crack pattern, but no motion found fits every width within its tolerance: this is the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m)"
-        )
     } else {
-        let w = witness.expect("identified");
-        format!(
-            "identified: the observed crack pattern is a settlement mechanism (the motion {} opens it, misfit {:.3} tolerances), but the least-misfit motion is the one below (misfit {all:.3} tolerances over every observed point){why}",
-            values_text(s, &w.a),
-            w.misfit
-        )
+        // The least misfit does not fit every width within its tolerance.
+        let mut m = if best.opens_pattern() {
+            format!(
+                "identified: the settlement mechanism of these support motions opens the observed crack pattern with the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m), though not every width within its tolerance"
+            )
+        } else {
+            format!(
+                "identified: the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m) is this motion's{why}"
+            )
+            .replace("motion's; it", "motion's: it")
+        };
+        match (witnesses.within, witnesses.within_lp) {
+            (Some(w), _) => m.push_str(&format!(
+                "; the motion {} fits every width within its tolerance (misfit {:.3} tolerances)",
+                values_text(s, &w.a),
+                w.misfit
+            )),
+            (None, Some(false)) => m.push_str(
+                "; no motion with the observed pattern fits every width within its tolerance",
+            ),
+            (None, _) => m.push_str("; no motion found fits every width within its tolerance"),
+        }
+        if let Some(p) = witnesses.pattern.filter(|_| !best.opens_pattern()) {
+            m.push_str(&format!(
+                "; the motion {} opens the observed crack pattern (misfit {:.3} tolerances)",
+                values_text(s, &p.a),
+                p.misfit
+            ));
+        }
+        m
     };
     if minima.len() > 1 {
         let list: Vec<String> = minima[1..]

@@ -557,13 +557,6 @@ fn same_misfit(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
 }
 
-static DBG_EVALS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-fn dbg(m: &str) {
-    if std::env::var("IDDBG").is_ok() {
-        eprintln!("[{}] {m}", DBG_EVALS.load(std::sync::atomic::Ordering::Relaxed));
-    }
-}
-
 /// Everything the misfit of a motion depends on: the structure with its known motions, the
 /// unknowns and the observations resolved to points.
 struct Setup<'a> {
@@ -724,7 +717,6 @@ impl<'a> Setup<'a> {
 
     /// Run the forward settlement analysis of amplitudes `a` and judge it.
     fn evaluate(&self, a: &[f64]) -> Result<Eval> {
-        DBG_EVALS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let a: Vec<f64> = a.iter().map(|v| v + 0.0).collect();
         let st_a = self
             .st
@@ -978,25 +970,51 @@ pub fn identify(
     // 3. The least misfit of every motion considered; between equal misfits, one within
     // tolerance, then one opening the observed pattern, then one leaving the fewest observed
     // cracks shut (a motion that explains something over one that explains nothing), then the
-    // order above (LP first).
+    // least misfit over the listed cracks alone (the surveyed widths matched most nearly),
+    // then the order above (LP first).
     let least = cands
         .iter()
         .map(|c| &c.eval)
         .chain(found.iter().map(|f| &f.eval))
         .map(|e| e.misfit)
         .fold(f64::INFINITY, f64::min);
-    let key = |e: &Eval| {
-        (
-            !same_misfit(e.misfit, least),
-            !e.within,
-            !e.opens_pattern(),
-            e.shut.len(),
-        )
+    let listed = |e: &Eval| -> f64 {
+        s.pobs
+            .iter()
+            .map(|o| (e.open[o.point] - o.width).abs() / o.tolerance)
+            .sum()
     };
-    let best_cand = (0..cands.len()).min_by_key(|&i| key(&cands[i].eval));
-    let best_found = (0..found.len()).min_by_key(|&i| key(&found[i].eval));
+    let better = |x: &Eval, y: &Eval| -> std::cmp::Ordering {
+        let key = |e: &Eval| {
+            (
+                !same_misfit(e.misfit, least),
+                !e.within,
+                !e.opens_pattern(),
+                e.shut.len(),
+            )
+        };
+        key(x).cmp(&key(y)).then_with(|| {
+            let (a, b) = (listed(x), listed(y));
+            if same_misfit(a, b) {
+                std::cmp::Ordering::Equal
+            } else {
+                a.total_cmp(&b)
+            }
+        })
+    };
+    let pick = |evals: Vec<&Eval>| -> Option<usize> {
+        (0..evals.len()).reduce(|i, j| {
+            if better(evals[j], evals[i]).is_lt() {
+                j
+            } else {
+                i
+            }
+        })
+    };
+    let best_cand = pick(cands.iter().map(|c| &c.eval).collect());
+    let best_found = pick(found.iter().map(|f| &f.eval).collect());
     let (best, prediction) = match (best_cand, best_found) {
-        (Some(i), Some(j)) if key(&found[j].eval) < key(&cands[i].eval) => {
+        (Some(i), Some(j)) if better(&found[j].eval, &cands[i].eval).is_lt() => {
             (found.swap_remove(j).eval, None)
         }
         (Some(i), _) => {
@@ -1015,6 +1033,12 @@ pub fn identify(
             Relation::Separate => others.push(minimum(&f.eval, f.flat)),
             Relation::Connected => best_flat |= same_misfit(f.eval.misfit, best.misfit),
             Relation::Same => best_flat |= f.flat,
+        }
+    }
+    // An equally good candidate elsewhere in the same basin also makes it flat.
+    for c in &cands {
+        if !best_flat && same_misfit(c.eval.misfit, best.misfit) {
+            best_flat = relation(&s, &best, &c.eval)? == Relation::Connected;
         }
     }
     let mut minima = vec![minimum(&best, best_flat)];
@@ -1171,9 +1195,6 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
     let mut found: Vec<Found> = Vec::new();
     if s.homogeneous && n <= 3 {
         let rays = ray_scan(s, &scales)?;
-        for r in &rays {
-            dbg(&format!("ray {:?} t {} misfit {}", r.dir, r.t, r.misfit));
-        }
         for (i, flat) in ray_minima(&rays, n) {
             // Refine a minimum between the scan's directions: for one unknown the ray's
             // minimum is exact (the misfit is convex along it); for two, a golden-section
@@ -1194,7 +1215,6 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
             } else {
                 e
             };
-            dbg(&format!("minimum {:?} misfit {} flat {flat}", e.a, e.misfit));
             found.push(Found { eval: e, flat });
         }
     } else if s.explorable() {

@@ -50,7 +50,11 @@
 //! the active set the solution suggests and (I) is solved once more.
 //!
 //! The identifiability LPs use the same rows with `|e_o| ≤ τ_o` and minimise or maximise one
-//! `a_q` ([`MisfitMode::WithinTolerance`]).
+//! `a_q` ([`MisfitMode::WithinTolerance`]). Two variants of (I) serve as further candidates of
+//! [`crate::analysis::identify`]: the balanced tie-break ([`MisfitMode::Balanced`]: with
+//! `Σ_o |e_o|/τ_o` kept at its least, minimise `max_o |e_o|/τ_o`), and (I) with every observed
+//! crack opening by a fraction of its width ([`MisfitMode::MinimiseOpening`]: `(I)` can forbid
+//! force at a crack but not ask it to open, so its optimum may close one).
 
 // Loops run over point and column numbers that index several parallel vectors at once.
 #![allow(clippy::needless_range_loop)]

@@ -539,7 +539,6 @@ fn max_abs(v: &[f64]) -> f64 {
     v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
 
-
 /// A point counts as open when its opening exceeds this fraction of the largest opening or
 /// observed width (whichever is larger); below it, an opening is round-off of the LPs.
 const OPEN_FRACTION: f64 = 1e-7;
@@ -1157,12 +1156,11 @@ enum Relation {
 
 fn relation(s: &Setup, a: &Eval, b: &Eval) -> Result<Relation> {
     let scales = s.scales();
-    let dist = a
-        .a
-        .iter()
-        .zip(&b.a)
-        .zip(&scales)
-        .fold(0.0f64, |m, ((x, y), sc)| m.max((x - y).abs() / sc));
+    let dist =
+        a.a.iter()
+            .zip(&b.a)
+            .zip(&scales)
+            .fold(0.0f64, |m, ((x, y), sc)| m.max((x - y).abs() / sc));
     if dist <= 1e-6 {
         return Ok(Relation::Same);
     }
@@ -1378,12 +1376,7 @@ fn ray_at(s: &Setup, scales: &[f64], dir: Vec<f64>) -> Option<Ray> {
         vec![0.0; s.map.num_points()]
     };
     let (t, misfit) = ray_minimiser(&open1, &s.targets, lo, hi);
-    Some(Ray {
-        dir,
-        a1,
-        t,
-        misfit,
-    })
+    Some(Ray { dir, a1, t, misfit })
 }
 
 /// The factor `t` in `[lo, hi]` (`lo ≥ 0`) minimising `Σ |t·o_k − w_k| / τ_k` over observed
@@ -1473,7 +1466,11 @@ fn ray_minima(rays: &[Ray], n: usize) -> Vec<(usize, bool)> {
         if lower {
             continue;
         }
-        let moving: Vec<usize> = plateau.iter().copied().filter(|&c| rays[c].t > 0.0).collect();
+        let moving: Vec<usize> = plateau
+            .iter()
+            .copied()
+            .filter(|&c| rays[c].t > 0.0)
+            .collect();
         if moving.is_empty() {
             continue;
         }
@@ -1576,9 +1573,8 @@ fn result(
     witnesses: Witnesses,
 ) -> Result<IdentifyResult> {
     let (st0, map) = (&s.st0, &s.map);
-    let st_best = s
-        .st
-        .with_support_motions(&motions_of(s.st, s.unknowns, &best.a));
+    let st_best =
+        s.st.with_support_motions(&motions_of(s.st, s.unknowns, &best.a));
     let (observations, total, maxm) = compare(st0, map, &s.pobs, &best.open);
     let omax = max_abs(&best.open);
     let predicted_cracks = predicted(st0, map, &best.open, &s.roles, omax);
@@ -1763,7 +1759,6 @@ fn values_text(s: &Setup, a: &[f64]) -> String {
         .collect();
     format!("({})", parts.join(", "))
 }
-
 
 /// Complementarity the observations did not fix: `p_n z = 0` at unobserved points and
 /// `y (A x − U) = 0` on Coulomb rows. None if it holds; otherwise the active set to impose.

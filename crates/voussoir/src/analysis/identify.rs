@@ -526,8 +526,11 @@ fn motions_of(st: &Structure, unknowns: &[Unknown], a: &[f64]) -> Vec<[f64; 3]> 
     m
 }
 
-/// The forward settlement analysis, as `voussoir settle` runs it: [`settle`] for both LPs,
-/// [`settle_with`] for the force-only form.
+/// The forward settlement analysis: [`settle`] for both LPs, [`settle_with`] for the
+/// force-only form — the solver's own optimal mechanism, as `voussoir settle --raw` reports it
+/// (the same as `settle`'s canonical one whenever the optimal mechanism is unique; the
+/// canonical selection costs some 15 forward analyses on the 0.8 m façade, too much for the
+/// exploration).
 fn forward_settle(st: &Structure, opts: &IdentifyOptions) -> Result<SettlementResult> {
     match opts.form {
         SettlementForm::Both => settle(st, &opts.solver),

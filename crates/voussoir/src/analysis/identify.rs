@@ -25,12 +25,15 @@
 #![allow(clippy::needless_range_loop)]
 
 use crate::analysis::settlement::{
-    settle, settle_with, SettlementForm, SettlementResult, SettlementStatus,
+    settlement_result, settlement_result_checked, solve_settlement_with, SettlementForm,
+    SettlementResult, SettlementSolution, SettlementStatus,
 };
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, LpSolution, LpStatus, SolverOptions};
-use crate::programs::{settlement_force_program, ForceProgram};
+use crate::lp::{self, Direction, LinearProgram, LpSolution, LpStatus, SolverOptions};
+use crate::programs::{
+    optimal_face, settlement_force_program, settlement_motion_program, ForceProgram,
+};
 use crate::programs_identify::{
     decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole,
 };
@@ -526,18 +529,6 @@ fn motions_of(st: &Structure, unknowns: &[Unknown], a: &[f64]) -> Vec<[f64; 3]> 
     m
 }
 
-/// The forward settlement analysis: [`settle`] for both LPs, [`settle_with`] for the
-/// force-only form — the solver's own optimal mechanism, as `voussoir settle --raw` reports it
-/// (the same as `settle`'s canonical one whenever the optimal mechanism is unique; the
-/// canonical selection costs some 15 forward analyses on the 0.8 m façade, too much for the
-/// exploration).
-fn forward_settle(st: &Structure, opts: &IdentifyOptions) -> Result<SettlementResult> {
-    match opts.form {
-        SettlementForm::Both => settle(st, &opts.solver),
-        form => settle_with(st, &opts.solver, form),
-    }
-}
-
 fn max_abs(v: &[f64]) -> f64 {
     v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
@@ -553,6 +544,11 @@ const EXACT_MISFIT: f64 = 1e-6;
 /// Models above this many degrees of freedom get no exploration of the misfit landscape beyond
 /// the LP candidates (each evaluation is a forward settlement analysis).
 const EXPLORE_MAX_DOFS: usize = 6000;
+
+/// The optimal face of a forward analysis: mechanisms whose work of the dead loads is within
+/// this (relative) of the solver's optimum. The solver's own mechanism is on it; a looser
+/// margin would admit nearly optimal mechanisms whose openings differ measurably.
+const FACE_TOLERANCE: f64 = 1e-9;
 
 /// Two misfits are equal within this (relative) margin.
 fn same_misfit(a: f64, b: f64) -> bool {
@@ -582,9 +578,13 @@ struct Setup<'a> {
     /// The forward analysis is homogeneous of degree one in the unknowns (no known motions):
     /// scaling the motions scales every opening.
     homogeneous: bool,
+    /// Full evaluations done (candidates often coincide to round-off: one evaluation serves
+    /// motions within 1e-8 of each other, relative).
+    cache: std::cell::RefCell<Vec<Eval>>,
 }
 
 /// The forward settlement analysis of one motion, judged against the observations.
+#[derive(Clone)]
 struct Eval {
     a: Vec<f64>,
     forward: SettlementResult,
@@ -705,6 +705,7 @@ impl<'a> Setup<'a> {
             bounds,
             unit,
             homogeneous,
+            cache: Default::default(),
         })
     }
 
@@ -717,13 +718,50 @@ impl<'a> Setup<'a> {
             .sum()
     }
 
-    /// Run the forward settlement analysis of amplitudes `a` and judge it.
+    /// Run the forward settlement analysis of amplitudes `a` and judge it: the solver's own
+    /// optimal mechanism ([`crate::analysis::settle`] for both LPs,
+    /// [`crate::analysis::settlement::settle_with`] for the force-only form, as `voussoir settle
+    /// --raw` reports it) or, when that is not unique, among the equally optimal ones the one
+    /// closest to the observations.
     fn evaluate(&self, a: &[f64]) -> Result<Eval> {
+        let scales = self.scales();
+        let same = |e: &Eval| {
+            e.a.iter()
+                .zip(a)
+                .zip(&scales)
+                .all(|((x, y), sc)| (x - y).abs() <= 1e-8 * x.abs().max(y.abs()) + 1e-12 * sc)
+        };
+        if let Some(e) = self.cache.borrow().iter().find(|e| same(e)) {
+            return Ok(e.clone());
+        }
+        let e = self.evaluate_with(a, true)?;
+        self.cache.borrow_mut().push(e.clone());
+        Ok(e)
+    }
+
+    /// The forward settlement analysis of amplitudes `a`, judged against the observations.
+    /// With `closest`, when the solver's optimal mechanism does not fit exactly, the optimal
+    /// face of the motion LP is searched for the optimal mechanism of least misfit (the
+    /// settlement mechanism is not always unique: any optimal one is the structure's
+    /// settlement; the solver's vertex is an arbitrary choice among them).
+    fn evaluate_with(&self, a: &[f64], closest: bool) -> Result<Eval> {
         let a: Vec<f64> = a.iter().map(|v| v + 0.0).collect();
         let st_a = self
             .st
             .with_support_motions(&motions_of(self.st, self.unknowns, &a));
-        let forward = forward_settle(&st_a, self.opts)?;
+        let map_a = KinematicMap::new(&st_a);
+        let mut sol = solve_settlement_with(&st_a, &map_a, &self.opts.solver, self.opts.form)?;
+        if closest && sol.status == SettlementStatus::Mechanism {
+            if let Some(d) = self.closest_optimal_mechanism(&st_a, &map_a, &sol)? {
+                let dead = st_a.load_vector(false);
+                sol.primal = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
+                sol.mechanism = d;
+            }
+        }
+        let forward = match self.opts.form {
+            SettlementForm::Both => settlement_result(&st_a, &map_a, &sol),
+            _ => settlement_result_checked(&st_a, &map_a, &sol),
+        };
         let open = forward_openings(&self.map, &forward);
         let mechanism = forward.status == SettlementStatus::Mechanism;
         let misfit = if mechanism {
@@ -743,7 +781,8 @@ impl<'a> Setup<'a> {
             let joint = self.map.points[k].joint;
             match (self.roles[k], self.targets[k]) {
                 (PointRole::Open { .. }, Some(_)) if open[k] <= thr => shut.push(joint),
-                (PointRole::Closed, Some(_)) if open[k] > thr => extra.push(joint),
+                // Observed closed: a crack narrower than the tolerance is not seen.
+                (PointRole::Closed, Some((_, tau))) if open[k] > thr.max(tau) => extra.push(joint),
                 _ => {}
             }
         }
@@ -764,6 +803,61 @@ impl<'a> Setup<'a> {
     /// no candidate: the exploration only looks for better motions.
     fn try_evaluate(&self, a: &[f64]) -> Option<Eval> {
         self.evaluate(a).ok().filter(|e| e.misfit.is_finite())
+    }
+
+    /// [`Setup::try_evaluate`] on the solver's own mechanism (no search of the optimal face):
+    /// the exploration's steps, an upper bound of the misfit; the minima it finds are
+    /// evaluated in full.
+    fn try_quick(&self, a: &[f64]) -> Option<Eval> {
+        self.evaluate_with(a, false)
+            .ok()
+            .filter(|e| e.misfit.is_finite())
+    }
+
+    /// The optimal mechanism of least misfit: the motion LP restricted to its optimal face
+    /// (its optimum held to [`FACE_TOLERANCE`]), minimising `Σ |u_n − w| / τ` over the observed
+    /// points. `None` when the solver's own mechanism fits exactly or is no worse.
+    fn closest_optimal_mechanism(
+        &self,
+        st_a: &Structure,
+        map_a: &KinematicMap,
+        sol: &SettlementSolution,
+    ) -> Result<Option<Vec<f64>>> {
+        let (open, _) = map_a.jumps(&sol.mechanism, 1.0);
+        let raw = self.misfit_of(&open);
+        if raw <= EXACT_MISFIT || !sol.primal.is_finite() {
+            return Ok(None);
+        }
+        let dead = st_a.load_vector(false);
+        let mp = settlement_motion_program(map_a, &dead)?;
+        let face = optimal_face(&mp.lp, sol.primal * mp.objective_sign, FACE_TOLERANCE);
+        // Rows u_n,k − e⁺ + e⁻ = w_k, with u_n,k = N_k d + g_k and d = −y (the first columns).
+        let mut rows: Vec<(Vec<(usize, f64)>, f64, f64)> = Vec::new();
+        let mut tol = Vec::new();
+        for (k, t) in self.targets.iter().enumerate() {
+            let Some((w, tau)) = *t else { continue };
+            let entries: Vec<(usize, f64)> = KinematicMap::row(&map_a.normal, k)
+                .into_iter()
+                .map(|(dof, v)| (dof, -v))
+                .collect();
+            let rhs = w - map_a.support_normal[k];
+            rows.push((entries, rhs, rhs));
+            tol.push(tau);
+        }
+        let mut lp = with_rows(&face, &rows);
+        let first = face.num_rows();
+        for (i, tau) in tol.iter().enumerate() {
+            lp.add_column(1.0 / tau, 0.0, f64::INFINITY, [(first + i, -1.0)]);
+            lp.add_column(1.0 / tau, 0.0, f64::INFINITY, [(first + i, 1.0)]);
+        }
+        let s = lp::solve(&lp, &self.opts.solver)?;
+        if s.status != LpStatus::Optimal {
+            return Ok(None);
+        }
+        let d = mp.motion(&s.x);
+        let (open_d, _) = map_a.jumps(&d, 1.0);
+        let m = self.misfit_of(&open_d);
+        Ok((m < raw && !same_misfit(m, raw)).then_some(d))
     }
 
     /// A characteristic amplitude per unknown: the one whose unit response opens or slides a
@@ -1082,6 +1176,50 @@ struct Witnesses<'e> {
     within_lp: Option<bool>,
 }
 
+/// `lp` with more rows `lo ≤ Σ v·x_j ≤ hi` over existing columns (`(entries, lo, hi)`), in
+/// order after its own.
+fn with_rows(lp: &LinearProgram, rows: &[(Vec<(usize, f64)>, f64, f64)]) -> LinearProgram {
+    let mut by_col: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_cols()];
+    let mut out = LinearProgram::new(if lp.maximise {
+        Direction::Maximise
+    } else {
+        Direction::Minimise
+    });
+    for i in 0..lp.num_rows() {
+        out.add_row(lp.row_lower[i], lp.row_upper[i]);
+    }
+    for (entries, lo, hi) in rows {
+        let r = out.add_row(*lo, *hi);
+        for &(j, v) in entries {
+            by_col[j].push((r, v));
+        }
+    }
+    for (j, extra) in by_col.into_iter().enumerate() {
+        let mut col: Vec<(usize, f64)> = lp.column(j).collect();
+        col.extend(extra);
+        out.add_column(
+            lp.cost[j],
+            lp.col_lower[j],
+            lp.col_upper[j],
+            merged_entries(col),
+        );
+    }
+    out
+}
+
+/// Sum the entries of a column that fall on the same row (the solvers refuse repeats).
+fn merged_entries(mut e: Vec<(usize, f64)>) -> Vec<(usize, f64)> {
+    e.sort_by_key(|&(r, _)| r);
+    let mut out: Vec<(usize, f64)> = Vec::with_capacity(e.len());
+    for (r, v) in e {
+        match out.last_mut() {
+            Some((lr, lv)) if *lr == r => *lv += v,
+            _ => out.push((r, v)),
+        }
+    }
+    out
+}
+
 /// One unknown's range over the motions that make the observed pattern a settlement mechanism
 /// with every width within its tolerance (`None`: unbounded or not computed).
 #[derive(Clone, Copy, Debug, Default)]
@@ -1178,7 +1316,7 @@ fn relation(s: &Setup, a: &Eval, b: &Eval) -> Result<Relation> {
         }
     }
     let mid: Vec<f64> = a.a.iter().zip(&b.a).map(|(x, y)| 0.5 * (x + y)).collect();
-    Ok(if s.try_evaluate(&mid).is_none_or(|e| rises(e.misfit)) {
+    Ok(if s.try_quick(&mid).is_none_or(|e| rises(e.misfit)) {
         Relation::Separate
     } else {
         Relation::Connected
@@ -1208,7 +1346,7 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
             } else {
                 rays[i].amplitudes()
             };
-            let Some(e) = s.try_evaluate(&a) else {
+            let Some(e) = s.try_quick(&a) else {
                 continue;
             };
             let e = if n == 3 && !flat && s.explorable() {
@@ -1216,7 +1354,10 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
             } else {
                 e
             };
-            found.push(Found { eval: e, flat });
+            // The minimum in full (the optimal mechanism closest to the observations).
+            if let Some(e) = s.try_evaluate(&e.a) {
+                found.push(Found { eval: e, flat });
+            }
         }
     } else if s.explorable() {
         // Known motions or more than three unknowns: a compass search from the best candidate.
@@ -1225,11 +1366,13 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
             .filter(|c| c.eval.misfit.is_finite())
             .min_by(|a, b| a.eval.misfit.total_cmp(&b.eval.misfit))
         {
-            if let Some(e) = s.try_evaluate(&c.eval.a) {
-                found.push(Found {
-                    eval: compass(s, e, &scales),
-                    flat: false,
-                });
+            if let Some(e) = s.try_quick(&c.eval.a) {
+                if let Some(e) = s.try_evaluate(&compass(s, e, &scales).a) {
+                    found.push(Found {
+                        eval: e,
+                        flat: false,
+                    });
+                }
             }
         }
     }
@@ -1373,7 +1516,7 @@ fn ray_at(s: &Setup, scales: &[f64], dir: Vec<f64>) -> Option<Ray> {
     };
     let open1: Vec<f64> = if t0 > 0.0 {
         let at: Vec<f64> = a1.iter().map(|v| v * t0).collect();
-        let e = s.try_evaluate(&at)?;
+        let e = s.try_quick(&at)?;
         e.open.iter().map(|o| o / t0).collect()
     } else {
         vec![0.0; s.map.num_points()]
@@ -1544,7 +1687,7 @@ fn compass(s: &Setup, start: Eval, scales: &[f64]) -> Eval {
                 continue;
             }
             evals += 1;
-            if let Some(e) = s.try_evaluate(&y) {
+            if let Some(e) = s.try_quick(&y) {
                 if e.misfit < cur.misfit && !same_misfit(e.misfit, cur.misfit) {
                     cur = e;
                     improved = true;

@@ -832,7 +832,7 @@ impl<'a> Setup<'a> {
         let mp = settlement_motion_program(map_a, &dead)?;
         let face = optimal_face(&mp.lp, sol.primal * mp.objective_sign, FACE_TOLERANCE);
         // Rows u_n,k − e⁺ + e⁻ = w_k, with u_n,k = N_k d + g_k and d = −y (the first columns).
-        let mut rows: Vec<(Vec<(usize, f64)>, f64, f64)> = Vec::new();
+        let mut rows: Vec<ExtraRow> = Vec::new();
         let mut tol = Vec::new();
         for (k, t) in self.targets.iter().enumerate() {
             let Some((w, tau)) = *t else { continue };
@@ -1176,9 +1176,12 @@ struct Witnesses<'e> {
     within_lp: Option<bool>,
 }
 
+/// A row to add: `(column, value)` entries, lower and upper bound.
+type ExtraRow = (Vec<(usize, f64)>, f64, f64);
+
 /// `lp` with more rows `lo ≤ Σ v·x_j ≤ hi` over existing columns (`(entries, lo, hi)`), in
 /// order after its own.
-fn with_rows(lp: &LinearProgram, rows: &[(Vec<(usize, f64)>, f64, f64)]) -> LinearProgram {
+fn with_rows(lp: &LinearProgram, rows: &[ExtraRow]) -> LinearProgram {
     let mut by_col: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_cols()];
     let mut out = LinearProgram::new(if lp.maximise {
         Direction::Maximise

@@ -8,18 +8,26 @@
 //! solution is the motion whose optimal settlement mechanism opens the observed cracks with the
 //! least absolute misfit of the widths (in tolerances).
 //!
+//! Every candidate motion is then judged on its own **forward** settlement analysis
+//! ([`misfit`]: Σ |opening − observed| / tolerance over every observed point, on the forward
+//! mechanism — the solver's, or among equally optimal ones the closest to the observations):
+//! the LP's motion and its balanced tie-break, the mean motion within tolerance, the closest
+//! motion of the relaxed pattern ([`crate::programs_identify::ClosestProgram`]) and an
+//! exploration of the misfit landscape (a scan of directions of motion, exact along each, and
+//! a local refinement). The least misfit is reported, with the separate minima found.
+//!
 //! The result ([`IdentifyResult`]) carries:
 //! - the identified amplitudes and the support motions they make;
-//! - the misfit of every observation and the predicted opening of every crack;
-//! - a **certificate**: the forward settlement analysis ([`crate::analysis::settle`]) run on the
-//!   identified motions, compared with the prediction (same open points, same widths, same work
-//!   of the dead loads);
+//! - the misfit of every observation and the forward opening of every crack;
+//! - a **certificate** (for a motion from the LP): the forward settlement analysis compared
+//!   with the LP's mechanism (same open points, same widths, same work of the dead loads);
 //! - **identifiability**: for each unknown, its range over all motions that reproduce the
 //!   pattern with every width within its tolerance (a min and a max LP), flagged not
 //!   identifiable when unbounded or wider than the value;
-//! - when no motion produces the pattern: a sentence saying so, and the closest motion (the
-//!   least-misfit admissible mechanism with optimality dropped, see
-//!   [`crate::programs_identify::ClosestProgram`]) with its forward analysis.
+//! - the **minima** of the misfit found (several when the landscape has separate basins; a flat
+//!   one when the least misfit is not unique);
+//! - the verdict: identified when a motion fits every width within tolerance or opens exactly
+//!   the observed pattern; inconsistent only when none does, with the closest motion.
 
 // Loops run over point numbers that index several parallel vectors at once.
 #![allow(clippy::needless_range_loop)]

@@ -151,6 +151,50 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
     if !odd.is_empty() {
         let _ = writeln!(s, "predicted cracks not observed open: {}", odd.join("; "));
     }
+    if r.minima.len() > 1 || r.minima.first().is_some_and(|m| m.flat) {
+        let _ = writeln!(
+            s,
+            "minima of the misfit ({} found{}):",
+            r.minima.len(),
+            if r.landscape_explored {
+                ""
+            } else {
+                ", landscape not explored"
+            }
+        );
+        for (i, m) in r.minima.iter().enumerate() {
+            let values: Vec<String> = r
+                .unknowns
+                .iter()
+                .zip(&m.values)
+                .map(|(u, v)| format!("{} = {:.6e}", u.name, v))
+                .collect();
+            let mut notes = Vec::new();
+            if i == 0 {
+                notes.push("reported");
+            }
+            if m.flat {
+                notes.push("flat: not unique");
+            }
+            if m.opens_pattern {
+                notes.push("opens the observed pattern");
+            }
+            if m.within_tolerance {
+                notes.push("every width within tolerance");
+            }
+            let _ = writeln!(
+                s,
+                "  misfit {:>10.4} tolerances at {}{}",
+                m.misfit,
+                values.join(", "),
+                if notes.is_empty() {
+                    String::new()
+                } else {
+                    format!("  ({})", notes.join("; "))
+                }
+            );
+        }
+    }
     if let Some(c) = &r.certificate {
         let _ = writeln!(
             s,

@@ -50,7 +50,11 @@
 //! the active set the solution suggests and (I) is solved once more.
 //!
 //! The identifiability LPs use the same rows with `|e_o| ≤ τ_o` and minimise or maximise one
-//! `a_q` ([`MisfitMode::WithinTolerance`]).
+//! `a_q` ([`MisfitMode::WithinTolerance`]). Two variants of (I) serve as further candidates of
+//! [`crate::analysis::identify`]: the balanced tie-break ([`MisfitMode::Balanced`]: with
+//! `Σ_o |e_o|/τ_o` kept at its least, minimise `max_o |e_o|/τ_o`), and (I) with every observed
+//! crack opening by a fraction of its width ([`MisfitMode::MinimiseOpening`]: `(I)` can forbid
+//! force at a crack but not ask it to open, so its optimum may close one).
 
 // Loops run over point and column numbers that index several parallel vectors at once.
 #![allow(clippy::needless_range_loop)]
@@ -110,6 +114,13 @@ pub struct Activity {
 pub enum MisfitMode {
     /// Minimise `Σ |e_o| / τ_o`.
     Minimise,
+    /// Minimise `Σ |e_o| / τ_o` with every observed-open point opening by at least
+    /// `fraction · w_o` (`e⁻_o ≤ (1 − fraction) w_o`): the least misfit among motions that
+    /// really open every observed crack.
+    MinimiseOpening { fraction: f64 },
+    /// Among motions with `Σ |e_o| / τ_o ≤ total`, minimise the largest `|e_o| / τ_o`: the
+    /// tie-break between equally good least-absolute fits (the most balanced one).
+    Balanced { total: f64 },
     /// `|e_o| ≤ τ_o`, objective `sense · a_q` (identifiability range of unknown `q`).
     WithinTolerance { unknown: usize, sense: Direction },
 }
@@ -151,8 +162,8 @@ impl IdentifyProgram {
         let (nr, nc) = (f.num_rows(), f.num_cols());
         let npts = map.num_points();
         let direction = match mode {
-            MisfitMode::Minimise => Direction::Minimise,
             MisfitMode::WithinTolerance { sense, .. } => sense,
+            _ => Direction::Minimise,
         };
         let mut lp = LinearProgram::new(direction);
         // Columns under assembly: (cost, lo, hi, entries).
@@ -279,18 +290,49 @@ impl IdentifyProgram {
             a.push(cols.len());
             cols.push((cost, bounds[q].0, bounds[q].1, entries));
         }
-        // Misfit columns: u − w = e⁺ − e⁻.
+        // Misfit columns: u − w = e⁺ − e⁻ (`inv_tau` is 1/τ).
         let mut misfit = vec![None; npts];
-        for (k, r, w) in misfit_rows {
-            let (cost, hi) = match mode {
-                MisfitMode::Minimise => (w, INF),
-                MisfitMode::WithinTolerance { .. } => (0.0, 1.0 / w),
+        // Balanced mode: row `Σ (e⁺ + e⁻)/τ ≤ total`, and per point `(e⁺ + e⁻)/τ − r ≤ 0`.
+        let balanced = match mode {
+            MisfitMode::Balanced { total } => {
+                let sum_row = lp.add_row(-INF, total);
+                Some((sum_row, Vec::new()))
+            }
+            _ => None,
+        };
+        let mut balanced = balanced;
+        for (k, r, inv_tau) in misfit_rows {
+            let width = match roles[k] {
+                PointRole::Open { width, .. } => width,
+                _ => 0.0,
             };
+            let (cost, hi_plus, hi_minus) = match mode {
+                MisfitMode::Minimise => (inv_tau, INF, INF),
+                MisfitMode::MinimiseOpening { fraction } => {
+                    (inv_tau, INF, ((1.0 - fraction) * width).max(0.0))
+                }
+                MisfitMode::Balanced { .. } => (0.0, INF, INF),
+                MisfitMode::WithinTolerance { .. } => (0.0, 1.0 / inv_tau, 1.0 / inv_tau),
+            };
+            let mut ep_entries = vec![(r, -1.0)];
+            let mut em_entries = vec![(r, 1.0)];
+            if let Some((sum_row, rows)) = balanced.as_mut() {
+                let max_row = lp.add_row(-INF, 0.0);
+                rows.push(max_row);
+                for e in [&mut ep_entries, &mut em_entries] {
+                    e.push((*sum_row, inv_tau));
+                    e.push((max_row, inv_tau));
+                }
+            }
             let ep = cols.len();
-            cols.push((cost, 0.0, hi, vec![(r, -1.0)]));
+            cols.push((cost, 0.0, hi_plus, ep_entries));
             let em = cols.len();
-            cols.push((cost, 0.0, hi, vec![(r, 1.0)]));
+            cols.push((cost, 0.0, hi_minus, em_entries));
             misfit[k] = Some((ep, em));
+        }
+        // The largest misfit `r` (balanced mode).
+        if let Some((_, rows)) = balanced {
+            cols.push((1.0, 0.0, INF, rows.into_iter().map(|i| (i, -1.0)).collect()));
         }
         for (cost, lo, hi, entries) in cols {
             lp.add_column(cost, lo, hi, entries);

@@ -8,29 +8,40 @@
 //! solution is the motion whose optimal settlement mechanism opens the observed cracks with the
 //! least absolute misfit of the widths (in tolerances).
 //!
+//! Every candidate motion is then judged on its own **forward** settlement analysis
+//! ([`misfit`]: Σ |opening − observed| / tolerance over every observed point, on the forward
+//! mechanism — the solver's, or among equally optimal ones the closest to the observations):
+//! the LP's motion and its balanced tie-break, the mean motion within tolerance, the closest
+//! motion of the relaxed pattern ([`crate::programs_identify::ClosestProgram`]) and an
+//! exploration of the misfit landscape (a scan of directions of motion, exact along each, and
+//! a local refinement). The least misfit is reported, with the separate minima found.
+//!
 //! The result ([`IdentifyResult`]) carries:
 //! - the identified amplitudes and the support motions they make;
-//! - the misfit of every observation and the predicted opening of every crack;
-//! - a **certificate**: the forward settlement analysis ([`crate::analysis::settle`]) run on the
-//!   identified motions, compared with the prediction (same open points, same widths, same work
-//!   of the dead loads);
+//! - the misfit of every observation and the forward opening of every crack;
+//! - a **certificate** (for a motion from the LP): the forward settlement analysis compared
+//!   with the LP's mechanism (same open points, same widths, same work of the dead loads);
 //! - **identifiability**: for each unknown, its range over all motions that reproduce the
 //!   pattern with every width within its tolerance (a min and a max LP), flagged not
 //!   identifiable when unbounded or wider than the value;
-//! - when no motion produces the pattern: a sentence saying so, and the closest motion (the
-//!   least-misfit admissible mechanism with optimality dropped, see
-//!   [`crate::programs_identify::ClosestProgram`]) with its forward analysis.
+//! - the **minima** of the misfit found (several when the landscape has separate basins; a flat
+//!   one when the least misfit is not unique);
+//! - the verdict: identified when a motion fits every width within tolerance or opens exactly
+//!   the observed pattern; inconsistent only when none does, with the closest motion.
 
 // Loops run over point numbers that index several parallel vectors at once.
 #![allow(clippy::needless_range_loop)]
 
 use crate::analysis::settlement::{
-    settle, settle_with, SettlementForm, SettlementResult, SettlementStatus,
+    settlement_result, settlement_result_checked, solve_settlement_with, SettlementForm,
+    SettlementResult, SettlementSolution, SettlementStatus,
 };
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, LpStatus, SolverOptions};
-use crate::programs::{settlement_force_program, ForceProgram};
+use crate::lp::{self, Direction, LinearProgram, LpSolution, LpStatus, SolverOptions};
+use crate::programs::{
+    optimal_face, settlement_force_program, settlement_motion_program, ForceProgram,
+};
 use crate::programs_identify::{
     decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole,
 };
@@ -465,8 +476,31 @@ pub struct IdentifyResult {
     /// first solve.
     pub active_set_fixed: bool,
     pub certificate: Option<Reproduction>,
+    /// The local minima of the misfit found (the reported motion first, then separate minima,
+    /// least misfit first; at most five).
+    #[serde(default)]
+    pub minima: Vec<Minimum>,
+    /// Whether the misfit landscape was explored beyond the LP candidates (a scan of
+    /// directions and a compass search on forward analyses; not on very large models).
+    #[serde(default)]
+    pub landscape_explored: bool,
     /// The forward settlement analysis of the identified (or closest) motion.
     pub forward: SettlementResult,
+}
+
+/// A local minimum of the misfit (Σ |forward opening − observed| / tolerance over every
+/// observed point).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Minimum {
+    /// The unknowns' values, in the order of `unknowns`.
+    pub values: Vec<f64>,
+    pub misfit: f64,
+    /// Its forward settlement opens exactly the observed crack pattern.
+    pub opens_pattern: bool,
+    /// Every observed point within its tolerance.
+    pub within_tolerance: bool,
+    /// The misfit is equally low over a range of motions around it (not unique).
+    pub flat: bool,
 }
 
 /// Options of [`identify`].
@@ -503,17 +537,440 @@ fn motions_of(st: &Structure, unknowns: &[Unknown], a: &[f64]) -> Vec<[f64; 3]> 
     m
 }
 
-/// The forward settlement analysis, as `voussoir settle` runs it: [`settle`] for both LPs,
-/// [`settle_with`] for the force-only form.
-fn forward_settle(st: &Structure, opts: &IdentifyOptions) -> Result<SettlementResult> {
-    match opts.form {
-        SettlementForm::Both => settle(st, &opts.solver),
-        form => settle_with(st, &opts.solver, form),
+fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+/// A point counts as open when its opening exceeds this fraction of the largest opening or
+/// observed width (whichever is larger); below it, an opening is round-off of the LPs.
+const OPEN_FRACTION: f64 = 1e-7;
+
+/// A least-misfit fit is "exact" below this misfit (tolerances, summed): the landscape is then
+/// not explored further (nothing can fit better).
+const EXACT_MISFIT: f64 = 1e-6;
+
+/// Models above this many degrees of freedom get no exploration of the misfit landscape beyond
+/// the LP candidates (each evaluation is a forward settlement analysis).
+const EXPLORE_MAX_DOFS: usize = 6000;
+
+/// The optimal face of a forward analysis: mechanisms whose work of the dead loads is within
+/// this (relative) of the solver's optimum. The solver's own mechanism is on it; a looser
+/// margin would admit nearly optimal mechanisms whose openings differ measurably.
+const FACE_TOLERANCE: f64 = 1e-9;
+
+/// Two misfits are equal within this (relative) margin.
+fn same_misfit(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
+}
+
+/// Everything the misfit of a motion depends on: the structure with its known motions, the
+/// unknowns and the observations resolved to points.
+struct Setup<'a> {
+    st: &'a Structure,
+    unknowns: &'a [Unknown],
+    opts: &'a IdentifyOptions,
+    /// The structure with the base motions (the unknowns at zero).
+    st0: Structure,
+    /// Its kinematic map (point numbering is the same for every motion).
+    map: KinematicMap,
+    roles: Vec<PointRole>,
+    pobs: Vec<PointObs>,
+    /// Per point: `Some((w, τ))` where observed (closed ones at `w = 0`, the implicitly closed
+    /// ones at the global tolerance), `None` where unobserved or not in contact.
+    targets: Vec<Option<(f64, f64)>>,
+    /// Largest observed width (m), or the global tolerance when no crack is observed open.
+    wref: f64,
+    bounds: Vec<(f64, f64)>,
+    /// Per unknown, the opening and sliding `(g_n, g_t)` its unit motion causes at each point.
+    unit: Vec<(Vec<f64>, Vec<f64>)>,
+    /// The forward analysis is homogeneous of degree one in the unknowns (no known motions):
+    /// scaling the motions scales every opening.
+    homogeneous: bool,
+    /// Full evaluations done (candidates often coincide to round-off: one evaluation serves
+    /// motions within 1e-8 of each other, relative).
+    cache: std::cell::RefCell<Vec<Eval>>,
+}
+
+/// The forward settlement analysis of one motion, judged against the observations.
+#[derive(Clone)]
+struct Eval {
+    a: Vec<f64>,
+    forward: SettlementResult,
+    open: Vec<f64>,
+    /// Σ |opening − w| / τ over every observed point (∞ when the forward analysis finds no
+    /// mechanism).
+    misfit: f64,
+    /// Every observed point within its tolerance.
+    within: bool,
+    /// Joints with a point observed open that the forward analysis leaves closed.
+    shut: Vec<usize>,
+    /// Joints with a point observed closed that the forward analysis opens.
+    extra: Vec<usize>,
+}
+
+impl Eval {
+    /// The forward analysis opens exactly the observed crack pattern.
+    fn opens_pattern(&self) -> bool {
+        self.misfit.is_finite() && self.shut.is_empty() && self.extra.is_empty()
     }
 }
 
-fn max_abs(v: &[f64]) -> f64 {
-    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+/// The mechanism an LP predicted for its motion, to compare with the forward analysis.
+struct Prediction {
+    open: Vec<f64>,
+    work: f64,
+}
+
+struct Candidate {
+    eval: Eval,
+    prediction: Option<Prediction>,
+}
+
+impl<'a> Setup<'a> {
+    fn new(
+        st: &'a Structure,
+        obs: &Observations,
+        unknowns: &'a [Unknown],
+        opts: &'a IdentifyOptions,
+    ) -> Result<Setup<'a>> {
+        if unknowns.is_empty() {
+            return Err(Error::Request(
+                "identify: give at least one unknown support motion".into(),
+            ));
+        }
+        for u in unknowns {
+            if u.unit.len() != st.supports.len() || u.base.len() != st.supports.len() {
+                return Err(Error::Request(format!(
+                    "unknown '{}': one motion per support expected",
+                    u.name
+                )));
+            }
+        }
+        let map_base = KinematicMap::new(st);
+        if let Some(k) = map_base.gap.iter().position(|g| *g > 0.0) {
+            return Err(Error::Request(format!(
+                "identify: joint {} of the model is already cracked (the model's \"cracks\"); give the surveyed cracks as observations instead",
+                map_base.points[k].joint
+            )));
+        }
+        if let Some(j) = map_base.laws.iter().position(|l| l.strength.is_some()) {
+            return Err(Error::Request(format!(
+                "identify: joint {j} has a finite compressive strength, which the inverse analysis does not handle (Heyman joints and Coulomb friction only)"
+            )));
+        }
+        // Base motions: the structure's own plus the unknowns' fixed parts.
+        let zero = vec![0.0; unknowns.len()];
+        let st0 = st.with_support_motions(&motions_of(st, unknowns, &zero));
+        let map = KinematicMap::new(&st0);
+        let (roles, pobs) = obs.resolve(&st0, &map)?;
+        let gtol = obs.tolerance.unwrap_or(DEFAULT_TOLERANCE);
+        // Closed points count at the global tolerance, listed ones at their own.
+        let mut targets: Vec<Option<(f64, f64)>> = vec![None; map.num_points()];
+        for (k, r) in roles.iter().enumerate() {
+            if map.bilateral[k] || map.gap[k] > 0.0 {
+                continue;
+            }
+            targets[k] = match *r {
+                PointRole::Closed => Some((0.0, gtol)),
+                PointRole::Open { width, tolerance } => Some((width, tolerance)),
+                PointRole::Unobserved => None,
+            };
+        }
+        for o in &pobs {
+            if o.width == 0.0 && targets[o.point].is_some() {
+                targets[o.point] = Some((0.0, o.tolerance));
+            }
+        }
+        let wmax = pobs.iter().fold(0.0f64, |m, o| m.max(o.width));
+        let wref = if wmax > 0.0 { wmax } else { gtol };
+        let unit: Vec<(Vec<f64>, Vec<f64>)> = unknowns
+            .iter()
+            .map(|u| {
+                let m = KinematicMap::new(&st0.with_support_motions(&u.unit));
+                (m.support_normal, m.support_tangent)
+            })
+            .collect();
+        let bounds: Vec<(f64, f64)> = unknowns
+            .iter()
+            .map(|u| {
+                (
+                    u.lower.unwrap_or(f64::NEG_INFINITY),
+                    u.upper.unwrap_or(f64::INFINITY),
+                )
+            })
+            .collect();
+        let homogeneous = st0.supports.iter().all(|s| s.motion == [0.0; 3]);
+        Ok(Setup {
+            st,
+            unknowns,
+            opts,
+            st0,
+            map,
+            roles,
+            pobs,
+            targets,
+            wref,
+            bounds,
+            unit,
+            homogeneous,
+            cache: Default::default(),
+        })
+    }
+
+    /// Σ |o − w| / τ over every observed point.
+    fn misfit_of(&self, open: &[f64]) -> f64 {
+        self.targets
+            .iter()
+            .zip(open)
+            .filter_map(|(t, o)| t.map(|(w, tau)| (o - w).abs() / tau))
+            .sum()
+    }
+
+    /// Run the forward settlement analysis of amplitudes `a` and judge it: the solver's own
+    /// optimal mechanism ([`crate::analysis::settle`] for both LPs,
+    /// [`crate::analysis::settlement::settle_with`] for the force-only form, as `voussoir settle
+    /// --raw` reports it) or, when that is not unique, among the equally optimal ones the one
+    /// closest to the observations.
+    fn evaluate(&self, a: &[f64]) -> Result<Eval> {
+        let scales = self.scales();
+        let same = |e: &Eval| {
+            e.a.iter()
+                .zip(a)
+                .zip(&scales)
+                .all(|((x, y), sc)| (x - y).abs() <= 1e-8 * x.abs().max(y.abs()) + 1e-12 * sc)
+        };
+        if let Some(e) = self.cache.borrow().iter().find(|e| same(e)) {
+            return Ok(e.clone());
+        }
+        let e = self.evaluate_with(a, true)?;
+        self.cache.borrow_mut().push(e.clone());
+        Ok(e)
+    }
+
+    /// The forward settlement analysis of amplitudes `a`, judged against the observations.
+    /// With `closest`, when the solver's optimal mechanism does not fit exactly, the optimal
+    /// face of the motion LP is searched for the optimal mechanism of least misfit (the
+    /// settlement mechanism is not always unique: any optimal one is the structure's
+    /// settlement; the solver's vertex is an arbitrary choice among them).
+    fn evaluate_with(&self, a: &[f64], closest: bool) -> Result<Eval> {
+        let a: Vec<f64> = a.iter().map(|v| v + 0.0).collect();
+        let st_a = self
+            .st
+            .with_support_motions(&motions_of(self.st, self.unknowns, &a));
+        let map_a = KinematicMap::new(&st_a);
+        let mut sol = solve_settlement_with(&st_a, &map_a, &self.opts.solver, self.opts.form)?;
+        if closest && sol.status == SettlementStatus::Mechanism {
+            if let Some(d) = self.closest_optimal_mechanism(&st_a, &map_a, &sol)? {
+                let dead = st_a.load_vector(false);
+                sol.primal = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
+                sol.mechanism = d;
+            }
+        }
+        let forward = match self.opts.form {
+            SettlementForm::Both => settlement_result(&st_a, &map_a, &sol),
+            _ => settlement_result_checked(&st_a, &map_a, &sol),
+        };
+        let open = forward_openings(&self.map, &forward);
+        let mechanism = forward.status == SettlementStatus::Mechanism;
+        let misfit = if mechanism {
+            self.misfit_of(&open)
+        } else {
+            f64::INFINITY
+        };
+        let thr = OPEN_FRACTION * max_abs(&open).max(self.wref);
+        let within = mechanism
+            && self
+                .targets
+                .iter()
+                .zip(&open)
+                .all(|(t, o)| t.is_none_or(|(w, tau)| (o - w).abs() <= tau * (1.0 + 1e-9)));
+        let (mut shut, mut extra) = (Vec::new(), Vec::new());
+        for k in 0..self.map.num_points() {
+            let joint = self.map.points[k].joint;
+            match (self.roles[k], self.targets[k]) {
+                (PointRole::Open { .. }, Some(_)) if open[k] <= thr => shut.push(joint),
+                // Observed closed: a crack narrower than the tolerance is not seen.
+                (PointRole::Closed, Some((_, tau))) if open[k] > thr.max(tau) => extra.push(joint),
+                _ => {}
+            }
+        }
+        shut.dedup();
+        extra.dedup();
+        Ok(Eval {
+            a,
+            forward,
+            open,
+            misfit,
+            within,
+            shut,
+            extra,
+        })
+    }
+
+    /// Evaluate, counting a failed forward analysis (a solver failure at an extreme motion) as
+    /// no candidate: the exploration only looks for better motions.
+    fn try_evaluate(&self, a: &[f64]) -> Option<Eval> {
+        self.evaluate(a).ok().filter(|e| e.misfit.is_finite())
+    }
+
+    /// [`Setup::try_evaluate`] on the solver's own mechanism (no search of the optimal face):
+    /// the exploration's steps, an upper bound of the misfit; the minima it finds are
+    /// evaluated in full.
+    fn try_quick(&self, a: &[f64]) -> Option<Eval> {
+        self.evaluate_with(a, false)
+            .ok()
+            .filter(|e| e.misfit.is_finite())
+    }
+
+    /// The optimal mechanism of least misfit: the motion LP restricted to its optimal face
+    /// (its optimum held to [`FACE_TOLERANCE`]), minimising `Σ |u_n − w| / τ` over the observed
+    /// points. `None` when the solver's own mechanism fits exactly or is no worse.
+    fn closest_optimal_mechanism(
+        &self,
+        st_a: &Structure,
+        map_a: &KinematicMap,
+        sol: &SettlementSolution,
+    ) -> Result<Option<Vec<f64>>> {
+        let (open, _) = map_a.jumps(&sol.mechanism, 1.0);
+        let raw = self.misfit_of(&open);
+        if raw <= EXACT_MISFIT || !sol.primal.is_finite() {
+            return Ok(None);
+        }
+        let dead = st_a.load_vector(false);
+        let mp = settlement_motion_program(map_a, &dead)?;
+        let face = optimal_face(&mp.lp, sol.primal * mp.objective_sign, FACE_TOLERANCE);
+        // Rows u_n,k − e⁺ + e⁻ = w_k, with u_n,k = N_k d + g_k and d = −y (the first columns).
+        let mut rows: Vec<ExtraRow> = Vec::new();
+        let mut tol = Vec::new();
+        for (k, t) in self.targets.iter().enumerate() {
+            let Some((w, tau)) = *t else { continue };
+            let entries: Vec<(usize, f64)> = KinematicMap::row(&map_a.normal, k)
+                .into_iter()
+                .map(|(dof, v)| (dof, -v))
+                .collect();
+            let rhs = w - map_a.support_normal[k];
+            rows.push((entries, rhs, rhs));
+            tol.push(tau);
+        }
+        let mut lp = with_rows(&face, &rows);
+        let first = face.num_rows();
+        for (i, tau) in tol.iter().enumerate() {
+            lp.add_column(1.0 / tau, 0.0, f64::INFINITY, [(first + i, -1.0)]);
+            lp.add_column(1.0 / tau, 0.0, f64::INFINITY, [(first + i, 1.0)]);
+        }
+        let s = lp::solve(&lp, &self.opts.solver)?;
+        if s.status != LpStatus::Optimal {
+            return Ok(None);
+        }
+        let d = mp.motion(&s.x);
+        let (open_d, _) = map_a.jumps(&d, 1.0);
+        let m = self.misfit_of(&open_d);
+        Ok((m < raw && !same_misfit(m, raw)).then_some(d))
+    }
+
+    /// A characteristic amplitude per unknown: the one whose unit response opens or slides a
+    /// point by the largest observed width (the exploration works in these units).
+    fn scales(&self) -> Vec<f64> {
+        self.unit
+            .iter()
+            .map(|(gn, gt)| {
+                let g = max_abs(gn).max(max_abs(gt));
+                if g > 0.0 {
+                    self.wref / g
+                } else {
+                    1.0
+                }
+            })
+            .collect()
+    }
+
+    fn clamp(&self, a: &mut [f64]) {
+        for (v, (lo, hi)) in a.iter_mut().zip(&self.bounds) {
+            *v = v.max(*lo).min(*hi);
+        }
+    }
+
+    /// Degrees of freedom of the model: the exploration is skipped above [`EXPLORE_MAX_DOFS`].
+    fn explorable(&self) -> bool {
+        self.map.num_dofs <= EXPLORE_MAX_DOFS
+    }
+}
+
+/// The misfit of a motion, the function [`identify`] minimises: the forward settlement
+/// analysis ([`crate::analysis::settle`], or the form `opts.form`) of the support motions that
+/// the unknowns' `values` make, against the observations — `Σ |opening − w| / τ` over every
+/// observed point, the implicitly closed ones at `w = 0` with the global tolerance, unobserved
+/// points left out. `f64::INFINITY` when the forward analysis finds no mechanism.
+pub fn misfit(
+    st: &Structure,
+    obs: &Observations,
+    unknowns: &[Unknown],
+    values: &[f64],
+    opts: &IdentifyOptions,
+) -> Result<f64> {
+    let s = Setup::new(st, obs, unknowns, opts)?;
+    if values.len() != unknowns.len() {
+        return Err(Error::Request(format!(
+            "misfit: {} values for {} unknowns",
+            values.len(),
+            unknowns.len()
+        )));
+    }
+    Ok(s.evaluate(values)?.misfit)
+}
+
+/// The LPs on the observed pattern (the optimality conditions of the forward analysis with
+/// the observed complementarity).
+struct PatternLps<'s, 'a> {
+    s: &'s Setup<'a>,
+    fp: ForceProgram,
+    dead: Vec<f64>,
+    activity: Activity,
+}
+
+impl PatternLps<'_, '_> {
+    fn program(&self, mode: MisfitMode) -> IdentifyProgram {
+        IdentifyProgram::new(
+            &self.s.map,
+            &self.fp,
+            &self.s.unit,
+            &self.s.bounds,
+            &self.s.roles,
+            &self.activity,
+            mode,
+        )
+    }
+
+    fn solve(&self, mode: MisfitMode) -> Result<Option<(IdentifyProgram, LpSolution)>> {
+        let ip = self.program(mode);
+        let sol = lp::solve(&ip.lp, &self.s.opts.solver)?;
+        Ok((sol.status == LpStatus::Optimal).then_some((ip, sol)))
+    }
+
+    /// The LP's motion, evaluated by the forward analysis, with the LP's own mechanism as the
+    /// prediction to compare.
+    fn candidate(&self, ip: &IdentifyProgram, sol: &LpSolution) -> Result<Candidate> {
+        let a = ip.amplitudes(&sol.x);
+        let d = ip.motion(&sol.x);
+        let st_id = self
+            .s
+            .st
+            .with_support_motions(&motions_of(self.s.st, self.s.unknowns, &a));
+        let map_id = KinematicMap::new(&st_id);
+        let (open, _) = map_id.jumps(&d, 1.0);
+        let work: f64 = self.dead.iter().zip(&d).map(|(f, x)| f * x).sum();
+        Ok(Candidate {
+            eval: self.s.evaluate(&a)?,
+            prediction: Some(Prediction { open, work }),
+        })
+    }
+}
+
+/// One local minimum of the misfit found by the exploration.
+struct Found {
+    eval: Eval,
+    /// The misfit is equally low over a range of motions around it (a plateau).
+    flat: bool,
 }
 
 /// Identify the unknown support motions from the observed crack pattern.
@@ -523,167 +980,785 @@ pub fn identify(
     unknowns: &[Unknown],
     opts: &IdentifyOptions,
 ) -> Result<IdentifyResult> {
-    if unknowns.is_empty() {
-        return Err(Error::Request(
-            "identify: give at least one unknown support motion".into(),
-        ));
-    }
-    for u in unknowns {
-        if u.unit.len() != st.supports.len() || u.base.len() != st.supports.len() {
-            return Err(Error::Request(format!(
-                "unknown '{}': one motion per support expected",
-                u.name
-            )));
-        }
-    }
-    let map_base = KinematicMap::new(st);
-    if let Some(k) = map_base.gap.iter().position(|g| *g > 0.0) {
-        return Err(Error::Request(format!(
-            "identify: joint {} of the model is already cracked (the model's \"cracks\"); give the surveyed cracks as observations instead",
-            map_base.points[k].joint
-        )));
-    }
-    if let Some(j) = map_base.laws.iter().position(|l| l.strength.is_some()) {
-        return Err(Error::Request(format!(
-            "identify: joint {j} has a finite compressive strength, which the inverse analysis does not handle (Heyman joints and Coulomb friction only)"
-        )));
-    }
-    // Base motions: the structure's own plus the unknowns' fixed parts.
-    let zero = vec![0.0; unknowns.len()];
-    let st0 = st.with_support_motions(&motions_of(st, unknowns, &zero));
-    let map = KinematicMap::new(&st0);
-    let (roles, pobs) = obs.resolve(&st0, &map)?;
-    let gtol = obs.tolerance.unwrap_or(DEFAULT_TOLERANCE);
-    // Unit responses.
-    let unit: Vec<(Vec<f64>, Vec<f64>)> = unknowns
-        .iter()
-        .map(|u| {
-            let m = KinematicMap::new(&st0.with_support_motions(&u.unit));
-            (m.support_normal, m.support_tangent)
-        })
-        .collect();
-    let bounds: Vec<(f64, f64)> = unknowns
-        .iter()
-        .map(|u| {
-            (
-                u.lower.unwrap_or(f64::NEG_INFINITY),
-                u.upper.unwrap_or(f64::INFINITY),
-            )
-        })
-        .collect();
-    let dead = st0.load_vector(false);
-    let fp = settlement_force_program(&map, &dead);
-    let mut activity = Activity::default();
+    let s = Setup::new(st, obs, unknowns, opts)?;
+    let dead = s.st0.load_vector(false);
+    let fp = settlement_force_program(&s.map, &dead);
+    let mut lps = PatternLps {
+        s: &s,
+        fp,
+        dead,
+        activity: Activity::default(),
+    };
+    // 1. The observed pattern as a settlement mechanism, least misfit (the LP (I)).
     let mut active_set_fixed = false;
-    let ip = IdentifyProgram::new(
-        &map,
-        &fp,
-        &unit,
-        &bounds,
-        &roles,
-        &activity,
-        MisfitMode::Minimise,
-    );
-    let sol = lp::solve(&ip.lp, &opts.solver)?;
-    let mut solved = (sol.status == LpStatus::Optimal).then_some((ip, sol));
+    let mut first = lps.solve(MisfitMode::Minimise)?;
     // Complementarity left open by the observations: impose the active set the solution
-    // suggests and solve once more; keep the first solution if that fails (the certificate
-    // then tells whether the forward analysis agrees).
-    if let Some((ip, sol)) = &solved {
-        if let Some(fix) = open_complementarity(&map, &fp, ip, &sol.x, &roles) {
-            let ip2 = IdentifyProgram::new(
-                &map,
-                &fp,
-                &unit,
-                &bounds,
-                &roles,
-                &fix,
-                MisfitMode::Minimise,
-            );
-            let sol2 = lp::solve(&ip2.lp, &opts.solver)?;
-            if sol2.status == LpStatus::Optimal {
-                activity = fix;
-                active_set_fixed = true;
-                solved = Some((ip2, sol2));
+    // suggests and solve once more; keep the first solution if that fails.
+    if let Some((ip, sol)) = &first {
+        if let Some(fix) = open_complementarity(&s.map, &lps.fp, ip, &sol.x, &s.roles) {
+            let previous = std::mem::replace(&mut lps.activity, fix);
+            match lps.solve(MisfitMode::Minimise)? {
+                Some(second) => {
+                    active_set_fixed = true;
+                    first = Some(second);
+                }
+                None => lps.activity = previous,
             }
         }
     }
-    let Some((ip, sol)) = solved else {
-        let why = "no motion within the bounds makes this pattern a settlement mechanism";
-        return closest(
-            st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, gtol, why,
-        );
+    let pattern_feasible = first.is_some();
+    // Candidates in order of preference between equal misfits.
+    let mut cands: Vec<Candidate> = Vec::new();
+    if let Some((ip, sol)) = &first {
+        // Equally good least-absolute fits are common (a flat valley of the misfit): of those,
+        // the most balanced one (least largest misfit of one crack).
+        let total = sol.objective.max(0.0) * (1.0 + 1e-9) + 1e-12;
+        if let Some((ipb, solb)) = lps.solve(MisfitMode::Balanced { total })? {
+            cands.push(lps.candidate(&ipb, &solb)?);
+        }
+        cands.push(lps.candidate(ip, sol)?);
+        // The LP cannot ask an observed crack to open (only to carry no force); if its motions
+        // leave one shut, ask for every observed crack to open by at least 1 % of its width.
+        if cands.iter().all(|c| !c.eval.shut.is_empty()) {
+            if let Some((ipo, solo)) = lps.solve(MisfitMode::MinimiseOpening { fraction: 0.01 })? {
+                cands.push(lps.candidate(&ipo, &solo)?);
+            }
+        }
+    }
+    // The motions that make the observed pattern a settlement mechanism with every width
+    // within its tolerance: the range of each unknown over them (two LPs per unknown), and
+    // the mean of those LPs' motions as one more candidate (the set is convex: the mean is in
+    // it, and away from its vertices, where the forward mechanism may not be unique).
+    let ranges = if pattern_feasible {
+        let (ranges, mean) = within_ranges(&lps, opts.ranges)?;
+        if let Some(a) = mean {
+            cands.push(Candidate {
+                eval: s.evaluate(&a)?,
+                prediction: None,
+            });
+        }
+        ranges
+    } else {
+        vec![Range::default(); unknowns.len()]
     };
-    let a = ip.amplitudes(&sol.x);
-    let d = ip.motion(&sol.x);
-    let st_id = st.with_support_motions(&motions_of(st, unknowns, &a));
-    let map_id = KinematicMap::new(&st_id);
-    let (open, _) = map_id.jumps(&d, 1.0);
-    let omax = max_abs(&open);
-    // The pattern is produced only if every crack observed open is predicted open: the LP
-    // forbids force there but cannot ask for a strictly positive opening.
-    let wmax = pobs.iter().fold(0.0f64, |m, o| m.max(o.width));
-    let shut: Vec<String> = pobs
+    let lp_best = cands
         .iter()
-        .filter(|o| o.width > 0.0 && open[o.point] <= 1e-7 * wmax)
-        .map(|o| map.points[o.point].joint.to_string())
-        .collect();
-    if !shut.is_empty() {
-        let why = format!(
-            "the best motion with this pattern leaves the cracks at joints {} closed",
-            dedup(shut)
-        );
-        return closest(
-            st, &map, unknowns, &unit, &bounds, &roles, &pobs, opts, gtol, &why,
+        .map(|c| c.eval.misfit)
+        .fold(f64::INFINITY, f64::min);
+    // 2. Unless a candidate fits exactly: the closest admissible motion of the relaxed
+    // pattern, and an exploration of the misfit landscape on forward analyses.
+    let mut found: Vec<Found> = Vec::new();
+    let mut explored = false;
+    if lp_best > EXACT_MISFIT {
+        let cp = ClosestProgram::new(&s.map, &s.unit, &s.bounds, &s.targets);
+        let sol = lp::solve(&cp.lp, &opts.solver)?;
+        if sol.status == LpStatus::Optimal {
+            let a = cp.amplitudes(&sol.x);
+            if let Some(eval) = s.try_evaluate(&a) {
+                cands.push(Candidate {
+                    eval,
+                    prediction: None,
+                });
+            }
+        }
+        if s.explorable() || (s.homogeneous && unknowns.len() == 1) {
+            explored = true;
+            found = explore(&s, &cands)?;
+        }
+    }
+    if cands.is_empty() && found.is_empty() {
+        return Err(Error::Request(
+            "identify: the observed pattern cannot be produced by any settlement, and no admissible motion within the bounds exists either (check the bounds and the known support motions)".into(),
+        ));
+    }
+    // 3. The least misfit of every motion considered; between equal misfits, one within
+    // tolerance, then one opening the observed pattern, then one leaving the fewest observed
+    // cracks shut (a motion that explains something over one that explains nothing), then the
+    // least misfit over the listed cracks alone (the surveyed widths matched most nearly),
+    // then the order above (LP first).
+    let least = cands
+        .iter()
+        .map(|c| &c.eval)
+        .chain(found.iter().map(|f| &f.eval))
+        .map(|e| e.misfit)
+        .fold(f64::INFINITY, f64::min);
+    let listed = |e: &Eval| -> f64 {
+        s.pobs
+            .iter()
+            .map(|o| (e.open[o.point] - o.width).abs() / o.tolerance)
+            .sum()
+    };
+    let better = |x: &Eval, y: &Eval| -> std::cmp::Ordering {
+        let key = |e: &Eval| {
+            (
+                !same_misfit(e.misfit, least),
+                !e.within,
+                !e.opens_pattern(),
+                e.shut.len(),
+            )
+        };
+        key(x).cmp(&key(y)).then_with(|| {
+            let (a, b) = (listed(x), listed(y));
+            if same_misfit(a, b) {
+                std::cmp::Ordering::Equal
+            } else {
+                a.total_cmp(&b)
+            }
+        })
+    };
+    let pick = |evals: Vec<&Eval>| -> Option<usize> {
+        (0..evals.len()).reduce(|i, j| {
+            if better(evals[j], evals[i]).is_lt() {
+                j
+            } else {
+                i
+            }
+        })
+    };
+    let best_cand = pick(cands.iter().map(|c| &c.eval).collect());
+    let best_found = pick(found.iter().map(|f| &f.eval).collect());
+    let (best, prediction) = match (best_cand, best_found) {
+        (Some(i), Some(j)) if better(&found[j].eval, &cands[i].eval).is_lt() => {
+            (found.swap_remove(j).eval, None)
+        }
+        (Some(i), _) => {
+            let c = cands.swap_remove(i);
+            (c.eval, c.prediction)
+        }
+        (None, Some(j)) => (found.swap_remove(j).eval, None),
+        (None, None) => unreachable!("checked above"),
+    };
+    // The minima: the best first, then the separate ones the exploration found. An equally
+    // low motion elsewhere with no rise of the misfit between makes the minimum flat.
+    let mut best_flat = false;
+    let mut others = Vec::new();
+    for f in &found {
+        match relation(&s, &best, &f.eval)? {
+            Relation::Separate => others.push(minimum(&f.eval, f.flat)),
+            Relation::Connected => best_flat |= same_misfit(f.eval.misfit, best.misfit),
+            Relation::Same => best_flat |= f.flat,
+        }
+    }
+    // An equally good candidate elsewhere in the same basin also makes it flat.
+    for c in &cands {
+        if !best_flat && same_misfit(c.eval.misfit, best.misfit) {
+            best_flat = relation(&s, &best, &c.eval)? == Relation::Connected;
+        }
+    }
+    let mut minima = vec![minimum(&best, best_flat)];
+    minima.extend(others);
+    minima.truncate(5);
+    // The least-misfit motions (other than the best) that fit every width within its
+    // tolerance, and that open the observed pattern.
+    let witness = |f: &dyn Fn(&Eval) -> bool| {
+        cands
+            .iter()
+            .map(|c| &c.eval)
+            .chain(found.iter().map(|f| &f.eval))
+            .filter(|e| f(e))
+            .min_by(|a, b| a.misfit.total_cmp(&b.misfit))
+    };
+    let witnesses = Witnesses {
+        within: witness(&|e: &Eval| e.within),
+        pattern: witness(&|e: &Eval| e.opens_pattern()),
+        // Whether some motion with the observed pattern fits every width (the LP's answer).
+        within_lp: pattern_feasible.then_some(ranges[0].feasible),
+    };
+    result(
+        &s,
+        &ranges,
+        best,
+        prediction,
+        minima,
+        explored,
+        pattern_feasible,
+        active_set_fixed,
+        witnesses,
+    )
+}
+
+/// Other motions worth naming in the message.
+struct Witnesses<'e> {
+    within: Option<&'e Eval>,
+    pattern: Option<&'e Eval>,
+    within_lp: Option<bool>,
+}
+
+/// A row to add: `(column, value)` entries, lower and upper bound.
+type ExtraRow = (Vec<(usize, f64)>, f64, f64);
+
+/// `lp` with more rows `lo ≤ Σ v·x_j ≤ hi` over existing columns (`(entries, lo, hi)`), in
+/// order after its own.
+fn with_rows(lp: &LinearProgram, rows: &[ExtraRow]) -> LinearProgram {
+    let mut by_col: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_cols()];
+    let mut out = LinearProgram::new(if lp.maximise {
+        Direction::Maximise
+    } else {
+        Direction::Minimise
+    });
+    for i in 0..lp.num_rows() {
+        out.add_row(lp.row_lower[i], lp.row_upper[i]);
+    }
+    for (entries, lo, hi) in rows {
+        let r = out.add_row(*lo, *hi);
+        for &(j, v) in entries {
+            by_col[j].push((r, v));
+        }
+    }
+    for (j, extra) in by_col.into_iter().enumerate() {
+        let mut col: Vec<(usize, f64)> = lp.column(j).collect();
+        col.extend(extra);
+        out.add_column(
+            lp.cost[j],
+            lp.col_lower[j],
+            lp.col_upper[j],
+            merged_entries(col),
         );
     }
-    let forward = forward_settle(&st_id, opts)?;
-    let (observations, total, maxm) = compare(&st_id, &map_id, &pobs, &open);
-    let predicted_cracks = predicted(&st_id, &map_id, &open, &roles, omax);
-    // Certificate: run the forward analysis and compare.
-    let predicted_work: f64 = dead.iter().zip(&d).map(|(f, x)| f * x).sum();
-    let certificate = Some(reproduction(
-        &st_id,
-        &map_id,
-        &forward,
-        &open,
-        predicted_work,
-    ));
-    // Identifiability.
-    let mut unknown_results = Vec::new();
-    for (q, u) in unknowns.iter().enumerate() {
-        let (mut lo, mut hi, mut computed) = (None, None, false);
-        let mut feasible = true;
-        if opts.ranges {
-            computed = true;
-            for sense in [Direction::Minimise, Direction::Maximise] {
-                let rp = IdentifyProgram::new(
-                    &map,
-                    &fp,
-                    &unit,
-                    &bounds,
-                    &roles,
-                    &activity,
-                    MisfitMode::WithinTolerance { unknown: q, sense },
-                );
-                let s = lp::solve(&rp.lp, &opts.solver)?;
-                let v = match s.status {
-                    LpStatus::Optimal => Some(s.x[rp.a[q]]),
-                    LpStatus::Unbounded => None,
-                    LpStatus::Infeasible => {
-                        feasible = false;
-                        None
+    out
+}
+
+/// Sum the entries of a column that fall on the same row (the solvers refuse repeats).
+fn merged_entries(mut e: Vec<(usize, f64)>) -> Vec<(usize, f64)> {
+    e.sort_by_key(|&(r, _)| r);
+    let mut out: Vec<(usize, f64)> = Vec::with_capacity(e.len());
+    for (r, v) in e {
+        match out.last_mut() {
+            Some((lr, lv)) if *lr == r => *lv += v,
+            _ => out.push((r, v)),
+        }
+    }
+    out
+}
+
+/// One unknown's range over the motions that make the observed pattern a settlement mechanism
+/// with every width within its tolerance (`None`: unbounded or not computed).
+#[derive(Clone, Copy, Debug, Default)]
+struct Range {
+    lo: Option<f64>,
+    hi: Option<f64>,
+    /// Some motion fits every width within its tolerance.
+    feasible: bool,
+    computed: bool,
+}
+
+/// The ranges (every unknown when `all`, else the first one only, not reported: to find one
+/// motion within tolerance) and the mean motion of the LPs that reached an optimum.
+fn within_ranges(lps: &PatternLps, all: bool) -> Result<(Vec<Range>, Option<Vec<f64>>)> {
+    let n = lps.s.unknowns.len();
+    let mut ranges = vec![Range::default(); n];
+    let mut sum = vec![0.0; n];
+    let mut count = 0usize;
+    for (q, range) in ranges.iter_mut().enumerate().take(if all { n } else { 1 }) {
+        range.feasible = true;
+        for sense in [Direction::Minimise, Direction::Maximise] {
+            let rp = lps.program(MisfitMode::WithinTolerance { unknown: q, sense });
+            let sol = lp::solve(&rp.lp, &lps.s.opts.solver)?;
+            let v = match sol.status {
+                LpStatus::Optimal => {
+                    for (acc, a) in sum.iter_mut().zip(rp.amplitudes(&sol.x)) {
+                        *acc += a;
                     }
-                };
-                if sense == Direction::Minimise {
-                    lo = v;
-                } else {
-                    hi = v;
+                    count += 1;
+                    Some(sol.x[rp.a[q]])
+                }
+                LpStatus::Unbounded => None,
+                LpStatus::Infeasible => {
+                    range.feasible = false;
+                    None
+                }
+            };
+            if sense == Direction::Minimise {
+                range.lo = v;
+            } else {
+                range.hi = v;
+            }
+        }
+        if !range.feasible {
+            range.lo = None;
+            range.hi = None;
+        }
+        range.computed = all;
+    }
+    let mean = (count > 0).then(|| sum.iter().map(|v| v / count as f64).collect());
+    Ok((ranges, mean))
+}
+
+fn minimum(e: &Eval, flat: bool) -> Minimum {
+    Minimum {
+        values: e.a.clone(),
+        misfit: e.misfit,
+        opens_pattern: e.opens_pattern(),
+        within_tolerance: e.within,
+        flat,
+    }
+}
+
+/// How two local minima relate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Relation {
+    /// The same motion (within 1e-6 of the characteristic amplitudes).
+    Same,
+    /// Different motions with no rise of the misfit between them (one basin).
+    Connected,
+    /// The misfit rises between them (at the midpoint, or at zero motion when the segment
+    /// passes through it): separate minima.
+    Separate,
+}
+
+fn relation(s: &Setup, a: &Eval, b: &Eval) -> Result<Relation> {
+    let scales = s.scales();
+    let dist =
+        a.a.iter()
+            .zip(&b.a)
+            .zip(&scales)
+            .fold(0.0f64, |m, ((x, y), sc)| m.max((x - y).abs() / sc));
+    if dist <= 1e-6 {
+        return Ok(Relation::Same);
+    }
+    let top = a.misfit.max(b.misfit);
+    let rises = |m: f64| m > top && !same_misfit(m, top);
+    // One unknown, no known motions, opposite signs: the segment passes through zero motion,
+    // whose misfit needs no analysis (nothing opens).
+    if s.homogeneous && a.a.len() == 1 && a.a[0] * b.a[0] < 0.0 {
+        let m0 = s.misfit_of(&vec![0.0; s.map.num_points()]);
+        if rises(m0) {
+            return Ok(Relation::Separate);
+        }
+    }
+    let mid: Vec<f64> = a.a.iter().zip(&b.a).map(|(x, y)| 0.5 * (x + y)).collect();
+    Ok(if s.try_quick(&mid).is_none_or(|e| rises(e.misfit)) {
+        Relation::Separate
+    } else {
+        Relation::Connected
+    })
+}
+
+/// Explore the misfit landscape on forward analyses: with no known motions and at most three
+/// unknowns, a scan of directions of motion, each at its best amplitude (exact: the forward
+/// openings scale with the amplitude); then a compass search from the scan's local minima and
+/// from the best candidate. Returns the local minima found, least misfit first, separate ones
+/// only.
+fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
+    let n = s.unknowns.len();
+    let scales = s.scales();
+    let mut found: Vec<Found> = Vec::new();
+    if s.homogeneous && n <= 3 {
+        let rays = ray_scan(s, &scales)?;
+        for (i, flat) in ray_minima(&rays, n) {
+            // Refine a minimum between the scan's directions: for one unknown the ray's
+            // minimum is exact (the misfit is convex along it); for two, a golden-section
+            // search on the angle, each angle at its exact best amplitude; for three, a
+            // compass search. A plateau is left as it is.
+            let a = if flat || n == 1 {
+                rays[i].amplitudes()
+            } else if n == 2 {
+                refine_angle(s, &scales, &rays[i])
+            } else {
+                rays[i].amplitudes()
+            };
+            let Some(e) = s.try_quick(&a) else {
+                continue;
+            };
+            let e = if n == 3 && !flat && s.explorable() {
+                compass(s, e, &scales)
+            } else {
+                e
+            };
+            // The minimum in full (the optimal mechanism closest to the observations).
+            if let Some(e) = s.try_evaluate(&e.a) {
+                found.push(Found { eval: e, flat });
+            }
+        }
+    } else if s.explorable() {
+        // Known motions or more than three unknowns: a compass search from the best candidate.
+        if let Some(c) = cands
+            .iter()
+            .filter(|c| c.eval.misfit.is_finite())
+            .min_by(|a, b| a.eval.misfit.total_cmp(&b.eval.misfit))
+        {
+            if let Some(e) = s.try_quick(&c.eval.a) {
+                if let Some(e) = s.try_evaluate(&compass(s, e, &scales).a) {
+                    found.push(Found {
+                        eval: e,
+                        flat: false,
+                    });
                 }
             }
         }
-        let value = a[q] + 0.0; // no "-0"
-        let (identifiable, note) = if !computed {
+    }
+    found.sort_by(|a, b| a.eval.misfit.total_cmp(&b.eval.misfit));
+    // Keep separate minima only; an equally low one in the same basin makes it flat.
+    let mut kept: Vec<Found> = Vec::new();
+    for f in found {
+        let mut distinct = true;
+        for k in kept.iter_mut() {
+            match relation(s, &k.eval, &f.eval)? {
+                Relation::Separate => continue,
+                Relation::Connected => k.flat |= same_misfit(k.eval.misfit, f.eval.misfit),
+                Relation::Same => k.flat |= f.flat,
+            }
+            distinct = false;
+            break;
+        }
+        if distinct {
+            kept.push(f);
+        }
+    }
+    Ok(kept)
+}
+
+/// Golden-section search on the angle of a two-unknown direction, between the scan's
+/// neighbours of `ray` (±5°), each angle at its exact best amplitude.
+fn refine_angle(s: &Setup, scales: &[f64], ray: &Ray) -> Vec<f64> {
+    let phi0 = ray.dir[1].atan2(ray.dir[0]);
+    let step = std::f64::consts::TAU / 72.0;
+    let at = |phi: f64| -> Option<Ray> { ray_at(s, scales, vec![phi.cos(), phi.sin()]) };
+    let value = |r: &Option<Ray>| r.as_ref().map_or(f64::INFINITY, |r| r.misfit);
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = (phi0 - step, phi0 + step);
+    let mut x1 = hi - g * (hi - lo);
+    let mut x2 = lo + g * (hi - lo);
+    let (mut r1, mut r2) = (at(x1), at(x2));
+    let mut best: (f64, Vec<f64>) = (ray.misfit, ray.amplitudes());
+    for _ in 0..16 {
+        for r in [&r1, &r2].into_iter().flatten() {
+            if r.misfit < best.0 && !same_misfit(r.misfit, best.0) {
+                best = (r.misfit, r.amplitudes());
+            }
+        }
+        if value(&r1) <= value(&r2) {
+            hi = x2;
+            x2 = x1;
+            r2 = r1;
+            x1 = hi - g * (hi - lo);
+            r1 = at(x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            r1 = r2;
+            x2 = lo + g * (hi - lo);
+            r2 = at(x2);
+        }
+    }
+    for r in [&r1, &r2].into_iter().flatten() {
+        if r.misfit < best.0 && !same_misfit(r.misfit, best.0) {
+            best = (r.misfit, r.amplitudes());
+        }
+    }
+    best.1
+}
+
+/// A direction of motion (in the unknowns' characteristic units) and the best amplitude
+/// along it.
+struct Ray {
+    dir: Vec<f64>,
+    /// Amplitudes per unit of `t`.
+    a1: Vec<f64>,
+    t: f64,
+    misfit: f64,
+}
+
+impl Ray {
+    fn amplitudes(&self) -> Vec<f64> {
+        self.a1.iter().map(|v| v * self.t + 0.0).collect()
+    }
+}
+
+/// Directions of motion: ±1 for one unknown, 72 on the circle for two, 194 on the sphere
+/// (Fibonacci lattice) for three.
+fn directions(n: usize) -> Vec<Vec<f64>> {
+    match n {
+        1 => vec![vec![1.0], vec![-1.0]],
+        2 => (0..72)
+            .map(|i| {
+                let p = std::f64::consts::TAU * i as f64 / 72.0;
+                vec![p.cos(), p.sin()]
+            })
+            .collect(),
+        _ => {
+            let m = 194;
+            let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+            (0..m)
+                .map(|i| {
+                    let z = 1.0 - (2 * i + 1) as f64 / m as f64;
+                    let r = (1.0 - z * z).max(0.0).sqrt();
+                    let p = golden * i as f64;
+                    vec![r * p.cos(), r * p.sin(), z]
+                })
+                .collect()
+        }
+    }
+}
+
+/// Each direction's best amplitude within the bounds: one forward analysis per direction.
+fn ray_scan(s: &Setup, scales: &[f64]) -> Result<Vec<Ray>> {
+    Ok(directions(s.unknowns.len())
+        .into_iter()
+        .filter_map(|dir| ray_at(s, scales, dir))
+        .collect())
+}
+
+/// The best amplitude along one direction (None: no amplitude within the bounds, or the
+/// forward analysis failed).
+fn ray_at(s: &Setup, scales: &[f64], dir: Vec<f64>) -> Option<Ray> {
+    let a1: Vec<f64> = dir.iter().zip(scales).map(|(d, sc)| d * sc).collect();
+    // The amplitudes t·a1 within the bounds.
+    let (mut lo, mut hi) = (0.0f64, f64::INFINITY);
+    for (c, (blo, bhi)) in a1.iter().zip(&s.bounds) {
+        if *c > 0.0 {
+            lo = lo.max(blo / c);
+            hi = hi.min(bhi / c);
+        } else if *c < 0.0 {
+            lo = lo.max(bhi / c);
+            hi = hi.min(blo / c);
+        } else if *blo > 0.0 || *bhi < 0.0 {
+            hi = -1.0;
+        }
+    }
+    if lo > hi || !lo.is_finite() {
+        return None;
+    }
+    // Any amplitude in the range gives the openings per unit t.
+    let t0 = if hi.is_finite() {
+        0.5 * (lo + hi)
+    } else {
+        lo.max(1.0)
+    };
+    let open1: Vec<f64> = if t0 > 0.0 {
+        let at: Vec<f64> = a1.iter().map(|v| v * t0).collect();
+        let e = s.try_quick(&at)?;
+        e.open.iter().map(|o| o / t0).collect()
+    } else {
+        vec![0.0; s.map.num_points()]
+    };
+    let (t, misfit) = ray_minimiser(&open1, &s.targets, lo, hi);
+    Some(Ray { dir, a1, t, misfit })
+}
+
+/// The factor `t` in `[lo, hi]` (`lo ≥ 0`) minimising `Σ |t·o_k − w_k| / τ_k` over observed
+/// points (`targets[k] = (w_k, τ_k)`), and that minimum. The function is convex and piecewise
+/// linear: its minimum is at a ratio `w_k / o_k` or at an end of the range; of equally good
+/// factors the largest (the one that opens the observed cracks most nearly at their widths).
+fn ray_minimiser(open: &[f64], targets: &[Option<(f64, f64)>], lo: f64, hi: f64) -> (f64, f64) {
+    let f = |t: f64| -> f64 {
+        targets
+            .iter()
+            .zip(open)
+            .filter_map(|(tg, o)| tg.map(|(w, tau)| (t * o - w).abs() / tau))
+            .sum()
+    };
+    let mut ts: Vec<f64> = targets
+        .iter()
+        .zip(open)
+        .filter_map(|(tg, &o)| tg.filter(|_| o > 0.0).map(|(w, _)| w / o))
+        .map(|t| t.max(lo).min(hi))
+        .collect();
+    ts.push(lo);
+    if hi.is_finite() {
+        ts.push(hi);
+    }
+    ts.sort_by(|a, b| a.total_cmp(b));
+    let mut best = (lo, f(lo));
+    for t in ts {
+        let v = f(t);
+        if v < best.1 || same_misfit(v, best.1) {
+            best = (t, v.min(best.1));
+        }
+    }
+    best
+}
+
+/// The rays' local minima: plateaus (directions linked by neighbours of equal misfit, one
+/// direction alone included) none of whose members has a lower neighbour. Per minimum the
+/// member nearest the plateau's mean direction and whether the plateau has more than one
+/// member. At most four, least misfit first. Directions whose best amplitude is zero (no
+/// motion) are left out.
+fn ray_minima(rays: &[Ray], n: usize) -> Vec<(usize, bool)> {
+    let m = rays.len();
+    let dot = |i: usize, j: usize| -> f64 {
+        rays[i]
+            .dir
+            .iter()
+            .zip(&rays[j].dir)
+            .map(|(a, b)| a * b)
+            .sum()
+    };
+    // Neighbours on the direction grid: adjacent on the circle, the six nearest on the sphere.
+    let neighbours: Vec<Vec<usize>> = (0..m)
+        .map(|i| {
+            if n == 1 {
+                return vec![];
+            }
+            let mut others: Vec<usize> = (0..m).filter(|&j| j != i).collect();
+            others.sort_by(|&a, &b| dot(i, b).total_cmp(&dot(i, a)));
+            others.truncate(if n == 2 { 2 } else { 6 });
+            others
+        })
+        .collect();
+    let mut seen = vec![false; m];
+    let mut out: Vec<(f64, usize, bool)> = Vec::new();
+    for i in 0..m {
+        if seen[i] || !rays[i].misfit.is_finite() {
+            continue;
+        }
+        let mut plateau = vec![i];
+        seen[i] = true;
+        let mut q = 0;
+        let mut lower = false;
+        while q < plateau.len() {
+            let c = plateau[q];
+            q += 1;
+            for &j in &neighbours[c] {
+                if same_misfit(rays[c].misfit, rays[j].misfit) {
+                    if !seen[j] {
+                        seen[j] = true;
+                        plateau.push(j);
+                    }
+                } else if rays[j].misfit < rays[c].misfit {
+                    lower = true;
+                }
+            }
+        }
+        if lower {
+            continue;
+        }
+        let moving: Vec<usize> = plateau
+            .iter()
+            .copied()
+            .filter(|&c| rays[c].t > 0.0)
+            .collect();
+        if moving.is_empty() {
+            continue;
+        }
+        let mut mean = vec![0.0; n];
+        for &c in &moving {
+            for (mv, d) in mean.iter_mut().zip(&rays[c].dir) {
+                *mv += d;
+            }
+        }
+        let pick = *moving
+            .iter()
+            .max_by(|&&a, &&b| {
+                let da: f64 = rays[a].dir.iter().zip(&mean).map(|(x, y)| x * y).sum();
+                let db: f64 = rays[b].dir.iter().zip(&mean).map(|(x, y)| x * y).sum();
+                da.total_cmp(&db).then(b.cmp(&a))
+            })
+            .expect("a plateau has a member");
+        out.push((rays[pick].misfit, pick, plateau.len() > 1));
+    }
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out.truncate(4);
+    out.into_iter().map(|(_, i, f)| (i, f)).collect()
+}
+
+/// A compass search on forward analyses from `start`: steps along each unknown and (up to
+/// three unknowns) the diagonals, in characteristic units, halved when no step improves.
+fn compass(s: &Setup, start: Eval, scales: &[f64]) -> Eval {
+    let n = s.unknowns.len();
+    let mut dirs: Vec<Vec<f64>> = Vec::new();
+    for q in 0..n {
+        for sign in [1.0, -1.0] {
+            let mut d = vec![0.0; n];
+            d[q] = sign;
+            dirs.push(d);
+        }
+    }
+    if (2..=3).contains(&n) {
+        for mask in 0..(1usize << n) {
+            dirs.push(
+                (0..n)
+                    .map(|q| if mask >> q & 1 == 1 { -1.0 } else { 1.0 })
+                    .collect(),
+            );
+        }
+    }
+    let budget = 8 * dirs.len();
+    let size = start
+        .a
+        .iter()
+        .zip(scales)
+        .fold(0.0f64, |m, (v, sc)| m.max(v.abs() / sc));
+    let mut h = 0.05 * size.max(1.0);
+    let hmin = 1e-3 * h;
+    let mut cur = start;
+    let mut evals = 0;
+    while h >= hmin && evals < budget {
+        let mut improved = false;
+        for d in &dirs {
+            let mut y: Vec<f64> = cur
+                .a
+                .iter()
+                .zip(d)
+                .zip(scales)
+                .map(|((v, dv), sc)| v + h * dv * sc)
+                .collect();
+            s.clamp(&mut y);
+            if y == cur.a {
+                continue;
+            }
+            evals += 1;
+            if let Some(e) = s.try_quick(&y) {
+                if e.misfit < cur.misfit && !same_misfit(e.misfit, cur.misfit) {
+                    cur = e;
+                    improved = true;
+                    break;
+                }
+            }
+            if evals >= budget {
+                break;
+            }
+        }
+        if !improved {
+            h *= 0.5;
+        }
+    }
+    cur
+}
+
+/// Build the result for the chosen motion.
+#[allow(clippy::too_many_arguments)]
+fn result(
+    s: &Setup,
+    ranges: &[Range],
+    best: Eval,
+    prediction: Option<Prediction>,
+    minima: Vec<Minimum>,
+    explored: bool,
+    pattern_feasible: bool,
+    active_set_fixed: bool,
+    witnesses: Witnesses,
+) -> Result<IdentifyResult> {
+    let (st0, map) = (&s.st0, &s.map);
+    let st_best =
+        s.st.with_support_motions(&motions_of(s.st, s.unknowns, &best.a));
+    let (observations, total, maxm) = compare(st0, map, &s.pobs, &best.open);
+    let omax = max_abs(&best.open);
+    let predicted_cracks = predicted(st0, map, &best.open, &s.roles, omax);
+    let certificate = prediction
+        .as_ref()
+        .map(|p| reproduction(st0, map, &best.forward, &p.open, p.work));
+    let identified = best.within
+        || best.opens_pattern()
+        || witnesses.within.is_some()
+        || witnesses.pattern.is_some();
+    // Identifiability: the range of each unknown over every motion that makes the observed
+    // pattern a settlement mechanism with every width within its tolerance.
+    let mut unknown_results = Vec::new();
+    for (q, u) in s.unknowns.iter().enumerate() {
+        let Range {
+            lo,
+            hi,
+            feasible,
+            computed,
+        } = ranges[q];
+        let value = best.a[q] + 0.0; // no "-0"
+        let (identifiable, note) = if !pattern_feasible {
+            (
+                false,
+                "no motion makes the observed pattern a settlement mechanism: no range".to_string(),
+            )
+        } else if !computed {
             (false, "range not computed".to_string())
         } else if !feasible {
             (false, "no motion reproduces the pattern with every width within its tolerance: the range is empty; widen the tolerances".to_string())
@@ -712,31 +1787,134 @@ pub fn identify(
             note,
         });
     }
-    let reproduces = certificate.as_ref().is_some_and(|c| c.reproduces);
-    let message = if reproduces {
+    let all = best.misfit;
+    let joints = |v: &[usize]| dedup(v.iter().map(|j| j.to_string()).collect());
+    // What the chosen motion's own settlement does differently from the survey.
+    let mut why = String::new();
+    if !best.extra.is_empty() {
+        why.push_str(&format!(
+            "; it opens joints observed closed ({})",
+            joints(&best.extra)
+        ));
+    }
+    if !best.shut.is_empty() {
+        why.push_str(&format!(
+            "; it leaves closed joints observed open ({})",
+            joints(&best.shut)
+        ));
+    }
+    let mut message = if !identified {
+        let reason = if pattern_feasible {
+            "the motions that make it a settlement mechanism leave, on their own forward settlement analysis, an observed crack closed or open another"
+        } else {
+            "no motion within the bounds makes this pattern a settlement mechanism"
+        };
         format!(
-            "identified: the settlement mechanism of these support motions opens the observed cracks (misfit {total:.3} tolerances in total, largest {maxm:.3e} m), and the forward settlement analysis reproduces it"
+            "no settlement of the unknown support motions produces the observed crack pattern ({reason}), nor fits every width within its tolerance; the closest motion (least misfit over every observed point, closed ones included, on its own forward settlement analysis) is below, with the cracks its settlement opens (misfit {all:.3} tolerances){why}"
+        )
+    } else if best.within && best.opens_pattern() {
+        let reproduced = certificate.as_ref().is_none_or(|c| c.reproduces);
+        format!(
+            "identified: the settlement mechanism of these support motions opens the observed cracks (misfit {total:.3} tolerances in total, largest {maxm:.3e} m){}",
+            if reproduced {
+                ", and the forward settlement analysis reproduces it"
+            } else {
+                ", every width within its tolerance on the forward settlement analysis"
+            }
+        )
+    } else if best.within {
+        format!(
+            "identified: the forward settlement analysis of these support motions reproduces every observed width within its tolerance (misfit {all:.3} tolerances over every observed point, largest {maxm:.3e} m){}",
+            why.replace("; it", "; it still")
         )
     } else {
-        format!(
-            "identified a motion whose settlement mechanism opens the observed cracks (misfit {total:.3} tolerances), but the forward analysis does not reproduce it exactly: {}",
-            certificate.as_ref().map(|c| c.message.as_str()).unwrap_or("")
-        )
+        // The least misfit does not fit every width within its tolerance.
+        let mut m = if best.opens_pattern() {
+            format!(
+                "identified: the settlement mechanism of these support motions opens the observed crack pattern with the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m), though not every width within its tolerance"
+            )
+        } else {
+            format!(
+                "identified: the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m) is this motion's{why}"
+            )
+            .replace("motion's; it", "motion's: it")
+        };
+        match (witnesses.within, witnesses.within_lp) {
+            (Some(w), _) => m.push_str(&format!(
+                "; the motion {} fits every width within its tolerance (misfit {:.3} tolerances)",
+                values_text(s, &w.a),
+                w.misfit
+            )),
+            (None, Some(false)) => m.push_str(
+                "; no motion with the observed pattern fits every width within its tolerance",
+            ),
+            (None, _) => m.push_str("; no motion found fits every width within its tolerance"),
+        }
+        if let Some(p) = witnesses.pattern.filter(|_| !best.opens_pattern()) {
+            m.push_str(&format!(
+                "; the motion {} opens the observed crack pattern (misfit {:.3} tolerances)",
+                values_text(s, &p.a),
+                p.misfit
+            ));
+        }
+        m
     };
+    if minima.len() > 1 {
+        let list: Vec<String> = minima[1..]
+            .iter()
+            .map(|m| format!("{:.3} at {}", m.misfit, values_text(s, &m.values)))
+            .collect();
+        message.push_str(&format!(
+            "; the misfit has {} separate minima: this one and {}",
+            minima.len(),
+            list.join(", ")
+        ));
+    }
+    if minima[0].flat {
+        message.push_str("; the least misfit is not unique: a range of motions around this one fits equally well");
+    }
+    if !explored && !same_misfit(all, 0.0) && all > EXACT_MISFIT {
+        message.push_str(&format!(
+            "; the misfit landscape was not explored beyond the LP candidates (a model of more than {EXPLORE_MAX_DOFS} degrees of freedom)"
+        ));
+    }
     Ok(IdentifyResult {
-        status: IdentifyStatus::Identified,
+        status: if identified {
+            IdentifyStatus::Identified
+        } else {
+            IdentifyStatus::Inconsistent
+        },
         message,
         unknowns: unknown_results,
-        support_motions: support_motions(&st_id),
+        support_motions: support_motions(&st_best),
         observations,
         total_misfit: total,
-        misfit_all_points: total,
+        misfit_all_points: all,
         max_misfit: maxm,
         predicted_cracks,
         active_set_fixed,
         certificate,
-        forward,
+        minima,
+        landscape_explored: explored,
+        forward: best.forward,
     })
+}
+
+/// `name = value` for each unknown (mm for translations, rad for rotations).
+fn values_text(s: &Setup, a: &[f64]) -> String {
+    let parts: Vec<String> = s
+        .unknowns
+        .iter()
+        .zip(a)
+        .map(|(u, v)| {
+            if u.name.ends_with(".theta") {
+                format!("{} = {:.6e} rad", u.name, v + 0.0)
+            } else {
+                format!("{} = {:.6e} m", u.name, v + 0.0)
+            }
+        })
+        .collect();
+    format!("({})", parts.join(", "))
 }
 
 /// Complementarity the observations did not fix: `p_n z = 0` at unobserved points and
@@ -932,135 +2110,6 @@ fn support_motions(st: &Structure) -> Vec<SupportMotion> {
         .collect()
 }
 
-/// No motion makes the pattern a settlement mechanism: report the closest.
-#[allow(clippy::too_many_arguments)]
-fn closest(
-    st: &Structure,
-    map: &KinematicMap,
-    unknowns: &[Unknown],
-    unit: &[(Vec<f64>, Vec<f64>)],
-    bounds: &[(f64, f64)],
-    roles: &[PointRole],
-    pobs: &[PointObs],
-    opts: &IdentifyOptions,
-    gtol: f64,
-    reason: &str,
-) -> Result<IdentifyResult> {
-    // Closed points count at the global tolerance `gtol`.
-    let mut targets: Vec<Option<(f64, f64)>> = vec![None; map.num_points()];
-    for (k, r) in roles.iter().enumerate() {
-        if map.bilateral[k] || map.gap[k] > 0.0 {
-            continue;
-        }
-        targets[k] = match *r {
-            PointRole::Closed => Some((0.0, gtol)),
-            PointRole::Open { width, tolerance } => Some((width, tolerance)),
-            PointRole::Unobserved => None,
-        };
-    }
-    for o in pobs {
-        if o.width == 0.0 {
-            targets[o.point] = Some((0.0, o.tolerance));
-        }
-    }
-    let cp = ClosestProgram::new(map, unit, bounds, &targets);
-    let sol = lp::solve(&cp.lp, &opts.solver)?;
-    if sol.status != LpStatus::Optimal {
-        return Err(Error::Request(
-            "identify: the observed pattern cannot be produced by any settlement, and no admissible motion within the bounds exists either (check the bounds and the known support motions)".into(),
-        ));
-    }
-    let mut a: Vec<f64> = cp.amplitudes(&sol.x).iter().map(|v| v + 0.0).collect();
-    let mut st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
-    let mut forward = forward_settle(&st_c, opts)?;
-    let mut open = forward_openings(map, &forward);
-    // With no known motions the forward analysis is homogeneous of degree one in the motions:
-    // scaling them by t scales every opening by t. Take the t that minimises the misfit of the
-    // forward openings over every observed point (closed ones at 0), if it stays in the bounds.
-    let homogeneous = st.supports.iter().all(|s| s.motion == [0.0; 3])
-        && unknowns
-            .iter()
-            .all(|u| u.base.iter().all(|b| *b == [0.0; 3]));
-    if homogeneous && forward.status == SettlementStatus::Mechanism {
-        let t = best_scaling(&open, &targets);
-        let scaled: Vec<f64> = a.iter().map(|v| t * v + 0.0).collect();
-        let inside = scaled
-            .iter()
-            .zip(bounds)
-            .all(|(v, (lo, hi))| v >= lo && v <= hi);
-        if inside && t > 0.0 && (t - 1.0).abs() > 1e-12 {
-            a = scaled;
-            st_c = st.with_support_motions(&motions_of(st, unknowns, &a));
-            forward = forward_settle(&st_c, opts)?;
-            open = forward_openings(map, &forward);
-        }
-    }
-    let map_c = KinematicMap::new(&st_c);
-    let omax = max_abs(&open);
-    // Misfit over every observed point, the implicitly closed ones included.
-    let all_misfit: f64 = targets
-        .iter()
-        .zip(&open)
-        .filter_map(|(t, o)| t.map(|(w, tau)| (o - w).abs() / tau))
-        .sum();
-    let (observations, total, maxm) = compare(&st_c, &map_c, pobs, &open);
-    let predicted_cracks = predicted(&st_c, &map_c, &open, roles, omax);
-    let contradictions: Vec<String> = predicted_cracks
-        .iter()
-        .filter(|c| c.observed == "closed")
-        .map(|c| format!("{}", c.joint))
-        .collect();
-    let missing: Vec<String> = observations
-        .iter()
-        .filter(|o| o.observed > 0.0 && o.predicted <= 1e-7 * omax.max(1e-300))
-        .map(|o| format!("{}", o.joint))
-        .collect();
-    let mut why = String::new();
-    if !contradictions.is_empty() {
-        why.push_str(&format!(
-            "; it also opens joints observed closed ({})",
-            dedup(contradictions)
-        ));
-    }
-    if !missing.is_empty() {
-        why.push_str(&format!(
-            "; it leaves closed joints observed open ({})",
-            dedup(missing)
-        ));
-    }
-    let unknown_results = unknowns
-        .iter()
-        .enumerate()
-        .map(|(q, u)| UnknownResult {
-            name: u.name.clone(),
-            value: a[q],
-            lower_bound: u.lower,
-            upper_bound: u.upper,
-            range_min: None,
-            range_max: None,
-            range_computed: false,
-            identifiable: false,
-            note: "no motion reproduces the pattern: no range".to_string(),
-        })
-        .collect();
-    Ok(IdentifyResult {
-        status: IdentifyStatus::Inconsistent,
-        message: format!(
-            "no settlement of the unknown support motions produces the observed crack pattern ({reason}); the closest motion (least misfit over every observed point, the pattern relaxed) is below, with the cracks its own settlement analysis opens (misfit {all_misfit:.3} tolerances over every observed point, closed ones included){why}"
-        ),
-        unknowns: unknown_results,
-        support_motions: support_motions(&st_c),
-        observations,
-        total_misfit: total,
-        misfit_all_points: all_misfit,
-        max_misfit: maxm,
-        predicted_cracks,
-        active_set_fixed: false,
-        certificate: None,
-        forward,
-    })
-}
-
 /// Openings of a forward result, by point (0 when it has no mechanism).
 fn forward_openings(map: &KinematicMap, forward: &SettlementResult) -> Vec<f64> {
     let mut open = vec![0.0; map.num_points()];
@@ -1072,34 +2121,6 @@ fn forward_openings(map: &KinematicMap, forward: &SettlementResult) -> Vec<f64> 
         }
     }
     open
-}
-
-/// The factor `t ≥ 0` minimising `Σ |t·o_k − w_k| / τ_k` over observed points `k`
-/// (`targets[k] = (w_k, τ_k)`): a weighted median of the ratios `w_k / o_k` with weights
-/// `o_k / τ_k` (points that do not open add a constant). Of equally good factors, the largest
-/// (the one that opens the observed cracks most nearly at their widths).
-fn best_scaling(open: &[f64], targets: &[Option<(f64, f64)>]) -> f64 {
-    let mut items: Vec<(f64, f64)> = targets
-        .iter()
-        .zip(open)
-        .filter_map(|(t, &o)| t.filter(|_| o > 0.0).map(|(w, tau)| (w / o, o / tau)))
-        .collect();
-    if items.is_empty() {
-        return 1.0;
-    }
-    items.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let total: f64 = items.iter().map(|i| i.1).sum();
-    // The slope of the misfit at t is (weight below t) − (weight above t): the minimisers are
-    // where it changes sign; take the last ratio where the weight below does not exceed half.
-    let mut below = 0.0;
-    let mut best = items[0].0;
-    for (r, w) in &items {
-        if below <= 0.5 * total * (1.0 + 1e-12) {
-            best = *r;
-        }
-        below += w;
-    }
-    best
 }
 
 fn dedup(mut v: Vec<String>) -> String {

@@ -100,6 +100,19 @@ impl Default for CapacityOptions {
     }
 }
 
+/// The solver a capacity curve states: Clarabel for the cone programs of `Crushing::Conic`
+/// (exact crushing in 2D, the exact friction cone in 3D), else the method asked for.
+fn capacity_solver(opts: &CapacityOptions) -> crate::lp::SolverInfo {
+    match opts.crushing {
+        Crushing::Conic => crate::lp::SolverInfo {
+            solver: crate::lp::cone_backend(&opts.solver).name().to_string(),
+            method: crate::lp::Method::Clarabel,
+            tried: Vec::new(),
+        },
+        Crushing::Linear => opts.solver.info(),
+    }
+}
+
 /// Open points whose opening rate under mechanism `d` is negative: the joints whose settlement
 /// cracks the mechanism would close.
 pub fn closing_joints<S: Assembly>(st: &S, map: &KinematicMap, d: &[f64]) -> Vec<usize> {
@@ -168,7 +181,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         return Ok(CapacityResult {
             status: CapacityStatus::NoSettlementMechanism,
             message: format!("settlement analysis: {}", path.status.sentence()),
-            solver: opts.solver.info(),
+            solver: capacity_solver(opts),
             max_settlement: smax,
             direction,
             curve: vec![],
@@ -336,7 +349,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     Ok(CapacityResult {
         status: CapacityStatus::Curve,
         message,
-        solver: opts.solver.info(),
+        solver: capacity_solver(opts),
         max_settlement: smax,
         direction,
         curve,

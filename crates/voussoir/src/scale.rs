@@ -84,10 +84,14 @@ pub fn force_scale(dofs_per_block: usize, loads: &[f64]) -> f64 {
 /// The multiplier scale of a limit analysis: the dead loads' force over the live loads'
 /// (1 when either is absent). λ·F_L weighs as much as F_D at `λ = lambda_unit`.
 pub fn lambda_unit(dofs_per_block: usize, dead: &[f64], live: &[f64]) -> f64 {
-    let (fd, fl) = (
+    lambda_unit_of(
         force_scale(dofs_per_block, dead),
         force_scale(dofs_per_block, live),
-    );
+    )
+}
+
+/// [`lambda_unit`] from the two force scales: `fd / fl`, 1 when either is absent.
+pub fn lambda_unit_of(fd: f64, fl: f64) -> f64 {
     if fd > 0.0 && fl > 0.0 && (fd / fl).is_finite() {
         fd / fl
     } else {

@@ -162,6 +162,36 @@ impl Axis {
     }
 }
 
+/// The plot frame, its tick labels and the x-axis label below it (shared by the curves and
+/// the safety chart).
+pub(crate) fn frame(
+    o: &mut String,
+    [left, top, right, bottom]: [f64; 4],
+    ticks: &str,
+    x_label: &str,
+    h: f64,
+) {
+    let _ = writeln!(
+        o,
+        "<rect class=\"frame\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>",
+        num(left),
+        num(top),
+        num(right - left),
+        num(bottom - top)
+    );
+    let _ = writeln!(
+        o,
+        "<g class=\"ticks\" font-size=\"12\" fill=\"#333333\">\n{ticks}</g>"
+    );
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"{}\" font-size=\"13.5\" fill=\"#111111\" text-anchor=\"middle\">{}</text>",
+        num((left + right) / 2.0),
+        num(h - 14.0),
+        esc(x_label)
+    );
+}
+
 fn tick_label(v: f64, decimals: usize) -> String {
     let s = fmt_fixed(v, decimals);
     // A typographic minus reads better on axes.
@@ -360,24 +390,12 @@ pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
             "<path d=\"{zero}\" stroke=\"#9a9a9a\" stroke-width=\"1\" fill=\"none\"/>"
         );
     }
-    let _ = writeln!(
-        o,
-        "<rect class=\"frame\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>",
-        num(left),
-        num(top),
-        num(right - left),
-        num(bottom - top)
-    );
-    let _ = writeln!(
-        o,
-        "<g class=\"ticks\" font-size=\"12\" fill=\"#333333\">\n{labels}</g>"
-    );
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" font-size=\"13.5\" fill=\"#111111\" text-anchor=\"middle\">{}</text>",
-        num((left + right) / 2.0),
-        num(h - 14.0),
-        esc(&spec.x_label)
+    frame(
+        &mut o,
+        [left, top, right, bottom],
+        &labels,
+        &spec.x_label,
+        h,
     );
     let _ = writeln!(
         o,

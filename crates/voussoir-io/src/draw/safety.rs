@@ -158,23 +158,12 @@ pub fn safety_figure(r: &SafetyResult, title: &str) -> String {
             num(bottom)
         );
     }
-    let _ = writeln!(
-        o,
-        "<rect class=\"frame\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>",
-        num(left),
-        num(top),
-        num(right - left),
-        num(bottom - top)
-    );
-    let _ = writeln!(
-        o,
-        "<g class=\"ticks\" font-size=\"12\" fill=\"#333333\">\n{ticks}</g>"
-    );
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" font-size=\"13.5\" fill=\"#111111\" text-anchor=\"middle\">reaction force (kN)</text>",
-        num((left + right) / 2.0),
-        num(h - 14.0)
+    super::plot::frame(
+        &mut o,
+        [left, top, right, bottom],
+        &ticks,
+        "reaction force (kN)",
+        h,
     );
     // The bars.
     let colour = "#1f5fbf";

@@ -300,16 +300,11 @@ pub fn limit_solution(
     // A negative multiplier within round-off of zero is zero (crate::scale::LAMBDA_ZERO): the
     // structure stands with no reserve, as the exact answer says; only a clearly negative one
     // means that it cannot stand. A small positive λ (μ = 1e-9) is kept as it is.
-    let unit = if fp.force_scale > 0.0 {
-        let fl = crate::scale::force_scale(map.dofs_per_block, live);
-        if fl > 0.0 && (fp.force_scale / fl).is_finite() {
-            fp.force_scale / fl
-        } else {
-            1.0
-        }
-    } else {
-        1.0
-    };
+    // fp.force_scale is the dead loads' (the live loads' when there are none: then 1).
+    let unit = crate::scale::lambda_unit_of(
+        fp.force_scale,
+        crate::scale::force_scale(map.dofs_per_block, live),
+    );
     let lambda = if lambda < 0.0 && -lambda <= crate::scale::LAMBDA_ZERO * unit {
         0.0
     } else {

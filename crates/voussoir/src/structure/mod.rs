@@ -320,11 +320,7 @@ impl Structure {
     /// width or two (at the line's start and end, interpolated along its length at the point's
     /// projection). Widths are scaled by `width_scale`, coordinates and snap by
     /// `coordinate_scale`. `what` names the crack in errors.
-    pub fn crack_site_points(
-        &self,
-        what: &str,
-        c: &CrackSite,
-    ) -> Result<Vec<(usize, usize, f64)>> {
+    pub fn crack_site_points(&self, what: &str, c: &CrackSite) -> Result<Vec<(usize, usize, f64)>> {
         use crate::model::Width;
         let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
         let (ws, fc) = (c.width_scale, c.coordinate_scale);
@@ -385,11 +381,7 @@ impl Structure {
                 }
             }
             (None, None, Some(line), w) => self.polyline_points(what, line, c.snap, w, ws, fc)?,
-            _ => {
-                return bad(
-                    "give exactly one of \"at\", \"joint\" and \"polyline\"".into(),
-                )
-            }
+            _ => return bad("give exactly one of \"at\", \"joint\" and \"polyline\"".into()),
         };
         Ok(points)
     }

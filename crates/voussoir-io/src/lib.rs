@@ -10,6 +10,7 @@ pub mod mesh;
 pub mod motion;
 pub mod report3d;
 pub mod result3d;
+pub mod survey;
 pub mod vtk;
 
 pub use files::{read_any_model, read_model, write_all_or_nothing, write_atomic, IoError};

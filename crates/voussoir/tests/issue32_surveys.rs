@@ -369,7 +369,7 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
         .unwrap()
         .to_string();
     assert!(
-        e.contains("cracks[1]: the polyline catches no joint point"),
+        e.contains("cracks[1]: the polyline from") && e.contains("catches no joint point"),
         "{e}"
     );
     assert_eq!(e.lines().count(), 1);
@@ -399,7 +399,7 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
         .unwrap()
         .to_string();
     assert!(
-        e.contains("cracks[0]: the polyline catches no joint point"),
+        e.contains("cracks[0]: the polyline from") && e.contains("catches no joint point"),
         "{e}"
     );
 }

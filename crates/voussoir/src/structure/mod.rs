@@ -465,8 +465,10 @@ impl Structure {
                 Some(d) => format!("within \"snap\" {d} of it"),
                 None => "within a quarter of its joint's length of it".to_string(),
             };
+            let (a, b) = (line[0], line[line.len() - 1]);
             return bad(format!(
-                "the polyline catches no joint point (none {reach}): draw it along a joint or give a larger \"snap\""
+                "the polyline from ({:.4}, {:.4}) to ({:.4}, {:.4}) m catches no joint point (none {reach}): draw it along a joint or give a larger \"snap\"",
+                a[0], a[1], b[0], b[1]
             ));
         }
         Ok(out)

@@ -419,6 +419,7 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
             joint: None,
             opening: Width::One(p.opening),
             tolerance: None,
+            ..Default::default()
         }],
         unobserved: vec![],
         ..Default::default()

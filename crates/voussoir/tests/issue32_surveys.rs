@@ -364,7 +364,7 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
     };
     let rest = at_rest(&st);
     let u = Unknown::supports(&rest, "right", &["right".into()], Component::U, None, None).unwrap();
-    let e = identify(&rest, &obs, &[u.clone()], &IdentifyOptions::default())
+    let e = identify(&rest, &obs, std::slice::from_ref(&u), &IdentifyOptions::default())
         .err()
         .unwrap()
         .to_string();
@@ -377,7 +377,7 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
     let mut obs2 = obs.clone();
     obs2.cracks[1].snap = Some(0.2);
     obs2.cracks[1].opening = Width::One(0.0);
-    assert!(identify(&rest, &obs2, &[u.clone()], &IdentifyOptions::default()).is_ok());
+    assert!(identify(&rest, &obs2, std::slice::from_ref(&u), &IdentifyOptions::default()).is_ok());
     let mut obs3 = obs.clone();
     obs3.cracks[1].opening = Width::PerPoint(vec![0.001, 0.0, 0.002]);
     let e = identify(&rest, &obs3, &[u], &IdentifyOptions::default())

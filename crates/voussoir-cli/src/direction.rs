@@ -14,7 +14,8 @@ pub enum Direction {
 }
 
 /// The help of every `--direction`.
-pub const SYNTAX: &str = "+x, -x, +y, -y, an angle in degrees from +x towards +y, or a vector DX,DY";
+pub const SYNTAX: &str =
+    "+x, -x, +y, -y, an angle in degrees from +x towards +y, or a vector DX,DY";
 
 /// clap's value parser of `--direction`.
 pub fn parse(s: &str) -> Result<Direction, String> {
@@ -74,10 +75,27 @@ impl Direction {
                         self.text()
                     ));
                 }
-                if v[0] == 0.0 && v[1] == 0.0 {
-                    return Err(format!("{flag} {}: no horizontal component", self.text()));
-                }
-                Ok(v[1].atan2(v[0]).to_degrees())
+                Ok(match (v[0], v[1]) {
+                    (0.0, 0.0) => {
+                        return Err(format!("{flag} {}: no horizontal component", self.text()))
+                    }
+                    // Along an axis: that axis's angle exactly (as `+y` is 90°).
+                    (x, 0.0) => {
+                        if x > 0.0 {
+                            0.0
+                        } else {
+                            180.0
+                        }
+                    }
+                    (0.0, y) => {
+                        if y > 0.0 {
+                            90.0
+                        } else {
+                            270.0
+                        }
+                    }
+                    (x, y) => y.atan2(x).to_degrees(),
+                })
             }
         }
     }
@@ -147,10 +165,22 @@ mod tests {
 
     #[test]
     fn one_syntax() {
-        assert_eq!(parse("+x").unwrap().planar("--direction").unwrap(), [1.0, 0.0]);
-        assert_eq!(parse("-y").unwrap().planar("--direction").unwrap(), [0.0, -1.0]);
-        assert_eq!(parse("90").unwrap().planar("--direction").unwrap(), [0.0, 1.0]);
-        assert_eq!(parse("-0.5,2").unwrap().planar("--direction").unwrap(), [-0.5, 2.0]);
+        assert_eq!(
+            parse("+x").unwrap().planar("--direction").unwrap(),
+            [1.0, 0.0]
+        );
+        assert_eq!(
+            parse("-y").unwrap().planar("--direction").unwrap(),
+            [0.0, -1.0]
+        );
+        assert_eq!(
+            parse("90").unwrap().planar("--direction").unwrap(),
+            [0.0, 1.0]
+        );
+        assert_eq!(
+            parse("-0.5,2").unwrap().planar("--direction").unwrap(),
+            [-0.5, 2.0]
+        );
         assert_eq!(parse("-x").unwrap().azimuth("--direction").unwrap(), 180.0);
         assert_eq!(parse("0,1").unwrap().azimuth("--direction").unwrap(), 90.0);
         assert_eq!(parse("-30").unwrap().azimuth("--direction").unwrap(), -30.0);

@@ -98,12 +98,9 @@ fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
     for (i, u) in r.unknowns.iter().enumerate() {
         let k = kind(i);
         let range = match (u.range_min, u.range_max) {
-            (Some(lo), Some(hi)) => format!(
-                "range [{}, {}] {}",
-                k.number(lo),
-                k.number(hi),
-                k.unit()
-            ),
+            (Some(lo), Some(hi)) => {
+                format!("range [{}, {}] {}", k.number(lo), k.number(hi), k.unit())
+            }
             _ if u.range_computed => "range unbounded or empty".to_string(),
             _ => "range not computed".to_string(),
         };

@@ -5,10 +5,10 @@ use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
 use clap::Args;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
-use voussoir_io::lengths::Length;
 use voussoir::analysis::incremental::{
     incremental_with, settled, Control, EventKind, IncrementalOptions, IncrementalResult,
 };
+use voussoir_io::lengths::Length;
 
 #[derive(Args)]
 pub struct IncrementalArgs {

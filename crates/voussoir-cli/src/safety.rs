@@ -68,7 +68,12 @@ pub struct Bracket {
     pub upper: Option<f64>,
     /// Tolerance of the bisection, relative to the radius. (`--relative-tolerance` is another
     /// name of this flag.)
-    #[arg(long, alias = "relative-tolerance", default_value_t = 1e-6, value_name = "REL")]
+    #[arg(
+        long,
+        alias = "relative-tolerance",
+        default_value_t = 1e-6,
+        value_name = "REL"
+    )]
     pub bisection_tolerance: f64,
     /// Print the result as JSON.
     #[arg(long)]

@@ -33,10 +33,10 @@ pub struct TiltArgs {
 pub fn run(a: TiltArgs) -> Result<(), Fail> {
     a.draw.check()?;
     let input = a.model.resolve()?;
-    let given = a.direction.clone().unwrap_or(Direction::Axis {
-        axis: 0,
-        sign: 1.0,
-    });
+    let given = a
+        .direction
+        .clone()
+        .unwrap_or(Direction::Axis { axis: 0, sign: 1.0 });
     let azimuth = normalise_azimuth(given.azimuth("--direction").map_err(Fail)?)?;
     let model = match input.load_any()? {
         AnyModel::Planar(m) => m,

@@ -518,7 +518,10 @@ fn issue28_item4d_mesh_live_on_obj() {
     );
     // Issue 32: `--dxf-live` and `--mesh-live` are both other names of `--live`, which applies
     // to drawings and meshes alike (was: each refused on the other format).
-    run(&d, &["import", "b.obj", "--dxf-live", "none", "-o", "x.json"]);
+    run(
+        &d,
+        &["import", "b.obj", "--dxf-live", "none", "-o", "x.json"],
+    );
     assert_eq!(read_json(&d.join("x.json")), n);
     let dxf = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../voussoir-io/tests/fixtures/lact3/arch_1.dxf");

@@ -9,6 +9,7 @@ use voussoir::analysis::limit::Crushing;
 use voussoir::model3d::AnyModel;
 use voussoir::Assembly;
 use voussoir_io::draw::capacity::LinearFitText;
+use voussoir_io::lengths::Length;
 
 #[derive(Args)]
 pub struct CapacityArgs {
@@ -164,7 +165,12 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         return s;
     }
     let unit = r.unit();
-    let (k, u) = (unit.factor(), unit.shown());
+    // Lengths by the README's rule (voussoir_io::lengths): settlements in cm, rotations in mrad.
+    let len = match unit {
+        SettlementUnit::Translation => Length::Motion,
+        SettlementUnit::Rotation => Length::Rotation,
+    };
+    let u = len.unit();
     let moving: Vec<String> = r
         .direction
         .iter()
@@ -176,10 +182,10 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
     };
     let _ = writeln!(
         s,
-        "{what}: {}; largest {} {:.4} {u}",
+        "{what}: {}; largest {} {}",
         moving.join(", "),
         unit.noun(),
-        r.max_settlement * k
+        len.show(r.max_settlement)
     );
     // One entry per hinged joint (a 3D hinge line has several points on one joint).
     let mut joints: Vec<usize> = r.settlement_hinges.iter().map(|h| h.joint).collect();
@@ -196,14 +202,7 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         );
     }
     if let Some(z) = r.zero_capacity_settlement {
-        let _ = writeln!(
-            s,
-            "zero-capacity {}: {:.5} {} ({:.3} {u})",
-            unit.noun(),
-            z,
-            unit.si(),
-            z * k
-        );
+        let _ = writeln!(s, "zero-capacity {}: {}", unit.noun(), len.show(z));
     }
     match voussoir_io::draw::capacity::linear_fit_text(r) {
         Some(LinearFitText::Fits(t)) => {
@@ -242,7 +241,13 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         } else {
             format!("no (closes joints {:?})", p.closing_joints)
         };
-        let _ = writeln!(s, "{:>12.5}  {:>12}  {}", p.settlement * k, l, v);
+        let _ = writeln!(
+            s,
+            "{:>12}  {:>12}  {}",
+            len.number_to(p.settlement, 5),
+            l,
+            v
+        );
     }
     let _ = writeln!(
         s,

@@ -13,6 +13,7 @@ use voussoir::settlement_input::ModelSupports;
 use voussoir::structure::Body;
 use voussoir::Assembly;
 use voussoir::{BuildOptions, Model, Structure, Structure3d};
+use voussoir_io::lengths::Length;
 
 /// A failure: one line for the user.
 #[derive(Debug)]
@@ -578,18 +579,57 @@ fn hinges_section<S: Assembly>(st: &S, heading: &str, hinges: &[Hinge<S::D>]) ->
             .map(|h| {
                 let c: Vec<String> = <S::D as Spatial>::coords(&h.at)
                     .iter()
-                    .map(|x| format!("{x:.4}"))
+                    .map(|x| Length::Position.number(*x))
                     .collect();
                 format!("({})", c.join(", "))
             })
             .collect();
         let _ = writeln!(
             s,
-            "  joint {:>4} ({} | {}) at {}",
+            "  joint {:>4} ({} | {}) at {} m",
             joint,
             name(st, a),
             name(st, b),
             at.join(", ")
+        );
+    }
+    s
+}
+
+/// The prescribed motion of every moving support, one line each, in the summaries' units
+/// (README, "Units in the summaries"): translations in cm, rotations in mrad.
+pub fn motions_section<S: Assembly>(st: &S) -> String {
+    let mut s = String::new();
+    for k in 0..st.num_supports() {
+        let m = st.support_motion(k);
+        if m.iter().all(|x| *x == 0.0) {
+            continue;
+        }
+        // 2D: u, v, θ; 3D: u, v, w, θx, θy, θz.
+        let labels: &[&str] = if m.len() == 3 {
+            &["u", "v", "θ"]
+        } else {
+            &["u", "v", "w", "θx", "θy", "θz"]
+        };
+        let translations = if m.len() == 3 { 2 } else { 3 };
+        let parts: Vec<String> = m
+            .iter()
+            .zip(labels)
+            .enumerate()
+            .map(|(i, (x, l))| {
+                let len = if i < translations {
+                    Length::Motion
+                } else {
+                    Length::Rotation
+                };
+                format!("{l} {}", len.show(*x))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "motion   {:>8}: {}",
+            st.support_name(k),
+            parts.join("  ")
         );
     }
     s
@@ -634,6 +674,7 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
             "work of dead loads {p:.6e} kN·m, work on supports {d:.6e} kN·m, relative gap {g:.2e}"
         );
     }
+    s.push_str(&motions_section(st));
     s.push_str(&hinges_section(st, "hinges", &r.hinges));
     let open = r
         .joints

@@ -13,6 +13,7 @@ use voussoir::analysis::identify::{
 use voussoir::structure::Structure;
 use voussoir_io::draw::{self, ReportOptions};
 use voussoir_io::dxf::Units;
+use voussoir_io::lengths::Length;
 use voussoir_io::survey::{read_survey, SurveyOptions};
 
 #[derive(Args)]
@@ -227,42 +228,55 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
         );
         crate::outputs::stage(path, rep.to_html().as_bytes())?;
     }
-    a.out.emit(&r, || summary(&st, &r))
+    // Each unknown's kind of length: a rotation (every support's θ only) or a motion.
+    let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
+    a.out.emit(&r, || summary(&st, &r, &kinds))
 }
 
-fn summary(st: &Structure, r: &IdentifyResult) -> String {
+/// The summary; lengths by the README's rule ([`voussoir_io::lengths`]): support motions in
+/// cm, rotations in mrad, crack widths and misfits in mm, positions in m.
+fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
+    let kind = |i: usize| kinds.get(i).copied().unwrap_or(Length::Motion);
     let mut s = String::new();
     let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(s, "{}", r.message);
     let _ = writeln!(s, "unknowns:");
-    for u in &r.unknowns {
+    for (i, u) in r.unknowns.iter().enumerate() {
+        let k = kind(i);
         let range = match (u.range_min, u.range_max) {
-            (Some(lo), Some(hi)) => format!("range [{lo:.6e}, {hi:.6e}]"),
+            (Some(lo), Some(hi)) => {
+                format!("range [{}, {}] {}", k.number(lo), k.number(hi), k.unit())
+            }
             _ if u.range_computed => "range unbounded or empty".to_string(),
             _ => "range not computed".to_string(),
         };
         let _ = writeln!(
             s,
-            "  {:<20} = {:>14.6e}  {range}  — {}",
-            u.name, u.value, u.note
+            "  {:<20} = {:>14}  {range}  — {}",
+            u.name,
+            k.show(u.value),
+            u.note
         );
     }
     if !r.support_motions.is_empty() {
-        let _ = writeln!(s, "support motions (u, v in m, θ in rad):");
+        let _ = writeln!(s, "support motions:");
         for m in &r.support_motions {
             let _ = writeln!(
                 s,
-                "  {:>8}: u {:>12.6e}  v {:>12.6e}  θ {:>12.6e}",
-                m.support, m.u, m.v, m.theta
+                "  {:>8}: u {:>12}  v {:>12}  θ {:>14}",
+                m.support,
+                Length::Motion.show(m.u),
+                Length::Motion.show(m.v),
+                Length::Rotation.show(m.theta)
             );
         }
     }
     let _ = writeln!(
         s,
-        "observations ({} points), misfit {:.4} tolerances in total, largest {:.3e} m:",
+        "observations ({} points), misfit {:.4} tolerances in total, largest {}:",
         r.observations.len(),
         r.total_misfit,
-        r.max_misfit
+        Length::Opening.show(r.max_misfit)
     );
     for o in r
         .observations
@@ -271,15 +285,15 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
     {
         let _ = writeln!(
             s,
-            "  crack {:>3} joint {:>5} point {} at ({:.4}, {:.4}): observed {:.4e} m, predicted {:.4e} m, misfit {:+.2e} m{}",
+            "  crack {:>3} joint {:>5} point {} at ({}, {}) m: observed {}, predicted {}, misfit {}{}",
             o.crack,
             o.joint,
             o.point,
-            o.x,
-            o.y,
-            o.observed,
-            o.predicted,
-            o.misfit,
+            Length::Position.number(o.x),
+            Length::Position.number(o.y),
+            Length::Opening.show(o.observed),
+            Length::Opening.show(o.predicted),
+            Length::Opening.show_signed(o.misfit),
             if o.within_tolerance { "" } else { "  (outside tolerance)" }
         );
     }
@@ -289,8 +303,11 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
         .filter(|c| c.observed != "open")
         .map(|c| {
             format!(
-                "joint {} point {} ({}, {:.3e} m)",
-                c.joint, c.point, c.observed, c.opening
+                "joint {} point {} ({}, {})",
+                c.joint,
+                c.point,
+                c.observed,
+                Length::Opening.show(c.opening)
             )
         })
         .collect();
@@ -313,7 +330,8 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
                 .unknowns
                 .iter()
                 .zip(&m.values)
-                .map(|(u, v)| format!("{} = {:.6e}", u.name, v))
+                .enumerate()
+                .map(|(i, (u, v))| format!("{} = {}", u.name, kind(i).show(*v)))
                 .collect();
             let mut notes = Vec::new();
             if i == 0 {

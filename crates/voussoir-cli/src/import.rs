@@ -70,11 +70,20 @@ pub struct DxfArgs {
     /// The polygon with this handle (hex) is a support (repeatable).
     #[arg(long = "support-handle", value_name = "HANDLE")]
     pub support_handles: Vec<String>,
-    /// Vertices closer than this are merged, in m (default: 1e-6 of the drawing's size).
-    #[arg(long, value_name = "M")]
-    pub merge_tolerance: Option<f64>,
-    /// Live load added to the model (drawings carry none) [default: horizontal].
-    #[arg(long = "dxf-live", id = "dxf_live", value_enum, ignore_case = true)]
+    /// Vertices closer than this are welded (merged), in metres (absolute, after --units)
+    /// [default: DXF 1e-6 of the drawing's size; OBJ/PLY 1e-7 of the model's bounding-box
+    /// diagonal]. (`--merge-tolerance` is another name of this flag.)
+    #[arg(long, alias = "merge-tolerance", value_name = "M")]
+    pub weld: Option<f64>,
+    /// Live load added to the model (drawings and meshes carry none) [default: horizontal].
+    /// (`--dxf-live` and `--mesh-live` are other names of this flag.)
+    #[arg(
+        long = "live",
+        alias = "dxf-live",
+        alias = "mesh-live",
+        value_enum,
+        ignore_case = true
+    )]
     pub live: Option<DxfLiveArg>,
     #[command(flatten)]
     pub mesh: MeshArgs,
@@ -92,13 +101,6 @@ pub struct MeshArgs {
     /// Bodies whose name starts with PREFIX are supports.
     #[arg(long = "support-prefix", value_name = "PREFIX")]
     pub support_prefix: Option<String>,
-    /// Vertices of a body closer than this are welded, in metres (absolute, after --units)
-    /// [default: 1e-7 of the model's bounding-box diagonal].
-    #[arg(long, value_name = "M")]
-    pub weld: Option<f64>,
-    /// Live load added to the model (meshes carry none) [default: horizontal].
-    #[arg(long = "mesh-live", id = "mesh_live", value_enum, ignore_case = true)]
-    pub live: Option<DxfLiveArg>,
 }
 
 impl MeshArgs {
@@ -107,8 +109,6 @@ impl MeshArgs {
         [
             (!self.supports.is_empty(), "--supports"),
             (self.support_prefix.is_some(), "--support-prefix"),
-            (self.weld.is_some(), "--weld"),
-            (self.live.is_some(), "--mesh-live"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -140,7 +140,7 @@ impl DxfArgs {
             width: self.dxf_width.unwrap_or(d.width),
             support_layers: self.support_layers.clone(),
             support_handles: self.support_handles.clone(),
-            merge_tolerance: self.merge_tolerance,
+            merge_tolerance: self.weld,
             live: match self.live.unwrap_or_default() {
                 DxfLiveArg::None => ImportLive::None,
                 DxfLiveArg::Horizontal => ImportLive::Horizontal,
@@ -159,8 +159,8 @@ impl DxfArgs {
             unit_weight: self.unit_weight.unwrap_or(d.unit_weight),
             supports: self.mesh.supports.clone(),
             support_prefix: self.mesh.support_prefix.clone(),
-            weld: self.mesh.weld,
-            live: match self.mesh.live.unwrap_or_default() {
+            weld: self.weld,
+            live: match self.live.unwrap_or_default() {
                 DxfLiveArg::None => ImportLive::None,
                 DxfLiveArg::Horizontal => ImportLive::Horizontal,
             },
@@ -172,6 +172,8 @@ impl DxfArgs {
         [
             (self.units.is_some(), "--units"),
             (self.unit_weight.is_some(), "--unit-weight"),
+            (self.weld.is_some(), "--weld"),
+            (self.live.is_some(), "--live"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -211,8 +213,6 @@ impl DxfArgs {
             (self.dxf_width.is_some(), "--dxf-width"),
             (!self.support_layers.is_empty(), "--support-layer"),
             (!self.support_handles.is_empty(), "--support-handle"),
-            (self.merge_tolerance.is_some(), "--merge-tolerance"),
-            (self.live.is_some(), "--dxf-live"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -224,8 +224,7 @@ impl DxfArgs {
         for (flag, v) in [
             ("--unit-weight", self.unit_weight),
             ("--dxf-width", self.dxf_width),
-            ("--merge-tolerance", self.merge_tolerance),
-            ("--weld", self.mesh.weld),
+            ("--weld", self.weld),
         ] {
             if let Some(x) = v {
                 if !(x.is_finite() && x > 0.0) {

@@ -6,6 +6,8 @@ pub mod draw;
 pub mod draw3d;
 pub mod dxf;
 pub mod files;
+/// The summaries' units of length (README, "Units in the summaries"), shared with the library.
+pub use voussoir::lengths;
 pub mod mesh;
 pub mod motion;
 pub mod report3d;

@@ -42,6 +42,7 @@ pub mod generate3d;
 pub mod generate_facade;
 pub mod geometry;
 pub mod geometry3d;
+pub mod lengths;
 pub mod lp;
 pub mod model;
 pub mod model3d;

@@ -30,12 +30,13 @@ pub fn linear_fit_text<D: Spatial>(r: &CapacityResult<D>) -> Option<LinearFitTex
     let f = r.linear_fit.as_ref()?;
     let dev = human(100.0 * f.max_relative_deviation, 3);
     if f.max_relative_deviation <= LINEAR_FIT_TOLERANCE {
+        // s in the unit of the curve's axis and of the summaries (cm, or mrad for rotations).
         Some(LinearFitText::Fits(format!(
             "λ ≈ {} {} {}·s (s in {}); largest deviation {} % of λ(0)",
             fmt_fixed(f.intercept, 4),
             if f.slope < 0.0 { "−" } else { "+" },
-            human(f.slope.abs(), 4),
-            r.unit().si(),
+            human(f.slope.abs() / r.unit().factor(), 4),
+            r.unit().shown(),
             dev
         )))
     } else {

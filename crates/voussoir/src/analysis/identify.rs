@@ -1820,10 +1820,12 @@ fn result(
             match (lo, hi) {
                 (Some(l), Some(h)) => {
                     let w = h - l;
+                    let len = u.length();
+                    let range = format!("[{}, {}] {}", len.number(l), len.number(h), len.unit());
                     if w > value.abs() {
-                        (false, format!("not identifiable: the range [{l:.6e}, {h:.6e}] is wider than the value"))
+                        (false, format!("not identifiable: the range {range} is wider than the value"))
                     } else {
-                        (true, format!("identifiable within [{l:.6e}, {h:.6e}]"))
+                        (true, format!("identifiable within {range}"))
                     }
                 }
                 _ => (false, "not identifiable: unbounded over the motions that fit the observations (no observed crack depends on it)".to_string()),
@@ -1857,6 +1859,7 @@ fn result(
             joints(&best.shut)
         ));
     }
+    let maxm_text = crate::lengths::Length::Opening.show(maxm);
     let mut message = if !identified {
         let reason = if pattern_feasible {
             "the motions that make it a settlement mechanism leave, on their own forward settlement analysis, an observed crack closed or open another"
@@ -1869,7 +1872,7 @@ fn result(
     } else if best.within && best.opens_pattern() {
         let reproduced = certificate.as_ref().is_none_or(|c| c.reproduces);
         format!(
-            "identified: the settlement mechanism of these support motions opens the observed cracks (misfit {total:.3} tolerances in total, largest {maxm:.3e} m){}",
+            "identified: the settlement mechanism of these support motions opens the observed cracks (misfit {total:.3} tolerances in total, largest {maxm_text}){}",
             if reproduced {
                 ", and the forward settlement analysis reproduces it"
             } else {
@@ -1878,18 +1881,18 @@ fn result(
         )
     } else if best.within {
         format!(
-            "identified: the forward settlement analysis of these support motions reproduces every observed width within its tolerance (misfit {all:.3} tolerances over every observed point, largest {maxm:.3e} m){}",
+            "identified: the forward settlement analysis of these support motions reproduces every observed width within its tolerance (misfit {all:.3} tolerances over every observed point, largest {maxm_text}){}",
             why.replace("; it", "; it still")
         )
     } else {
         // The least misfit does not fit every width within its tolerance.
         let mut m = if best.opens_pattern() {
             format!(
-                "identified: the settlement mechanism of these support motions opens the observed crack pattern with the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m), though not every width within its tolerance"
+                "identified: the settlement mechanism of these support motions opens the observed crack pattern with the least misfit ({all:.3} tolerances over every observed point, largest {maxm_text}), though not every width within its tolerance"
             )
         } else {
             format!(
-                "identified: the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m) is this motion's{why}"
+                "identified: the least misfit ({all:.3} tolerances over every observed point, largest {maxm_text}) is this motion's{why}"
             )
             .replace("motion's; it", "motion's: it")
         };
@@ -1954,19 +1957,28 @@ fn result(
     })
 }
 
-/// `name = value` for each unknown (mm for translations, rad for rotations).
+impl Unknown {
+    /// The kind of length of this unknown's value, for the summaries ([`crate::lengths`]): a
+    /// rotation (only the supports' θ move with it), else a translation.
+    pub fn length(&self) -> crate::lengths::Length {
+        let rotation = self.unit.iter().all(|m| m[0] == 0.0 && m[1] == 0.0)
+            && self.unit.iter().any(|m| m[2] != 0.0);
+        if rotation {
+            crate::lengths::Length::Rotation
+        } else {
+            crate::lengths::Length::Motion
+        }
+    }
+}
+
+/// `name = value` for each unknown, in the summaries' units ([`crate::lengths`]): cm for
+/// translations, mrad for rotations.
 fn values_text(s: &Setup, a: &[f64]) -> String {
     let parts: Vec<String> = s
         .unknowns
         .iter()
         .zip(a)
-        .map(|(u, v)| {
-            if u.name.ends_with(".theta") {
-                format!("{} = {:.6e} rad", u.name, v + 0.0)
-            } else {
-                format!("{} = {:.6e} m", u.name, v + 0.0)
-            }
-        })
+        .map(|(u, v)| format!("{} = {}", u.name, u.length().show(*v)))
         .collect();
     format!("({})", parts.join(", "))
 }
@@ -2133,8 +2145,9 @@ fn reproduction(
         )
     } else if work_ok {
         format!(
-            "the forward analysis finds a mechanism with the same work of the dead loads (the predicted one is also optimal: the settlement mechanism is not unique), but {} (largest width difference {diff:.3e} m)",
-            if same { "different widths" } else { "different open points" }
+            "the forward analysis finds a mechanism with the same work of the dead loads (the predicted one is also optimal: the settlement mechanism is not unique), but {} (largest width difference {})",
+            if same { "different widths" } else { "different open points" },
+            crate::lengths::Length::Opening.show(diff)
         )
     } else {
         format!("the forward analysis finds more work of the dead loads ({:.6e} against {predicted_work:.6e} kN·m)", fw.unwrap_or(f64::NAN))

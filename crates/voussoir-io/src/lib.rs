@@ -9,6 +9,7 @@ pub mod files;
 pub mod mesh;
 pub mod motion;
 pub mod report3d;
+pub mod report_parts;
 pub mod result3d;
 pub mod vtk;
 

@@ -88,9 +88,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                                 Crushing::Linear => {
                                     voussoir_io::report_parts::CrushingModel::Linear(c.facets)
                                 }
-                                Crushing::Conic => {
-                                    voussoir_io::report_parts::CrushingModel::Conic
-                                }
+                                Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
                             }),
                             non_associative: a.crushing.non_associative,
                         },

@@ -98,7 +98,10 @@ fn check_cracks(html: &str, result: &Value, dim: usize, length_mm: f64) {
     assert_eq!(rows.len(), open.len(), "one row per cracked joint");
     let head = &html[html.find("<h3>Cracks").unwrap()..];
     let head = &head[..head.find("</thead>").unwrap()];
-    assert!(head.contains("<th>width (mm)</th><th>length (mm)</th>"), "{head}");
+    assert!(
+        head.contains("<th>width (mm)</th><th>length (mm)</th>"),
+        "{head}"
+    );
     for (row, (id, w)) in rows.iter().zip(&open) {
         assert_eq!(num(&row[0]) as u64, *id);
         let width = num(&row[3 + dim]);
@@ -183,7 +186,16 @@ fn issue32_item3_report_of_a_2d_settlement() {
     std::fs::write(&model, m.to_string()).unwrap();
     let (html_a, html_b, json) = (d.join("a.html"), d.join("b.html"), d.join("r.json"));
     let mv = "right=0.01,-0.02";
-    ok(&["settle", s(&model), "--move", mv, "--report", s(&html_a), "-o", s(&json)]);
+    ok(&[
+        "settle",
+        s(&model),
+        "--move",
+        mv,
+        "--report",
+        s(&html_a),
+        "-o",
+        s(&json),
+    ]);
     ok(&["settle", s(&model), "--move", mv, "--report", s(&html_b)]);
     let html = std::fs::read_to_string(&html_a).unwrap();
     assert_eq!(
@@ -204,7 +216,9 @@ fn issue32_item3_report_of_a_2d_settlement() {
     assert!(html.contains("<th>unit weight γ (kN/m³)</th><th>width (m)</th>"));
     assert!(html.contains("<tr><td>default</td><td>16</td><td>22.5</td><td>0.8</td>"));
     assert!(html.contains("<th>u (mm)</th><th>v (mm)</th><th>θ (°)</th>"));
-    assert!(html.contains("<tr><td>right</td><td>contact</td><td>10</td><td>-20</td><td>0</td></tr>"));
+    assert!(
+        html.contains("<tr><td>right</td><td>contact</td><td>10</td><td>-20</td><td>0</td></tr>")
+    );
     assert!(html.contains("<tr><td>left</td><td>contact</td><td>0</td><td>0</td><td>0</td></tr>"));
 
     // W by hand: 16 trapezoids between the intrados (2.86 m) and the extrados (3.19 m).
@@ -238,16 +252,24 @@ fn issue32_item3_report_of_a_2d_settlement() {
 #[test]
 fn issue32_item3_report_of_a_3d_settlement() {
     let d = tmpdir("3d");
-    let fixture = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../voussoir-io/tests/fixtures/vault3d.json");
+    let fixture =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../voussoir-io/tests/fixtures/vault3d.json");
     let model = d.join("vault.json");
-    let mut m: Value =
-        serde_json::from_str(&std::fs::read_to_string(&fixture).unwrap()).unwrap();
+    let mut m: Value = serde_json::from_str(&std::fs::read_to_string(&fixture).unwrap()).unwrap();
     m["materials"] = serde_json::json!({"default": {"unit_weight": 24.0}});
     std::fs::write(&model, m.to_string()).unwrap();
     let (html_a, html_b, json) = (d.join("a.html"), d.join("b.html"), d.join("r.json"));
     let mv = "right=0.02,0,-0.01";
-    ok(&["settle", s(&model), "--move", mv, "--report", s(&html_a), "-o", s(&json)]);
+    ok(&[
+        "settle",
+        s(&model),
+        "--move",
+        mv,
+        "--report",
+        s(&html_a),
+        "-o",
+        s(&json),
+    ]);
     ok(&["settle", s(&model), "--move", mv, "--report", s(&html_b)]);
     let html = std::fs::read_to_string(&html_a).unwrap();
     assert_eq!(

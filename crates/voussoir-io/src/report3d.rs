@@ -171,7 +171,7 @@ pub fn report3d_html_with(
         cr.text("No joint opens or slides.");
     } else {
         if r.units() == crate::draw::MotionUnits::Normalised {
-            cr.text("The mechanism of a limit analysis is a rate (normalised): its crack widths show where and how the joints open, not a size in millimetres.");
+            cr.text("The mechanism of a limit analysis is a rate (normalised): its crack widths compare the joints' openings with each other, they are not millimetres of a real displacement; the positions and lengths are geometric.");
         }
         let (head, rows) = rp::crack_table(&cracks, 3);
         cr.items.push(Item::table(

@@ -575,7 +575,8 @@ pub fn inputs(
     s.items.push(Item::KeyValues(kv));
 
     // Supports and their motions.
-    s.items.push(Item::Heading("Supports and prescribed motions".into()));
+    s.items
+        .push(Item::Heading("Supports and prescribed motions".into()));
     let (t_names, r_names): (&[&str], &[&str]) = if echo.dim == 2 {
         (&["u", "v"], &["θ"])
     } else {
@@ -606,13 +607,15 @@ pub fn inputs(
     }));
     if let Some(i) = inputs {
         if !i.settings.is_empty() {
-            s.items.push(Item::Heading("Settings of the analysis".into()));
+            s.items
+                .push(Item::Heading("Settings of the analysis".into()));
             s.items.push(Item::KeyValues(i.settings.clone()));
         }
     }
 
     // Solver, tolerances, certificate.
-    s.items.push(Item::Heading("Solver, tolerances and certificate".into()));
+    s.items
+        .push(Item::Heading("Solver, tolerances and certificate".into()));
     let mut kv = Vec::new();
     if let Some(si) = solver {
         kv.push((
@@ -707,7 +710,11 @@ fn opening_threshold(openings: impl Iterator<Item = f64>) -> f64 {
 /// between the joint's points (a relative rigid motion); the opened part is where it exceeds
 /// round-off.
 pub fn crack_rows_2d(joints: &[JointResult<Two>]) -> Vec<CrackRow> {
-    let thr = opening_threshold(joints.iter().flat_map(|j| j.points.iter().map(|p| p.opening)));
+    let thr = opening_threshold(
+        joints
+            .iter()
+            .flat_map(|j| j.points.iter().map(|p| p.opening)),
+    );
     joints
         .iter()
         .filter(|j| j.state != JointState::Closed)
@@ -716,7 +723,16 @@ pub fn crack_rows_2d(joints: &[JointResult<Two>]) -> Vec<CrackRow> {
             let mut pts: Vec<([f64; 2], f64)> = j
                 .points
                 .iter()
-                .map(|p| ([p.x, p.y], if p.opening.is_finite() { p.opening } else { 0.0 }))
+                .map(|p| {
+                    (
+                        [p.x, p.y],
+                        if p.opening.is_finite() {
+                            p.opening
+                        } else {
+                            0.0
+                        },
+                    )
+                })
                 .collect();
             pts.sort_by(|a, b| {
                 (a.0[0] * t[0] + a.0[1] * t[1]).total_cmp(&(b.0[0] * t[0] + b.0[1] * t[1]))
@@ -769,7 +785,11 @@ pub fn crack_rows_2d(joints: &[JointResult<Two>]) -> Vec<CrackRow> {
 /// line's direction).
 pub fn crack_rows_3d(joints: &[JointResult<Three>]) -> Vec<CrackRow> {
     use result3d::{cross, dot, norm, sub};
-    let thr = opening_threshold(joints.iter().flat_map(|j| j.points.iter().map(|p| p.opening)));
+    let thr = opening_threshold(
+        joints
+            .iter()
+            .flat_map(|j| j.points.iter().map(|p| p.opening)),
+    );
     joints
         .iter()
         .filter(|j| j.state != JointState::Closed)
@@ -927,7 +947,11 @@ pub fn crack_table(rows: &[CrackRow], dim: usize) -> (Vec<String>, Vec<Vec<Strin
         "between".to_string(),
         "state".to_string(),
     ];
-    head.extend(["x (m)", "y (m)", "z (m)"][..dim].iter().map(|s| s.to_string()));
+    head.extend(
+        ["x (m)", "y (m)", "z (m)"][..dim]
+            .iter()
+            .map(|s| s.to_string()),
+    );
     head.push("width (mm)".into());
     head.push("length (mm)".into());
     let body = rows
@@ -1070,7 +1094,8 @@ nav,.slider,.controls,.hint,.viewer,details,button,input,.screen-only{{display:n
 h1,h2,h3{{break-after:avoid;page-break-after:avoid}}
 h2{{margin-top:18px}}
 figure,table.kv,table.titleblock,.signoff,tr,ul.hyp li{{break-inside:avoid;page-break-inside:avoid}}
-.scroll{{overflow:visible;break-inside:avoid}}
+.scroll{{overflow:visible}}
+.scroll.keep{{break-inside:avoid;page-break-inside:avoid}}
 thead{{display:table-header-group}}
 figure svg{{max-height:235mm;width:auto;max-width:100%;margin:0 auto}}
 table.grid{{font-size:8.5pt}}

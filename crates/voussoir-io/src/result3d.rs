@@ -11,11 +11,10 @@ use crate::IoError;
 use voussoir::analysis::tilt::TiltResult;
 use voussoir::analysis::{CapacityResult, LimitResult, LimitStatus, SettlementResult};
 use voussoir::dim::Three;
-use voussoir::result::spatial::{SpatialMotion, SpatialShapes};
 use voussoir::lp::SolverInfo;
+use voussoir::result::spatial::{SpatialMotion, SpatialShapes};
 use voussoir::result::{
-    BlockMotion, BodyName, FrictionIteration, Hinge, JointResult, JointState, Reaction,
-    ThrustPoint,
+    BlockMotion, BodyName, FrictionIteration, Hinge, JointResult, JointState, Reaction, ThrustPoint,
 };
 
 /// A 3D result that can be written to VTK or drawn: a limit or a settlement result.
@@ -73,7 +72,11 @@ fn limit_certificate_rows(r: &LimitResult<Three>) -> Vec<(String, String)> {
                 "gap |λ − λ_kin|/|λ| = {}, admissibility {} — {}",
                 crate::draw::svg::human(c.gap, 3),
                 crate::draw::svg::human(c.admissibility, 3),
-                if c.ok { "certified (≤ 1e-6)" } else { "NOT certified" }
+                if c.ok {
+                    "certified (≤ 1e-6)"
+                } else {
+                    "NOT certified"
+                }
             ),
             None => "not computed for this outcome or joint law".to_string(),
         },
@@ -208,7 +211,11 @@ impl Result3d for SettlementResult<Three> {
                 Some(c) => format!(
                     "relative gap {} — {}",
                     crate::draw::svg::human(c.relative_gap, 3),
-                    if c.ok { "certified (≤ 1e-7)" } else { "NOT certified" }
+                    if c.ok {
+                        "certified (≤ 1e-7)"
+                    } else {
+                        "NOT certified"
+                    }
                 ),
                 None => "none (no mechanism)".to_string(),
             },

@@ -141,7 +141,10 @@ impl Report {
         if !self.subtitle.is_empty() {
             let _ = writeln!(o, "<p class=\"subtitle\">{}</p>", esc(&self.subtitle));
         }
-        o.push_str(&crate::report_parts::title_block(&self.source, &self.command));
+        o.push_str(&crate::report_parts::title_block(
+            &self.source,
+            &self.command,
+        ));
         if self.sections.len() > 2 {
             o.push_str("<nav><ul>");
             for (i, s) in self.sections.iter().enumerate() {
@@ -168,6 +171,9 @@ impl Report {
         o
     }
 }
+
+/// Tables of up to this many rows are not broken across printed pages.
+const KEEP_ROWS: usize = 30;
 
 /// One section as HTML (`id`: its anchor); figures are numbered on from `fig`.
 pub(crate) fn section_html(o: &mut String, s: &Section, id: &str, fig: &mut usize) {
@@ -212,7 +218,13 @@ pub(crate) fn section_html(o: &mut String, s: &Section, id: &str, fig: &mut usiz
                 } else if !caption.is_empty() {
                     let _ = writeln!(o, "<h3>{}</h3>", esc(caption));
                 }
-                o.push_str("<div class=\"scroll\"><table class=\"grid\">\n<thead><tr>");
+                // A table that fits on a printed page is kept whole; a longer one breaks
+                // between rows, its header repeated.
+                o.push_str(if rows.len() + foot.len() <= KEEP_ROWS {
+                    "<div class=\"scroll keep\"><table class=\"grid\">\n<thead><tr>"
+                } else {
+                    "<div class=\"scroll\"><table class=\"grid\">\n<thead><tr>"
+                });
                 for h in head {
                     let _ = write!(o, "<th>{}</th>", esc(h));
                 }
@@ -607,7 +619,11 @@ fn result_tables(
     }
 }
 
-fn hinges_and_joints(sec: &mut Section, r: (&[voussoir::result::Hinge], &[JointResult]), title: &str) {
+fn hinges_and_joints(
+    sec: &mut Section,
+    r: (&[voussoir::result::Hinge], &[JointResult]),
+    title: &str,
+) {
     let (hinges, joints) = r;
     if !hinges.is_empty() {
         sec.table(
@@ -619,7 +635,14 @@ fn hinges_and_joints(sec: &mut Section, r: (&[voussoir::result::Hinge], &[JointR
     sec.collapsed_table(
         "All joints",
         strings(&[
-            "joint", "body a", "body b", "state", "N (kN)", "V (kN)", "e (m)", "max opening (m)",
+            "joint",
+            "body a",
+            "body b",
+            "state",
+            "N (kN)",
+            "V (kN)",
+            "e (m)",
+            "max opening (m)",
         ]),
         joint_rows(joints),
     );
@@ -656,7 +679,11 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
                 "gap |λ − λ_kin|/|λ| = {}, admissibility {} — {}",
                 human(c.gap, 3),
                 human(c.admissibility, 3),
-                if c.ok { "certified (≤ 1e-6)" } else { "NOT certified" }
+                if c.ok {
+                    "certified (≤ 1e-6)"
+                } else {
+                    "NOT certified"
+                }
             ),
         )),
         None => cert.push((
@@ -701,7 +728,7 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
     kv.push(("simplex iterations".into(), r.iterations.to_string()));
     let res = rep.section("Results");
     res.key_values(kv);
-    res.text("The mechanism of a limit analysis is a rate (normalised to unit work of the live loads): its crack widths and lengths show where and how the joints open, not a size in millimetres of a real displacement.");
+    res.text("The mechanism of a limit analysis is a rate (normalised to unit work of the live loads): its crack widths compare the joints' openings with each other, they are not millimetres of a real displacement; the positions and lengths are geometric.");
     result_tables(res, &r.joints, &r.reactions, &echo, false);
     figures(
         rep.section("Figures"),
@@ -819,6 +846,10 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
         opts.scale,
         "Settlement mechanism",
     );
-    hinges_and_joints(rep.section("Hinges and joints"), (&r.hinges, &r.joints), "Hinges");
+    hinges_and_joints(
+        rep.section("Hinges and joints"),
+        (&r.hinges, &r.joints),
+        "Hinges",
+    );
     rep
 }

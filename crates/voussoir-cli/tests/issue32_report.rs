@@ -315,3 +315,75 @@ fn issue32_item3_report_of_a_3d_settlement() {
     assert!(f.contains(&format!("Coulomb friction: μ = 0.5 ({joints} joints)")));
     assert!(f.contains("Friction cone: the pyramid of 8 facets inscribed in the cone"));
 }
+
+#[test]
+fn issue32_item3_report_of_a_2d_limit_analysis() {
+    let d = tmpdir("limit");
+    let model = d.join("arch.json");
+    // Live load 1 kN/m² on the left half of the extrados (per unit horizontal projection).
+    ok(&[
+        "gen",
+        "arch",
+        "--voussoirs",
+        "16",
+        "--live",
+        "left",
+        "-o",
+        s(&model),
+    ]);
+    let mut m: Value = serde_json::from_str(&std::fs::read_to_string(&model).unwrap()).unwrap();
+    m["materials"] = serde_json::json!({"default": {"unit_weight": 20.0}});
+    std::fs::write(&model, m.to_string()).unwrap();
+    let (html, json) = (d.join("l.html"), d.join("l.json"));
+    ok(&[
+        "limit",
+        s(&model),
+        "--friction",
+        "0.7",
+        "--report",
+        s(&html),
+        "-o",
+        s(&json),
+    ]);
+    let html = std::fs::read_to_string(&html).unwrap();
+    let result: Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let lambda = result["load_multiplier"].as_f64().unwrap();
+    for h in [
+        "<h2>Hypotheses</h2>",
+        "<h2>Inputs</h2>",
+        "<h2>Results</h2>",
+        "<h2>Sign-off</h2>",
+        "Coulomb friction: μ = 0.7 (17 joints). Associative (normality)",
+        "<th>live loads (multiplied by λ)</th>",
+        "certified (≤ 1e-6)",
+    ] {
+        assert!(html.contains(h), "{h} missing");
+    }
+    // At collapse the supports carry the weight and λ times the live load: W by hand as above,
+    // the live load q × the half span's horizontal projection (the extrados radius) × 1 m.
+    let (ri, re, n): (f64, f64, f64) = (2.86, 2.86 + 0.33, 16.0);
+    let w = 20.0 * n * 0.5 * (std::f64::consts::PI / n).sin() * (re * re - ri * ri);
+    let live = 1.0 * re;
+    let (rows, foot) = table_after(&html, "<h3>Support reactions");
+    let sum: f64 = rows.iter().map(|r| num(&r[2])).sum();
+    let expected = w + lambda * live;
+    assert!(
+        (sum - expected).abs() <= 1e-6 * expected,
+        "Σ Fy {sum} kN, W + λ·L = {w} + {lambda}·{live} = {expected} kN"
+    );
+    assert!((num(&foot[0][2]) - expected).abs() <= 1e-6 * expected);
+    // The live load at collapse is echoed as λ × its resultant, in kN.
+    let at = html
+        .split("<th>live loads at collapse (× λ)</th><td>")
+        .nth(1)
+        .expect("live load at collapse");
+    let fy = at[at.find("resultant (0, ").unwrap() + 14..at.find(") kN").unwrap()].to_string();
+    assert!(
+        (num(&fy) + lambda * live).abs() <= 1e-5 * lambda * live,
+        "{fy} vs −λ·L = {}",
+        -lambda * live
+    );
+    // The crack table exists (a rate: widths relative), one row per joint not closed.
+    let (cracks, _) = table_after(&html, "<h3>Cracks");
+    assert_eq!(cracks.len(), open_joints(&result).len());
+}

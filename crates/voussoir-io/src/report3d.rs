@@ -74,7 +74,7 @@ pub fn report3d_html_with(
         .filter(|c| !c.is_empty())
         .unwrap_or_else(|| {
             match analysis {
-                Analysis::Limit(_) => "limit",
+                Analysis::Limit(_) | Analysis::Capacity => "limit",
                 Analysis::Settlement => "settle",
             }
             .to_string()

@@ -125,6 +125,8 @@ pub enum Analysis {
     Limit(Option<f64>),
     /// A settlement: dead loads only, prescribed support motions.
     Settlement,
+    /// Capacity after settlement: limit analyses on the geometry deformed by a settlement.
+    Capacity,
 }
 
 /// A support as echoed: its name, whether it is fixed, and its prescribed motion
@@ -410,6 +412,7 @@ pub fn hypotheses(
     }
     h.push(match analysis {
         Analysis::Limit(_) => "Small displacements: the collapse mechanism is a rate, found on the undeformed geometry; the dead loads are constant and the live loads grow with the load multiplier λ until collapse.".into(),
+        Analysis::Capacity => "The settlement deforms the geometry: its mechanism (found as by a settlement analysis, under the dead loads alone) is applied as a finite rigid motion of every block, opening its cracks; at each step a limit analysis of the deformed geometry gives λ (standard limit analysis, valid while the collapse mechanism does not close settlement cracks: the report marks the steps where it would).".into(),
         Analysis::Settlement => "Small displacements: the mechanism that accommodates the prescribed support motions is found on the undeformed geometry, under the dead loads alone (no live load, no λ); it is the one of least work of the dead loads (minimum potential energy).".into(),
     });
     s.items.push(crate::draw::report::Item::List(h));
@@ -443,15 +446,29 @@ pub fn inputs(
             kv.push(("analysis".into(), i.command.clone()));
         }
     }
+    // A result without joint results (capacity) counts its joints from the joint laws.
+    let joints = match (echo.joints, inputs) {
+        (0, Some(i)) => i.laws.joints,
+        (n, _) => n,
+    };
     kv.push((
         "size".into(),
-        format!(
-            "{}, {}, {} ({}D)",
-            plural(echo.blocks, "block", "blocks"),
-            plural(echo.joints, "joint", "joints"),
-            plural(echo.supports.len(), "support", "supports"),
-            echo.dim
-        ),
+        if joints > 0 {
+            format!(
+                "{}, {}, {} ({}D)",
+                plural(echo.blocks, "block", "blocks"),
+                plural(joints, "joint", "joints"),
+                plural(echo.supports.len(), "support", "supports"),
+                echo.dim
+            )
+        } else {
+            format!(
+                "{}, {} ({}D)",
+                plural(echo.blocks, "block", "blocks"),
+                plural(echo.supports.len(), "support", "supports"),
+                echo.dim
+            )
+        },
     ));
     if echo.lo.iter().all(|x| x.is_finite()) {
         let sizes: Vec<String> = (0..echo.dim)
@@ -553,6 +570,7 @@ pub fn inputs(
         )
     };
     match analysis {
+        Analysis::Capacity => kv.push(("live loads (multiplied by λ)".into(), live)),
         Analysis::Limit(l) => {
             kv.push(("live loads (multiplied by λ)".into(), live));
             if let (Some(l), true) = (l, echo.live.0 > 0) {
@@ -656,7 +674,7 @@ fn fixed_tolerances(analysis: Analysis) -> Vec<(String, String)> {
                 sci(WORK_FLOOR)
             ),
         )),
-        Analysis::Limit(_) => kv.push((
+        Analysis::Limit(_) | Analysis::Capacity => kv.push((
             "certified".into(),
             format!(
                 "|λ − λ_kin| ≤ {} max(|λ|, 1e-3 λ_unit), mechanism admissible to 1e-6; a negative λ within {} λ_unit is 0",
@@ -926,7 +944,7 @@ fn solve3(a: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
     };
     let d = det(a);
     let scale = a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    if !(d.abs() > 1e-12 * scale.powi(3)) {
+    if d.is_nan() || d.abs() <= 1e-12 * scale.powi(3) {
         return None;
     }
     let mut x = [0.0; 3];
@@ -972,11 +990,14 @@ pub fn crack_table(rows: &[CrackRow], dim: usize) -> (Vec<String>, Vec<Vec<Strin
     (head, body)
 }
 
+/// A support's reaction: its name, force (kN), moment (kN·m) and the point it is about (m).
+pub type ReactionRow = (String, Vec<f64>, Vec<f64>, Vec<f64>);
+
 /// The reactions table: force (kN) and moment (kN·m) of each support on the structure, about
 /// the point given (m), and a last row with the total force. `rows`: (support, force, moment,
 /// about).
 pub fn reaction_table(
-    rows: &[(String, Vec<f64>, Vec<f64>, Vec<f64>)],
+    rows: &[ReactionRow],
     dim: usize,
 ) -> (Vec<String>, Vec<Vec<String>>, Vec<Vec<String>>) {
     let (f, m, c): (&[&str], &[&str], &[&str]) = if dim == 2 {

@@ -78,9 +78,32 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     match input.load_any()? {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
+            let facts = crate::report_inputs::facts_2d(&model);
             let st = input.structure_of(model, Some(&motion))?;
             let r = capacity(&st, &opts)?;
-            a.draw.emit_capacity(&r, &input.path)?;
+            a.draw
+                .clone()
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "capacity",
+                        facts,
+                        &st,
+                        &input,
+                        &opts.solver,
+                        crate::report_inputs::Laws {
+                            cone: None,
+                            crushing: Some(match crushing {
+                                Crushing::Linear => {
+                                    voussoir_io::report_parts::CrushingModel::Linear(facets)
+                                }
+                                Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
+                            }),
+                            non_associative: a.crushing.non_associative,
+                        },
+                        vec![("steps".into(), a.steps.to_string())],
+                    )
+                })
+                .emit_capacity(&r, &input.path)?;
             a.out.emit(&r, || summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
@@ -97,6 +120,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                         .into(),
                 ));
             }
+            let facts = crate::report_inputs::facts_3d(&model);
             let st = input.structure3d_any_cone(model, Some(&motion))?;
             // In 3D the conic joint law of a limit analysis is the exact Coulomb cone (as
             // `limit --friction-cone exact`): every limit analysis of the curve is a
@@ -116,7 +140,24 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                 ..opts
             };
             let r = capacity(&st, &opts)?;
-            a.draw.emit_capacity(&r, &input.path)?;
+            a.draw
+                .clone()
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "capacity",
+                        facts,
+                        &st,
+                        &input,
+                        &opts.solver,
+                        crate::report_inputs::Laws {
+                            cone: Some(crate::settle::friction_cone(&input, &st)),
+                            crushing: None,
+                            non_associative: a.crushing.non_associative,
+                        },
+                        vec![("steps".into(), a.steps.to_string())],
+                    )
+                })
+                .emit_capacity(&r, &input.path)?;
             a.out.emit(&r, || {
                 let mut s = summary(&st, &r);
                 if exact {

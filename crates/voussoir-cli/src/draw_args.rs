@@ -34,6 +34,10 @@ pub struct DrawArgs {
     /// (limit, settle, tilt); the curve figures of capacity and incremental have none.
     #[arg(skip)]
     pub forces: bool,
+    /// What the report states beyond the result (materials, joint laws, tolerances): set by
+    /// the command through [`DrawArgs::with_inputs`].
+    #[arg(skip)]
+    pub inputs: Option<voussoir_io::report_parts::ReportInputs>,
     /// Title of the drawing (default: by analysis).
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
@@ -77,6 +81,15 @@ impl DrawArgs {
         }
     }
 
+    /// These flags with the report's inputs, computed only when a report is asked for.
+    pub fn with_inputs(
+        self,
+        f: impl FnOnce() -> voussoir_io::report_parts::ReportInputs,
+    ) -> DrawArgs {
+        let inputs = self.report.is_some().then(f);
+        DrawArgs { inputs, ..self }
+    }
+
     /// Flags that draw 3D results only, refused on a 2D one (before any work).
     pub fn check_2d(&self) -> Result<(), Fail> {
         if self.vtk.is_some() || self.view.is_some() {
@@ -117,8 +130,12 @@ impl DrawArgs {
         }
         if let Some(path) = &self.report {
             let title = self.title.clone().unwrap_or_else(|| r.title());
-            let html =
-                voussoir_io::report3d::report3d_html(r, &title, &source.display().to_string())?;
+            let html = voussoir_io::report3d::report3d_html_with(
+                r,
+                &title,
+                &source.display().to_string(),
+                self.inputs.as_ref(),
+            )?;
             crate::outputs::stage(path, html.as_bytes())?;
         }
         if self.svg.is_some() || self.png.is_some() {
@@ -183,6 +200,7 @@ impl DrawArgs {
             title: self.title.clone(),
             source: source.display().to_string(),
             scale: self.scale,
+            inputs: self.inputs.clone(),
         }
     }
 

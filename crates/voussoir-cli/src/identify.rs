@@ -224,6 +224,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
                 title: a.draw.title.clone(),
                 source: a.model.model.display().to_string(),
                 scale: a.draw.scale,
+                inputs: None,
             },
         );
         crate::outputs::stage(path, rep.to_html().as_bytes())?;

@@ -13,6 +13,7 @@ mod incremental;
 mod limit;
 mod outputs;
 mod plot;
+mod report_inputs;
 mod safety;
 mod settle;
 mod sweep;

@@ -319,6 +319,7 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
             title: a.title.clone(),
             source: input.display().to_string(),
             scale: a.scale,
+            inputs: None,
         };
         let html = draw::report_saved(&saved, &opts)?;
         crate::outputs::stage(&a.output, html.as_bytes())?;

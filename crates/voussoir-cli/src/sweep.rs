@@ -253,6 +253,7 @@ fn write_distribution(a: &SweepArgs, records: &[SweepRecord]) -> Result<(), Fail
                 title: None,
                 source: a.model.model.display().to_string(),
                 scale: None,
+                inputs: None,
             },
         );
         crate::outputs::stage(p, rep.to_html().as_bytes())?;

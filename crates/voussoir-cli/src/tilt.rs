@@ -41,6 +41,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
     let model = match input.load_any()? {
         AnyModel::Planar(m) => m,
         AnyModel::Spatial(m) => {
+            let facts = crate::report_inputs::facts_3d(&m);
             let st = input.structure3d_any_cone(m, None)?;
             // In 3D every direction is an azimuth: +x is 0°, -x 180°, +y 90°.
             let az = azimuth;
@@ -53,7 +54,23 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
             } else {
                 voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver3d)?
             };
-            a.draw.with(&a.forces).emit_3d(&r, &input.path)?;
+            a.draw
+                .with(&a.forces)
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "tilt",
+                        facts,
+                        &st,
+                        &input,
+                        &input.solver3d,
+                        crate::report_inputs::Laws {
+                            cone: Some(crate::settle::friction_cone(&input, &st)),
+                            ..Default::default()
+                        },
+                        vec![("tilt towards".into(), towards.clone())],
+                    )
+                })
+                .emit_3d(&r, &input.path)?;
             return a.out.emit(&r, || {
                 let mut s = String::new();
                 let _ = writeln!(s, "{}", crate::common::structure_line(&st));
@@ -85,9 +102,26 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
         )));
     };
     a.draw.check_2d()?;
+    let facts = crate::report_inputs::facts_2d(&model);
     let st = input.structure_of(model, None)?;
     let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver)?;
-    a.draw.with(&a.forces).emit_tilt(&r, &input.path)?;
+    a.draw
+        .with(&a.forces)
+        .with_inputs(|| {
+            crate::report_inputs::report_inputs(
+                "tilt",
+                facts,
+                &st,
+                &input,
+                &input.solver,
+                crate::report_inputs::Laws::default(),
+                vec![(
+                    "tilt towards".into(),
+                    if dir > 0.0 { "+x" } else { "−x" }.to_string(),
+                )],
+            )
+        })
+        .emit_tilt(&r, &input.path)?;
     a.out.emit(&r, || {
         let mut s = String::new();
         let _ = writeln!(s, "blocks {}, joints {}", st.blocks.len(), st.joints.len());

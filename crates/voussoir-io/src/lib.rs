@@ -11,6 +11,7 @@ pub use voussoir::lengths;
 pub mod mesh;
 pub mod motion;
 pub mod report3d;
+pub mod report_parts;
 pub mod result3d;
 pub mod survey;
 pub mod vtk;

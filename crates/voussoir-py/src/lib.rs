@@ -586,6 +586,7 @@ fn report_html(
                 title,
                 source,
                 scale,
+                inputs: None,
             },
         )?)
     })

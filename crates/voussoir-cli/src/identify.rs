@@ -43,6 +43,7 @@ pub struct IdentifyArgs {
 
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.draw.check()?;
+    a.draw.check_2d()?;
     let input = a.model.resolve()?;
     let motion = a.settle.resolve()?;
     let st = input.structure(Some(&motion))?;

@@ -39,6 +39,15 @@ pub trait Result3d {
             .map(|l| (String::new(), l))
             .collect()
     }
+    /// The collapse load multiplier λ that the drawn live loads are multiplied by (a limit
+    /// analysis that found a mechanism); `None`: the live loads are drawn unfactored.
+    fn load_multiplier(&self) -> Option<f64> {
+        None
+    }
+    /// A tilting-table result: the critical tilt angle α and the azimuth of the tilt, degrees.
+    fn tilt(&self) -> Option<(f64, f64)> {
+        None
+    }
 }
 
 /// A number for a report table: up to 6 significant digits, or "—" when absent or not finite.
@@ -134,6 +143,10 @@ impl Result3d for LimitResult<Three> {
         ));
         k.push(("cracked joints".to_string(), crack_summary(&self.joints)));
         k
+    }
+    fn load_multiplier(&self) -> Option<f64> {
+        self.load_multiplier
+            .filter(|l| l.is_finite() && self.status == LimitStatus::Collapse)
     }
 }
 
@@ -278,6 +291,14 @@ impl Result3d for TiltResult<Three> {
         ));
         k.extend(self.limit.key_numbers());
         k
+    }
+    fn load_multiplier(&self) -> Option<f64> {
+        self.limit.load_multiplier()
+    }
+    fn tilt(&self) -> Option<(f64, f64)> {
+        self.tilt_angle
+            .filter(|a| a.is_finite())
+            .map(|a| (a, self.azimuth.unwrap_or(0.0)))
     }
 }
 

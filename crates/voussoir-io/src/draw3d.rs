@@ -1448,7 +1448,7 @@ fn tilt_of(r: &(impl Result3d + ?Sized)) -> Option<(f64, String)> {
 fn describe_view(view: &View, asked: &View, has_motion: bool) -> String {
     let d = view.describe();
     if *asked == View::Auto && has_motion {
-        format!("{d} (turned to show the largest motions)")
+        format!("{d} (chosen to show the largest motions)")
     } else {
         d
     }

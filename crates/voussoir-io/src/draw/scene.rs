@@ -841,7 +841,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         undeformed: has_motion && opts.undeformed,
         hinges: opts.hinges && !scene.hinges.is_empty(),
         cracks: opts.cracks && scene.joints.iter().any(|j| j.state != JointState::Closed),
-        thrust: opts.thrust_line && !scene.thrust_line.is_empty(),
+        thrust: (opts.thrust_line && !scene.thrust_line.is_empty()).then_some("centre of pressure"),
         live: loads.iter().any(|l| l.3).then_some(live_max),
         dead: loads.iter().any(|l| !l.3).then_some(dead_max),
         forces: (!forces.is_empty()).then_some(force_max),
@@ -1106,7 +1106,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     }
 
     // Thrust line: centres of pressure, joined along chains of bodies.
-    let mut drew_thrust = false;
+    let mut drew_thrust = None;
     if opts.thrust_line && !scene.thrust_line.is_empty() {
         let chains = thrust_chains(scene, &b, &joint_by_id);
         // Dots on a thrust line (up to 400 a chain) unless --pressure-points off; dots on their
@@ -1151,7 +1151,11 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             }
         }
         if !lines.is_empty() || !dots.is_empty() {
-            drew_thrust = true;
+            drew_thrust = Some(if lines.is_empty() {
+                "centre of pressure"
+            } else {
+                "thrust line"
+            });
             let _ = writeln!(
                 o,
                 "<g class=\"thrust-line\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"{}\" stroke-linejoin=\"round\">\n{lines}</g>",
@@ -1326,7 +1330,8 @@ struct LegendItems {
     undeformed: bool,
     hinges: bool,
     cracks: bool,
-    thrust: bool,
+    /// The thrust line (a line through dots) or centres of pressure (dots): its label.
+    thrust: Option<&'static str>,
     /// Largest arrow of each kind (kN), when drawn.
     live: Option<f64>,
     dead: Option<f64>,
@@ -1362,11 +1367,13 @@ fn legend_entries(
             "crack (opening)",
         ));
     }
-    if it.thrust {
-        e.push(Entry::symbol(
-            format!("<path d=\"M0 3L11 -3L22 2\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"2\"/><circle cx=\"11\" cy=\"-3\" r=\"2\" fill=\"{THRUST}\"/>"),
-            "thrust line",
-        ));
+    if let Some(label) = it.thrust {
+        let symbol = if label == "thrust line" {
+            format!("<path d=\"M0 3L11 -3L22 2\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"2\"/><circle cx=\"11\" cy=\"-3\" r=\"2\" fill=\"{THRUST}\"/>")
+        } else {
+            format!("<circle cx=\"11\" cy=\"0\" r=\"3\" fill=\"{THRUST}\"/>")
+        };
+        e.push(Entry::symbol(symbol, label));
     }
     let arrow_sym = |c: &str| {
         format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")

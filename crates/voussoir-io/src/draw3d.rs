@@ -954,7 +954,7 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     };
     let legend_h = if opts.legend {
         let l = legend::layout(&labels.entries(), margin, width - margin);
-        legend::height(l.rows)
+        legend::height(l.height)
     } else {
         8.0
     };

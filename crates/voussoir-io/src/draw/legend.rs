@@ -10,8 +10,10 @@ use std::fmt::Write as _;
 
 /// Font size of legend texts.
 pub(crate) const FS: f64 = 12.5;
-/// Distance between rows (and between the lines of a wrapped label).
+/// Distance between rows.
 pub(crate) const ROW: f64 = 22.0;
+/// Distance between the lines of a wrapped label.
+const LINE: f64 = 17.0;
 /// Space after an entry.
 const GAP: f64 = 24.0;
 /// Width of a symbol and the space before its label.
@@ -123,8 +125,8 @@ pub(crate) fn label_width(s: &str, fs: f64) -> f64 {
 /// Where each entry goes: `(x, row offset from the first row, lines of its label)`.
 pub(crate) struct Layout {
     pub places: Vec<(f64, f64, Vec<String>)>,
-    /// Rows used (wrapped lines count as rows).
-    pub rows: usize,
+    /// Height of the rows (a wrapped label's lines are [`LINE`] apart).
+    pub height: f64,
 }
 
 /// Entries flowed between `left` and `right`.
@@ -132,14 +134,12 @@ pub(crate) fn layout(entries: &[Entry], left: f64, right: f64) -> Layout {
     let avail = (right - left).max(40.0);
     let (mut x, mut y) = (left, 0.0);
     let mut row_lines = 1usize;
-    let mut rows = 0usize;
     let mut places = Vec::with_capacity(entries.len());
     for e in entries {
         let lead = e.lead_width();
         let w = lead + label_width(&e.label, FS);
         if x > left && (e.break_before || x + w > right) {
-            y += ROW * row_lines as f64;
-            rows += row_lines;
+            y += ROW + LINE * (row_lines - 1) as f64;
             x = left;
             row_lines = 1;
         }
@@ -156,15 +156,16 @@ pub(crate) fn layout(entries: &[Entry], left: f64, right: f64) -> Layout {
         places.push((x, y, lines));
         x += lead + widest + GAP;
     }
-    if !entries.is_empty() {
-        rows += row_lines;
+    Layout {
+        places,
+        height: y + ROW + LINE * (row_lines - 1) as f64,
     }
-    Layout { places, rows }
 }
 
-/// Height of a legend of `rows` rows (its rule, rows and the space under them).
-pub(crate) fn height(rows: usize) -> f64 {
-    14.0 + ROW * rows.max(1) as f64
+/// Height of a legend whose rows are `rows_height` high (its rule, rows and the space under
+/// them).
+pub(crate) fn height(rows_height: f64) -> f64 {
+    14.0 + rows_height.max(ROW)
 }
 
 /// Write the legend: a rule at `top` from `left` to `right`, then the entries.
@@ -213,7 +214,7 @@ pub(crate) fn write(o: &mut String, entries: &[Entry], left: f64, right: f64, to
                 o,
                 "<text x=\"{}\" y=\"{}\" font-size=\"{FS}\" fill=\"{}\">{content}</text>",
                 num(tx),
-                num(y + 4.5 + ROW * i as f64),
+                num(y + 4.5 + LINE * i as f64),
                 e.colour
             );
         }

@@ -849,7 +849,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     };
     let legend_h = if opts.legend {
         let e = legend_entries(scene, &may, &opts.id, k, b.size, has_motion, 0.0, false);
-        super::legend::height(super::legend::layout(&e, margin, width - margin).rows)
+        super::legend::height(super::legend::layout(&e, margin, width - margin).height)
     } else {
         8.0
     };

@@ -90,7 +90,8 @@ pub fn parse_view(s: &str) -> Result<ViewArg, String> {
         "elevation" => return Ok(ViewArg::Elevation),
         _ => {}
     }
-    let expected = "expected axonometric, plan, elevation or AZ[,EL]: azimuth and elevation in degrees";
+    let expected =
+        "expected axonometric, plan, elevation or AZ[,EL]: azimuth and elevation in degrees";
     let parts: Vec<&str> = t.split(',').map(str::trim).collect();
     if parts.len() > 2 {
         return Err(format!("{expected} (two numbers at most)"));
@@ -164,7 +165,9 @@ impl DrawArgs {
     /// Flags that draw 3D results only, refused on a 2D one (before any work).
     pub fn check_2d(&self) -> Result<(), Fail> {
         if self.view.is_some() {
-            return Err(Fail("--view applies to 3D models (this model is 2D)".into()));
+            return Err(Fail(
+                "--view applies to 3D models (this model is 2D)".into(),
+            ));
         }
         if self.vtk.is_some() {
             return Err(Fail("--vtk applies to 3D models (this model is 2D)".into()));
@@ -211,7 +214,9 @@ impl DrawArgs {
             use voussoir_io::draw3d::{draw3d, Draw3dOptions};
             let opts = Draw3dOptions {
                 view: self.view.map_or(Default::default(), ViewArg::view),
-                pressure_points: self.pressure_points.map_or(Default::default(), PressureArg::points),
+                pressure_points: self
+                    .pressure_points
+                    .map_or(Default::default(), PressureArg::points),
                 scale: self.scale,
                 title: self.title.clone(),
                 ..Draw3dOptions::default()
@@ -274,7 +279,9 @@ impl DrawArgs {
         Ok(DrawOptions {
             scale: self.scale,
             forces: self.forces,
-            pressure_points: self.pressure_points.map_or(Default::default(), PressureArg::points),
+            pressure_points: self
+                .pressure_points
+                .map_or(Default::default(), PressureArg::points),
             ..DrawOptions::default()
         })
     }

@@ -372,7 +372,9 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
                 forces: a.forces,
                 deformed: !a.undeformed,
                 dead_loads: a.dead_loads,
-                pressure_points: a.pressure_points.map_or(Default::default(), PressureArg::points),
+                pressure_points: a
+                    .pressure_points
+                    .map_or(Default::default(), PressureArg::points),
                 width: a.width.unwrap_or(1000.0),
                 ..DrawOptions::default()
             };

@@ -56,22 +56,113 @@ fn json(path: &Path) -> serde_json::Value {
 
 /// Advance widths of DejaVu Sans (units per em: 2048), from the font's `hmtx` table.
 const ADV: &[(char, u16)] = &[
-    (' ', 651), ('!', 821), ('"', 942), ('#', 1716), ('$', 1303), ('%', 1946), ('&', 1597),
-    ('\'', 563), ('(', 799), (')', 799), ('*', 1024), ('+', 1716), (',', 651), ('-', 739),
-    ('.', 651), ('/', 690), ('0', 1303), ('1', 1303), ('2', 1303), ('3', 1303), ('4', 1303),
-    ('5', 1303), ('6', 1303), ('7', 1303), ('8', 1303), ('9', 1303), (':', 690), (';', 690),
-    ('<', 1716), ('=', 1716), ('>', 1716), ('?', 1087), ('@', 2048), ('A', 1401), ('B', 1405),
-    ('C', 1430), ('D', 1577), ('E', 1294), ('F', 1178), ('G', 1587), ('H', 1540), ('I', 604),
-    ('J', 604), ('K', 1343), ('L', 1141), ('M', 1767), ('N', 1532), ('O', 1612), ('P', 1235),
-    ('Q', 1612), ('R', 1423), ('S', 1300), ('T', 1251), ('U', 1499), ('V', 1401), ('W', 2025),
-    ('X', 1403), ('Y', 1251), ('Z', 1403), ('[', 799), ('\\', 690), (']', 799), ('^', 1716),
-    ('_', 1024), ('`', 1024), ('a', 1255), ('b', 1300), ('c', 1126), ('d', 1300), ('e', 1260),
-    ('f', 721), ('g', 1300), ('h', 1298), ('i', 569), ('j', 569), ('k', 1186), ('l', 569),
-    ('m', 1995), ('n', 1298), ('o', 1253), ('p', 1300), ('q', 1300), ('r', 842), ('s', 1067),
-    ('t', 803), ('u', 1298), ('v', 1212), ('w', 1675), ('x', 1212), ('y', 1212), ('z', 1075),
-    ('{', 1303), ('|', 690), ('}', 1303), ('~', 1716), ('λ', 1212), ('×', 1716), ('—', 2048),
-    ('−', 1716), ('°', 1024), ('α', 1350), ('θ', 1253), ('·', 651), ('≤', 1716), ('≥', 1716),
-    ('μ', 1303), ('…', 2048),
+    (' ', 651),
+    ('!', 821),
+    ('"', 942),
+    ('#', 1716),
+    ('$', 1303),
+    ('%', 1946),
+    ('&', 1597),
+    ('\'', 563),
+    ('(', 799),
+    (')', 799),
+    ('*', 1024),
+    ('+', 1716),
+    (',', 651),
+    ('-', 739),
+    ('.', 651),
+    ('/', 690),
+    ('0', 1303),
+    ('1', 1303),
+    ('2', 1303),
+    ('3', 1303),
+    ('4', 1303),
+    ('5', 1303),
+    ('6', 1303),
+    ('7', 1303),
+    ('8', 1303),
+    ('9', 1303),
+    (':', 690),
+    (';', 690),
+    ('<', 1716),
+    ('=', 1716),
+    ('>', 1716),
+    ('?', 1087),
+    ('@', 2048),
+    ('A', 1401),
+    ('B', 1405),
+    ('C', 1430),
+    ('D', 1577),
+    ('E', 1294),
+    ('F', 1178),
+    ('G', 1587),
+    ('H', 1540),
+    ('I', 604),
+    ('J', 604),
+    ('K', 1343),
+    ('L', 1141),
+    ('M', 1767),
+    ('N', 1532),
+    ('O', 1612),
+    ('P', 1235),
+    ('Q', 1612),
+    ('R', 1423),
+    ('S', 1300),
+    ('T', 1251),
+    ('U', 1499),
+    ('V', 1401),
+    ('W', 2025),
+    ('X', 1403),
+    ('Y', 1251),
+    ('Z', 1403),
+    ('[', 799),
+    ('\\', 690),
+    (']', 799),
+    ('^', 1716),
+    ('_', 1024),
+    ('`', 1024),
+    ('a', 1255),
+    ('b', 1300),
+    ('c', 1126),
+    ('d', 1300),
+    ('e', 1260),
+    ('f', 721),
+    ('g', 1300),
+    ('h', 1298),
+    ('i', 569),
+    ('j', 569),
+    ('k', 1186),
+    ('l', 569),
+    ('m', 1995),
+    ('n', 1298),
+    ('o', 1253),
+    ('p', 1300),
+    ('q', 1300),
+    ('r', 842),
+    ('s', 1067),
+    ('t', 803),
+    ('u', 1298),
+    ('v', 1212),
+    ('w', 1675),
+    ('x', 1212),
+    ('y', 1212),
+    ('z', 1075),
+    ('{', 1303),
+    ('|', 690),
+    ('}', 1303),
+    ('~', 1716),
+    ('λ', 1212),
+    ('×', 1716),
+    ('—', 2048),
+    ('−', 1716),
+    ('°', 1024),
+    ('α', 1350),
+    ('θ', 1253),
+    ('·', 651),
+    ('≤', 1716),
+    ('≥', 1716),
+    ('μ', 1303),
+    ('…', 2048),
 ];
 
 /// Width of `s` drawn in DejaVu Sans at `fs` pixels (a character not in the table counts as
@@ -147,13 +238,7 @@ fn view_of(svg: &str) -> (f64, f64) {
         .expect("the view in the legend");
     let num_after = |key: &str| -> f64 {
         let i = t.find(key).unwrap() + key.len();
-        t[i..]
-            .split('°')
-            .next()
-            .unwrap()
-            .trim()
-            .parse()
-            .unwrap()
+        t[i..].split('°').next().unwrap().trim().parse().unwrap()
     };
     (num_after("azimuth"), num_after("elevation"))
 }
@@ -163,8 +248,20 @@ fn dome(dir: &Path) -> [f64; 3] {
     run(
         dir,
         &[
-            "gen", "dome", "--radius", "5", "--thickness", "0.3", "--courses", "8", "--segments",
-            "16", "--oculus", "10", "-o", "dome.json",
+            "gen",
+            "dome",
+            "--radius",
+            "5",
+            "--thickness",
+            "0.3",
+            "--courses",
+            "8",
+            "--segments",
+            "16",
+            "--oculus",
+            "10",
+            "-o",
+            "dome.json",
         ],
     );
     let m = json(&dir.join("dome.json"));
@@ -203,7 +300,14 @@ fn issue32_item3_dome_view_turns_to_the_settling_sector() {
     assert!(facing(-35.0, c) < -0.9, "{}", facing(-35.0, c));
     run(
         &d,
-        &["settle", "dome.json", "--move", "base2=0,0,-0.02", "--svg", "auto.svg"],
+        &[
+            "settle",
+            "dome.json",
+            "--move",
+            "base2=0,0,-0.02",
+            "--svg",
+            "auto.svg",
+        ],
     );
     let svg = read(&d.join("auto.svg"));
     let (az, el) = view_of(&svg);
@@ -219,7 +323,14 @@ fn issue32_item3_dome_view_turns_to_the_settling_sector() {
     // Deterministic.
     run(
         &d,
-        &["settle", "dome.json", "--move", "base2=0,0,-0.02", "--svg", "again.svg"],
+        &[
+            "settle",
+            "dome.json",
+            "--move",
+            "base2=0,0,-0.02",
+            "--svg",
+            "again.svg",
+        ],
     );
     assert_eq!(svg, read(&d.join("again.svg")));
 }
@@ -229,7 +340,14 @@ fn issue32_item3_view_flag_is_honoured() {
     let d = tmpdir("view-flag");
     dome(&d);
     let settle = |extra: &[&str], out: &str| {
-        let mut a = vec!["settle", "dome.json", "--move", "base2=0,0,-0.02", "--svg", out];
+        let mut a = vec![
+            "settle",
+            "dome.json",
+            "--move",
+            "base2=0,0,-0.02",
+            "--svg",
+            out,
+        ];
         a.extend_from_slice(extra);
         run(&d, &a);
         read(&d.join(out))
@@ -256,7 +374,16 @@ fn issue32_item3_view_flag_is_honoured() {
     for bad in ["nan", "inf,30", "30,nan", "10,95", "1,2,3", "north"] {
         let err = refused(
             &d,
-            &["settle", "dome.json", "--move", "base2=0,0,-0.02", "--view", bad, "--svg", "bad.svg"],
+            &[
+                "settle",
+                "dome.json",
+                "--move",
+                "base2=0,0,-0.02",
+                "--view",
+                bad,
+                "--svg",
+                "bad.svg",
+            ],
         );
         assert!(err.contains("--view"), "{bad}: {err}");
         assert!(!d.join("bad.svg").exists());
@@ -269,7 +396,16 @@ fn issue32_item3_view_on_a_2d_model_is_refused() {
     run(&d, &["gen", "arch", "--live", "full", "-o", "arch.json"]);
     for args in [
         vec!["limit", "arch.json", "--view", "30", "--svg", "a.svg"],
-        vec!["settle", "arch.json", "--move", "right=0.01,0", "--view", "plan", "--svg", "a.svg"],
+        vec![
+            "settle",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--view",
+            "plan",
+            "--svg",
+            "a.svg",
+        ],
         vec!["tilt", "arch.json", "--view", "-35,30", "--png", "a.png"],
     ] {
         let err = refused(&d, &args);
@@ -307,14 +443,46 @@ fn issue32_item5_legend_fits_within_the_figure() {
     run(
         &d,
         &[
-            "gen", "walls", "--plan", "U", "--length", "2", "--return-length", "1", "--height",
-            "1.2", "--thickness", "0.2", "-o", "walls.json",
+            "gen",
+            "walls",
+            "--plan",
+            "U",
+            "--length",
+            "2",
+            "--return-length",
+            "1",
+            "--height",
+            "1.2",
+            "--thickness",
+            "0.2",
+            "-o",
+            "walls.json",
         ],
     );
-    run(&d, &["limit", "walls.json", "-o", "walls_r.json", "--svg", "walls.svg"]);
+    run(
+        &d,
+        &[
+            "limit",
+            "walls.json",
+            "-o",
+            "walls_r.json",
+            "--svg",
+            "walls.svg",
+        ],
+    );
     assert_legend_fits(&read(&d.join("walls.svg")), "3D walls, 1000 px");
     run(&d, &["gen", "arch", "--live", "full", "-o", "arch.json"]);
-    run(&d, &["limit", "arch.json", "-o", "arch_r.json", "--svg", "arch.svg"]);
+    run(
+        &d,
+        &[
+            "limit",
+            "arch.json",
+            "-o",
+            "arch_r.json",
+            "--svg",
+            "arch.svg",
+        ],
+    );
     assert_legend_fits(&read(&d.join("arch.svg")), "2D arch, 1000 px");
     for width in ["600", "360", "200"] {
         for (input, what) in [("walls_r.json", "3D walls"), ("arch_r.json", "2D arch")] {
@@ -355,16 +523,25 @@ fn issue32_item5_legend_states_the_factored_live_load() {
     let d = tmpdir("factored");
     // A block b × d × h = 0.5 × 0.4 × 1.5 m, γ = 18 kN/m³, with a horizontal live load equal to
     // its weight W = 5.4 kN: it overturns at λ = b/h = 1/3, so λ·W = 1.8 kN.
-    run(&d, &["gen", "block", "--size", "0.5,0.4,1.5", "-o", "block.json"]);
+    run(
+        &d,
+        &["gen", "block", "--size", "0.5,0.4,1.5", "-o", "block.json"],
+    );
     run(&d, &["limit", "block.json", "--svg", "block.svg"]);
     let (lambda, w, f, text) = factored(&read(&d.join("block.svg")));
     assert!(text.starts_with("live load × λ at collapse"), "{text}");
-    assert!((lambda - 1.0 / 3.0).abs() <= half_ulp(1.0 / 3.0, 4), "{text}");
+    assert!(
+        (lambda - 1.0 / 3.0).abs() <= half_ulp(1.0 / 3.0, 4),
+        "{text}"
+    );
     assert!((w - 5.4).abs() <= half_ulp(5.4, 3), "{text}");
     assert!((f - 1.8).abs() <= half_ulp(1.8, 3), "{text}");
     // 2D: the arch's λ and largest live load from its result; the product as printed.
     run(&d, &["gen", "arch", "--live", "full", "-o", "arch.json"]);
-    run(&d, &["limit", "arch.json", "-o", "r.json", "--svg", "arch.svg"]);
+    run(
+        &d,
+        &["limit", "arch.json", "-o", "r.json", "--svg", "arch.svg"],
+    );
     let r = json(&d.join("r.json"));
     let l = r["load_multiplier"].as_f64().unwrap();
     let q = r["geometry"]["loads"]
@@ -377,7 +554,11 @@ fn issue32_item5_legend_states_the_factored_live_load() {
     let (a, b, c, text) = factored(&read(&d.join("arch.svg")));
     assert!((a - l).abs() <= half_ulp(l, 4), "{text} vs λ = {l}");
     assert!((b - q).abs() <= half_ulp(q, 3), "{text} vs Q = {q}");
-    assert!((c - l * q).abs() <= half_ulp(l * q, 3), "{text} vs λQ = {}", l * q);
+    assert!(
+        (c - l * q).abs() <= half_ulp(l * q, 3),
+        "{text} vs λQ = {}",
+        l * q
+    );
     // A model drawing has no λ: its loads are said to be unfactored.
     run(&d, &["plot", "arch.json", "-o", "model.svg"]);
     assert!(legend_texts(&read(&d.join("model.svg")))
@@ -390,10 +571,22 @@ fn issue32_item5_tilt_picture_states_the_angle() {
     let d = tmpdir("tilt");
     // The block on a tilting table towards azimuth 90° (+y, where it is d = 0.4 m deep):
     // α = atan(d/h) = atan(0.4/1.5) = 14.931°, λ = tan α = 0.2667, λ·W = 1.44 kN.
-    run(&d, &["gen", "block", "--size", "0.5,0.4,1.5", "-o", "block.json"]);
     run(
         &d,
-        &["tilt", "block.json", "--azimuth", "90", "--svg", "t.svg", "--title", "My block"],
+        &["gen", "block", "--size", "0.5,0.4,1.5", "-o", "block.json"],
+    );
+    run(
+        &d,
+        &[
+            "tilt",
+            "block.json",
+            "--azimuth",
+            "90",
+            "--svg",
+            "t.svg",
+            "--title",
+            "My block",
+        ],
     );
     let svg = read(&d.join("t.svg"));
     let alpha = (0.4f64 / 1.5).atan().to_degrees();
@@ -406,7 +599,10 @@ fn issue32_item5_tilt_picture_states_the_angle() {
     assert!(t.contains("towards azimuth 90°"), "{t}");
     let i = t.find("α = ").unwrap() + "α = ".len();
     let printed: f64 = t[i..].split('°').next().unwrap().parse().unwrap();
-    assert!((printed - alpha).abs() <= half_ulp(alpha, 4), "{t} vs α = {alpha}");
+    assert!(
+        (printed - alpha).abs() <= half_ulp(alpha, 4),
+        "{t} vs α = {alpha}"
+    );
     let (l, w, f, _) = factored(&svg);
     assert!((l - 0.4 / 1.5).abs() <= half_ulp(0.4 / 1.5, 4), "{t}");
     assert!((w - 5.4).abs() <= half_ulp(5.4, 3), "{t}");
@@ -440,13 +636,30 @@ fn issue32_item5_pressure_points_flag_removes_the_dots() {
     // centres of pressure are dots on their own (no chain of an arch), more than a hundred.
     run(
         &d,
-        &["gen", "wall", "--courses", "10", "--units", "8", "-o", "wall.json"],
+        &[
+            "gen",
+            "wall",
+            "--courses",
+            "10",
+            "--units",
+            "8",
+            "-o",
+            "wall.json",
+        ],
     );
     run(
         &d,
         &[
-            "settle", "wall.json", "--move", "f4=0,-0.01", "-o", "r.json", "--svg", "on.svg",
-            "--pressure-points", "on",
+            "settle",
+            "wall.json",
+            "--move",
+            "f4=0,-0.01",
+            "-o",
+            "r.json",
+            "--svg",
+            "on.svg",
+            "--pressure-points",
+            "on",
         ],
     );
     let n = finite_thrust_points(&json(&d.join("r.json")));
@@ -465,20 +678,55 @@ fn issue32_item5_pressure_points_flag_removes_the_dots() {
     assert_eq!(plot("r.json", Some("off")), 0);
     assert_eq!(plot("r.json", None), 0);
     // A small wall keeps them by default (at most 60).
-    run(&d, &["gen", "wall", "--courses", "4", "--units", "3", "--live", "horizontal", "-o", "small.json"]);
-    run(&d, &["limit", "small.json", "-o", "s.json", "--svg", "small.svg"]);
+    run(
+        &d,
+        &[
+            "gen",
+            "wall",
+            "--courses",
+            "4",
+            "--units",
+            "3",
+            "--live",
+            "horizontal",
+            "-o",
+            "small.json",
+        ],
+    );
+    run(
+        &d,
+        &["limit", "small.json", "-o", "s.json", "--svg", "small.svg"],
+    );
     let m = finite_thrust_points(&json(&d.join("s.json")));
     assert!((1..=60).contains(&m), "{m}");
     assert_eq!(pressure_dots(&read(&d.join("small.svg"))), m);
-    run(&d, &["limit", "small.json", "--svg", "small_off.svg", "--pressure-points", "off"]);
+    run(
+        &d,
+        &[
+            "limit",
+            "small.json",
+            "--svg",
+            "small_off.svg",
+            "--pressure-points",
+            "off",
+        ],
+    );
     assert_eq!(pressure_dots(&read(&d.join("small_off.svg"))), 0);
     // 3D: the dome's 256 joints.
     dome(&d);
     run(
         &d,
         &[
-            "settle", "dome.json", "--move", "base2=0,0,-0.02", "-o", "dr.json", "--svg",
-            "d_off.svg", "--pressure-points", "off",
+            "settle",
+            "dome.json",
+            "--move",
+            "base2=0,0,-0.02",
+            "-o",
+            "dr.json",
+            "--svg",
+            "d_off.svg",
+            "--pressure-points",
+            "off",
         ],
     );
     assert_eq!(pressure_dots(&read(&d.join("d_off.svg"))), 0);
@@ -540,12 +788,38 @@ fn issue32_item5_quantile_labels_stay_off_the_exceedance_curve() {
     let d = tmpdir("quantile");
     // The sweep of docs/sweep.md, smaller: its exceedance curve is a staircase that runs
     // level just under the 5 % quantile's ring, where the label used to go.
-    run(&d, &["gen", "wall", "--courses", "5", "--units", "4", "--live", "horizontal", "-o", "wall.json"]);
     run(
         &d,
         &[
-            "sweep", "wall.json", "--profile", "uniform:0.8,1.7,-0.01", "--samples", "40",
-            "--seed", "7", "--capacity", "--capacity-steps", "4", "--jsonl", "mc.jsonl", "--svg",
+            "gen",
+            "wall",
+            "--courses",
+            "5",
+            "--units",
+            "4",
+            "--live",
+            "horizontal",
+            "-o",
+            "wall.json",
+        ],
+    );
+    run(
+        &d,
+        &[
+            "sweep",
+            "wall.json",
+            "--profile",
+            "uniform:0.8,1.7,-0.01",
+            "--samples",
+            "40",
+            "--seed",
+            "7",
+            "--capacity",
+            "--capacity-steps",
+            "4",
+            "--jsonl",
+            "mc.jsonl",
+            "--svg",
             "mc.svg",
         ],
     );
@@ -571,7 +845,11 @@ fn issue32_item5_quantile_labels_stay_off_the_exceedance_curve() {
         ];
         // The label is inside its box (DejaVu Sans widths, ascent 0.76 em) …
         let (tag, text) = texts(m).remove(0);
-        let (x, y, fs) = (attr_f(&tag, "x"), attr_f(&tag, "y"), attr_f(&tag, "font-size"));
+        let (x, y, fs) = (
+            attr_f(&tag, "x"),
+            attr_f(&tag, "y"),
+            attr_f(&tag, "font-size"),
+        );
         let w = dejavu_width(&text, fs);
         let (x0, x1) = if attr(&tag, "text-anchor").as_deref() == Some("end") {
             (x - w, x)

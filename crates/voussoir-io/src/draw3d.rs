@@ -515,7 +515,15 @@ fn paint_order(faces: &[Face], eps: f64) -> Vec<usize> {
 /// The azimuths [`View::Auto`] tries, in the order that settles ties: −35°, −20°, −50°, −5°,
 /// … (nearest −35° first), in (−180°, 180°].
 fn auto_azimuths() -> Vec<f64> {
-    let wrap180 = |a: f64| if a <= -180.0 { a + 360.0 } else if a > 180.0 { a - 360.0 } else { a };
+    let wrap180 = |a: f64| {
+        if a <= -180.0 {
+            a + 360.0
+        } else if a > 180.0 {
+            a - 360.0
+        } else {
+            a
+        }
+    };
     let mut v = vec![DEFAULT_AZIMUTH];
     for k in 1..=12 {
         v.push(wrap180(DEFAULT_AZIMUTH + 15.0 * k as f64));
@@ -579,7 +587,10 @@ pub fn view_scores(r: &(impl Result3d + ?Sized)) -> Vec<(f64, f64)> {
     if !(dmax > 0.0 && dmax.is_finite()) {
         return Vec::new();
     }
-    let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0f64, f64::max).max(1e-9);
+    let size = (0..3)
+        .map(|k| hi[k] - lo[k])
+        .fold(0.0f64, f64::max)
+        .max(1e-9);
     let mut movers: Vec<usize> = (0..bodies.len())
         .filter(|&i| moves[i].0 >= 0.2 * dmax)
         .collect();
@@ -932,10 +943,9 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         hinges: opts.hinges && !r.hinges().is_empty(),
         cracks: opts.cracks && r.joints().iter().any(|j| j.state != JointState::Closed),
         pressure: show_pressure,
-        live: loads
-            .iter()
-            .any(|l| l.3)
-            .then(|| crate::draw::legend::live_load_label(r.load_multiplier(), tilt_of(r), live_max)),
+        live: loads.iter().any(|l| l.3).then(|| {
+            crate::draw::legend::live_load_label(r.load_multiplier(), tilt_of(r), live_max)
+        }),
         dead: loads
             .iter()
             .any(|l| !l.3)

@@ -476,7 +476,16 @@ pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
         }
         let (fs, ring) = (12.5, 6.0);
         let tw = mark_label_width(&m.label, fs);
-        let place = mark_label_place(x, y, tw, fs, ring, [left, top, right, bottom], &segments, &placed);
+        let place = mark_label_place(
+            x,
+            y,
+            tw,
+            fs,
+            ring,
+            [left, top, right, bottom],
+            &segments,
+            &placed,
+        );
         placed.push(place.bbox);
         let [bx0, by0, bx1, by1] = place.bbox;
         let _ = writeln!(
@@ -672,7 +681,12 @@ pub(crate) fn mark_label_place(
             x: tx,
             y: ty,
             anchor: if start { "start" } else { "end" },
-            bbox: [x0 - pad, ty - 0.8 * fs - pad, x1 + pad, ty + 0.25 * fs + pad],
+            bbox: [
+                x0 - pad,
+                ty - 0.8 * fs - pad,
+                x1 + pad,
+                ty + 0.25 * fs + pad,
+            ],
         }
     };
     let above = -gap;
@@ -689,8 +703,10 @@ pub(crate) fn mark_label_place(
         place(gap, above - fs - 6.0, false),
         place(gap, below + fs + 6.0, false),
     ];
-    let inside = |b: &[f64; 4]| b[0] >= area[0] && b[2] <= area[2] && b[1] >= area[1] && b[3] <= area[3];
-    let overlaps = |b: &[f64; 4], c: &[f64; 4]| b[0] < c[2] && c[0] < b[2] && b[1] < c[3] && c[1] < b[3];
+    let inside =
+        |b: &[f64; 4]| b[0] >= area[0] && b[2] <= area[2] && b[1] >= area[1] && b[3] <= area[3];
+    let overlaps =
+        |b: &[f64; 4], c: &[f64; 4]| b[0] < c[2] && c[0] < b[2] && b[1] < c[3] && c[1] < b[3];
     // Curves are drawn 2.2 pixels wide: a box within 1.5 pixels of one is struck through.
     let crossings = |b: &[f64; 4]| {
         let g = [b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5];
@@ -699,7 +715,12 @@ pub(crate) fn mark_label_place(
             .filter(|(p, q)| segment_meets_box(*p, *q, g))
             .count()
     };
-    let ring_box = [x - ring - 1.0, y - ring - 1.0, x + ring + 1.0, y + ring + 1.0];
+    let ring_box = [
+        x - ring - 1.0,
+        y - ring - 1.0,
+        x + ring + 1.0,
+        y + ring + 1.0,
+    ];
     let mut best: Option<(usize, LabelPlace)> = None;
     for c in candidates {
         if !inside(&c.bbox) || overlaps(&c.bbox, &ring_box) {

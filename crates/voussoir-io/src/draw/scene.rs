@@ -1228,7 +1228,16 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             forces: (!forces.is_empty()).then_some(force_max),
             supports: b.nb < b.bodies.len(),
         };
-        let e = legend_entries(scene, &items, &id, k, b.size, has_motion, scale, interactive);
+        let e = legend_entries(
+            scene,
+            &items,
+            &id,
+            k,
+            b.size,
+            has_motion,
+            scale,
+            interactive,
+        );
         super::legend::write(&mut o, &e, margin, width - margin, height - legend_h);
     }
     o.push_str("</svg>\n");
@@ -1411,7 +1420,11 @@ fn legend_entries(
         t.markup = Some(format!(
             "{}<tspan class=\"scale-value\"{}>{}</tspan>{}",
             esc(lead),
-            if interactive { " data-scale-label=\"1\"" } else { "" },
+            if interactive {
+                " data-scale-label=\"1\""
+            } else {
+                ""
+            },
             esc(&value),
             esc(tail)
         ));

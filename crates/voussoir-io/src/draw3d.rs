@@ -52,10 +52,11 @@ use std::fmt::Write as _;
 use voussoir::result::JointState;
 
 /// Which way the camera looks.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum View {
     /// Axonometric, turned to show the largest motions ([`auto_view`]); −35°, 30° when nothing
     /// moves.
+    #[default]
     Auto,
     /// Orthographic view from azimuth and elevation in degrees (see the module documentation).
     Axonometric { azimuth: f64, elevation: f64 },
@@ -63,12 +64,6 @@ pub enum View {
     Plan,
     /// Seen from the front (−y): x right, z up the page.
     Elevation,
-}
-
-impl Default for View {
-    fn default() -> Self {
-        View::Auto
-    }
 }
 
 /// The view of a model that does not move (and the azimuth [`View::Auto`] prefers on ties).
@@ -550,7 +545,8 @@ pub fn view_scores(r: &(impl Result3d + ?Sized)) -> Vec<(f64, f64)> {
     }
     let g = r.shapes();
     let motions = Motions::of(r);
-    let bodies: Vec<(&[V3], &[Vec<usize>], (V3, [f64; 6]))> = g
+    type Shape<'b> = (&'b [V3], &'b [Vec<usize>], (V3, [f64; 6]));
+    let bodies: Vec<Shape> = g
         .blocks
         .iter()
         .zip(&motions.blocks)

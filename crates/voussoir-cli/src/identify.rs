@@ -179,6 +179,7 @@ fn annotate(msg: &str, names: &[(usize, String)]) -> String {
 
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.draw.check()?;
+    a.draw.check_2d()?;
     a.survey.check()?;
     if a.cracks.is_none() && a.survey.survey.is_none() {
         return Err(Fail(

@@ -104,6 +104,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         )));
     }
     a.draw.check()?;
+    a.draw.check_2d()?;
     let input = a.model.resolve()?;
     let motion = SettleArgs {
         moves: a.moves.clone(),

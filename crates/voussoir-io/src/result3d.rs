@@ -54,8 +54,13 @@ pub trait Result3d {
     fn friction_iteration(&self) -> Option<&FrictionIteration> {
         None
     }
-    /// λ at collapse (limit analyses).
+    /// The collapse load multiplier λ that the drawn live loads are multiplied by (a limit
+    /// analysis that found a mechanism); `None`: the live loads are drawn unfactored.
     fn load_multiplier(&self) -> Option<f64> {
+        None
+    }
+    /// A tilting-table result: the critical tilt angle α and the azimuth of the tilt, degrees.
+    fn tilt(&self) -> Option<(f64, f64)> {
         None
     }
     /// The certificate as (name, value) rows for a report's inputs.
@@ -119,9 +124,6 @@ impl Result3d for LimitResult<Three> {
     }
     fn friction_iteration(&self) -> Option<&FrictionIteration> {
         self.friction_iteration.as_ref()
-    }
-    fn load_multiplier(&self) -> Option<f64> {
-        self.load_multiplier
     }
     fn certificate_rows(&self) -> Vec<(String, String)> {
         limit_certificate_rows(self)
@@ -191,6 +193,10 @@ impl Result3d for LimitResult<Three> {
         ));
         k.push(("cracked joints".to_string(), crack_summary(&self.joints)));
         k
+    }
+    fn load_multiplier(&self) -> Option<f64> {
+        self.load_multiplier
+            .filter(|l| l.is_finite() && self.status == LimitStatus::Collapse)
     }
 }
 
@@ -316,9 +322,6 @@ impl Result3d for TiltResult<Three> {
     fn friction_iteration(&self) -> Option<&FrictionIteration> {
         self.limit.friction_iteration.as_ref()
     }
-    fn load_multiplier(&self) -> Option<f64> {
-        self.limit.load_multiplier
-    }
     fn certificate_rows(&self) -> Vec<(String, String)> {
         limit_certificate_rows(&self.limit)
     }
@@ -376,6 +379,14 @@ impl Result3d for TiltResult<Three> {
         ));
         k.extend(self.limit.key_numbers());
         k
+    }
+    fn load_multiplier(&self) -> Option<f64> {
+        self.limit.load_multiplier()
+    }
+    fn tilt(&self) -> Option<(f64, f64)> {
+        self.tilt_angle
+            .filter(|a| a.is_finite())
+            .map(|a| (a, self.azimuth.unwrap_or(0.0)))
     }
 }
 

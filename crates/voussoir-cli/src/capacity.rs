@@ -80,7 +80,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             let st = input.structure_of(model, Some(&motion))?;
             let r = capacity(&st, &opts)?;
             a.draw.emit_capacity(&r, &input.path)?;
-            a.out.emit(&r, || summary(&st, &r))
+            a.out.emit_split(&r, &input.splits(), || summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
             a.draw.refuse_3d_curve()?;
@@ -116,7 +116,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             };
             let r = capacity(&st, &opts)?;
             a.draw.emit_capacity(&r, &input.path)?;
-            a.out.emit(&r, || {
+            a.out.emit_split(&r, &input.splits(), || {
                 let mut s = summary(&st, &r);
                 if exact {
                     s.push_str(

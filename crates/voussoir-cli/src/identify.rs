@@ -81,7 +81,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
         );
         crate::outputs::stage(path, rep.to_html().as_bytes())?;
     }
-    a.out.emit(&r, || summary(&st, &r))
+    a.out.emit_split(&r, &input.splits(), || summary(&st, &r))
 }
 
 fn summary(st: &Structure, r: &IdentifyResult) -> String {

@@ -82,7 +82,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         AnyModel::Spatial(m) => return run3d(&a, &c, m),
     };
     a.draw.check_2d()?;
-    c.motion.apply(&mut model)?;
+    let splits = c.motion.apply(&mut model)?;
     // The model is validated first, so that a bad model is named before a missing motion.
     let st = c.input.structure_of(model.clone(), None)?;
     a.crushing.check_strength(&st)?;
@@ -114,7 +114,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         (form, _, _) => settle_with(&st, &c.input.solver, form)?,
     };
     a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
-    a.out.emit(&r, || {
+    a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
 }
@@ -126,7 +126,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         ));
     }
     // --friction-facets and --friction-cone are honoured here (as by limit and tilt).
-    c.motion.apply(&mut model)?;
+    let splits = c.motion.apply(&mut model)?;
     let st = c.input.structure3d_any_cone(model.clone(), None)?;
     if !model
         .supports
@@ -157,7 +157,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };
     a.draw.with(&a.forces).emit_3d(&r, &c.input.path)?;
-    a.out.emit(&r, || {
+    a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
 }

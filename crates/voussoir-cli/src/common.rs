@@ -298,8 +298,8 @@ pub struct SplitArgs {
     pub splits: Vec<String>,
 }
 
-pub use voussoir_io::motion::{parse_profile, signed_length, Motion};
 pub use voussoir::settlement_input::SupportSplit;
+pub use voussoir_io::motion::{parse_profile, signed_length, Motion};
 
 impl SettleArgs {
     /// Parse every `--split`, `--move` and `--profile` (before any work).

@@ -71,8 +71,15 @@ fn area(p: &[Value]) -> f64 {
 
 fn xs(p: &[Value]) -> (f64, f64, f64) {
     let x: Vec<f64> = p.iter().map(|q| q[0].as_f64().unwrap()).collect();
-    let y = p.iter().map(|q| q[1].as_f64().unwrap()).fold(f64::MIN, f64::max);
-    (x.iter().copied().fold(f64::MAX, f64::min), x.iter().copied().fold(f64::MIN, f64::max), y)
+    let y = p
+        .iter()
+        .map(|q| q[1].as_f64().unwrap())
+        .fold(f64::MIN, f64::max);
+    (
+        x.iter().copied().fold(f64::MAX, f64::min),
+        x.iter().copied().fold(f64::MIN, f64::max),
+        y,
+    )
 }
 
 const GAMMA: f64 = 18.0;
@@ -89,7 +96,10 @@ fn issue32_item1_portal_settles_its_right_pier() {
     ok(&["import", s(&portal()), "--units", "mm", "-o", s(&json)]);
     let model: Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     let blocks = model["blocks"].as_array().unwrap();
-    let polys: Vec<&Vec<Value>> = blocks.iter().map(|b| b["polygon"].as_array().unwrap()).collect();
+    let polys: Vec<&Vec<Value>> = blocks
+        .iter()
+        .map(|b| b["polygon"].as_array().unwrap())
+        .collect();
     let w: f64 = polys.iter().map(|p| area(p) * GAMMA * 1.0).sum();
     let wv = w * V;
 
@@ -103,13 +113,21 @@ fn issue32_item1_portal_settles_its_right_pier() {
     ]);
     assert_eq!(r["certificate"]["ok"], true, "{}", r["certificate"]);
     let work = r["work_dead_loads"].as_f64().unwrap();
-    assert!(work > 0.0 && work < 0.9 * wv, "work {work} against W·v {wv}");
+    assert!(
+        work > 0.0 && work < 0.9 * wv,
+        "work {work} against W·v {wv}"
+    );
     // The work is the settled part's reaction times the drop (virtual work), and W·v is the
     // sum of both parts' reactions times v.
     let fy = |k: usize| r["reactions"][k]["fy"].as_f64().unwrap();
     assert_eq!(r["reactions"][1]["support"], "base@1");
     assert!((work - fy(1) * V).abs() <= 1e-9 * work);
-    assert!((fy(0) + fy(1) - w).abs() <= 1e-9 * w, "{} {}", fy(0) + fy(1), w);
+    assert!(
+        (fy(0) + fy(1) - w).abs() <= 1e-9 * w,
+        "{} {}",
+        fy(0) + fy(1),
+        w
+    );
 
     let split = &r["split_supports"][0];
     assert_eq!(split["support"], "base");
@@ -134,10 +152,16 @@ fn issue32_item1_portal_settles_its_right_pier() {
         );
         if ytop <= 0.9 + 1e-9 && x0 >= 1.85 - 1e-9 {
             right += 1;
-            assert!(u.abs() < 1e-9 && (v + V).abs() < 1e-9 && t.abs() < 1e-9, "{k}: {b}");
+            assert!(
+                u.abs() < 1e-9 && (v + V).abs() < 1e-9 && t.abs() < 1e-9,
+                "{k}: {b}"
+            );
         } else if ytop <= 0.9 + 1e-9 && x1 <= 0.65 + 1e-9 {
             left += 1;
-            assert!(u.abs() < 1e-12 && v.abs() < 1e-12 && t.abs() < 1e-12, "{k}: {b}");
+            assert!(
+                u.abs() < 1e-12 && v.abs() < 1e-12 && t.abs() < 1e-12,
+                "{k}: {b}"
+            );
         }
     }
     assert!(right >= 6 && left >= 6, "{right} {left}");
@@ -155,15 +179,16 @@ fn issue32_item1_portal_settles_its_right_pier() {
     assert!((work2 - work).abs() <= 1e-9 * work, "{work2} {work}");
 
     // The summary names the cut and the parts.
-    let o = ok(&[
-        "settle",
-        s(&json),
-        "--profile",
-        "uniform:1.25,2.5,-0.01",
-    ]);
+    let o = ok(&["settle", s(&json), "--profile", "uniform:1.25,2.5,-0.01"]);
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.contains("support base cut at x = 1.2500 m into 2 parts"), "{text}");
-    assert!(text.contains("base@1       x 1.2500 … 2.5000 m  u 0.000 mm, v -10.000 mm"), "{text}");
+    assert!(
+        text.contains("support base cut at x = 1.2500 m into 2 parts"),
+        "{text}"
+    );
+    assert!(
+        text.contains("base@1       x 1.2500 … 2.5000 m  u 0.000 mm, v -10.000 mm"),
+        "{text}"
+    );
 }
 
 /// Refusals in one line: an unknown support, a cut outside the support, a malformed --split,
@@ -182,10 +207,20 @@ fn issue32_item1_split_refusals() {
         &["settle", m, "--split", "base@3", "--move", "base@1=0,-1cm"],
         &["--split base@3", "x = 3 m is not inside", "0 … 2.5 m"],
     );
-    fails(&["settle", m, "--split", "base@one"], &["--split base@one", "NAME@X"]);
+    fails(
+        &["settle", m, "--split", "base@one"],
+        &["--split base@one", "NAME@X"],
+    );
     fails(
         &[
-            "capacity", m, "--split", "base@1", "--split", "base@2", "--move", "base@1=0,-1cm",
+            "capacity",
+            m,
+            "--split",
+            "base@1",
+            "--split",
+            "base@2",
+            "--move",
+            "base@1=0,-1cm",
         ],
         &["split twice"],
     );
@@ -194,12 +229,28 @@ fn issue32_item1_split_refusals() {
         &["no support named 'base@1'"],
     );
     fails(
-        &["import", s(&portal()), "--units", "mm", "--split-support", "1"],
+        &[
+            "import",
+            s(&portal()),
+            "--units",
+            "mm",
+            "--split-support",
+            "1",
+        ],
         &["--split-support 1", "2 or more"],
     );
     // The other commands that take support motions accept --split (identify, sweep, incremental).
     for cmd in [
-        vec!["identify", m, "--split", "base@9", "--cracks", m, "--unknown", "base:v"],
+        vec![
+            "identify",
+            m,
+            "--split",
+            "base@9",
+            "--cracks",
+            m,
+            "--unknown",
+            "base:v",
+        ],
         vec!["sweep", m, "--split", "base@9", "--steps", "2"],
         vec!["incremental", m, "--split", "base@9", "--control", "1,1"],
     ] {
@@ -244,7 +295,14 @@ fn issue32_item1_supports_from_a_dxf_layer_settle_one_by_one() {
         ],
     );
     let json = d.join("piers.json");
-    ok(&["import", s(&dxf), "--support-layer", "FOUND", "-o", s(&json)]);
+    ok(&[
+        "import",
+        s(&dxf),
+        "--support-layer",
+        "FOUND",
+        "-o",
+        s(&json),
+    ]);
     let model: Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     let names: Vec<&str> = model["supports"]
         .as_array()
@@ -256,7 +314,10 @@ fn issue32_item1_supports_from_a_dxf_layer_settle_one_by_one() {
     let r = ok_json(&["settle", s(&json), "--move", "FOUND-1=0,-10mm"]);
     let expect = 0.6 * 0.8 * GAMMA * V;
     let work = r["work_dead_loads"].as_f64().unwrap();
-    assert!((work - expect).abs() <= 1e-9 * expect, "{work} against {expect}");
+    assert!(
+        (work - expect).abs() <= 1e-9 * expect,
+        "{work} against {expect}"
+    );
     assert_eq!(r["blocks"][0]["v"].as_f64(), Some(0.0));
     assert!((r["blocks"][1]["v"].as_f64().unwrap() + V).abs() < 1e-12);
 }
@@ -279,7 +340,10 @@ fn issue32_item1_import_splits_the_foundation_into_equal_parts() {
     let json = d.join("two.json");
     let o = ok(&["import", s(&dxf), "--split-support", "2", "-o", s(&json)]);
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("support base cut at x = 1.0000 m into 2 parts"), "{err}");
+    assert!(
+        err.contains("support base cut at x = 1.0000 m into 2 parts"),
+        "{err}"
+    );
     let model: Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     let sup = model["supports"].as_array().unwrap();
     assert_eq!(sup.len(), 2);
@@ -289,8 +353,14 @@ fn issue32_item1_import_splits_the_foundation_into_equal_parts() {
     let expect = 0.7 * 0.8 * GAMMA * V;
     let r = ok_json(&["settle", s(&json), "--move", "base@1=0,-1cm"]);
     let work = r["work_dead_loads"].as_f64().unwrap();
-    assert!((work - expect).abs() <= 1e-9 * expect, "{work} against {expect}");
+    assert!(
+        (work - expect).abs() <= 1e-9 * expect,
+        "{work} against {expect}"
+    );
     let r = ok_json(&["settle", s(&dxf), "--profile", "uniform:1,2,-0.01"]);
     let work = r["work_dead_loads"].as_f64().unwrap();
-    assert!((work - expect).abs() <= 1e-9 * expect, "{work} against {expect}");
+    assert!(
+        (work - expect).abs() <= 1e-9 * expect,
+        "{work} against {expect}"
+    );
 }

@@ -42,7 +42,9 @@ pub fn parse_split(s: &str) -> Result<(String, Vec<f64>), IoError> {
 }
 
 fn parse_split_inner(s: &str) -> Result<(String, Vec<f64>), IoError> {
-    let form = || IoError(format!("--split {s}: expected NAME@X[,X…] (the support's name and where to cut it, x in m or with a unit)"));
+    let form = || {
+        IoError(format!("--split {s}: expected NAME@X[,X…] (the support's name and where to cut it, x in m or with a unit)"))
+    };
     let (name, xs) = s.rsplit_once('@').ok_or_else(form)?;
     if name.is_empty() {
         return Err(form());
@@ -212,7 +214,11 @@ impl Motion {
     fn apply_inner<M: ModelSupports>(&self, model: &mut M) -> Result<Vec<SupportSplit>, IoError> {
         let mut splits = Vec::new();
         for (name, xs) in &self.splits {
-            let spec = xs.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",");
+            let spec = xs
+                .iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(",");
             splits.push(
                 split_support(model, name, xs)
                     .map_err(|e| IoError(format!("--split {name}@{spec}: {}", request(&e))))?,

@@ -153,7 +153,9 @@ impl ModelSupports for Model {
         use crate::geometry::area_centroid;
         let s = &self.supports[i];
         if s.polygon.len() < 3 {
-            return Err(Error::Request("its polygon has fewer than 3 vertices".into()));
+            return Err(Error::Request(
+                "its polygon has fewer than 3 vertices".into(),
+            ));
         }
         let c0 = area_centroid(&s.polygon).1;
         let [u, v, t] = s.motion;
@@ -302,14 +304,12 @@ pub fn split_support<M: ModelSupports>(
             "its parts would be named {prefix}0, {prefix}1, … and the model already has a support '{other}'"
         ));
     }
-    let n = model
-        .split(i, &cuts)
-        .or_else(|e| match e {
-            Error::Request(m) | Error::Model(m) => {
-                Err(Error::Request(format!("support '{name}': {m}")))
-            }
-            e => Err(e),
-        })?;
+    let n = model.split(i, &cuts).or_else(|e| match e {
+        Error::Request(m) | Error::Model(m) => {
+            Err(Error::Request(format!("support '{name}': {m}")))
+        }
+        e => Err(e),
+    })?;
     let parts = (i..i + n)
         .map(|k| SupportPart {
             name: model.support_names()[k].to_string(),
@@ -327,7 +327,11 @@ pub fn split_support<M: ModelSupports>(
 /// Cut every support that spans one of the x values `xs` (strictly inside its x range) there;
 /// the others are left untouched. Returns the supports cut, in the model's order.
 pub fn split_supports_at<M: ModelSupports>(model: &mut M, xs: &[f64]) -> Result<Vec<SupportSplit>> {
-    let names: Vec<String> = model.support_names().iter().map(|s| s.to_string()).collect();
+    let names: Vec<String> = model
+        .support_names()
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
     let mut out = Vec::new();
     for name in names {
         let i = support_index(model, &name)?;
@@ -354,7 +358,11 @@ pub fn split_supports_equally<M: ModelSupports>(
             "cannot cut a support into {n} part(s): give 2 or more"
         )));
     }
-    let names: Vec<String> = model.support_names().iter().map(|s| s.to_string()).collect();
+    let names: Vec<String> = model
+        .support_names()
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
     let mut out = Vec::new();
     for name in names {
         let i = support_index(model, &name)?;

@@ -24,7 +24,14 @@ const SNAP: f64 = 1e-9;
 fn bbox2(p: &[Point]) -> [f64; 4] {
     p.iter().fold(
         [f64::INFINITY, f64::INFINITY, -f64::INFINITY, -f64::INFINITY],
-        |b, q| [b[0].min(q[0]), b[1].min(q[1]), b[2].max(q[0]), b[3].max(q[1])],
+        |b, q| {
+            [
+                b[0].min(q[0]),
+                b[1].min(q[1]),
+                b[2].max(q[0]),
+                b[3].max(q[1]),
+            ]
+        },
     )
 }
 
@@ -285,7 +292,11 @@ fn clip_convex(v: &[V3], faces: &[Vec<usize>], c: f64, side: f64, eps: f64) -> P
 
 /// Cut a convex polyhedron by the planes `x = c` of `cuts` (increasing, each strictly inside
 /// its x range): the parts from the left. A non-convex polyhedron is refused.
-pub fn split_polyhedron(v: &[Point3], faces: &[Vec<usize>], cuts: &[f64]) -> Result<Vec<Polyhedron>> {
+pub fn split_polyhedron(
+    v: &[Point3],
+    faces: &[Vec<usize>],
+    cuts: &[f64],
+) -> Result<Vec<Polyhedron>> {
     let lo = v.iter().fold([f64::INFINITY; 3], |m, p| {
         [m[0].min(p[0]), m[1].min(p[1]), m[2].min(p[2])]
     });

@@ -28,7 +28,10 @@ fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> String {
 /// One base 2 m × 0.5 m; on it, apart, a left block 0.7 × 1.0 and a right one 0.7 × 0.8.
 fn two_blocks_on_one_base() -> Model {
     model(
-        &format!(r#"{{"name": "base", "polygon": {}}}"#, rect(0.0, 0.0, 2.0, 0.5)),
+        &format!(
+            r#"{{"name": "base", "polygon": {}}}"#,
+            rect(0.0, 0.0, 2.0, 0.5)
+        ),
         &format!(
             r#"{{"polygon": {}}}, {{"polygon": {}}}"#,
             rect(0.2, 0.5, 0.9, 1.5),
@@ -111,7 +114,10 @@ fn issue32_item1_a_convex_3d_support_is_cut_by_the_plane() {
     let r = settle(&st, &SolverOptions::default()).unwrap();
     let expect = 0.7 * 0.8 * 1.5 * GAMMA * -V;
     let work = r.work_dead_loads.unwrap();
-    assert!((work - expect).abs() <= 1e-7 * expect, "{work} against {expect}");
+    assert!(
+        (work - expect).abs() <= 1e-7 * expect,
+        "{work} against {expect}"
+    );
 }
 
 /// A C-shaped (non-convex) support cut at x = 2: the left strip is one piece, the right one
@@ -170,15 +176,29 @@ fn issue32_item1_a_non_convex_support_is_cut_exactly() {
 #[test]
 fn issue32_item1_refusals_and_untouched_supports() {
     let mut m = two_blocks_on_one_base();
-    let e = split_support(&mut m, "nope", &[1.0]).unwrap_err().to_string();
-    assert!(e.contains("no support named 'nope'") && !e.contains('\n'), "{e}");
-    let e = split_support(&mut m, "base", &[2.5]).unwrap_err().to_string();
-    assert!(e.contains("x = 2.5 m is not inside") && !e.contains('\n'), "{e}");
-    let e = split_support(&mut m, "base", &[2.0]).unwrap_err().to_string();
+    let e = split_support(&mut m, "nope", &[1.0])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("no support named 'nope'") && !e.contains('\n'),
+        "{e}"
+    );
+    let e = split_support(&mut m, "base", &[2.5])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("x = 2.5 m is not inside") && !e.contains('\n'),
+        "{e}"
+    );
+    let e = split_support(&mut m, "base", &[2.0])
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("not inside"), "{e}");
     assert_eq!(m, two_blocks_on_one_base());
     // Breakpoints on the edges or outside: nothing cut.
-    assert!(split_supports_at(&mut m, &[0.0, 2.0, 7.0]).unwrap().is_empty());
+    assert!(split_supports_at(&mut m, &[0.0, 2.0, 7.0])
+        .unwrap()
+        .is_empty());
     assert_eq!(m, two_blocks_on_one_base());
     // A 3D support that is not convex is refused.
     let mut m3 = extrude(

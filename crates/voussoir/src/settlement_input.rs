@@ -304,11 +304,9 @@ pub fn split_support<M: ModelSupports>(
             "its parts would be named {prefix}0, {prefix}1, … and the model already has a support '{other}'"
         ));
     }
-    let n = model.split(i, &cuts).or_else(|e| match e {
-        Error::Request(m) | Error::Model(m) => {
-            Err(Error::Request(format!("support '{name}': {m}")))
-        }
-        e => Err(e),
+    let n = model.split(i, &cuts).map_err(|e| match e {
+        Error::Request(m) | Error::Model(m) => Error::Request(format!("support '{name}': {m}")),
+        e => e,
     })?;
     let parts = (i..i + n)
         .map(|k| SupportPart {

@@ -21,6 +21,10 @@ use i_overlay::float::single::SingleFloatOverlay;
 /// the original vertex or a point of a cut line.
 const SNAP: f64 = 1e-9;
 
+/// A cut nearer to a support's end than this fraction of its width is no cut (the analyses'
+/// default geometric tolerance, 1e-7, so that no part is too thin to carry a joint).
+const INSIDE: f64 = 1e-7;
+
 fn bbox2(p: &[Point]) -> [f64; 4] {
     p.iter().fold(
         [f64::INFINITY, f64::INFINITY, -f64::INFINITY, -f64::INFINITY],
@@ -51,7 +55,7 @@ pub fn x_range3(v: &[Point3]) -> [f64; 2] {
 /// Whether `c` lies strictly inside the x range `r` (by more than a relative tolerance, so
 /// that a cut on a support's edge is no cut).
 pub fn strictly_inside(r: [f64; 2], c: f64) -> bool {
-    let tol = SNAP * (r[1] - r[0]).abs().max(f64::MIN_POSITIVE);
+    let tol = INSIDE * (r[1] - r[0]).abs().max(f64::MIN_POSITIVE);
     c > r[0] + tol && c < r[1] - tol
 }
 
@@ -83,7 +87,27 @@ fn crossing_y(p: &[Point], c: f64, y: f64) -> Option<f64> {
 pub fn split_polygon(poly: &[Point], cuts: &[f64]) -> Result<Vec<Vec<Vec<Point>>>> {
     let b = bbox2(poly);
     let diag = (b[2] - b[0]).hypot(b[3] - b[1]);
+    if !(diag.is_finite() && diag > 0.0) {
+        return Err(Error::Request(
+            "its polygon has no finite, non-zero extent".into(),
+        ));
+    }
     let eps = SNAP * diag;
+    // The original vertices by x, to find the one a clipped vertex stands for.
+    let mut by_x: Vec<Point> = poly.to_vec();
+    by_x.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let original = |q: [f64; 2]| -> Option<Point> {
+        let start = by_x.partition_point(|o| o[0] < q[0] - eps);
+        by_x[start..]
+            .iter()
+            .take_while(|o| o[0] <= q[0] + eps)
+            .copied()
+            .filter(|o| (o[0] - q[0]).hypot(o[1] - q[1]) <= eps)
+            .min_by(|o, r| {
+                let d = |o: &Point| (o[0] - q[0]).hypot(o[1] - q[1]);
+                d(o).total_cmp(&d(r))
+            })
+    };
     let (ylo, yhi) = (b[1] - diag, b[3] + diag);
     let mut edges = vec![b[0] - diag];
     edges.extend_from_slice(cuts);
@@ -105,14 +129,7 @@ pub fn split_polygon(poly: &[Point], cuts: &[f64]) -> Result<Vec<Vec<Vec<Point>>
             let Some(outer) = shape.first() else { continue };
             let mut ring: Vec<Point> = Vec::with_capacity(outer.len());
             for q in outer {
-                let snapped = poly
-                    .iter()
-                    .copied()
-                    .filter(|o| (o[0] - q[0]).hypot(o[1] - q[1]) <= eps)
-                    .min_by(|o, r| {
-                        let d = |o: &Point| (o[0] - q[0]).hypot(o[1] - q[1]);
-                        d(o).total_cmp(&d(r))
-                    })
+                let snapped = original(*q)
                     .or_else(|| {
                         [lo, hi]
                             .into_iter()
@@ -304,6 +321,11 @@ pub fn split_polyhedron(
         [m[0].max(p[0]), m[1].max(p[1]), m[2].max(p[2])]
     });
     let diag = dot3(sub3(hi, lo), sub3(hi, lo)).sqrt();
+    if !(diag.is_finite() && diag > 0.0) {
+        return Err(Error::Request(
+            "its polyhedron has no finite, non-zero extent".into(),
+        ));
+    }
     let eps = SNAP * diag;
     if !convex(v, faces, eps) {
         return Err(Error::Request(

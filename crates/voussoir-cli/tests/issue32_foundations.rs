@@ -364,3 +364,42 @@ fn issue32_item1_import_splits_the_foundation_into_equal_parts() {
         "{work} against {expect}"
     );
 }
+
+/// `identify` reads an unknown profile on the foundations as drawn, as `settle --profile` does:
+/// the cracks of Portal's right pier settling 1 cm (the base cut at x = 1.25 m) give back
+/// v = −1 cm for the unknown `uniform:1.25,2.5,?` (the forward settlement is the reference).
+#[test]
+fn issue32_item1_identify_cuts_the_base_at_an_unknown_profile_s_ends() {
+    let d = tmpdir("identify");
+    let json = d.join("Portal.json");
+    ok(&["import", s(&portal()), "--units", "mm", "-o", s(&json)]);
+    let f = ok_json(&["settle", s(&json), "--profile", "uniform:1.25,2.5,-0.01"]);
+    let mut cracks = Vec::new();
+    for j in f["joints"].as_array().unwrap() {
+        let ws: Vec<f64> = j["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p["opening"].as_f64().unwrap())
+            .map(|w| if w > 1e-9 { w } else { 0.0 })
+            .collect();
+        if ws.iter().any(|w| *w > 0.0) {
+            cracks.push(serde_json::json!({"joint": j["id"], "opening": ws}));
+        }
+    }
+    assert!(cracks.len() >= 4, "{} cracked joints", cracks.len());
+    let obs = d.join("obs.json");
+    std::fs::write(&obs, serde_json::json!({ "cracks": cracks }).to_string()).unwrap();
+    let r = ok_json(&[
+        "identify",
+        s(&json),
+        "--cracks",
+        s(&obs),
+        "--unknown",
+        "uniform:1.25,2.5,?",
+    ]);
+    let v = r["unknowns"][0]["value"].as_f64().unwrap();
+    assert!((v + V).abs() <= 1e-6 * V, "identified v = {v}");
+    assert_eq!(r["certificate"]["reproduces"], true);
+    assert_eq!(r["split_supports"][0]["parts"][1]["name"], "base@1");
+}

@@ -621,14 +621,8 @@ impl OutArgs {
         if splits.is_empty() {
             return self.emit(result, summary);
         }
-        #[derive(Serialize)]
-        struct WithSplits<'a, T> {
-            #[serde(flatten)]
-            result: &'a T,
-            split_supports: &'a [SupportSplit],
-        }
         self.emit(
-            &WithSplits {
+            &voussoir_io::motion::WithSplits {
                 result,
                 split_supports: splits,
             },

@@ -263,6 +263,15 @@ impl Motion {
     }
 }
 
+/// A result with the supports cut for it: the result's fields, then `split_supports` (the
+/// CLI's and the Python package's JSON, byte for byte the same).
+#[derive(serde::Serialize)]
+pub struct WithSplits<'a, T> {
+    #[serde(flatten)]
+    pub result: &'a T,
+    pub split_supports: &'a [SupportSplit],
+}
+
 /// The message of a library error without its "invalid request: " kind.
 fn request(e: &voussoir::Error) -> String {
     match e {

@@ -216,7 +216,7 @@ impl Motion {
         for (name, xs) in &self.splits {
             let spec = xs
                 .iter()
-                .map(|x| x.to_string())
+                .map(|x| voussoir::settlement_input::short_number(*x))
                 .collect::<Vec<_>>()
                 .join(",");
             splits.push(

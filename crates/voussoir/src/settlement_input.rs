@@ -265,6 +265,16 @@ pub struct SupportSplit {
     pub parts: Vec<SupportPart>,
 }
 
+/// A number for a message: plain where that is short, else in e-notation (1e-300, not 300
+/// zeros).
+pub fn short_number(x: f64) -> String {
+    if x == 0.0 || (1e-4..1e15).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 /// Cut support `name` at the x values `cuts` (any order; each strictly inside the support's x
 /// range) into parts `NAME@0`, `NAME@1`, … from the left (see the module's notes). Refused: an
 /// unknown support, a cut that is not a finite number or lies outside the support, a model
@@ -277,7 +287,10 @@ pub fn split_support<M: ModelSupports>(
     let i = support_index(model, name)?;
     let bad = |m: String| Err(Error::Request(format!("support '{name}': {m}")));
     if let Some(c) = cuts.iter().find(|c| !c.is_finite()) {
-        return bad(format!("the cut x = {c} is not a finite number"));
+        return bad(format!(
+            "the cut x = {} is not a finite number",
+            short_number(*c)
+        ));
     }
     let mut cuts = cuts.to_vec();
     cuts.sort_by(f64::total_cmp);
@@ -291,8 +304,10 @@ pub fn split_support<M: ModelSupports>(
         .find(|c| !crate::support_split::strictly_inside(r, **c))
     {
         return bad(format!(
-            "the cut x = {c} m is not inside the support (it spans x = {} … {} m)",
-            r[0], r[1]
+            "the cut x = {} m is not inside the support (it spans x = {} … {} m)",
+            short_number(*c),
+            short_number(r[0]),
+            short_number(r[1])
         ));
     }
     let prefix = format!("{name}@");

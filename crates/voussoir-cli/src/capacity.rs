@@ -104,7 +104,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                     )
                 })
                 .emit_capacity(&r, &input.path)?;
-            a.out.emit(&r, || summary(&st, &r))
+            a.out.emit_split(&r, &input.splits(), || summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
             a.draw.refuse_3d_curve()?;
@@ -158,7 +158,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                     )
                 })
                 .emit_capacity(&r, &input.path)?;
-            a.out.emit(&r, || {
+            a.out.emit_split(&r, &input.splits(), || {
                 let mut s = summary(&st, &r);
                 if exact {
                     s.push_str(

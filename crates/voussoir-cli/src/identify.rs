@@ -196,7 +196,23 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     }
     let input = model.resolve()?;
     let motion = a.settle.resolve()?;
-    let st = input.structure(Some(&motion))?;
+    let mut model = input.load()?;
+    let mut splits = motion.apply(&mut model)?;
+    // Unknown profiles act on the foundations as drawn, as `--profile` does: a support that
+    // spans one of their breakpoints is cut there first.
+    let xs: Vec<f64> = a
+        .unknowns
+        .iter()
+        .flat_map(|spec| profile_unknown_breakpoints(spec))
+        .collect();
+    if !xs.is_empty() {
+        splits.extend(
+            voussoir::settlement_input::split_supports_at(&mut model, &xs)
+                .map_err(|e| Fail(format!("--unknown: {e}")))?,
+        );
+        voussoir::settlement_input::refresh_motions(&model, &mut splits);
+    }
+    let st = input.structure_of(model, None)?;
     let solver = input.solver;
     let (obs, names) = observations(&a, model_units)?;
     let mut unknowns = Vec::new();
@@ -232,7 +248,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     }
     // Each unknown's kind of length: a rotation (every support's θ only) or a motion.
     let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
-    a.out.emit(&r, || summary(&st, &r, &kinds))
+    a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
 }
 
 /// The summary; lengths by the README's rule ([`voussoir_io::lengths`]): support motions in
@@ -459,6 +475,29 @@ pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
         out.push(Unknown::supports(st, label, &names, comp, lo, hi)?);
     }
     Ok(out)
+}
+
+/// The breakpoints of an unknown profile (`uniform:X0,X1,?`, …; its positions are known), or
+/// none when `spec` is not one or cannot be read (its own parse reports why).
+fn profile_unknown_breakpoints(spec: &str) -> Vec<f64> {
+    let spec = spec.trim();
+    let Some(q) = spec.find('?') else {
+        return Vec::new();
+    };
+    if !matches!(
+        spec.split_once(':'),
+        Some(("uniform" | "linear" | "table", _))
+    ) {
+        return Vec::new();
+    }
+    let rest = &spec[q + 1..];
+    let tail = match rest.strip_prefix('[') {
+        Some(r) => r.find(']').map_or("", |end| &r[end + 1..]),
+        None => rest,
+    };
+    crate::common::parse_profile(&format!("{}0{tail}", &spec[..q]))
+        .map(|p| p.breakpoints())
+        .unwrap_or_default()
 }
 
 fn parse_profile_unknown(spec: &str, st: &Structure) -> Result<Unknown, Fail> {

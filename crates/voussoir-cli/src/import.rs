@@ -297,6 +297,11 @@ pub struct ImportArgs {
     /// Where to write the model JSON (stdout if absent).
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Cut every support into N parts of equal x extent, named NAME@0 … NAME@(N-1) from the
+    /// left, so that each can be moved on its own (`settle model.json --move base@2=0,-1cm`).
+    /// N ≥ 2; a 3D support must be convex.
+    #[arg(long = "split-support", value_name = "N")]
+    pub split_support: Option<usize>,
     // Last: the flattened groups set the help heading of what follows them.
     #[command(flatten)]
     pub dxf: DxfArgs,
@@ -314,7 +319,8 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     if is_mesh(&a.drawing) {
         return run_mesh(a);
     }
-    let (model, rep) = read_dxf(&a.drawing, &a.dxf.options())?;
+    let (mut model, rep) = read_dxf(&a.drawing, &a.dxf.options())?;
+    let splits = split_equally(&mut model, a.split_support)?;
     // Validate now (overlaps, isolated blocks), so that a bad drawing fails at import.
     let st = structure_of(
         &model,
@@ -326,6 +332,7 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(&model)?;
     emit(a.output.as_deref(), &json)?;
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
+    eprint!("{}", crate::common::split_summary(&splits));
     for n in &rep.notes {
         eprintln!("note: {n}");
     }
@@ -333,6 +340,25 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
         eprintln!("warning: {w}");
     }
     Ok(())
+}
+
+/// `--split-support N`: every support cut into N equal parts along x.
+fn split_equally<M: voussoir::settlement_input::ModelSupports>(
+    model: &mut M,
+    n: Option<usize>,
+) -> Result<Vec<voussoir::settlement_input::SupportSplit>, Fail> {
+    let Some(n) = n else { return Ok(Vec::new()) };
+    if n < 2 {
+        return Err(Fail(format!(
+            "--split-support {n}: give the number of equal parts, 2 or more"
+        )));
+    }
+    voussoir::settlement_input::split_supports_equally(model, n).map_err(|e| {
+        Fail(format!(
+            "--split-support {n}: {}",
+            e.to_string().trim_start_matches("invalid request: ")
+        ))
+    })
 }
 
 /// Write the model JSON to `output` (committed now, so that the summary printed after it is
@@ -354,7 +380,8 @@ fn emit(output: Option<&Path>, json: &str) -> Result<(), Fail> {
 /// found now, named by OBJ object), write the JSON model.
 fn run_mesh(a: ImportArgs) -> Result<(), Fail> {
     crate::outputs::input(&a.drawing);
-    let (model, rep) = read_mesh(&a.drawing, &a.dxf.mesh_options())?;
+    let (mut model, rep) = read_mesh(&a.drawing, &a.dxf.mesh_options())?;
+    let splits = split_equally(&mut model, a.split_support)?;
     let st = Structure3d::new(
         &model,
         BuildOptions {
@@ -365,6 +392,7 @@ fn run_mesh(a: ImportArgs) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(&model)?;
     emit(a.output.as_deref(), &json)?;
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
+    eprint!("{}", crate::common::split_summary(&splits));
     for n in &rep.notes {
         eprintln!("note: {n}");
     }

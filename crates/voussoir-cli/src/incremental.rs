@@ -56,6 +56,8 @@ pub struct IncrementalArgs {
     #[arg(long)]
     pub no_stop: bool,
     #[command(flatten)]
+    pub split: crate::common::SplitArgs,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -110,6 +112,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         moves: a.moves.clone(),
         fixed: a.fixed.clone(),
         profile: None,
+        split: a.split.clone(),
     }
     .resolve()?;
     let solver = input.solver;
@@ -152,7 +155,8 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         incremental_with(&start, &control, &opts, &mut |_| {})?
     };
     a.draw.emit_incremental(&r, &input.path)?;
-    a.out.emit(&r, || summary(&start, &r))
+    a.out
+        .emit_split(&r, &input.splits(), || summary(&start, &r))
 }
 
 fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {

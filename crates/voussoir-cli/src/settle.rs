@@ -82,7 +82,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         AnyModel::Spatial(m) => return run3d(&a, &c, m),
     };
     a.draw.check_2d()?;
-    c.motion.apply(&mut model)?;
+    let splits = c.motion.apply(&mut model)?;
     // The model is validated first, so that a bad model is named before a missing motion.
     let st = c.input.structure_of(model.clone(), None)?;
     a.crushing.check_strength(&st)?;
@@ -148,7 +148,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
             )
         })
         .emit_settlement(&r, &c.input.path)?;
-    a.out.emit(&r, || {
+    a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
 }
@@ -160,7 +160,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         ));
     }
     // --friction-facets and --friction-cone are honoured here (as by limit and tilt).
-    c.motion.apply(&mut model)?;
+    let splits = c.motion.apply(&mut model)?;
     let st = c.input.structure3d_any_cone(model.clone(), None)?;
     if !model
         .supports
@@ -216,7 +216,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
             )
         })
         .emit_3d(&r, &c.input.path)?;
-    a.out.emit(&r, || {
+    a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
 }

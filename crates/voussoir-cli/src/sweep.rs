@@ -156,7 +156,9 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
     // Sweeps are 2D: the 3D friction flags are refused as for any 2D model.
     input.refuse_3d_friction()?;
     a.model.override_materials(&mut model)?;
-    a.settle.apply(&mut model)?;
+    let splits = a.settle.apply(&mut model)?;
+    // The sweep's records carry no model: the supports cut are told on stderr.
+    eprint!("{}", crate::common::split_summary(&splits));
     let spec = SweepSpec {
         kind,
         build: BuildOptions {

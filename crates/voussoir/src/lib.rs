@@ -52,6 +52,7 @@ pub mod result;
 pub mod scale;
 pub mod settlement_input;
 pub mod structure;
+pub mod support_split;
 pub mod sweep;
 
 pub use error::{Error, Result};

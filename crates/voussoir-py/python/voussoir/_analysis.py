@@ -111,7 +111,9 @@ def settle(
     degrees counter-clockwise about the support's centroid (the CLI's ``--move right=u,v[,θ]``;
     strings in that syntax are accepted too). ``fixed``: support name(s) declared fixed
     (bilateral). ``profile``: vertical settlement profile along x applied to every support,
-    ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``.
+    ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``; a support that
+    spans one of its breakpoints is first cut there into parts ``NAME@0``, ``NAME@1``, … (listed
+    in the JSON's ``split_supports``; docs/import.md).
     ``settlement_form``: ``"both"`` (default) or ``"force-only"``.
 
     As the CLI, the result is the canonical one (docs/canonical.md): the least-crack mechanism

@@ -345,11 +345,12 @@ pub fn split_summary(splits: &[SupportSplit]) -> String {
                 .zip(labels)
                 .enumerate()
                 .map(|(k, (v, l))| {
-                    if k < lengths {
-                        format!("{l} {:.3} mm", v * 1e3)
+                    let kind = if k < lengths {
+                        voussoir::lengths::Length::Motion
                     } else {
-                        format!("{l} {v:.3e} rad")
-                    }
+                        voussoir::lengths::Length::Rotation
+                    };
+                    format!("{l} {}", kind.show(*v))
                 })
                 .collect();
             let _ = writeln!(

@@ -502,7 +502,8 @@ impl ModelArgs {
     /// [`ModelArgs::resolve`]; `identify_survey`: for `identify`, whether its `--survey` was
     /// given (the survey flags are then its, and the model must be sound).
     pub fn resolve_with(&self, identify_survey: Option<bool>) -> Result<Input, Fail> {
-        let drawn = voussoir_io::dxf::is_dxf(&self.model) || voussoir_io::mesh::is_mesh(&self.model);
+        let drawn =
+            voussoir_io::dxf::is_dxf(&self.model) || voussoir_io::mesh::is_mesh(&self.model);
         let mut dxf = self.dxf.clone();
         match identify_survey {
             Some(given) => {
@@ -519,12 +520,19 @@ impl ModelArgs {
                 self.survey.check(given, "--survey")?;
             }
             None => {
-                self.survey.check(self.existing_cracks.is_some(), "--existing-cracks")?;
+                self.survey
+                    .check(self.existing_cracks.is_some(), "--existing-cracks")?;
                 // With a JSON model, --units is the survey drawing's.
                 if self.existing_cracks.is_some() && !drawn {
                     dxf.units = None;
                 }
             }
+        }
+        if !drawn && !self.dxf.crack_layers.is_empty() {
+            return Err(Fail(format!(
+                "--crack-layer reads a layer of a .dxf model, and {} is not one: give the crack survey drawing with --existing-cracks FILE.dxf (--survey-layer LAYER)",
+                self.model.display()
+            )));
         }
         if let Some(t) = self.tolerance {
             if !(t.is_finite() && t > 0.0) {

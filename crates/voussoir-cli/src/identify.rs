@@ -115,6 +115,7 @@ fn annotate(msg: &str, names: &[(usize, String)]) -> String {
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.draw.check()?;
     a.draw.check_2d()?;
+    a.model.survey.check(a.survey.is_some(), "--survey")?;
     if a.cracks.is_none() && a.survey.is_none() {
         return Err(Fail(
             "give the observed cracks: --cracks OBS.json, --survey SURVEY.dxf, or both".into(),

@@ -483,7 +483,7 @@ pub fn drawing_to_model(
                 0.0
             };
             return Err(IoError(format!(
-                "DXF entity {}: the polyline is open (its ends are {gap:.6} {} apart); blocks must be closed polylines",
+                "DXF entity {}: the polyline is open (its ends are {gap:.6} {} apart); blocks must be closed polylines (crack lines: read their layer with --crack-layer)",
                 r.what,
                 units.name()
             )));

@@ -268,12 +268,18 @@ pub enum SettlementForm {
 /// support motions scaled by `support_scale`: 1 for a settlement, 0 for a collapse mechanism,
 /// which is a rate with the supports held still): interpenetration `max(0, −(N d + g_n))` at
 /// contact points, `|N d + g_n|` at bilateral points, and sliding `|T d + g_t|` on joints
-/// without friction, over points that carry force.
+/// without friction, over points that carry force (for a collapse mechanism, not the points of
+/// an existing crack, which carry nothing until they close).
 pub fn kinematic_violation(map: &KinematicMap, d: &[f64], support_scale: f64) -> f64 {
     let (open, slide) = map.jumps(d, support_scale);
     let mut v = 0.0f64;
     for k in 0..map.num_points() {
-        // A point with a gap (an existing crack) may close it, not pass through it.
+        // A point with a gap (an existing crack) may close it, not pass through it. A collapse
+        // mechanism (`support_scale` 0) is a rate: an open crack carries nothing and its rate
+        // of opening or closing is free (the limit programs leave it so), whatever the width.
+        if support_scale == 0.0 && map.gap[k] > 0.0 {
+            continue;
+        }
         let o = if map.bilateral[k] {
             open[k].abs()
         } else {

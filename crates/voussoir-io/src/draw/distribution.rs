@@ -250,6 +250,24 @@ pub fn sweep_capacity_report(records: &[SweepRecord], opts: &ReportOptions) -> R
             .clone()
             .unwrap_or_else(|| "Capacity after settlement: distribution over a sweep".into()),
     );
+    rep.source = opts.source.clone();
+    rep.command = "sweep --capacity".into();
+    let solver = records.first().map(|r| r.solver.clone());
+    rep.sections.extend(crate::report_parts::front_matter(
+        None,
+        opts.inputs.as_ref(),
+        crate::report_parts::Analysis::Sweep,
+        &opts.source,
+        solver.as_ref(),
+        vec![(
+            "certified settlements".to_string(),
+            format!(
+                "{} of {} records",
+                records.iter().filter(|r| r.certified).count(),
+                records.len()
+            ),
+        )],
+    ));
     let Some(s) = capacity_summary(records) else {
         rep.subtitle = "no record has a capacity analysis".into();
         return rep;
@@ -266,8 +284,9 @@ pub fn sweep_capacity_report(records: &[SweepRecord], opts: &ReportOptions) -> R
             4
         )
     );
-    rep.section("Key numbers").key_values(summary_rows(&s));
-    rep.section("Quantiles").table(
+    let res = rep.section("Results");
+    res.key_values(summary_rows(&s));
+    res.table(
         "Quantiles of λ after the settlement (linear interpolation between order statistics)",
         vec!["probability".into(), "λ".into()],
         s.quantiles

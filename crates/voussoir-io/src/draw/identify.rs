@@ -9,6 +9,7 @@
 use super::report::{settlement_report, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, Drawing, Scene};
 use super::svg::{esc, human, num, text_width};
+use crate::lengths::Length;
 use std::fmt::Write as _;
 use voussoir::analysis::identify::{IdentifyResult, IdentifyStatus};
 use voussoir::result::BodyName;
@@ -207,6 +208,23 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
             .unwrap_or_else(|| "Inverse settlement analysis".to_string()),
     );
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = "identify".into();
+    let echo = crate::report_parts::ModelEcho::of_2d(&r.forward.geometry, r.forward.joints.len());
+    let cert = vec![(
+        "forward settlement analysis".to_string(),
+        r.certificate
+            .as_ref()
+            .map_or("not run".to_string(), |c| c.message.clone()),
+    )];
+    rep.sections.extend(crate::report_parts::front_matter(
+        Some(&echo),
+        opts.inputs.as_ref(),
+        crate::report_parts::Analysis::Identify,
+        &opts.source,
+        Some(&r.forward.solver),
+        cert,
+    ));
     let mut kv = vec![(
         "outcome".to_string(),
         format!("{:?}", r.status).to_lowercase(),
@@ -233,7 +251,31 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
     if let Some(c) = &r.certificate {
         kv.push(("forward analysis".into(), c.message.clone()));
     }
-    rep.section("Key numbers").key_values(kv);
+    let res = rep.section("Results");
+    res.key_values(kv);
+    res.text("Unknowns in the units of --unknown: m for a translation, rad for a rotation.");
+    let motions = r
+        .support_motions
+        .iter()
+        .map(|m| {
+            vec![
+                m.support.clone(),
+                Length::Motion.number(m.u),
+                Length::Motion.number(m.v),
+                Length::Rotation.number(m.theta),
+            ]
+        })
+        .collect();
+    res.table(
+        "Identified support motions (base plus unknowns)",
+        vec![
+            "support".to_string(),
+            format!("u ({})", Length::Motion.unit()),
+            format!("v ({})", Length::Motion.unit()),
+            format!("θ ({})", Length::Rotation.unit()),
+        ],
+        motions,
+    );
     let d = draw_identify(
         r,
         &DrawOptions {
@@ -266,7 +308,7 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
             ]
         })
         .collect();
-    rep.section("Observations").table(
+    rep.section("Observations (mm)").table(
         "Observed against predicted widths (mm)",
         [
             "crack",
@@ -285,6 +327,10 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
     );
     let fwd = settlement_report(&r.forward, opts);
     for mut s in fwd.sections {
+        // The hypotheses and inputs are the identification's own, above.
+        if s.heading == "Hypotheses" || s.heading == "Inputs" {
+            continue;
+        }
         s.heading = format!("Forward analysis — {}", s.heading);
         rep.sections.push(s);
     }

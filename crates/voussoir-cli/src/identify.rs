@@ -242,15 +242,23 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
                 title: a.draw.title.clone(),
                 source: a.model.model.display().to_string(),
                 scale: a.draw.scale,
-                inputs: Some(crate::report_inputs::report_inputs(
-                    "identify",
-                    facts,
-                    &st,
-                    &input,
-                    &solver,
-                    crate::report_inputs::Laws::default(),
-                    settings(&a, &obs),
-                )),
+                inputs: Some(voussoir_io::report_parts::ReportInputs {
+                    // The model with the known motions (the identified ones are results).
+                    model: Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                        &voussoir::Assembly::shapes(&st),
+                        voussoir::Assembly::contact_joints(&st).len(),
+                    )),
+                    unknown_lengths: unknowns.iter().map(|u| u.length()).collect(),
+                    ..crate::report_inputs::report_inputs(
+                        "identify",
+                        facts,
+                        &st,
+                        &input,
+                        &solver,
+                        crate::report_inputs::Laws::default(),
+                        settings(&a, &obs),
+                    )
+                }),
             },
         );
         crate::outputs::stage(path, rep.to_html().as_bytes())?;

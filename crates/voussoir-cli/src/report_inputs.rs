@@ -161,5 +161,6 @@ pub fn report_inputs_tol<S: Assembly>(
         tolerances,
         settings,
         model: None,
+        unknown_lengths: Vec::new(),
     }
 }

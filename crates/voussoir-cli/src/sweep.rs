@@ -311,6 +311,9 @@ fn settings(a: &SweepArgs, n: usize) -> Vec<(String, String)> {
     if !a.settle.moves.is_empty() {
         kv.push(("base motions (--move)".to_string(), a.settle.moves.join("; ")));
     }
+    if let Some(p) = &a.settle.profile {
+        kv.push(("base settlement profile (--profile)".to_string(), p.clone()));
+    }
     if let Some(s) = &a.shard {
         kv.push(("shard (--shard)".to_string(), s.clone()));
     }

@@ -119,6 +119,8 @@ pub struct ReportInputs {
     /// The model as the command built it, for results that carry no geometry (`safety`, a
     /// sweep's records): what the inputs section echoes.
     pub model: Option<ModelEcho>,
+    /// `identify`: the kind of length of each unknown (a motion in cm, a rotation in mrad).
+    pub unknown_lengths: Vec<voussoir::lengths::Length>,
 }
 
 /// What kind of analysis a report is about.

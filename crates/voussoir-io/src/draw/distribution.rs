@@ -285,7 +285,30 @@ pub fn sweep_capacity_report(records: &[SweepRecord], opts: &ReportOptions) -> R
         )
     );
     let res = rep.section("Results");
-    res.key_values(summary_rows(&s));
+    let mut kv = summary_rows(&s);
+    let settlements: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r.capacity.as_ref()?.max_settlement)
+        .collect();
+    if !settlements.is_empty() {
+        let (lo, hi) = settlements
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &x| {
+                (l.min(x), h.max(x))
+            });
+        kv.insert(
+            1,
+            (
+                "largest support settlement of a record: least / largest".into(),
+                format!(
+                    "{} / {}",
+                    crate::lengths::Length::Motion.show(lo),
+                    crate::lengths::Length::Motion.show(hi)
+                ),
+            ),
+        );
+    }
+    res.key_values(kv);
     res.table(
         "Quantiles of λ after the settlement (linear interpolation between order statistics)",
         vec!["probability".into(), "λ".into()],

@@ -8,7 +8,7 @@
 
 use super::report::{settlement_report, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, Drawing, Scene};
-use super::svg::{esc, human, num, text_width};
+use super::svg::{esc, fmt_fixed, human, num, text_width};
 use crate::lengths::Length;
 use std::fmt::Write as _;
 use voussoir::analysis::identify::{IdentifyResult, IdentifyStatus};
@@ -229,23 +229,34 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
         "outcome".to_string(),
         format!("{:?}", r.status).to_lowercase(),
     )];
-    for u in &r.unknowns {
+    // Each unknown in the summaries' unit (cm, or mrad for a rotation) when the command said
+    // which it is; else in the units of --unknown (m, rad).
+    let kinds = opts
+        .inputs
+        .as_ref()
+        .map(|i| i.unknown_lengths.clone())
+        .unwrap_or_default();
+    for (k, u) in r.unknowns.iter().enumerate() {
+        let show = |x: f64| match kinds.get(k) {
+            Some(l) => l.show(x),
+            None => format!("{} (m or rad)", human(x, 6)),
+        };
         let range = match (u.range_min, u.range_max) {
-            (Some(a), Some(b)) => format!(", range [{}, {}]", human(a, 5), human(b, 5)),
+            (Some(a), Some(b)) => format!(", range [{}, {}]", show(a), show(b)),
             _ if u.range_computed => ", range unbounded or empty".to_string(),
             _ => String::new(),
         };
         kv.push((
-            u.name.clone(),
-            format!("{}{range} — {}", human(u.value, 6), u.note),
+            format!("unknown {}", u.name),
+            format!("{}{range} — {}", show(u.value), u.note),
         ));
     }
     kv.push((
         "misfit".into(),
         format!(
-            "{} tolerances in total, largest {} mm",
-            human(r.total_misfit, 4),
-            human(r.max_misfit * 1000.0, 4)
+            "{} tolerances in total, largest {}",
+            fmt_fixed(r.total_misfit, 4),
+            Length::Opening.show(r.max_misfit)
         ),
     ));
     if let Some(c) = &r.certificate {
@@ -253,7 +264,6 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
     }
     let res = rep.section("Results");
     res.key_values(kv);
-    res.text("Unknowns in the units of --unknown: m for a translation, rad for a rotation.");
     let motions = r
         .support_motions
         .iter()
@@ -300,11 +310,15 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
                 o.crack.to_string(),
                 o.joint.to_string(),
                 o.point.to_string(),
-                format!("({}, {})", human(o.x, 5), human(o.y, 5)),
-                human(o.observed * 1000.0, 4),
-                human(o.predicted * 1000.0, 4),
-                human(o.misfit * 1000.0, 3),
-                human(o.tolerance * 1000.0, 3),
+                format!(
+                    "({}, {})",
+                    Length::Position.number(o.x),
+                    Length::Position.number(o.y)
+                ),
+                Length::Opening.number(o.observed),
+                Length::Opening.number(o.predicted),
+                Length::Opening.number(o.misfit),
+                Length::Opening.number(o.tolerance),
             ]
         })
         .collect();

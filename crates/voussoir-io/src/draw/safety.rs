@@ -257,8 +257,8 @@ pub fn safety_report(r: &SafetyResult, opts: &ReportOptions) -> Report {
         .unwrap_or_else(|| "safety".into());
     let cert = vec![
         (
-            "bisection tolerance (on the joint fraction)".to_string(),
-            human(r.tolerance, 3),
+            "bisection on the joint fraction".to_string(),
+            format!("to {} (absolute)", human(r.tolerance, 3)),
         ),
         ("LP solves".to_string(), r.solves.to_string()),
     ];

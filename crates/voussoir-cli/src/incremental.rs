@@ -203,7 +203,10 @@ fn settings(a: &IncrementalArgs, r: &IncrementalResult) -> Vec<(String, String)>
                 r.control.direction[0], r.control.direction[1]
             ),
         ),
-        ("largest control displacement (--max)".to_string(), cm(a.max)),
+        (
+            "largest control displacement (--max)".to_string(),
+            cm(a.max),
+        ),
         ("step (--step)".to_string(), cm(a.step)),
         (
             "after the peak".to_string(),

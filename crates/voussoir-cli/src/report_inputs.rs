@@ -128,9 +128,7 @@ pub fn report_inputs_tol<S: Assembly>(
             .iter()
             .map(|j| (j.law.friction, j.law.strength, j.bilateral)),
     );
-    let tol = given
-        .or(facts.tolerance)
-        .unwrap_or(JOINT_TOLERANCE);
+    let tol = given.or(facts.tolerance).unwrap_or(JOINT_TOLERANCE);
     let tolerances = vec![
         (
             "joint detection".to_string(),

@@ -32,7 +32,12 @@ pub struct SafetyArgs {
     #[arg(long, value_name = "FILE", help_heading = "Drawing")]
     pub report: Option<PathBuf>,
     /// Title of the report (default: "Safety assessment").
-    #[arg(long, value_name = "TEXT", help_heading = "Drawing", requires = "report")]
+    #[arg(
+        long,
+        value_name = "TEXT",
+        help_heading = "Drawing",
+        requires = "report"
+    )]
     pub title: Option<String>,
     #[command(flatten)]
     pub model: ModelArgs,

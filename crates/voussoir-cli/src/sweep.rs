@@ -292,8 +292,12 @@ fn write_distribution(
 /// table).
 fn settings(a: &SweepArgs, n: usize) -> Vec<(String, String)> {
     let mode = match (a.magnitudes, a.angles, a.samples) {
-        (Some(k), _, _) => format!("magnitudes (--magnitudes {k}): the base motions × k/{k}, k = 1 … {k}"),
-        (_, Some(k), _) => format!("angles (--angles {k}): the --move vectors rotated through 360°·k/{k}"),
+        (Some(k), _, _) => {
+            format!("magnitudes (--magnitudes {k}): the base motions × k/{k}, k = 1 … {k}")
+        }
+        (_, Some(k), _) => {
+            format!("angles (--angles {k}): the --move vectors rotated through 360°·k/{k}")
+        }
         (_, _, Some(k)) => format!(
             "Monte Carlo (--samples {k}): coefficient of variation {} (--cov), seed {} (--seed)",
             a.cov, a.seed
@@ -309,7 +313,10 @@ fn settings(a: &SweepArgs, n: usize) -> Vec<(String, String)> {
         ),
     ];
     if !a.settle.moves.is_empty() {
-        kv.push(("base motions (--move)".to_string(), a.settle.moves.join("; ")));
+        kv.push((
+            "base motions (--move)".to_string(),
+            a.settle.moves.join("; "),
+        ));
     }
     if let Some(p) = &a.settle.profile {
         kv.push(("base settlement profile (--profile)".to_string(), p.clone()));

@@ -31,10 +31,7 @@ fn ok(args: &[&str]) -> Output {
 }
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "voussoir-issue32r2-{}-{name}",
-        std::process::id()
-    ));
+    let d = std::env::temp_dir().join(format!("voussoir-issue32r2-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
@@ -106,12 +103,23 @@ fn table_after(html: &str, heading: &str) -> Vec<Vec<String>> {
 /// dropped): |printed − x| ≤ half a unit of the last printed place.
 fn same_to_printed_digits(printed: &str, x: f64, decimals: usize) {
     let places = printed.split('.').nth(1).map_or(0, str::len);
-    assert!(places <= decimals, "{printed:?}: more than {decimals} decimals");
-    assert_eq!(printed, {
-        let t = format!("{x:.decimals$}");
-        let t = if t.contains('.') { t.trim_end_matches('0').trim_end_matches('.').to_string() } else { t };
-        t
-    }, "printed {printed:?}, the JSON's {x}");
+    assert!(
+        places <= decimals,
+        "{printed:?}: more than {decimals} decimals"
+    );
+    assert_eq!(
+        printed,
+        {
+            let t = format!("{x:.decimals$}");
+            let t = if t.contains('.') {
+                t.trim_end_matches('0').trim_end_matches('.').to_string()
+            } else {
+                t
+            };
+            t
+        },
+        "printed {printed:?}, the JSON's {x}"
+    );
     assert!((num(printed) - x).abs() <= 0.5 * 10f64.powi(-(decimals as i32)) * (1.0 + 1e-9));
 }
 
@@ -150,7 +158,10 @@ fn check_front_matter(html: &str, command: &str) {
         "{command}: the title block names the analysis"
     );
     assert!(kv(html, "solver").starts_with("highs ("), "{command}");
-    assert!(kv(html, "joint detection").starts_with("1e-7 × "), "{command}");
+    assert!(
+        kv(html, "joint detection").starts_with("1e-7 × "),
+        "{command}"
+    );
 }
 
 /// A support's row in the inputs' table of supports and prescribed motions.
@@ -194,17 +205,27 @@ fn issue32_item3_safety_report_2d_states_the_safety_factor_of_the_json() {
     assert!(html.contains("Coulomb friction: μ = 0.6 (17 joints)"));
     assert!(html.contains("Finite compressive strength: f_c = 4000 kPa (17 joints)"));
     assert!(html.contains("Static (lower-bound, safe) theorem"));
-    assert!(html.contains("Drucker"), "the static theorem's caveat with friction");
+    assert!(
+        html.contains("Drucker"),
+        "the static theorem's caveat with friction"
+    );
     // The total weight by hand, echoed in kN.
     let w = kv(&html, "total weight W (vertical dead load)");
     let w = num(w.strip_suffix(" kN").expect("in kN"));
-    assert!((w - arch_weight()).abs() <= 1e-6 * w, "W {w}, by hand {}", arch_weight());
+    assert!(
+        (w - arch_weight()).abs() <= 1e-6 * w,
+        "W {w}, by hand {}",
+        arch_weight()
+    );
     // The safety factor, to the printed digits (6 decimals), and its definition.
     let g = json["geometric_safety_factor"].as_f64().expect("a factor");
     let f = json["least_joint_fraction"].as_f64().unwrap();
     assert!(g > 1.0 && (g * f - 1.0).abs() < 1e-12);
     same_to_printed_digits(
-        kv(&html, "geometric safety factor (Heyman) = 1 / least joint fraction"),
+        kv(
+            &html,
+            "geometric safety factor (Heyman) = 1 / least joint fraction",
+        ),
         g,
         6,
     );
@@ -256,14 +277,14 @@ fn issue32_item3_safety_report_3d_echoes_the_vault_and_its_factor() {
         kv(&html, "bisection tolerance (--bisection-tolerance)"),
         "1e-5 (absolute, on the joint fraction)"
     );
-    assert_eq!(
-        kv(&html, "reaction ranges"),
-        "not computed (--no-ranges)"
-    );
+    assert_eq!(kv(&html, "reaction ranges"), "not computed (--no-ranges)");
     assert!(html.contains("Reaction ranges: not computed (--no-ranges)."));
     let g = json["geometric_safety_factor"].as_f64().expect("a factor");
     same_to_printed_digits(
-        kv(&html, "geometric safety factor (Heyman) = 1 / least joint fraction"),
+        kv(
+            &html,
+            "geometric safety factor (Heyman) = 1 / least joint fraction",
+        ),
         g,
         6,
     );
@@ -296,7 +317,10 @@ fn issue32_item3_incremental_report_echoes_its_lengths_in_cm() {
     check_front_matter(&html, "incremental");
     assert!(html.contains("Finite displacements: the live loads grow with λ"));
     // 30 mm and 1 mm as the README's cm; the settlement of --move in the supports' table (mm).
-    assert_eq!(kv(&html, "largest control displacement (--max)"), "3.0000 cm");
+    assert_eq!(
+        kv(&html, "largest control displacement (--max)"),
+        "3.0000 cm"
+    );
     assert_eq!(kv(&html, "step (--step)"), "0.1000 cm");
     let right = support_row(&html, "right");
     assert_eq!(num(&right[2]), 5.0, "u (mm) of the right support");
@@ -307,8 +331,7 @@ fn issue32_item3_incremental_report_echoes_its_lengths_in_cm() {
     let last = json["curve"].as_array().unwrap().last().unwrap()["displacement"]
         .as_f64()
         .unwrap();
-    assert!(kv(&html, "final control displacement")
-        .starts_with(&format!("{:.4} cm", last * 100.0)));
+    assert!(kv(&html, "final control displacement").starts_with(&format!("{:.4} cm", last * 100.0)));
 }
 
 #[test]
@@ -361,7 +384,11 @@ fn issue32_item3_identify_report_echoes_the_known_motion_and_gives_the_unknown_i
     assert!(html.contains("Inverse settlement analysis: the unknown support motions"));
     // The inputs: the known motion (−2 mm), not the identified one; the unknown as given.
     assert_eq!(num(&support_row(&html, "left")[3]), -2.0, "v (mm) of left");
-    assert_eq!(num(&support_row(&html, "right")[2]), 0.0, "u of right is unknown");
+    assert_eq!(
+        num(&support_row(&html, "right")[2]),
+        0.0,
+        "u of right is unknown"
+    );
     assert_eq!(kv(&html, "unknowns (--unknown; m and rad)"), "right=u[0:]");
     // The identified unknown in cm, the JSON's value (≈ 1 cm) to 4 decimals.
     let u = json["unknowns"][0]["value"].as_f64().unwrap();
@@ -371,7 +398,10 @@ fn issue32_item3_identify_report_echoes_the_known_motion_and_gives_the_unknown_i
     let rows = table_after(&html, "Observed against predicted widths (mm)");
     assert_eq!(rows.len(), json["observations"].as_array().unwrap().len());
     for (row, o) in rows.iter().zip(json["observations"].as_array().unwrap()) {
-        assert_eq!(row[4], format!("{:.3}", o["observed"].as_f64().unwrap() * 1e3));
+        assert_eq!(
+            row[4],
+            format!("{:.3}", o["observed"].as_f64().unwrap() * 1e3)
+        );
         assert_eq!(row[7], "0.100");
     }
     // The forward analysis' crack table in mm follows, once; the hypotheses are not repeated.
@@ -444,13 +474,20 @@ fn issue32_item3_sweep_report_echoes_the_profile_and_the_monte_carlo() {
     let settlements: Vec<f64> = std::fs::read_to_string(&jl)
         .unwrap()
         .lines()
-        .map(|l| serde_json::from_str::<Value>(l).unwrap()["capacity"]["max_settlement"].as_f64().unwrap())
+        .map(|l| {
+            serde_json::from_str::<Value>(l).unwrap()["capacity"]["max_settlement"]
+                .as_f64()
+                .unwrap()
+        })
         .collect();
     assert_eq!(settlements.len(), 12);
     let lo = settlements.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = settlements.iter().copied().fold(0.0, f64::max);
     assert_eq!(
-        kv(&html, "largest support settlement of a record: least / largest"),
+        kv(
+            &html,
+            "largest support settlement of a record: least / largest"
+        ),
         format!("{:.4} cm / {:.4} cm", lo * 100.0, hi * 100.0)
     );
 }
@@ -464,7 +501,9 @@ fn issue32_item3_a_saved_safety_result_reports_that_its_inputs_are_not_recorded(
     let report = d.join("plot.html");
     let html = twice(&["plot", s(&saved), "-o", s(&report)], &report);
     assert!(html.contains("<h2>Hypotheses</h2>"));
-    assert!(html.contains("The model (geometry, materials, loads, supports) is not recorded with this result"));
+    assert!(html.contains(
+        "The model (geometry, materials, loads, supports) is not recorded with this result"
+    ));
     assert!(html.contains("Joint laws (friction, compressive strength): not recorded"));
     assert!(html.contains("<h2>Results</h2>"));
 }

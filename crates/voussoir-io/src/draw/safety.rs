@@ -284,10 +284,10 @@ pub fn safety_report(r: &SafetyResult, opts: &ReportOptions) -> Report {
     ));
     kv.push((
         "least joint fraction".into(),
-        r.least_joint_fraction.map_or(
-            "not computed (the structure does not stand)".into(),
-            |f| format!("{} %", fmt_fixed(100.0 * f, 4)),
-        ),
+        r.least_joint_fraction
+            .map_or("not computed (the structure does not stand)".into(), |f| {
+                format!("{} %", fmt_fixed(100.0 * f, 4))
+            }),
     ));
     let res = rep.section("Results");
     res.key_values(kv);

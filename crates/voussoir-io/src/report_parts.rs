@@ -1202,7 +1202,7 @@ table.kv td{{overflow-wrap:anywhere}}
 @media print{{
 body{{background:#fff;font-size:10pt}}
 main{{max-width:none;margin:0;padding:0;box-shadow:none}}
-nav,.slider,.controls,.hint,.viewer,details,button,input,.screen-only{{display:none!important}}
+nav,.slider,.controls,.hint,.viewer,details,button,input,.screen-only,main>footer{{display:none!important}}
 .print-only{{display:block}}
 h1,h2,h3{{break-after:avoid;page-break-after:avoid}}
 h2{{margin-top:18px}}

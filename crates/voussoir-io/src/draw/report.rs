@@ -254,9 +254,10 @@ pub(crate) fn section_html(o: &mut String, s: &Section, id: &str, fig: &mut usiz
                     // On paper the folded table is left out: say so, rather than a bare heading.
                     let _ = writeln!(
                         o,
-                        "<p class=\"print-only note\">{}: {} rows, folded on screen and not printed (the result files hold them).</p>",
+                        "<p class=\"print-only note\">{}: {} {}, folded on screen and not printed (the result files hold them).</p>",
                         esc(caption),
-                        rows.len()
+                        rows.len(),
+                        if rows.len() == 1 { "row" } else { "rows" }
                     );
                 }
             }

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Print the HTML reports of a 2D and a 3D settlement to PDF with headless Chromium and check
-# them page by page (issue 32: a report to sign):
-#   - the page count is within bounds (2D: 3 to 8 pages, 3D: 3 to 8 pages);
+# Print the HTML reports of a 2D and a 3D settlement and of a 2D safety assessment to PDF with
+# headless Chromium and check them page by page (issue 32: a report to sign):
+#   - the page count is within bounds (settlements 2D and 3D: 3 to 8 pages; safety: 2 to 6);
 #   - every page has ink: rendered to greyscale at 40 dpi (pdftoppm, poppler-utils), at least
 #     0.5 % of its pixels are darker than paper, and every page carries the running footer
 #     "page K of N" (the @page rule of the print stylesheet);
 #   - the text (pdftotext) has the hypotheses, inputs, results, crack and reaction tables and the
-#     sign-off, and none of the screen-only controls (the slider, "reset view").
+#     sign-off (safety: the safety factor and the reaction ranges in place of the crack and
+#     reaction tables), and none of the screen-only controls (the slider, "reset view").
 # It writes the PDFs and PNGs of every page (60 dpi) to OUTDIR for a human to look at.
 #
 #   scripts/check-report-pdf.sh [OUTDIR]      (default: target/report-pdf-check)
@@ -45,11 +46,14 @@ $v gen arch --voussoirs 16 -o "$out/arch.json" >/dev/null
 $v settle "$out/arch.json" --move right=0.01,-0.02 --report "$out/arch-settle.html" >/dev/null
 $v settle crates/voussoir-io/tests/fixtures/vault3d.json --move right=0.02,0,-0.01 \
   --report "$out/vault-settle.html" >/dev/null
+# The safety assessment of the same arch (2D): no mechanism, so no crack table; the safety
+# factor and the reaction ranges instead.
+$v safety "$out/arch.json" --friction 0.6 --report "$out/arch-safety.html" >/dev/null
 
 profile=$(mktemp -d)
 trap 'rm -rf "$profile"' EXIT
 status=0
-for name in arch-settle vault-settle; do
+for name in arch-settle vault-settle arch-safety; do
   html="$out/$name.html"
   url="file://$(cd "$(dirname "$html")" && pwd)/$(basename "$html")"
   rm -f "$out/$name.pdf" "$out/$name"-*.png "$out/$name"-*.pgm
@@ -67,7 +71,9 @@ for name in arch-settle vault-settle; do
   python3 - "$out" "$name" <<'EOF' || status=1
 import glob, re, sys
 out, name = sys.argv[1], sys.argv[2]
-lo, hi = 3, 8
+# A safety report has no mechanism: fewer pages, its own results.
+safety = name.endswith("-safety")
+lo, hi = (2, 6) if safety else (3, 8)
 pages = sorted(glob.glob(f"{out}/{name}-*.pgm"), key=lambda p: int(re.findall(r"-(\d+)\.pgm$", p)[0]))
 fail = []
 if not lo <= len(pages) <= hi:
@@ -87,9 +93,12 @@ per_page = text.split("\f")
 for k in range(1, len(pages) + 1):
     if f"page {k} of {len(pages)}" not in per_page[k - 1]:
         fail.append(f"page {k}: no running footer 'page {k} of {len(pages)}'")
-for want in ["Hypotheses", "Inputs", "Materials", "Supports and prescribed motions",
-             "Solver, tolerances and certificate", "Results", "Support reactions", "Cracks",
-             "width (mm)", "Sign-off", "checked by"]:
+common = ["Hypotheses", "Inputs", "Materials", "Supports and prescribed motions",
+          "Solver, tolerances and certificate", "Results", "Sign-off", "checked by"]
+results = (["geometric safety factor (Heyman)", "least joint fraction",
+            "Admissible support reactions", "least (kN)"] if safety
+           else ["Support reactions", "Cracks", "width (mm)"])
+for want in common + results:
     if want not in text:
         fail.append(f"'{want}' is not printed")
 for screen_only in ["displacement scale", "reset view", "Drag to rotate", "All joints ("]:
@@ -101,5 +110,5 @@ sys.exit(1 if fail else 0)
 EOF
   rm -f "$out/$name"-*.pgm
 done
-[ $status -eq 0 ] && echo "report PDFs checked: $out/{arch,vault}-settle.pdf and their page PNGs"
+[ $status -eq 0 ] && echo "report PDFs checked: $out/{arch,vault}-settle.pdf, $out/arch-safety.pdf and their page PNGs"
 exit $status

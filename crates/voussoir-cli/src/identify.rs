@@ -147,6 +147,7 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
         );
         voussoir::settlement_input::refresh_motions(&model, &mut splits);
     }
+    let facts = crate::report_inputs::facts_2d(&model);
     let st = input.structure_of(model, None)?;
     let solver = input.solver;
     let (obs, names) = observations(&a, model_units)?;
@@ -176,7 +177,23 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
                 title: a.draw.title.clone(),
                 source: a.model.model.display().to_string(),
                 scale: a.draw.scale,
-                inputs: None,
+                inputs: Some(voussoir_io::report_parts::ReportInputs {
+                    // The model with the known motions (the identified ones are results).
+                    model: Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                        &voussoir::Assembly::shapes(&st),
+                        voussoir::Assembly::contact_joints(&st).len(),
+                    )),
+                    unknown_lengths: unknowns.iter().map(|u| u.length()).collect(),
+                    ..crate::report_inputs::report_inputs(
+                        "identify",
+                        facts,
+                        &st,
+                        &input,
+                        &solver,
+                        crate::report_inputs::Laws::default(),
+                        settings(&a, &obs),
+                    )
+                }),
             },
         );
         crate::outputs::stage(path, rep.to_html().as_bytes())?;
@@ -184,6 +201,40 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     // Each unknown's kind of length: a rotation (every support's θ only) or a motion.
     let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
     a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
+}
+
+/// The settings of the identification as given, for the report.
+fn settings(a: &IdentifyArgs, obs: &Observations) -> Vec<(String, String)> {
+    let mut kv = vec![(
+        "unknowns (--unknown; m and rad)".to_string(),
+        a.unknowns.join("; "),
+    )];
+    let mut sources = Vec::new();
+    if let Some(p) = &a.cracks {
+        sources.push(format!("{} (--cracks)", p.display()));
+    }
+    if let Some(p) = &a.survey.survey {
+        sources.push(format!("{} (--survey)", p.display()));
+    }
+    kv.push((
+        "observed cracks".to_string(),
+        format!("{} cracks from {}", obs.cracks.len(), sources.join(" and ")),
+    ));
+    if !a.settle.moves.is_empty() {
+        kv.push((
+            "known motions (--move)".to_string(),
+            a.settle.moves.join("; "),
+        ));
+    }
+    kv.push((
+        "identifiability ranges".to_string(),
+        if a.no_ranges {
+            "not computed (--no-ranges)".to_string()
+        } else {
+            "computed (two LPs per unknown)".to_string()
+        },
+    ));
+    kv
 }
 
 /// The summary; lengths by the README's rule ([`voussoir_io::lengths`]): support motions in

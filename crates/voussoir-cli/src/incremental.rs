@@ -116,6 +116,11 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     }
     .resolve()?;
     let solver = input.solver;
+    // The model's materials for the report (read again only when one is asked for).
+    let facts = match a.draw.report {
+        Some(_) => crate::report_inputs::facts_2d(&input.load()?),
+        None => Default::default(),
+    };
     let st = input.structure(Some(&motion))?;
     let start = if a.moves.is_empty() {
         st.clone()
@@ -154,9 +159,79 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     } else {
         incremental_with(&start, &control, &opts, &mut |_| {})?
     };
-    a.draw.emit_incremental(&r, &input.path)?;
+    a.draw
+        .clone()
+        .with_inputs(|| {
+            let mut i = crate::report_inputs::report_inputs(
+                "incremental",
+                facts,
+                &st,
+                &input,
+                &solver,
+                crate::report_inputs::Laws::default(),
+                settings(&a, &r),
+            );
+            // The model with the settlement given by --move (the result starts after it).
+            i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                &voussoir::Assembly::shapes(&st),
+                voussoir::Assembly::contact_joints(&st).len(),
+            ));
+            i
+        })
+        .emit_incremental(&r, &input.path)?;
     a.out
         .emit_split(&r, &input.splits(), || summary(&start, &r))
+}
+
+/// The settings of the analysis as given (lengths by the README's rule: cm), for the report.
+fn settings(a: &IncrementalArgs, r: &IncrementalResult) -> Vec<(String, String)> {
+    let cm = |x: f64| Length::Motion.show(x);
+    let mut kv = vec![
+        (
+            "control point (--control)".to_string(),
+            format!(
+                "({}, {}) m, carried by block {}",
+                Length::Position.number(r.control.point[0]),
+                Length::Position.number(r.control.point[1]),
+                r.control.block
+            ),
+        ),
+        (
+            "control direction (--direction)".to_string(),
+            format!(
+                "({:.4}, {:.4})",
+                r.control.direction[0], r.control.direction[1]
+            ),
+        ),
+        (
+            "largest control displacement (--max)".to_string(),
+            cm(a.max),
+        ),
+        ("step (--step)".to_string(), cm(a.step)),
+        (
+            "after the peak".to_string(),
+            if a.no_stop {
+                "go on to --max (--no-stop)".to_string()
+            } else {
+                "stop when λ has fallen to zero".to_string()
+            },
+        ),
+    ];
+    if !a.moves.is_empty() {
+        kv.push((
+            "settlement first (--move)".to_string(),
+            format!(
+                "{} (the supports' motions below); the analysis starts from the settled geometry with its cracks open{}",
+                a.moves.join("; "),
+                if a.keep_fixed {
+                    ", fixed supports kept tied (--keep-fixed)"
+                } else {
+                    ""
+                }
+            ),
+        ));
+    }
+    kv
 }
 
 fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {

@@ -101,23 +101,41 @@ pub fn report_inputs<S: Assembly>(
     laws: Laws,
     settings: Vec<(String, String)>,
 ) -> ReportInputs {
+    report_inputs_tol(
+        command,
+        facts,
+        st,
+        input.build.tolerance,
+        solver,
+        laws,
+        settings,
+    )
+}
+
+/// [`report_inputs`] for a command that reads its model without an [`Input`] (`sweep`):
+/// `given`, the joint-detection tolerance of `--tolerance`.
+pub fn report_inputs_tol<S: Assembly>(
+    command: &str,
+    facts: ModelFacts,
+    st: &S,
+    given: Option<f64>,
+    solver: &SolverOptions,
+    laws: Laws,
+    settings: Vec<(String, String)>,
+) -> ReportInputs {
     let joints = JointLaws::count(
         st.contact_joints()
             .iter()
             .map(|j| (j.law.friction, j.law.strength, j.bilateral)),
     );
-    let tol = input
-        .build
-        .tolerance
-        .or(facts.tolerance)
-        .unwrap_or(JOINT_TOLERANCE);
+    let tol = given.or(facts.tolerance).unwrap_or(JOINT_TOLERANCE);
     let tolerances = vec![
         (
             "joint detection".to_string(),
             format!(
                 "{} × the model's bounding-box diagonal ({})",
                 voussoir_io::report_parts::sci(tol),
-                if input.build.tolerance.is_some() {
+                if given.is_some() {
                     "--tolerance"
                 } else if facts.tolerance.is_some() {
                     "the model's tolerance"
@@ -140,5 +158,7 @@ pub fn report_inputs<S: Assembly>(
         non_associative: laws.non_associative,
         tolerances,
         settings,
+        model: None,
+        unknown_lengths: Vec::new(),
     }
 }

@@ -7,6 +7,7 @@ use crate::gen::{ArchArgs, DomeArgs};
 use clap::{Args, Subcommand};
 use serde::Serialize;
 use std::fmt::Write as _;
+use std::path::PathBuf;
 use voussoir::analysis::safety::{
     least_thickness, safety, LeastThickness, SafetyOptions, SafetyResult,
 };
@@ -25,6 +26,19 @@ pub struct SafetyArgs {
     /// `settle --no-ranges`. (`--no-reactions` is another name of this flag.)
     #[arg(long, alias = "no-reactions")]
     pub no_ranges: bool,
+    /// Write a self-contained HTML report: hypotheses, inputs (geometry, materials, loads,
+    /// supports, solver, tolerances), the safety factor with its definition, the reaction
+    /// ranges (table and chart). Prints to PDF (docs/report3d.md).
+    #[arg(long, value_name = "FILE", help_heading = "Drawing")]
+    pub report: Option<PathBuf>,
+    /// Title of the report (default: "Safety assessment").
+    #[arg(
+        long,
+        value_name = "TEXT",
+        help_heading = "Drawing",
+        requires = "report"
+    )]
+    pub title: Option<String>,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -123,18 +137,93 @@ pub fn run(a: SafetyArgs) -> Result<(), Fail> {
         reactions: !a.no_ranges,
         solver,
     };
+    use crate::report_inputs::{facts_2d, facts_3d, report_inputs, Laws};
+    use voussoir_io::report_parts::ModelEcho;
     match input.load_any()? {
         AnyModel::Planar(m) => {
+            let facts = facts_2d(&m);
             let st = input.structure_of(m, None)?;
             let r = safety(&st, &opts(input.solver))?;
+            if a.report.is_some() {
+                let mut i = report_inputs(
+                    "safety",
+                    facts,
+                    &st,
+                    &input,
+                    &input.solver,
+                    Laws::default(),
+                    settings(&a),
+                );
+                i.model = Some(ModelEcho::of_2d(&st.shapes(), st.contact_joints().len()));
+                write_report(&a, &r, i, &input.path)?;
+            }
             a.out.emit(&r, || summary(&st, &r))
         }
         AnyModel::Spatial(m) => {
+            let facts = facts_3d(&m);
             let st = input.structure3d(m, None)?;
             let r = safety(&st, &opts(input.solver3d))?;
+            if a.report.is_some() {
+                let mut i = report_inputs(
+                    "safety",
+                    facts,
+                    &st,
+                    &input,
+                    &input.solver3d,
+                    Laws {
+                        cone: Some(crate::settle::friction_cone(&input, &st)),
+                        ..Laws::default()
+                    },
+                    settings(&a),
+                );
+                i.model = Some(ModelEcho::of_3d(&st.shapes(), st.contact_joints().len()));
+                write_report(&a, &r, i, &input.path)?;
+            }
             a.out.emit(&r, || summary(&st, &r))
         }
     }
+}
+
+/// The settings of `safety` as given, for its report.
+fn settings(a: &SafetyArgs) -> Vec<(String, String)> {
+    vec![
+        (
+            "bisection tolerance (--bisection-tolerance)".into(),
+            format!(
+                "{} (absolute, on the joint fraction)",
+                voussoir_io::report_parts::sci(a.bisection_tolerance)
+            ),
+        ),
+        (
+            "reaction ranges".into(),
+            if a.no_ranges {
+                "not computed (--no-ranges)".into()
+            } else {
+                "computed (two LPs per support and component)".into()
+            },
+        ),
+    ]
+}
+
+fn write_report(
+    a: &SafetyArgs,
+    r: &SafetyResult,
+    inputs: voussoir_io::report_parts::ReportInputs,
+    source: &std::path::Path,
+) -> Result<(), Fail> {
+    let Some(path) = &a.report else {
+        return Ok(());
+    };
+    let rep = voussoir_io::draw::safety_report(
+        r,
+        &voussoir_io::draw::ReportOptions {
+            title: a.title.clone(),
+            source: source.display().to_string(),
+            scale: None,
+            inputs: Some(inputs),
+        },
+    );
+    crate::outputs::stage(path, rep.to_html().as_bytes())
 }
 
 pub fn run_least(g: Generated) -> Result<(), Fail> {

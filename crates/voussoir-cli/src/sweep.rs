@@ -199,6 +199,27 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
             b.inc(1);
         }
     };
+    // The report's inputs: the model with the base settlement, as every analysis builds it.
+    let inputs = match &a.report {
+        Some(_) if a.capacity => {
+            let st = voussoir::Structure::new(&model, spec.build)?;
+            let mut i = crate::report_inputs::report_inputs_tol(
+                "sweep",
+                crate::report_inputs::facts_2d(&model),
+                &st,
+                a.model.tolerance,
+                &spec.solver,
+                crate::report_inputs::Laws::default(),
+                settings(&a, n),
+            );
+            i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                &voussoir::Assembly::shapes(&st),
+                voussoir::Assembly::contact_joints(&st).len(),
+            ));
+            Some(i)
+        }
+        _ => None,
+    };
     let records = pool.install(|| sweep::run(&model, &spec, &tasks, &progress));
     if let Some(b) = &bar {
         b.finish_and_clear();
@@ -214,14 +235,18 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         pool.current_num_threads()
     );
     if a.capacity {
-        write_distribution(&a, &records)?;
+        write_distribution(&a, &records, inputs)?;
     }
     Ok(())
 }
 
 /// The distribution of λ after the settlement: quantiles on stderr, and the summary, figure and
 /// report files asked for.
-fn write_distribution(a: &SweepArgs, records: &[SweepRecord]) -> Result<(), Fail> {
+fn write_distribution(
+    a: &SweepArgs,
+    records: &[SweepRecord],
+    inputs: Option<voussoir_io::report_parts::ReportInputs>,
+) -> Result<(), Fail> {
     use voussoir_io::draw::distribution;
     let Some(s) = sweep::capacity_summary(records) else {
         return Ok(());
@@ -256,12 +281,51 @@ fn write_distribution(a: &SweepArgs, records: &[SweepRecord]) -> Result<(), Fail
                 title: None,
                 source: a.model.model.display().to_string(),
                 scale: None,
-                inputs: None,
+                inputs,
             },
         );
         crate::outputs::stage(p, rep.to_html().as_bytes())?;
     }
     Ok(())
+}
+
+/// The settings of the sweep as given, for its report (the base motions are in the supports'
+/// table).
+fn settings(a: &SweepArgs, n: usize) -> Vec<(String, String)> {
+    let mode = match (a.magnitudes, a.angles, a.samples) {
+        (Some(k), _, _) => {
+            format!("magnitudes (--magnitudes {k}): the base motions × k/{k}, k = 1 … {k}")
+        }
+        (_, Some(k), _) => {
+            format!("angles (--angles {k}): the --move vectors rotated through 360°·k/{k}")
+        }
+        (_, _, Some(k)) => format!(
+            "Monte Carlo (--samples {k}): coefficient of variation {} (--cov), seed {} (--seed)",
+            a.cov, a.seed
+        ),
+        _ => String::new(),
+    };
+    let mut kv = vec![
+        ("sweep".to_string(), mode),
+        ("analyses".to_string(), n.to_string()),
+        (
+            "capacity curve of each analysis (--capacity-steps)".to_string(),
+            format!("{} intervals", a.capacity_steps),
+        ),
+    ];
+    if !a.settle.moves.is_empty() {
+        kv.push((
+            "base motions (--move)".to_string(),
+            a.settle.moves.join("; "),
+        ));
+    }
+    if let Some(p) = &a.settle.profile {
+        kv.push(("base settlement profile (--profile)".to_string(), p.clone()));
+    }
+    if let Some(s) = &a.shard {
+        kv.push(("shard (--shard)".to_string(), s.clone()));
+    }
+    kv
 }
 
 pub fn merge(a: MergeArgs) -> Result<(), Fail> {

@@ -74,8 +74,8 @@ pub fn report3d_html_with(
         .filter(|c| !c.is_empty())
         .unwrap_or_else(|| {
             match analysis {
-                Analysis::Limit(_) | Analysis::Capacity => "limit",
                 Analysis::Settlement => "settle",
+                _ => "limit",
             }
             .to_string()
         });

@@ -116,6 +116,11 @@ pub struct ReportInputs {
     pub tolerances: Vec<(String, String)>,
     /// Other settings of the command, as given (name, value with unit).
     pub settings: Vec<(String, String)>,
+    /// The model as the command built it, for results that carry no geometry (`safety`, a
+    /// sweep's records): what the inputs section echoes.
+    pub model: Option<ModelEcho>,
+    /// `identify`: the kind of length of each unknown (a motion in cm, a rotation in mrad).
+    pub unknown_lengths: Vec<voussoir::lengths::Length>,
 }
 
 /// What kind of analysis a report is about.
@@ -127,6 +132,14 @@ pub enum Analysis {
     Settlement,
     /// Capacity after settlement: limit analyses on the geometry deformed by a settlement.
     Capacity,
+    /// Safety assessment: statically admissible states under the dead loads (lower bound).
+    Safety,
+    /// Incremental (finite-displacement) analysis: λ along the path of a control point.
+    Incremental,
+    /// Inverse settlement analysis: the support motions that reproduce observed cracks.
+    Identify,
+    /// A sweep of settlements, each followed by the capacity analysis.
+    Sweep,
 }
 
 /// A support as echoed: its name, whether it is fixed, and its prescribed motion
@@ -325,7 +338,9 @@ pub fn hypotheses(
                         plural(l.no_sliding, "joint", "joints")
                     ));
                 }
-                t.push_str(if i.non_associative {
+                t.push_str(if analysis == Analysis::Safety {
+                    ". The contact forces stay within the friction cone (|V| ≤ μ N); the static theorem holds for associative friction, so with real joints that slide without dilatancy an admissible state proves less (Drucker)"
+                } else if i.non_associative {
                     ". Non-associative: joints slide without opening (no dilatancy), solved by the fixed-point iteration on the normal forces"
                 } else {
                     ". Associative (normality): sliding comes with an opening of μ times the slip (dilatancy), the rule of limit analysis"
@@ -414,6 +429,10 @@ pub fn hypotheses(
         Analysis::Limit(_) => "Small displacements: the collapse mechanism is a rate, found on the undeformed geometry; the dead loads are constant and the live loads grow with the load multiplier λ until collapse.".into(),
         Analysis::Capacity => "The settlement deforms the geometry: its mechanism (found as by a settlement analysis, under the dead loads alone) is applied as a finite rigid motion of every block, opening its cracks; at each step a limit analysis of the deformed geometry gives λ (standard limit analysis, valid while the collapse mechanism does not close settlement cracks: the report marks the steps where it would).".into(),
         Analysis::Settlement => "Small displacements: the mechanism that accommodates the prescribed support motions is found on the undeformed geometry, under the dead loads alone (no live load, no λ); it is the one of least work of the dead loads (minimum potential energy).".into(),
+        Analysis::Safety => "Static (lower-bound, safe) theorem: the structure stands if one set of contact forces balances the dead loads and respects the joint laws above; no mechanism is computed and the live loads are not applied. The geometric safety factor shrinks every joint about its centre by one common fraction and finds, by bisection, the least fraction that still carries the dead loads; the reaction ranges are the extreme values of each support reaction over all such states.".into(),
+        Analysis::Incremental => "Finite displacements: the live loads grow with λ while a control point is pushed step by step; at each step a limit analysis of the current (moved) geometry gives λ and the mechanism, so hinges may open and close and λ may fall (path following; the dead loads are constant).".into(),
+        Analysis::Identify => "Inverse settlement analysis: the unknown support motions are those whose settlement mechanism (small displacements, dead loads only, least work, as `settle`) best reproduces the observed crack widths, with the other joint points closed (least total misfit, each width within its tolerance where possible).".into(),
+        Analysis::Sweep => "Each analysis of the sweep is a settlement (small displacements, dead loads only, least work) followed, with --capacity, by limit analyses of the geometry deformed by it (as `capacity`); the records differ only in the support motions.".into(),
     });
     s.items.push(crate::draw::report::Item::List(h));
     s
@@ -570,7 +589,17 @@ pub fn inputs(
         )
     };
     match analysis {
-        Analysis::Capacity => kv.push(("live loads (multiplied by λ)".into(), live)),
+        Analysis::Capacity | Analysis::Incremental | Analysis::Sweep => {
+            kv.push(("live loads (multiplied by λ)".into(), live))
+        }
+        Analysis::Safety | Analysis::Identify => kv.push((
+            "live loads".into(),
+            if echo.live.0 == 0 {
+                live
+            } else {
+                format!("{live}; not applied (dead loads only)")
+            },
+        )),
         Analysis::Limit(l) => {
             kv.push(("live loads (multiplied by λ)".into(), live));
             if let (Some(l), true) = (l, echo.live.0 > 0) {
@@ -655,6 +684,61 @@ pub fn inputs(
     s
 }
 
+/// The front matter of a report, Hypotheses then Inputs. The model echoed: `inputs.model` (as
+/// the command built it), else `echo` (from the result); without either the
+/// inputs section says they were not recorded (a report made from a saved result file).
+pub fn front_matter(
+    echo: Option<&ModelEcho>,
+    inputs: Option<&ReportInputs>,
+    analysis: Analysis,
+    source: &str,
+    solver: Option<&SolverInfo>,
+    certificate: Vec<(String, String)>,
+) -> Vec<Section> {
+    // The model as the command built it (with the settlement it applied) comes first.
+    let echo = inputs.and_then(|i| i.model.as_ref()).or(echo);
+    match echo {
+        Some(e) => vec![
+            hypotheses(e, inputs, analysis, None),
+            self::inputs(e, inputs, analysis, source, solver, certificate),
+        ],
+        None => {
+            let empty = ModelEcho {
+                dim: 2,
+                blocks: 0,
+                joints: 0,
+                lo: vec![f64::NAN; 2],
+                hi: vec![f64::NAN; 2],
+                dead: (0, vec![0.0; 2]),
+                live: (0, vec![0.0; 2]),
+                supports: Vec::new(),
+            };
+            let mut s = Section {
+                heading: "Inputs".into(),
+                items: Vec::new(),
+            };
+            let mut kv = Vec::new();
+            if !source.is_empty() {
+                kv.push(("model file".to_string(), source.to_string()));
+            }
+            if let Some(si) = solver {
+                kv.push((
+                    "solver".to_string(),
+                    format!("{} ({})", si.solver, si.method.name()),
+                ));
+            }
+            kv.extend(certificate);
+            s.items.push(crate::draw::report::Item::Text(
+                "The model (geometry, materials, loads, supports) is not recorded with this result: the report written by the analysis command (--report) echoes it.".into(),
+            ));
+            if !kv.is_empty() {
+                s.items.push(crate::draw::report::Item::KeyValues(kv));
+            }
+            vec![hypotheses(&empty, None, analysis, None), s]
+        }
+    }
+}
+
 /// The tolerances every analysis applies (docs/tolerances.md; `voussoir::scale`).
 fn fixed_tolerances(analysis: Analysis) -> Vec<(String, String)> {
     use voussoir::scale::{LAMBDA_ZERO, OPEN_TOLERANCE, WORK_FLOOR};
@@ -666,7 +750,14 @@ fn fixed_tolerances(analysis: Analysis) -> Vec<(String, String)> {
         ),
     )];
     match analysis {
-        Analysis::Settlement => kv.push((
+        Analysis::Safety => {
+            kv.clear();
+            kv.push((
+                "stands".to_string(),
+                "an equilibrium state is found when the solver reports the program feasible (its feasibility tolerance above)".to_string(),
+            ));
+        }
+        Analysis::Settlement | Analysis::Identify | Analysis::Sweep => kv.push((
             "certified".into(),
             format!(
                 "relative duality gap ≤ {} (relative to max(|primal|, |dual|, {} W·u)); mechanism admissible to 1e-6 of the motion scale",
@@ -674,6 +765,7 @@ fn fixed_tolerances(analysis: Analysis) -> Vec<(String, String)> {
                 sci(WORK_FLOOR)
             ),
         )),
+        Analysis::Incremental => {}
         Analysis::Limit(_) | Analysis::Capacity => kv.push((
             "certified".into(),
             format!(
@@ -1110,7 +1202,7 @@ table.kv td{{overflow-wrap:anywhere}}
 @media print{{
 body{{background:#fff;font-size:10pt}}
 main{{max-width:none;margin:0;padding:0;box-shadow:none}}
-nav,.slider,.controls,.hint,.viewer,details,button,input,.screen-only{{display:none!important}}
+nav,.slider,.controls,.hint,.viewer,details,button,input,.screen-only,main>footer{{display:none!important}}
 .print-only{{display:block}}
 h1,h2,h3{{break-after:avoid;page-break-after:avoid}}
 h2{{margin-top:18px}}

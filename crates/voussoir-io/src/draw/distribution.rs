@@ -250,6 +250,24 @@ pub fn sweep_capacity_report(records: &[SweepRecord], opts: &ReportOptions) -> R
             .clone()
             .unwrap_or_else(|| "Capacity after settlement: distribution over a sweep".into()),
     );
+    rep.source = opts.source.clone();
+    rep.command = "sweep --capacity".into();
+    let solver = records.first().map(|r| r.solver.clone());
+    rep.sections.extend(crate::report_parts::front_matter(
+        None,
+        opts.inputs.as_ref(),
+        crate::report_parts::Analysis::Sweep,
+        &opts.source,
+        solver.as_ref(),
+        vec![(
+            "certified settlements".to_string(),
+            format!(
+                "{} of {} records",
+                records.iter().filter(|r| r.certified).count(),
+                records.len()
+            ),
+        )],
+    ));
     let Some(s) = capacity_summary(records) else {
         rep.subtitle = "no record has a capacity analysis".into();
         return rep;
@@ -266,8 +284,32 @@ pub fn sweep_capacity_report(records: &[SweepRecord], opts: &ReportOptions) -> R
             4
         )
     );
-    rep.section("Key numbers").key_values(summary_rows(&s));
-    rep.section("Quantiles").table(
+    let res = rep.section("Results");
+    let mut kv = summary_rows(&s);
+    let settlements: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r.capacity.as_ref()?.max_settlement)
+        .collect();
+    if !settlements.is_empty() {
+        let (lo, hi) = settlements
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &x| {
+                (l.min(x), h.max(x))
+            });
+        kv.insert(
+            1,
+            (
+                "largest support settlement of a record: least / largest".into(),
+                format!(
+                    "{} / {}",
+                    crate::lengths::Length::Motion.show(lo),
+                    crate::lengths::Length::Motion.show(hi)
+                ),
+            ),
+        );
+    }
+    res.key_values(kv);
+    res.table(
         "Quantiles of λ after the settlement (linear interpolation between order statistics)",
         vec!["probability".into(), "λ".into()],
         s.quantiles

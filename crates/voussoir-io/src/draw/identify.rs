@@ -8,7 +8,8 @@
 
 use super::report::{settlement_report, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, Drawing, Scene};
-use super::svg::{esc, human, num, text_width};
+use super::svg::{esc, fmt_fixed, human, num, text_width};
+use crate::lengths::Length;
 use std::fmt::Write as _;
 use voussoir::analysis::identify::{IdentifyResult, IdentifyStatus};
 use voussoir::result::BodyName;
@@ -207,33 +208,84 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
             .unwrap_or_else(|| "Inverse settlement analysis".to_string()),
     );
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = "identify".into();
+    let echo = crate::report_parts::ModelEcho::of_2d(&r.forward.geometry, r.forward.joints.len());
+    let cert = vec![(
+        "forward settlement analysis".to_string(),
+        r.certificate
+            .as_ref()
+            .map_or("not run".to_string(), |c| c.message.clone()),
+    )];
+    rep.sections.extend(crate::report_parts::front_matter(
+        Some(&echo),
+        opts.inputs.as_ref(),
+        crate::report_parts::Analysis::Identify,
+        &opts.source,
+        Some(&r.forward.solver),
+        cert,
+    ));
     let mut kv = vec![(
         "outcome".to_string(),
         format!("{:?}", r.status).to_lowercase(),
     )];
-    for u in &r.unknowns {
+    // Each unknown in the summaries' unit (cm, or mrad for a rotation) when the command said
+    // which it is; else in the units of --unknown (m, rad).
+    let kinds = opts
+        .inputs
+        .as_ref()
+        .map(|i| i.unknown_lengths.clone())
+        .unwrap_or_default();
+    for (k, u) in r.unknowns.iter().enumerate() {
+        let show = |x: f64| match kinds.get(k) {
+            Some(l) => l.show(x),
+            None => format!("{} (m or rad)", human(x, 6)),
+        };
         let range = match (u.range_min, u.range_max) {
-            (Some(a), Some(b)) => format!(", range [{}, {}]", human(a, 5), human(b, 5)),
+            (Some(a), Some(b)) => format!(", range [{}, {}]", show(a), show(b)),
             _ if u.range_computed => ", range unbounded or empty".to_string(),
             _ => String::new(),
         };
         kv.push((
-            u.name.clone(),
-            format!("{}{range} — {}", human(u.value, 6), u.note),
+            format!("unknown {}", u.name),
+            format!("{}{range} — {}", show(u.value), u.note),
         ));
     }
     kv.push((
         "misfit".into(),
         format!(
-            "{} tolerances in total, largest {} mm",
-            human(r.total_misfit, 4),
-            human(r.max_misfit * 1000.0, 4)
+            "{} tolerances in total, largest {}",
+            fmt_fixed(r.total_misfit, 4),
+            Length::Opening.show(r.max_misfit)
         ),
     ));
     if let Some(c) = &r.certificate {
         kv.push(("forward analysis".into(), c.message.clone()));
     }
-    rep.section("Key numbers").key_values(kv);
+    let res = rep.section("Results");
+    res.key_values(kv);
+    let motions = r
+        .support_motions
+        .iter()
+        .map(|m| {
+            vec![
+                m.support.clone(),
+                Length::Motion.number(m.u),
+                Length::Motion.number(m.v),
+                Length::Rotation.number(m.theta),
+            ]
+        })
+        .collect();
+    res.table(
+        "Identified support motions (base plus unknowns)",
+        vec![
+            "support".to_string(),
+            format!("u ({})", Length::Motion.unit()),
+            format!("v ({})", Length::Motion.unit()),
+            format!("θ ({})", Length::Rotation.unit()),
+        ],
+        motions,
+    );
     let d = draw_identify(
         r,
         &DrawOptions {
@@ -258,15 +310,19 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
                 o.crack.to_string(),
                 o.joint.to_string(),
                 o.point.to_string(),
-                format!("({}, {})", human(o.x, 5), human(o.y, 5)),
-                human(o.observed * 1000.0, 4),
-                human(o.predicted * 1000.0, 4),
-                human(o.misfit * 1000.0, 3),
-                human(o.tolerance * 1000.0, 3),
+                format!(
+                    "({}, {})",
+                    Length::Position.number(o.x),
+                    Length::Position.number(o.y)
+                ),
+                Length::Opening.number(o.observed),
+                Length::Opening.number(o.predicted),
+                Length::Opening.number(o.misfit),
+                Length::Opening.number(o.tolerance),
             ]
         })
         .collect();
-    rep.section("Observations").table(
+    rep.section("Observations (mm)").table(
         "Observed against predicted widths (mm)",
         [
             "crack",
@@ -285,6 +341,10 @@ pub fn identify_report(r: &IdentifyResult, opts: &ReportOptions) -> Report {
     );
     let fwd = settlement_report(&r.forward, opts);
     for mut s in fwd.sections {
+        // The hypotheses and inputs are the identification's own, above.
+        if s.heading == "Hypotheses" || s.heading == "Inputs" {
+            continue;
+        }
         s.heading = format!("Forward analysis — {}", s.heading);
         rep.sections.push(s);
     }

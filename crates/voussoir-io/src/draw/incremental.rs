@@ -2,7 +2,7 @@
 //! curve (the paper's Figs 14–17) with jumps where open hinges close, and its mechanisms.
 
 use super::plot::{plot, Mark, Plot, PlotSpec, Series, SERIES_COLOURS};
-use super::report::{model_summary, Report, ReportOptions};
+use super::report::{Report, ReportOptions};
 use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
 use crate::lengths::Length;
@@ -75,6 +75,26 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
             .unwrap_or_else(|| "Incremental analysis".to_string()),
     );
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = "incremental".into();
+    let echo = crate::report_parts::ModelEcho::of_2d(&r.initial_geometry, 0);
+    rep.sections.extend(crate::report_parts::front_matter(
+        Some(&echo),
+        opts.inputs.as_ref(),
+        crate::report_parts::Analysis::Incremental,
+        &opts.source,
+        Some(&r.solver),
+        vec![(
+            "check of λ at the start".to_string(),
+            r.curve.first().map_or("no step".to_string(), |p| {
+                format!(
+                    "{} by the LP, {} by virtual work on its mechanism",
+                    fmt_fixed(p.load_multiplier, 6),
+                    fmt_fixed(p.equilibrium_multiplier, 6)
+                )
+            }),
+        )],
+    ));
     let c = &r.control;
     let kv = vec![
         (
@@ -105,8 +125,37 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
             ),
         ),
         (
+            "λ at the start".into(),
+            r.curve
+                .first()
+                .map_or("—".into(), |p| fmt_fixed(p.load_multiplier, 6)),
+        ),
+        (
+            "final control displacement".into(),
+            r.curve.last().map_or("—".into(), |p| {
+                format!(
+                    "{} {} (λ = {})",
+                    Length::Motion.number(p.displacement),
+                    Length::Motion.unit(),
+                    fmt_fixed(p.load_multiplier, 6)
+                )
+            }),
+        ),
+        (
             "joints open at the start".into(),
-            r.initial_open_joints.len().to_string(),
+            if r.initial_open_joints.is_empty() {
+                "none".to_string()
+            } else {
+                format!(
+                    "{} (joints {})",
+                    r.initial_open_joints.len(),
+                    r.initial_open_joints
+                        .iter()
+                        .map(|j| j.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            },
         ),
         (
             "steps / snaps / events".into(),
@@ -117,9 +166,7 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
             format!("{} / {}", r.solves, r.iterations),
         ),
     ];
-    rep.section("Key numbers").key_values(kv);
-    rep.section("Model")
-        .key_values(model_summary(&r.initial_geometry, 0, &opts.source));
+    rep.section("Results").key_values(kv);
     let sec = rep.section("Figures");
     let p = incremental_plot(
         &[("λ(dx)", r)],

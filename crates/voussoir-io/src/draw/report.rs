@@ -251,6 +251,14 @@ pub(crate) fn section_html(o: &mut String, s: &Section, id: &str, fig: &mut usiz
                 o.push_str("</table></div>\n");
                 if *collapsed {
                     o.push_str("</details>\n");
+                    // On paper the folded table is left out: say so, rather than a bare heading.
+                    let _ = writeln!(
+                        o,
+                        "<p class=\"print-only note\">{}: {} {}, folded on screen and not printed (the result files hold them).</p>",
+                        esc(caption),
+                        rows.len(),
+                        if rows.len() == 1 { "row" } else { "rows" }
+                    );
                 }
             }
             Item::Figure { svg, caption } => {

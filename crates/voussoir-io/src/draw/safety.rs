@@ -236,43 +236,72 @@ pub fn safety_figure(r: &SafetyResult, title: &str) -> String {
     o
 }
 
-/// Report of a safety assessment: key numbers, the chart and the table of ranges.
+/// Report of a safety assessment: hypotheses and inputs (`opts.inputs`, with the model as the
+/// command built it: a safety result carries no geometry), then the results — whether the
+/// structure stands, the safety factors computed with their definitions, the admissible ranges
+/// of the support reactions (table and chart).
 pub fn safety_report(r: &SafetyResult, opts: &ReportOptions) -> Report {
+    use crate::report_parts::{self as rp, Analysis};
     let title = opts
         .title
         .clone()
         .unwrap_or_else(|| "Safety assessment".to_string());
     let mut rep = Report::new(title);
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = opts
+        .inputs
+        .as_ref()
+        .map(|i| i.command.clone())
+        .filter(|c| !c.is_empty())
+        .unwrap_or_else(|| "safety".into());
+    let cert = vec![
+        (
+            "bisection on the joint fraction".to_string(),
+            format!("to {} (absolute)", human(r.tolerance, 3)),
+        ),
+        ("LP solves".to_string(), r.solves.to_string()),
+    ];
+    rep.sections.extend(rp::front_matter(
+        None,
+        opts.inputs.as_ref(),
+        Analysis::Safety,
+        &opts.source,
+        Some(&r.solver),
+        cert,
+    ));
     let mut kv = vec![(
         "stands under its dead loads".to_string(),
         if r.stands { "yes" } else { "no" }.to_string(),
     )];
     kv.push((
-        "geometric safety factor".into(),
+        "geometric safety factor (Heyman) = 1 / least joint fraction".into(),
         match (r.geometric_safety_factor, r.least_joint_fraction) {
             (Some(g), _) => fmt_fixed(g, 6),
-            (None, Some(_)) => "unbounded".into(),
-            _ => "—".into(),
+            (None, Some(_)) => "unbounded (the dead loads pass through the joints' centres)".into(),
+            _ => "not computed (the structure does not stand)".into(),
         },
     ));
     kv.push((
         "least joint fraction".into(),
         r.least_joint_fraction
-            .map_or("—".into(), |f| format!("{} %", fmt_fixed(100.0 * f, 4))),
+            .map_or("not computed (the structure does not stand)".into(), |f| {
+                format!("{} %", fmt_fixed(100.0 * f, 4))
+            }),
     ));
-    kv.push(("bisection tolerance".into(), human(r.tolerance, 3)));
-    if !opts.source.is_empty() {
-        kv.push(("model".into(), opts.source.clone()));
-    }
-    kv.push(("LP solves".into(), r.solves.to_string()));
-    rep.section("Key numbers").key_values(kv);
-    if !r.reactions.is_empty() {
-        let sec = rep.section("Support reactions");
-        sec.figure(
-            safety_figure(r, &safety_title(r)),
-            "The range of every support reaction component over the statically admissible states (kN); an arrow: unbounded on that side.",
-        );
+    let res = rep.section("Results");
+    res.key_values(kv);
+    res.items.push(super::report::Item::List(vec![
+        "Geometric safety factor: every joint is shrunk about its centre to the same fraction f of its extent (thickness); the least f at which contact forces still balance the dead loads within the shrunk joints is found by bisection, and the factor is 1 / f (Heyman: the thickness of the structure over the least thickness that carries its weight; 1 means just standing).".to_string(),
+        "Reaction ranges: the least and largest value of each support reaction component over every statically admissible state of the full joints (two LPs per component); the actual reactions lie between them, and a settlement moves them to an end (for an arch, the least and largest horizontal thrust).".to_string(),
+    ]));
+    if r.reactions.is_empty() {
+        res.text(if r.stands {
+            "Reaction ranges: not computed (--no-ranges)."
+        } else {
+            "Reaction ranges: none (no admissible state)."
+        });
+    } else {
         let rows = r
             .reactions
             .iter()
@@ -287,13 +316,17 @@ pub fn safety_report(r: &SafetyResult, opts: &ReportOptions) -> Report {
                 })
             })
             .collect();
-        sec.table(
-            "Admissible reaction ranges",
+        res.table(
+            "Admissible support reactions (force of each support on the structure)",
             ["support", "component", "least (kN)", "largest (kN)"]
                 .iter()
                 .map(|s| s.to_string())
                 .collect(),
             rows,
+        );
+        rep.section("Figures").figure(
+            safety_figure(r, &safety_title(r)),
+            "The range of every support reaction component over the statically admissible states (kN); an arrow: unbounded on that side.",
         );
     }
     rep

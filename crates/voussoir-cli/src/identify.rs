@@ -213,7 +213,7 @@ fn settings(a: &IdentifyArgs, obs: &Observations) -> Vec<(String, String)> {
     if let Some(p) = &a.cracks {
         sources.push(format!("{} (--cracks)", p.display()));
     }
-    if let Some(p) = &a.survey.survey {
+    if let Some(p) = &a.survey {
         sources.push(format!("{} (--survey)", p.display()));
     }
     kv.push((

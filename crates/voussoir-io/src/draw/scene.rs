@@ -15,7 +15,7 @@ use std::fmt::Write as _;
 use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
 use voussoir::geometry::{area_centroid, RigidMotion};
 use voussoir::result::{
-    BlockMotion, BodyName, Geometry, Hinge, JointResult, JointState, ThrustPoint,
+    BlockMotion, BodyName, Crack, Geometry, Hinge, JointResult, JointState, ThrustPoint,
 };
 
 /// What the block motions of a scene mean.
@@ -40,6 +40,9 @@ pub struct Scene<'a> {
     pub blocks: &'a [BlockMotion],
     pub joints: &'a [JointResult],
     pub hinges: &'a [Hinge],
+    /// The cracks as polylines, widest first ([`voussoir::result::cracks`]): drawn as lines,
+    /// the first ten numbered as the summaries number them.
+    pub cracks: &'a [Crack],
     pub thrust_line: &'a [ThrustPoint],
     pub units: MotionUnits,
     /// Whether the analysis multiplies the live loads by λ (limit analyses, models). A
@@ -69,6 +72,7 @@ impl<'a> Scene<'a> {
             blocks: &[],
             joints: &[],
             hinges: &[],
+            cracks: &[],
             thrust_line: &[],
             units: MotionUnits::Metres,
             live_loads: true,
@@ -97,6 +101,7 @@ impl<'a> Scene<'a> {
             blocks: &r.blocks,
             joints: &r.joints,
             hinges: &r.hinges,
+            cracks: &r.cracks,
             thrust_line: &r.thrust_line,
             units: MotionUnits::Normalised,
             live_loads: true,
@@ -136,6 +141,7 @@ impl<'a> Scene<'a> {
             blocks: &r.blocks,
             joints: &r.joints,
             hinges: &r.hinges,
+            cracks: &r.cracks,
             thrust_line: &r.thrust_line,
             units: MotionUnits::Metres,
             live_loads: false,
@@ -328,6 +334,8 @@ pub(crate) const THRUST: &str = "#1f5fbf";
 pub(crate) const LOAD: &str = "#7b2d8e";
 pub(crate) const FORCE: &str = "#1a9850";
 pub(crate) const HINGE: &str = "#111111";
+/// The crack lines (darker than the crack wedges' fill).
+pub(crate) const CRACK_LINE: &str = "#7a0177";
 pub(crate) const PALETTE: [&str; 8] = [
     "#f6c97f", "#9ecae1", "#b5dba0", "#f4a582", "#c9b8e0", "#f2e394", "#8fd3c8", "#e7b3cf",
 ];
@@ -979,6 +987,100 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         }
     }
 
+    // Crack lines: each crack's polyline, its points carried by the first body of the joint
+    // they lie on (the face the wedge opens from); the first ten numbered as in the summaries.
+    let mut n_crack_lines = 0;
+    let mut crack_interior: Vec<[f64; 2]> = Vec::new();
+    if opts.cracks && !scene.cracks.is_empty() {
+        let mut lines = String::new();
+        let mut labels = String::new();
+        let lw = (stroke * 2.4).clamp(1.4, 2.6);
+        let fs = 11.0;
+        for (n, c) in scene.cracks.iter().enumerate() {
+            let on: Vec<&JointResult> = c
+                .joints
+                .iter()
+                .filter_map(|j| joint_by_id.get(j).copied())
+                .collect();
+            let body_at = |p: [f64; 2]| -> Option<usize> {
+                let mut best: Option<(f64, usize)> = None;
+                for j in &on {
+                    let Some(a) = b.body_of(&j.a) else { continue };
+                    let d = j
+                        .points
+                        .windows(2)
+                        .map(|w| {
+                            voussoir::geometry::point_segment_distance(
+                                p,
+                                [w[0].x, w[0].y],
+                                [w[1].x, w[1].y],
+                            )
+                        })
+                        .fold(f64::INFINITY, f64::min);
+                    if best.is_none_or(|(bd, _)| d < bd) {
+                        best = Some((d, a));
+                    }
+                }
+                best.map(|(_, a)| a).or_else(|| nearest_block(&b, p))
+            };
+            let pts: Vec<([f64; 2], String)> = c
+                .points
+                .iter()
+                .filter(|p| p[0].is_finite() && p[1].is_finite())
+                .filter_map(|p| body_at(*p).map(|a| at(a, *p)))
+                .collect();
+            if pts.len() < 2 {
+                continue;
+            }
+            if c.points.len() > 2 {
+                crack_interior.extend_from_slice(&c.points[1..c.points.len() - 1]);
+            }
+            n_crack_lines += 1;
+            let xy: Vec<[f64; 2]> = pts.iter().map(|p| p.0).collect();
+            let _ = write!(lines, "<polyline points=\"{}\"", points_attr(&xy));
+            if interactive {
+                let data: Vec<&str> = pts.iter().map(|p| p.1.as_str()).collect();
+                let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
+            }
+            lines.push_str("/>\n");
+            if n < 10 && !interactive {
+                // The label at the polyline's middle (by length), offset off the line.
+                let half = 0.5 * xy.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum::<f64>();
+                let mut acc = 0.0;
+                let mut m = xy[0];
+                for w in xy.windows(2) {
+                    let l = (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
+                    if acc + l >= half && l > 0.0 {
+                        let t = (half - acc) / l;
+                        m = [w[0][0] + t * (w[1][0] - w[0][0]), w[0][1] + t * (w[1][1] - w[0][1])];
+                        break;
+                    }
+                    acc += l;
+                }
+                let _ = writeln!(
+                    labels,
+                    "<text x=\"{}\" y=\"{}\">{}</text>",
+                    num(m[0] + 4.0),
+                    num(m[1] - 4.0),
+                    n + 1
+                );
+            }
+        }
+        if !lines.is_empty() {
+            let _ = writeln!(
+                o,
+                "<g class=\"crack-lines\" fill=\"none\" stroke=\"{CRACK_LINE}\" stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n{lines}</g>",
+                num(lw)
+            );
+        }
+        if !labels.is_empty() {
+            let _ = writeln!(
+                o,
+                "<g class=\"crack-labels\" font-size=\"{fs}\" font-weight=\"bold\" fill=\"{CRACK_LINE}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">\n{labels}</g>"
+            );
+        }
+    }
+
     // Load arrows (kept in their direction, carried by their block).
     let head = (0.018 * width).clamp(6.0, 11.0);
     let draw_arrows = |o: &mut String,
@@ -1104,6 +1206,14 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             if !h.x.is_finite() || !h.y.is_finite() {
                 continue;
             }
+            // A closed point a crack runs through is a bend of that crack, not a hinge.
+            let tol = 1e-9 * b.size;
+            if crack_interior
+                .iter()
+                .any(|p| (p[0] - h.x).hypot(p[1] - h.y) <= tol)
+            {
+                continue;
+            }
             // The hinge moves with body a of its joint; results without joints (capacity
             // curves) use the block nearest to the hinge.
             let a = match joint_by_id.get(&h.joint).and_then(|j| b.body_of(&j.a)) {
@@ -1144,6 +1254,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             undeformed: has_motion && opts.undeformed,
             hinges: n_hinges > 0,
             cracks: n_cracks > 0,
+            crack_lines: n_crack_lines > 0,
             thrust: drew_thrust,
             live: (!live.is_empty()).then_some(live_max),
             dead: (!dead.is_empty()).then_some(dead_max),
@@ -1264,6 +1375,7 @@ struct LegendItems {
     undeformed: bool,
     hinges: bool,
     cracks: bool,
+    crack_lines: bool,
     thrust: bool,
     /// Largest arrow of each kind (kN), when drawn.
     live: Option<f64>,
@@ -1328,6 +1440,13 @@ fn legend(
             o,
             &format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.85\"/>"),
             "crack (opening)",
+        );
+    }
+    if it.crack_lines {
+        put(
+            o,
+            &format!("<path d=\"M1 4L9 -3L14 1L21 -5\" fill=\"none\" stroke=\"{CRACK_LINE}\" stroke-width=\"2\" stroke-linejoin=\"round\"/>"),
+            "crack line (1 = widest)",
         );
     }
     if it.thrust {

@@ -14,11 +14,12 @@
 //! joint. A crack runs from its wider end to its narrower one (ties: from the lower-left end),
 //! so that a wedge is written from its mouth to its tip.
 //!
-//! **3D**: one record per joint with open points ([`Crack3d`]): its position (the centroid of
-//! the joint's polygon: with rigid blocks the opening is linear over the face and non-negative,
-//! so once a point opens the whole face opens but for the hinge), the largest opening, and the
-//! length of the crack front: the hinge line when two or more points stay closed, else the
-//! largest extent of the face.
+//! **3D**: one record per cracked joint, or per connected set of coplanar cracked joints (they
+//! share an edge: a hinge line across several blocks) ([`Crack3d`]): its position (the centroid
+//! of the joints' polygons: with rigid blocks the opening is linear over a face and
+//! non-negative, so once a point opens the whole face opens but for the hinge), the largest
+//! opening, and the length of the crack front: the hinge line when two or more points stay
+//! closed, else the largest extent of the faces.
 //!
 //! Widths are metres for a settlement (the finite motion; a point's gap before the analysis is
 //! added), and the mechanism's opening rates (per unit of its normalisation) for a collapse
@@ -86,19 +87,21 @@ pub enum CrackFront {
     Separation,
 }
 
-/// A 3D crack: one joint with open points.
+/// A 3D crack: a cracked joint, or a connected set of coplanar cracked joints.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Crack3d {
-    pub joint: usize,
-    /// The two bodies of the joint (block index or support name).
-    pub faces: [BodyName; 2],
-    /// Centroid of the opened face `[x, y, z]` (m).
+    /// The joints, in increasing order.
+    pub joints: Vec<usize>,
+    /// The two bodies of each joint (block index or support name).
+    pub faces: Vec<[BodyName; 2]>,
+    /// Centroid of the opened faces `[x, y, z]` (m).
     pub position: [f64; 3],
     /// Largest opening (m for a settlement).
     pub max_opening: f64,
-    /// Length of the hinge line, or the face's largest extent for a pivot or a separation (m).
+    /// Length of the hinge line (its extreme closed points), or the faces' largest extent for
+    /// a pivot or a separation (m).
     pub length: f64,
-    /// Area of the opened face (m²).
+    /// Area of the opened faces (m²).
     pub area: f64,
     pub front: CrackFront,
 }
@@ -635,14 +638,25 @@ fn on_support(p: [f64; 2], geo: &CrackGeometry) -> bool {
     })
 }
 
-/// The 3D crack records of a result's joints: one per joint with an open point (`open`,
-/// `widths` as for [`trace_cracks`]), widest first (then by joint).
+/// The 3D crack records of a result's joints (`open`, `widths` as for [`trace_cracks`]): the
+/// cracked joints grouped into connected coplanar sets (two cracked joints whose polygons share
+/// an edge, within `tolerance`, in one plane are one crack: a hinge line across several
+/// blocks), widest first (then by first joint).
 pub fn crack_records_3d(
     joints: &[JointResult<Three>],
     open: &[Vec<bool>],
     widths: &[Vec<f64>],
+    tolerance: f64,
 ) -> Vec<Crack3d> {
-    let mut out = Vec::new();
+    struct Cj {
+        id: usize,
+        faces: [BodyName; 2],
+        pts: Vec<[f64; 3]>,
+        closed: Vec<[f64; 3]>,
+        normal: [f64; 3],
+        max: f64,
+    }
+    let mut cj: Vec<Cj> = Vec::new();
     for (j, jr) in joints.iter().enumerate() {
         let Some(o) = open.get(j).filter(|o| o.iter().any(|&x| x)) else {
             continue;
@@ -654,27 +668,107 @@ pub fn crack_records_3d(
             .filter(|(_, &op)| !op)
             .map(|(p, _)| *p)
             .collect();
-        let diameter = |ps: &[[f64; 3]]| {
-            let mut m = 0.0f64;
-            for (i, a) in ps.iter().enumerate() {
-                for b in &ps[i + 1..] {
-                    m = m.max(((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt());
+        cj.push(Cj {
+            id: jr.id,
+            faces: [jr.a.clone(), jr.b.clone()],
+            pts,
+            closed,
+            normal: jr.normal,
+            max: widths
+                .get(j)
+                .map_or(0.0, |w| w.iter().fold(0.0f64, |m, x| m.max(*x))),
+        });
+    }
+    let d3 = |a: [f64; 3], b: [f64; 3]| {
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    };
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    // Union of cracked joints sharing an edge in one plane.
+    let n = cj.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn find(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            p[i] = p[p[i]];
+            i = p[i];
+        }
+        i
+    }
+    let tol = tolerance.max(0.0);
+    let bbs: Vec<[[f64; 3]; 2]> = cj.iter().map(|c| crate::geometry3d::bbox3(&c.pts)).collect();
+    for i in 0..n {
+        for k in i + 1..n {
+            let (a, b) = (&cj[i], &cj[k]);
+            if (0..3).any(|m| bbs[i][0][m] > bbs[k][1][m] + tol || bbs[k][0][m] > bbs[i][1][m] + tol) {
+                continue;
+            }
+            if dot(a.normal, b.normal).abs() < 1.0 - 1e-9 {
+                continue;
+            }
+            if dot(a.normal, [b.pts[0][0] - a.pts[0][0], b.pts[0][1] - a.pts[0][1], b.pts[0][2] - a.pts[0][2]]).abs() > tol {
+                continue;
+            }
+            let shared = a
+                .pts
+                .iter()
+                .filter(|p| b.pts.iter().any(|q| d3(**p, *q) <= tol))
+                .count();
+            if shared >= 2 {
+                let (x, y) = (find(&mut parent, i), find(&mut parent, k));
+                if x != y {
+                    parent[x.max(y)] = x.min(y);
                 }
             }
-            m
+        }
+    }
+    let mut groups: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
+    for i in 0..n {
+        let r = find(&mut parent, i);
+        groups.entry(r).or_default().push(i);
+    }
+    let diameter = |ps: &[[f64; 3]]| {
+        let mut m = 0.0f64;
+        for (i, a) in ps.iter().enumerate() {
+            for b in &ps[i + 1..] {
+                m = m.max(d3(*a, *b));
+            }
+        }
+        m
+    };
+    let mut out = Vec::new();
+    for members in groups.values() {
+        let (mut area, mut c) = (0.0, [0.0; 3]);
+        let (mut all, mut closed) = (Vec::new(), Vec::new());
+        let mut max_opening = 0.0f64;
+        for &i in members {
+            let (a, x) = polygon_area_centroid(&cj[i].pts, cj[i].normal);
+            area += a;
+            for m in 0..3 {
+                c[m] += a * x[m];
+            }
+            all.extend_from_slice(&cj[i].pts);
+            closed.extend_from_slice(&cj[i].closed);
+            max_opening = max_opening.max(cj[i].max);
+        }
+        let position = if area > 0.0 {
+            [c[0] / area, c[1] / area, c[2] / area]
+        } else {
+            polygon_area_centroid(&all, cj[members[0]].normal).1
         };
-        let (front, length) = match closed.len() {
-            0 => (CrackFront::Separation, diameter(&pts)),
-            1 => (CrackFront::Pivot, diameter(&pts)),
-            _ => (CrackFront::HingeLine, diameter(&closed)),
+        // The closed points of one hinge line, counted once.
+        let mut distinct: Vec<[f64; 3]> = Vec::new();
+        for p in closed {
+            if !distinct.iter().any(|q| d3(p, *q) <= tol) {
+                distinct.push(p);
+            }
+        }
+        let (front, length) = match distinct.len() {
+            0 => (CrackFront::Separation, diameter(&all)),
+            1 => (CrackFront::Pivot, diameter(&all)),
+            _ => (CrackFront::HingeLine, diameter(&distinct)),
         };
-        let (area, position) = polygon_area_centroid(&pts, jr.normal);
-        let max_opening = widths
-            .get(j)
-            .map_or(0.0, |w| w.iter().fold(0.0f64, |m, x| m.max(*x)));
         out.push(Crack3d {
-            joint: jr.id,
-            faces: [jr.a.clone(), jr.b.clone()],
+            joints: members.iter().map(|&i| cj[i].id).collect(),
+            faces: members.iter().map(|&i| cj[i].faces.clone()).collect(),
             position,
             max_opening,
             length,
@@ -686,7 +780,7 @@ pub fn crack_records_3d(
     out.sort_by(|a, b| {
         quantise(b.max_opening, largest)
             .cmp(&quantise(a.max_opening, largest))
-            .then(a.joint.cmp(&b.joint))
+            .then(a.joints[0].cmp(&b.joints[0]))
     });
     out
 }
@@ -722,5 +816,114 @@ fn polygon_area_centroid(p: &[[f64; 3]], n: [f64; 3]) -> (f64, [f64; 3]) {
         (area.abs(), [c[0] / area, c[1] / area, c[2] / area])
     } else {
         (0.0, mean)
+    }
+}
+
+/// How summaries write a crack, in either dimension.
+pub trait CrackText {
+    /// The largest opening (m for a settlement).
+    fn max_opening(&self) -> f64;
+    /// One line without the leading "crack N: ": with `widths`, the width in mm (a settlement);
+    /// without, the opening relative to `largest` (a collapse mechanism, whose amplitude is
+    /// arbitrary).
+    fn describe(&self, widths: bool, largest: f64) -> String;
+}
+
+/// A width in mm with two decimals ("< 0.01 mm" below 0.005 mm), or an opening relative to the
+/// largest.
+fn width_text(w: f64, widths: bool, largest: f64) -> String {
+    if widths {
+        let mm = w * 1000.0;
+        if mm < 0.005 {
+            "< 0.01 mm wide".to_string()
+        } else {
+            format!("{mm:.2} mm wide")
+        }
+    } else if largest > 0.0 {
+        format!("relative opening {:.2}", w / largest)
+    } else {
+        "relative opening 0".to_string()
+    }
+}
+
+fn xy(p: &[f64]) -> String {
+    let c: Vec<String> = p
+        .iter()
+        .map(|v| {
+            let t = format!("{v:.3}");
+            // No "-0.000" for a coordinate of round-off size.
+            match t.strip_prefix('-') {
+                Some(r) if r.chars().all(|c| c == '0' || c == '.') => r.to_string(),
+                _ => t,
+            }
+        })
+        .collect();
+    format!("({})", c.join(", "))
+}
+
+fn body_text(b: &BodyName) -> String {
+    match b {
+        BodyName::Block(i) => i.to_string(),
+        BodyName::Support(s) => s.clone(),
+    }
+}
+
+impl CrackText for Crack {
+    fn max_opening(&self) -> f64 {
+        self.max_opening
+    }
+    fn describe(&self, widths: bool, largest: f64) -> String {
+        let n = self.joints.len();
+        let joints = if n == 1 {
+            let f = &self.faces[0];
+            format!("joint {} ({} | {})", self.joints[0], body_text(&f[0]), body_text(&f[1]))
+        } else {
+            format!("{n} joints")
+        };
+        let first = self.points.first().copied().unwrap_or([0.0; 2]);
+        let last = self.points.last().copied().unwrap_or([0.0; 2]);
+        let mut s = format!(
+            "{}, {:.2} m long, {joints}, from {} to {}",
+            width_text(self.max_opening, widths, largest),
+            self.length,
+            xy(&first),
+            xy(&last)
+        );
+        if self.closed_loop {
+            s.push_str(" (a closed loop)");
+        } else if self.end.hinge {
+            s.push_str(" (closing at a hinge)");
+        }
+        s
+    }
+}
+
+impl CrackText for Crack3d {
+    fn max_opening(&self) -> f64 {
+        self.max_opening
+    }
+    fn describe(&self, widths: bool, largest: f64) -> String {
+        let what = match self.front {
+            CrackFront::HingeLine => "hinge line",
+            CrackFront::Pivot => "pivot, face",
+            CrackFront::Separation => "separation, face",
+        };
+        let joints = if self.joints.len() == 1 {
+            let f = &self.faces[0];
+            format!(
+                "joint {} ({} | {})",
+                self.joints[0],
+                body_text(&f[0]),
+                body_text(&f[1])
+            )
+        } else {
+            format!("{} joints", self.joints.len())
+        };
+        format!(
+            "{}, {what} {:.2} m long, {joints}, centre {}",
+            width_text(self.max_opening, widths, largest),
+            self.length,
+            xy(&self.position)
+        )
     }
 }

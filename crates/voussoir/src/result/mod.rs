@@ -16,7 +16,7 @@ pub mod tilt;
 
 pub use canonical::*;
 pub use capacity::*;
-pub use cracks::{Crack, Crack3d, CrackEnd, CrackFront, CrackGeometry};
+pub use cracks::{Crack, Crack3d, CrackEnd, CrackFront, CrackGeometry, CrackText};
 pub use incremental::*;
 pub use limit::*;
 pub use nonassociative::*;

@@ -26,7 +26,14 @@ pub trait Spatial: Dim {
     type Shapes: Clone + Debug + PartialEq + Serialize + DeserializeOwned + Send + Sync;
     /// A crack as results report it: a polyline in 2D ([`super::Crack`]), a record per
     /// cracked joint in 3D ([`super::Crack3d`]).
-    type Crack: Clone + Debug + PartialEq + Serialize + DeserializeOwned + Send + Sync;
+    type Crack: Clone
+        + Debug
+        + PartialEq
+        + Serialize
+        + DeserializeOwned
+        + Send
+        + Sync
+        + super::cracks::CrackText;
 
     /// `Dim::DOFS` values as a motion.
     fn motion(dofs: &[f64]) -> Self::Motion;

@@ -531,7 +531,7 @@ impl Assembly for Structure3d {
         open: &[Vec<bool>],
         widths: &[Vec<f64>],
     ) -> Vec<crate::result::Crack3d> {
-        crate::result::cracks::crack_records_3d(joints, open, widths)
+        crate::result::cracks::crack_records_3d(joints, open, widths, self.tolerance)
     }
 
     fn shapes(&self) -> SpatialShapes {

@@ -601,7 +601,12 @@ pub const CRACK_LINES: usize = 10;
 /// The cracks of a result, widest first: `crack 1: 2.41 mm wide, 1.30 m long, …` (`widths`:
 /// a settlement's widths in mm; otherwise openings relative to the largest), at most
 /// [`CRACK_LINES`] lines then "… and N more".
-pub fn cracks_section<C: CrackText>(heading: &str, note: &str, cracks: &[C], widths: bool) -> String {
+pub fn cracks_section<C: CrackText>(
+    heading: &str,
+    note: &str,
+    cracks: &[C],
+    widths: bool,
+) -> String {
     let mut s = String::new();
     if cracks.is_empty() {
         return s;

@@ -42,7 +42,17 @@ fn crack_lines(summary: &str) -> Vec<&str> {
 fn issue32_settle_summary_lists_the_crack_widths_in_mm() {
     let d = tmpdir("settle");
     run(&d, &["gen", "arch", "--live", "none", "-o", "arch.json"]);
-    let s = run(&d, &["settle", "arch.json", "--move", "right=0.01,0", "-o", "r.json"]);
+    let s = run(
+        &d,
+        &[
+            "settle",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "-o",
+            "r.json",
+        ],
+    );
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(d.join("r.json")).unwrap()).unwrap();
     let cracks = json["cracks"].as_array().unwrap();
@@ -63,16 +73,27 @@ fn issue32_settle_summary_lists_the_crack_widths_in_mm() {
                     t
                 }
             };
-            format!("({}, {})", f(p[0].as_f64().unwrap()), f(p[1].as_f64().unwrap()))
+            format!(
+                "({}, {})",
+                f(p[0].as_f64().unwrap()),
+                f(p[1].as_f64().unwrap())
+            )
         };
         let want = format!(
             "crack  {}: {mm:.2} mm wide, 0.33 m long, joint {}",
             i + 1,
             c["joints"][0]
         );
-        assert!(line.trim_start().starts_with(want.trim_start()), "{line} vs {want}");
         assert!(
-            line.contains(&format!("from {} to {} (closing at a hinge)", xy(p0), xy(p1))),
+            line.trim_start().starts_with(want.trim_start()),
+            "{line} vs {want}"
+        );
+        assert!(
+            line.contains(&format!(
+                "from {} to {} (closing at a hinge)",
+                xy(p0),
+                xy(p1)
+            )),
             "{line}"
         );
     }
@@ -87,13 +108,32 @@ fn issue32_settle_summary_lists_ten_cracks_then_the_rest_counted() {
     let d = tmpdir("dome");
     run(
         &d,
-        &["gen", "dome", "--courses", "8", "--segments", "16", "--thickness", "0.3", "-o", "dome.json"],
+        &[
+            "gen",
+            "dome",
+            "--courses",
+            "8",
+            "--segments",
+            "16",
+            "--thickness",
+            "0.3",
+            "-o",
+            "dome.json",
+        ],
     );
     let s = run(
         &d,
         &[
-            "settle", "dome.json", "--friction", "0.5", "--move", "base0=0,0,-2cm", "--move",
-            "base1=0,0,-2cm", "-o", "r.json",
+            "settle",
+            "dome.json",
+            "--friction",
+            "0.5",
+            "--move",
+            "base0=0,0,-2cm",
+            "--move",
+            "base1=0,0,-2cm",
+            "-o",
+            "r.json",
         ],
     );
     let json: serde_json::Value =
@@ -107,9 +147,15 @@ fn issue32_settle_summary_lists_ten_cracks_then_the_rest_counted() {
     // Widest first, each line the JSON's record in mm.
     for (line, c) in crack_lines(&s).iter().zip(cracks) {
         let mm = c["max_opening"].as_f64().unwrap() * 1000.0;
-        assert!(line.contains(&format!(": {mm:.2} mm wide")), "{line} vs {mm}");
+        assert!(
+            line.contains(&format!(": {mm:.2} mm wide")),
+            "{line} vs {mm}"
+        );
     }
-    let w: Vec<f64> = cracks.iter().map(|c| c["max_opening"].as_f64().unwrap()).collect();
+    let w: Vec<f64> = cracks
+        .iter()
+        .map(|c| c["max_opening"].as_f64().unwrap())
+        .collect();
     assert!(w.windows(2).all(|p| p[0] >= p[1]), "{w:?}");
 }
 

@@ -168,7 +168,11 @@ fn issue30_item3_a_bridging_wall_has_one_crack_over_the_settled_foundation() {
     assert_eq!(c.joints.len(), 3);
     assert!((c.length - 1.2).abs() <= 1e-9, "{}", c.length);
     assert!((c.max_opening - 0.01).abs() <= 1e-9, "{}", c.max_opening);
-    assert!(close(c.points[0], [2.8, 0.0]) && close(c.points[3], [4.0, 0.0]), "{:?}", c.points);
+    assert!(
+        close(c.points[0], [2.8, 0.0]) && close(c.points[3], [4.0, 0.0]),
+        "{:?}",
+        c.points
+    );
 }
 
 #[test]
@@ -210,7 +214,10 @@ fn issue30_item3_a_collapse_mechanism_has_a_crack_at_each_hinge() {
     hinged.sort_unstable();
     assert_eq!(joints, hinged);
     // Listed widest first.
-    assert!(r.cracks.windows(2).all(|w| w[0].max_opening >= w[1].max_opening));
+    assert!(r
+        .cracks
+        .windows(2)
+        .all(|w| w[0].max_opening >= w[1].max_opening));
 }
 
 /// The paper's arch as a barrel vault of three rings, 1 m deep, under the Fig 9 settlement:

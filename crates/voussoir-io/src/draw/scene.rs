@@ -1045,14 +1045,20 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             lines.push_str("/>\n");
             if n < 10 && !interactive {
                 // The label at the polyline's middle (by length), offset off the line.
-                let half = 0.5 * xy.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum::<f64>();
+                let half = 0.5
+                    * xy.windows(2)
+                        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+                        .sum::<f64>();
                 let mut acc = 0.0;
                 let mut m = xy[0];
                 for w in xy.windows(2) {
                     let l = (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
                     if acc + l >= half && l > 0.0 {
                         let t = (half - acc) / l;
-                        m = [w[0][0] + t * (w[1][0] - w[0][0]), w[0][1] + t * (w[1][1] - w[0][1])];
+                        m = [
+                            w[0][0] + t * (w[1][0] - w[0][0]),
+                            w[0][1] + t * (w[1][1] - w[0][1]),
+                        ];
                         break;
                     }
                     acc += l;

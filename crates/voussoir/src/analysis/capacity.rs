@@ -213,7 +213,13 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             j.points
                 .iter()
                 .zip(o)
-                .map(|(p, &op)| if op { (p.opening * smax + p.gap).max(0.0) } else { 0.0 })
+                .map(|(p, &op)| {
+                    if op {
+                        (p.opening * smax + p.gap).max(0.0)
+                    } else {
+                        0.0
+                    }
+                })
                 .collect()
         })
         .collect();

@@ -127,14 +127,24 @@ impl<'a> CrackGeometry<'a> {
     /// From a saved result's geometry; the tolerance is 1e-9 of the geometry's size (the
     /// default relative tolerance of a model).
     pub fn of_geometry(g: &'a Geometry) -> Self {
-        let mut bb = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+        let mut bb = [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ];
         for p in g
             .blocks
             .iter()
             .chain(g.supports.iter().map(|s| &s.polygon))
             .flatten()
         {
-            bb = [bb[0].min(p[0]), bb[1].min(p[1]), bb[2].max(p[0]), bb[3].max(p[1])];
+            bb = [
+                bb[0].min(p[0]),
+                bb[1].min(p[1]),
+                bb[2].max(p[0]),
+                bb[3].max(p[1]),
+            ];
         }
         let size = ((bb[2] - bb[0]).powi(2) + (bb[3] - bb[1]).powi(2)).sqrt();
         CrackGeometry {
@@ -216,7 +226,12 @@ pub fn cracks_of_result(joints: &[JointResult], geometry: &Geometry, finite: boo
         .iter()
         .map(|w| w.iter().map(|&x| largest > 0.0 && x > tol).collect())
         .collect();
-    trace_cracks(joints, &open, &widths, &CrackGeometry::of_geometry(geometry))
+    trace_cracks(
+        joints,
+        &open,
+        &widths,
+        &CrackGeometry::of_geometry(geometry),
+    )
 }
 
 /// The cracks a deformed structure carries: its points with a gap (the final state of an
@@ -235,7 +250,11 @@ pub fn cracks_of_gaps(st: &Structure) -> Vec<Crack> {
             joint: j,
             faces: [name(jt.a), name(jt.b)],
             tangent: jt.tangent(),
-            points: jt.points.iter().map(|p| (p.x, p.gap, p.gap > 0.0)).collect(),
+            points: jt
+                .points
+                .iter()
+                .map(|p| (p.x, p.gap, p.gap > 0.0))
+                .collect(),
         })
         .collect();
     trace(input, &CrackGeometry::of_structure(st))
@@ -694,17 +713,32 @@ pub fn crack_records_3d(
         i
     }
     let tol = tolerance.max(0.0);
-    let bbs: Vec<[[f64; 3]; 2]> = cj.iter().map(|c| crate::geometry3d::bbox3(&c.pts)).collect();
+    let bbs: Vec<[[f64; 3]; 2]> = cj
+        .iter()
+        .map(|c| crate::geometry3d::bbox3(&c.pts))
+        .collect();
     for i in 0..n {
         for k in i + 1..n {
             let (a, b) = (&cj[i], &cj[k]);
-            if (0..3).any(|m| bbs[i][0][m] > bbs[k][1][m] + tol || bbs[k][0][m] > bbs[i][1][m] + tol) {
+            if (0..3)
+                .any(|m| bbs[i][0][m] > bbs[k][1][m] + tol || bbs[k][0][m] > bbs[i][1][m] + tol)
+            {
                 continue;
             }
             if dot(a.normal, b.normal).abs() < 1.0 - 1e-9 {
                 continue;
             }
-            if dot(a.normal, [b.pts[0][0] - a.pts[0][0], b.pts[0][1] - a.pts[0][1], b.pts[0][2] - a.pts[0][2]]).abs() > tol {
+            if dot(
+                a.normal,
+                [
+                    b.pts[0][0] - a.pts[0][0],
+                    b.pts[0][1] - a.pts[0][1],
+                    b.pts[0][2] - a.pts[0][2],
+                ],
+            )
+            .abs()
+                > tol
+            {
                 continue;
             }
             let shared = a
@@ -790,7 +824,9 @@ pub fn crack_records_3d(
 fn polygon_area_centroid(p: &[[f64; 3]], n: [f64; 3]) -> (f64, [f64; 3]) {
     let mean = {
         let k = p.len().max(1) as f64;
-        let s = p.iter().fold([0.0; 3], |s, q| [s[0] + q[0], s[1] + q[1], s[2] + q[2]]);
+        let s = p
+            .iter()
+            .fold([0.0; 3], |s, q| [s[0] + q[0], s[1] + q[1], s[2] + q[2]]);
         [s[0] / k, s[1] / k, s[2] / k]
     };
     if p.len() < 3 {
@@ -876,7 +912,12 @@ impl CrackText for Crack {
         let n = self.joints.len();
         let joints = if n == 1 {
             let f = &self.faces[0];
-            format!("joint {} ({} | {})", self.joints[0], body_text(&f[0]), body_text(&f[1]))
+            format!(
+                "joint {} ({} | {})",
+                self.joints[0],
+                body_text(&f[0]),
+                body_text(&f[1])
+            )
         } else {
             format!("{n} joints")
         };

@@ -1441,19 +1441,28 @@ fn legend(
     if it.hinges {
         put(o, &format!("<circle cx=\"11\" cy=\"0\" r=\"5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge");
     }
-    if it.cracks {
-        put(
-            o,
-            &format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.85\"/>"),
-            "crack (opening)",
-        );
-    }
-    if it.crack_lines {
-        put(
-            o,
-            &format!("<path d=\"M1 4L9 -3L14 1L21 -5\" fill=\"none\" stroke=\"{CRACK_LINE}\" stroke-width=\"2\" stroke-linejoin=\"round\"/>"),
-            "crack line (1 = widest)",
-        );
+    if it.cracks || it.crack_lines {
+        // The wedge (the opening) and the line (the crack as traced, numbered by width) share
+        // one legend entry.
+        let mut sym = String::new();
+        if it.cracks {
+            let _ = write!(
+                sym,
+                "<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.85\"/>"
+            );
+        }
+        if it.crack_lines {
+            let _ = write!(
+                sym,
+                "<path d=\"M2 6L22 -6\" stroke=\"{CRACK_LINE}\" stroke-width=\"2\"/>"
+            );
+        }
+        let label = match (it.cracks, it.crack_lines) {
+            (true, true) => "crack, opening (1 = widest)",
+            (false, true) => "crack (1 = widest)",
+            _ => "crack (opening)",
+        };
+        put(o, &sym, label);
     }
     if it.thrust {
         put(

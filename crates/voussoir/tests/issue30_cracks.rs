@@ -261,3 +261,63 @@ fn issue30_item3_3d_vault_cracks_are_hinge_lines_across_the_vault() {
         assert!((a.max_opening - b.max_opening).abs() <= 1e-7 * b.max_opening);
     }
 }
+
+/// A "T" of three fully open joints meeting at (1, 0), traced by the library's tracer on
+/// joints written by hand: the widest (0 → 1, 30 mm) continues along the wider of the other
+/// two (up to (1, 1), 20 mm); the narrowest (to (2, 0), 10 mm) is a crack of its own whose end
+/// at (1, 0) is a junction.
+#[test]
+fn issue30_item3_at_a_branch_the_crack_continues_along_the_widest_joint() {
+    use voussoir::result::cracks::trace_cracks;
+    use voussoir::result::{CrackGeometry, JointResult, JointState, PlanarPoint, PointResult};
+    let joint = |id: usize, p: [[f64; 2]; 2], normal: [f64; 2], w: f64| JointResult {
+        id,
+        a: BodyName::Block(id),
+        b: BodyName::Block(id + 1),
+        normal,
+        points: p
+            .iter()
+            .map(|q| PointResult {
+                position: PlanarPoint { x: q[0], y: q[1] },
+                opening: w,
+                sliding: 0.0,
+                normal_force: 0.0,
+                shear_force: 0.0,
+                gap: 0.0,
+            })
+            .collect(),
+        normal_force: 0.0,
+        shear_force: 0.0,
+        eccentricity: None,
+        state: JointState::Open,
+        compressed_depth: None,
+    };
+    let joints = vec![
+        joint(0, [[0.0, 0.0], [1.0, 0.0]], [0.0, 1.0], 0.03),
+        joint(1, [[1.0, 0.0], [2.0, 0.0]], [0.0, 1.0], 0.01),
+        joint(2, [[1.0, 0.0], [1.0, 1.0]], [1.0, 0.0], 0.02),
+    ];
+    let open = vec![vec![true, true]; 3];
+    let widths: Vec<Vec<f64>> = joints
+        .iter()
+        .map(|j| j.points.iter().map(|p| p.opening).collect())
+        .collect();
+    let geo = CrackGeometry {
+        blocks: vec![],
+        supports: vec![],
+        tolerance: 1e-9,
+    };
+    let c = trace_cracks(&joints, &open, &widths, &geo);
+    assert_eq!(c.len(), 2, "{c:?}");
+    assert_eq!(c[0].joints, vec![0, 2]);
+    for (p, q) in c[0].points.iter().zip([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]) {
+        assert!(close(*p, q), "{:?}", c[0].points);
+    }
+    assert!((c[0].length - 2.0).abs() <= TOL);
+    assert!((c[0].max_opening - 0.03).abs() <= TOL);
+    assert!(!c[0].start.junction && !c[0].end.junction);
+    assert_eq!(c[1].joints, vec![1]);
+    assert!(close(c[1].points[0], [1.0, 0.0]) && close(c[1].points[1], [2.0, 0.0]));
+    assert!(c[1].start.junction && !c[1].end.junction);
+    assert!((c[1].max_opening - 0.01).abs() <= TOL);
+}

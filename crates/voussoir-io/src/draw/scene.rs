@@ -334,6 +334,8 @@ pub(crate) const THRUST: &str = "#1f5fbf";
 pub(crate) const LOAD: &str = "#7b2d8e";
 pub(crate) const FORCE: &str = "#1a9850";
 pub(crate) const HINGE: &str = "#111111";
+/// Cracks narrower than this fraction of the widest are not drawn as lines (hairlines).
+pub(crate) const HAIRLINE: f64 = 0.01;
 /// The crack lines (darker than the crack wedges' fill).
 pub(crate) const CRACK_LINE: &str = "#7a0177";
 pub(crate) const PALETTE: [&str; 8] = [
@@ -991,12 +993,30 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     // they lie on (the face the wedge opens from); the first ten numbered as in the summaries.
     let mut n_crack_lines = 0;
     let mut crack_interior: Vec<[f64; 2]> = Vec::new();
+    let mut hairline_tips: Vec<[f64; 2]> = Vec::new();
     if opts.cracks && !scene.cracks.is_empty() {
         let mut lines = String::new();
         let mut labels = String::new();
         let lw = (stroke * 2.4).clamp(1.4, 2.6);
+        // Line width grows with the square root of the opening; cracks narrower than 1 % of the
+        // widest (hairlines) are left out of the drawing (the summaries and the JSON list them).
+        let widest = scene
+            .cracks
+            .iter()
+            .fold(0.0f64, |m, c| m.max(c.max_opening));
         let fs = 11.0;
         for (n, c) in scene.cracks.iter().enumerate() {
+            if c.points.len() > 2 {
+                crack_interior.extend_from_slice(&c.points[1..c.points.len() - 1]);
+            }
+            if !(c.max_opening >= HAIRLINE * widest) {
+                // A settlement's hairline is left out with its hinges (a collapse mechanism's
+                // hinges are all drawn: each is part of the mechanism).
+                if scene.units == MotionUnits::Metres {
+                    hairline_tips.extend(c.points.iter().copied());
+                }
+                continue;
+            }
             let on: Vec<&JointResult> = c
                 .joints
                 .iter()
@@ -1032,12 +1052,13 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             if pts.len() < 2 {
                 continue;
             }
-            if c.points.len() > 2 {
-                crack_interior.extend_from_slice(&c.points[1..c.points.len() - 1]);
-            }
             n_crack_lines += 1;
             let xy: Vec<[f64; 2]> = pts.iter().map(|p| p.0).collect();
             let _ = write!(lines, "<polyline points=\"{}\"", points_attr(&xy));
+            if widest > 0.0 && c.max_opening < widest {
+                let w = (lw * (c.max_opening / widest).sqrt()).max(0.6);
+                let _ = write!(lines, " stroke-width=\"{}\"", num(w));
+            }
             if interactive {
                 let data: Vec<&str> = pts.iter().map(|p| p.1.as_str()).collect();
                 let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
@@ -1212,10 +1233,12 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             if !h.x.is_finite() || !h.y.is_finite() {
                 continue;
             }
-            // A closed point a crack runs through is a bend of that crack, not a hinge.
+            // A closed point a crack runs through is a bend of that crack, not a hinge; the
+            // hinges of a settlement's hairlines are left out with them.
             let tol = 1e-9 * b.size;
             if crack_interior
                 .iter()
+                .chain(&hairline_tips)
                 .any(|p| (p[0] - h.x).hypot(p[1] - h.y) <= tol)
             {
                 continue;

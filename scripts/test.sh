@@ -9,3 +9,5 @@ cargo test --workspace --release --no-fail-fast "$@"
 ./scripts/test-python.sh
 # The 3D HTML report in headless Chromium: no script errors, the WebGL view drawn and rotating.
 ./scripts/check-report3d.sh
+# The HTML reports printed to PDF (headless Chromium), checked page by page as images.
+./scripts/check-report-pdf.sh

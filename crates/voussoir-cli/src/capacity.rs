@@ -9,6 +9,7 @@ use voussoir::analysis::limit::Crushing;
 use voussoir::model3d::AnyModel;
 use voussoir::Assembly;
 use voussoir_io::draw::capacity::LinearFitText;
+use voussoir_io::lengths::Length;
 
 #[derive(Args)]
 pub struct CapacityArgs {
@@ -77,10 +78,33 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
     match input.load_any()? {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
+            let facts = crate::report_inputs::facts_2d(&model);
             let st = input.structure_of(model, Some(&motion))?;
             let r = capacity(&st, &opts)?;
-            a.draw.emit_capacity(&r, &input.path)?;
-            a.out.emit(&r, || summary(&st, &r))
+            a.draw
+                .clone()
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "capacity",
+                        facts,
+                        &st,
+                        &input,
+                        &opts.solver,
+                        crate::report_inputs::Laws {
+                            cone: None,
+                            crushing: Some(match crushing {
+                                Crushing::Linear => {
+                                    voussoir_io::report_parts::CrushingModel::Linear(facets)
+                                }
+                                Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
+                            }),
+                            non_associative: a.crushing.non_associative,
+                        },
+                        vec![("steps".into(), a.steps.to_string())],
+                    )
+                })
+                .emit_capacity(&r, &input.path)?;
+            a.out.emit_split(&r, &input.splits(), || summary(&st, &r))
         }
         AnyModel::Spatial(model) => {
             a.draw.refuse_3d_curve()?;
@@ -96,6 +120,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                         .into(),
                 ));
             }
+            let facts = crate::report_inputs::facts_3d(&model);
             let st = input.structure3d_any_cone(model, Some(&motion))?;
             // In 3D the conic joint law of a limit analysis is the exact Coulomb cone (as
             // `limit --friction-cone exact`): every limit analysis of the curve is a
@@ -115,8 +140,25 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                 ..opts
             };
             let r = capacity(&st, &opts)?;
-            a.draw.emit_capacity(&r, &input.path)?;
-            a.out.emit(&r, || {
+            a.draw
+                .clone()
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "capacity",
+                        facts,
+                        &st,
+                        &input,
+                        &opts.solver,
+                        crate::report_inputs::Laws {
+                            cone: Some(crate::settle::friction_cone(&input, &st)),
+                            crushing: None,
+                            non_associative: a.crushing.non_associative,
+                        },
+                        vec![("steps".into(), a.steps.to_string())],
+                    )
+                })
+                .emit_capacity(&r, &input.path)?;
+            a.out.emit_split(&r, &input.splits(), || {
                 let mut s = summary(&st, &r);
                 if exact {
                     s.push_str(
@@ -164,7 +206,12 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         return s;
     }
     let unit = r.unit();
-    let (k, u) = (unit.factor(), unit.shown());
+    // Lengths by the README's rule (voussoir_io::lengths): settlements in cm, rotations in mrad.
+    let len = match unit {
+        SettlementUnit::Translation => Length::Motion,
+        SettlementUnit::Rotation => Length::Rotation,
+    };
+    let u = len.unit();
     let moving: Vec<String> = r
         .direction
         .iter()
@@ -176,10 +223,10 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
     };
     let _ = writeln!(
         s,
-        "{what}: {}; largest {} {:.4} {u}",
+        "{what}: {}; largest {} {}",
         moving.join(", "),
         unit.noun(),
-        r.max_settlement * k
+        len.show(r.max_settlement)
     );
     // One entry per hinged joint (a 3D hinge line has several points on one joint).
     let mut joints: Vec<usize> = r.settlement_hinges.iter().map(|h| h.joint).collect();
@@ -202,14 +249,7 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         true,
     ));
     if let Some(z) = r.zero_capacity_settlement {
-        let _ = writeln!(
-            s,
-            "zero-capacity {}: {:.5} {} ({:.3} {u})",
-            unit.noun(),
-            z,
-            unit.si(),
-            z * k
-        );
+        let _ = writeln!(s, "zero-capacity {}: {}", unit.noun(), len.show(z));
     }
     match voussoir_io::draw::capacity::linear_fit_text(r) {
         Some(LinearFitText::Fits(t)) => {
@@ -248,7 +288,13 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         } else {
             format!("no (closes joints {:?})", p.closing_joints)
         };
-        let _ = writeln!(s, "{:>12.5}  {:>12}  {}", p.settlement * k, l, v);
+        let _ = writeln!(
+            s,
+            "{:>12}  {:>12}  {}",
+            len.number_to(p.settlement, 5),
+            l,
+            v
+        );
     }
     let _ = writeln!(
         s,

@@ -13,6 +13,7 @@ use voussoir::settlement_input::ModelSupports;
 use voussoir::structure::Body;
 use voussoir::Assembly;
 use voussoir::{BuildOptions, Model, Structure, Structure3d};
+use voussoir_io::lengths::Length;
 
 /// A failure: one line for the user.
 #[derive(Debug)]
@@ -277,29 +278,91 @@ pub struct SettleArgs {
     /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
     pub fixed: Vec<String>,
-    /// Vertical settlement profile along x (m) applied to every support by its centroid:
-    /// uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…  (all in m; v up, so a
-    /// settlement is < 0).
+    /// Vertical settlement profile along x (m): uniform:X0,X1,V | linear:X0,V0,X1,V1 |
+    /// table:X,V;X,V;…  (all in m; v up, so a settlement is < 0). A support that spans a
+    /// breakpoint (X0, X1, a table's X) is first cut there into parts NAME@0, NAME@1, … from
+    /// the left (reported); each support or part then moves by the profile at its centroid.
     #[arg(long, value_name = "KIND:NUMBERS")]
     pub profile: Option<String>,
+    #[command(flatten)]
+    pub split: SplitArgs,
 }
 
+// `--split`: on every command that takes support motions (settle, capacity, identify, sweep,
+// incremental).
+#[derive(Args, Clone, Debug, Default)]
+pub struct SplitArgs {
+    /// Cut support NAME by vertical lines x = X (m or with a unit) into parts NAME@0, NAME@1, …
+    /// from the left, before any --move or --fixed (which may then name a part:
+    /// `--split base@1.25 --move base@1=0,-1cm`). Repeatable, one per support.
+    #[arg(long = "split", value_name = "NAME@X[,X...]")]
+    pub splits: Vec<String>,
+}
+
+pub use voussoir::settlement_input::SupportSplit;
 pub use voussoir_io::motion::{parse_profile, signed_length, Motion};
 
 impl SettleArgs {
-    /// Parse every `--move` and `--profile` (before any work).
+    /// Parse every `--split`, `--move` and `--profile` (before any work).
     pub fn resolve(&self) -> Result<Motion, Fail> {
-        Ok(Motion::parse(
+        Ok(Motion::parse_with_splits(
             &self.moves,
             &self.fixed,
             self.profile.as_deref(),
+            &self.split.splits,
         )?)
     }
 
-    /// Apply the moves, fixed supports and profile to a model.
-    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), Fail> {
+    /// Apply the splits, moves, fixed supports and profile to a model: the supports cut.
+    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<Vec<SupportSplit>, Fail> {
         Ok(self.resolve()?.apply(model)?)
     }
+}
+
+/// The supports cut by `--split` or at a profile's breakpoints, for a summary: one line per
+/// support, one per part (x range in m, motion in mm and rad).
+pub fn split_summary(splits: &[SupportSplit]) -> String {
+    let mut s = String::new();
+    for sp in splits {
+        let cuts: Vec<String> = sp.cuts.iter().map(|c| format!("{c:.4}")).collect();
+        let _ = writeln!(
+            s,
+            "support {} cut at x = {} m into {} parts:",
+            sp.support,
+            cuts.join(", "),
+            sp.parts.len()
+        );
+        for p in &sp.parts {
+            let labels: &[&str] = if p.motion.len() == 3 {
+                &["u", "v", "θ"]
+            } else {
+                &["u", "v", "w", "θx", "θy", "θz"]
+            };
+            let lengths = if p.motion.len() == 3 { 2 } else { 3 };
+            let m: Vec<String> = p
+                .motion
+                .iter()
+                .zip(labels)
+                .enumerate()
+                .map(|(k, (v, l))| {
+                    if k < lengths {
+                        format!("{l} {:.3} mm", v * 1e3)
+                    } else {
+                        format!("{l} {v:.3e} rad")
+                    }
+                })
+                .collect();
+            let _ = writeln!(
+                s,
+                "  {:<12} x {:.4} … {:.4} m  {}",
+                p.name,
+                p.x_range[0],
+                p.x_range[1],
+                m.join(", ")
+            );
+        }
+    }
+    s
 }
 
 /// Whether any support of a model moves.
@@ -324,6 +387,8 @@ pub struct Input {
     /// 3D: facets of the friction pyramid (None: the default), exact cone asked for.
     pub friction_facets: Option<usize>,
     pub exact_friction_cone: bool,
+    /// The supports cut by the motion applied when building the structure.
+    pub splits: std::sync::Arc<std::sync::Mutex<Vec<SupportSplit>>>,
 }
 
 impl ModelArgs {
@@ -354,6 +419,7 @@ impl ModelArgs {
             }
         }
         Ok(Input {
+            splits: Default::default(),
             friction_facets: self.friction_facets,
             exact_friction_cone: self.friction_cone == Some(FrictionConeArg::Exact),
             path: self.model.clone(),
@@ -461,7 +527,7 @@ impl Input {
         motion: Option<&Motion>,
     ) -> Result<Structure3d, Fail> {
         if let Some(s) = motion {
-            s.apply(&mut model)?;
+            self.note_splits(s.apply(&mut model)?);
         }
         let mut st = Structure3d::new(&model, self.build)
             .map_err(|e| Fail(crate::import::annotate_mesh(&e.to_string())))?;
@@ -472,6 +538,19 @@ impl Input {
             eprintln!("warning: {w}");
         }
         Ok(st)
+    }
+
+    /// Keep the supports cut while applying a motion, for [`Input::splits`].
+    fn note_splits(&self, splits: Vec<SupportSplit>) {
+        if let Ok(mut s) = self.splits.lock() {
+            *s = splits;
+        }
+    }
+
+    /// The supports cut by the last motion applied by [`Input::structure_of`] or
+    /// [`Input::structure3d_any_cone`] (`--split`, a profile's breakpoints).
+    pub fn splits(&self) -> Vec<SupportSplit> {
+        self.splits.lock().map(|s| s.clone()).unwrap_or_default()
     }
 
     /// `--friction-facets` and `--friction-cone` refused for a 2D model.
@@ -504,7 +583,7 @@ impl Input {
     ) -> Result<Structure, Fail> {
         self.refuse_3d_friction()?;
         if let Some(s) = motion {
-            s.apply(&mut model)?;
+            self.note_splits(s.apply(&mut model)?);
         }
         let st = Structure::new(&model, self.build)?;
         for w in model.warnings() {
@@ -531,6 +610,27 @@ pub struct OutArgs {
 impl OutArgs {
     /// The one rule of --json and -o: the file (if any) gets the JSON; stdout gets the JSON with
     /// --json, else the summary.
+    /// [`OutArgs::emit`] for a result whose model had supports cut (`--split`, a profile's
+    /// breakpoints): the JSON gets `split_supports`, the summary their lines. With none cut,
+    /// exactly [`OutArgs::emit`].
+    pub fn emit_split<T: Serialize>(
+        &self,
+        result: &T,
+        splits: &[SupportSplit],
+        summary: impl Fn() -> String,
+    ) -> Result<(), Fail> {
+        if splits.is_empty() {
+            return self.emit(result, summary);
+        }
+        self.emit(
+            &voussoir_io::motion::WithSplits {
+                result,
+                split_supports: splits,
+            },
+            || summary() + &split_summary(splits),
+        )
+    }
+
     pub fn emit<T: Serialize>(&self, result: &T, summary: impl Fn() -> String) -> Result<(), Fail> {
         let json = voussoir_io::files::to_json(result)?;
         if let Some(path) = &self.output {
@@ -578,14 +678,14 @@ fn hinges_section<S: Assembly>(st: &S, heading: &str, hinges: &[Hinge<S::D>]) ->
             .map(|h| {
                 let c: Vec<String> = <S::D as Spatial>::coords(&h.at)
                     .iter()
-                    .map(|x| format!("{x:.4}"))
+                    .map(|x| Length::Position.number(*x))
                     .collect();
                 format!("({})", c.join(", "))
             })
             .collect();
         let _ = writeln!(
             s,
-            "  joint {:>4} ({} | {}) at {}",
+            "  joint {:>4} ({} | {}) at {} m",
             joint,
             name(st, a),
             name(st, b),
@@ -621,6 +721,45 @@ pub fn cracks_section<C: CrackText>(
             s,
             "  … and {} more (all in the result's \"cracks\")",
             cracks.len() - CRACK_LINES
+        );
+    }
+    s
+}
+
+/// The prescribed motion of every moving support, one line each, in the summaries' units
+/// (README, "Units in the summaries"): translations in cm, rotations in mrad.
+pub fn motions_section<S: Assembly>(st: &S) -> String {
+    let mut s = String::new();
+    for k in 0..st.num_supports() {
+        let m = st.support_motion(k);
+        if m.iter().all(|x| *x == 0.0) {
+            continue;
+        }
+        // 2D: u, v, θ; 3D: u, v, w, θx, θy, θz.
+        let labels: &[&str] = if m.len() == 3 {
+            &["u", "v", "θ"]
+        } else {
+            &["u", "v", "w", "θx", "θy", "θz"]
+        };
+        let translations = if m.len() == 3 { 2 } else { 3 };
+        let parts: Vec<String> = m
+            .iter()
+            .zip(labels)
+            .enumerate()
+            .map(|(i, (x, l))| {
+                let len = if i < translations {
+                    Length::Motion
+                } else {
+                    Length::Rotation
+                };
+                format!("{l} {}", len.show(*x))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "motion   {:>8}: {}",
+            st.support_name(k),
+            parts.join("  ")
         );
     }
     s
@@ -671,6 +810,7 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
             "work of dead loads {p:.6e} kN·m, work on supports {d:.6e} kN·m, relative gap {g:.2e}"
         );
     }
+    s.push_str(&motions_section(st));
     s.push_str(&hinges_section(st, "hinges", &r.hinges));
     s.push_str(&cracks_section(
         "cracks",

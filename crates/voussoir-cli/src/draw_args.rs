@@ -34,6 +34,10 @@ pub struct DrawArgs {
     /// (limit, settle, tilt); the curve figures of capacity and incremental have none.
     #[arg(skip)]
     pub forces: bool,
+    /// What the report states beyond the result (materials, joint laws, tolerances): set by
+    /// the command through [`DrawArgs::with_inputs`].
+    #[arg(skip)]
+    pub inputs: Option<voussoir_io::report_parts::ReportInputs>,
     /// Title of the drawing (default: by analysis).
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
@@ -43,20 +47,100 @@ pub struct DrawArgs {
     /// `/`, is refused before the analysis runs.
     #[arg(long, value_name = "FILE")]
     pub vtk: Option<PathBuf>,
-    /// 3D models: the view of --svg/--png: axonometric (default), plan or elevation (from −y).
-    #[arg(long, value_enum, value_name = "VIEW")]
+    /// 3D models: the view of --svg/--png: `axonometric` (default: elevation 30°, the azimuth
+    /// turned to show the largest motions), `plan`, `elevation` (from −y), or `AZ[,EL]` in
+    /// degrees: azimuth from the front (−y), counter-clockwise seen from above (−35 looks from
+    /// the front left), and elevation above the horizon (default 30, −89 … 89).
+    #[arg(long, value_name = "VIEW", value_parser = parse_view, allow_hyphen_values = true)]
     pub view: Option<ViewArg>,
+    /// Centres of pressure as dots: set from [`ForcesArgs`] by limit, settle and tilt.
+    #[arg(skip)]
+    pub pressure_points: Option<PressureArg>,
 }
 
 /// The view of a 3D drawing.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ViewArg {
-    /// Seen from azimuth −35°, elevation 30° (front left, above).
+    /// Axonometric, turned to show the largest motions (azimuth −35°, elevation 30° when
+    /// nothing moves).
     Axonometric,
     /// Seen from above: x right, y up the page.
     Plan,
     /// Seen from the front (−y): x right, z up the page.
     Elevation,
+    /// Axonometric from this azimuth and elevation (degrees).
+    Angles(f64, f64),
+}
+
+impl ViewArg {
+    /// The drawing's view.
+    pub fn view(self) -> voussoir_io::draw3d::View {
+        use voussoir_io::draw3d::View;
+        match self {
+            ViewArg::Axonometric => View::Auto,
+            ViewArg::Plan => View::Plan,
+            ViewArg::Elevation => View::Elevation,
+            ViewArg::Angles(azimuth, elevation) => View::Axonometric { azimuth, elevation },
+        }
+    }
+}
+
+/// `--view`: axonometric | plan | elevation | AZ[,EL] (degrees, finite; EL in −89 … 89).
+pub fn parse_view(s: &str) -> Result<ViewArg, String> {
+    let t = s.trim();
+    match t.to_ascii_lowercase().as_str() {
+        "axonometric" | "auto" => return Ok(ViewArg::Axonometric),
+        "plan" => return Ok(ViewArg::Plan),
+        "elevation" => return Ok(ViewArg::Elevation),
+        _ => {}
+    }
+    let expected =
+        "expected axonometric, plan, elevation or AZ[,EL]: azimuth and elevation in degrees";
+    let parts: Vec<&str> = t.split(',').map(str::trim).collect();
+    if parts.len() > 2 {
+        return Err(format!("{expected} (two numbers at most)"));
+    }
+    let mut v = [0.0, voussoir_io::draw3d::DEFAULT_ELEVATION];
+    for (i, p) in parts.iter().enumerate() {
+        let x: f64 = p
+            .trim_end_matches('°')
+            .parse()
+            .map_err(|_| format!("{expected} ('{p}' is not a number)"))?;
+        if !x.is_finite() {
+            return Err(format!("{expected} ('{p}' is not a finite number)"));
+        }
+        v[i] = x;
+    }
+    if !(-89.0..=89.0).contains(&v[1]) {
+        return Err(format!(
+            "elevation {}°: expected −89 … 89 (`--view plan` looks from straight above)",
+            v[1]
+        ));
+    }
+    Ok(ViewArg::Angles(v[0], v[1]))
+}
+
+/// Whether the centres of pressure are drawn as dots.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PressureArg {
+    /// Dots along a 2D thrust line (an arch); dots on their own (walls, façades, 3D) only
+    /// when there are at most 60.
+    Auto,
+    /// Every centre of pressure.
+    On,
+    /// None (a 2D thrust line is still drawn).
+    Off,
+}
+
+impl PressureArg {
+    pub fn points(self) -> voussoir_io::draw::PressurePoints {
+        use voussoir_io::draw::PressurePoints;
+        match self {
+            PressureArg::Auto => PressurePoints::Auto,
+            PressureArg::On => PressurePoints::On,
+            PressureArg::Off => PressurePoints::Off,
+        }
+    }
 }
 
 // `--forces`: only on the commands whose figure is the structure (limit, settle, tilt).
@@ -66,6 +150,10 @@ pub struct ForcesArgs {
     /// Also draw contact-force resultants as arrows (length ∝ magnitude, kN).
     #[arg(long)]
     pub forces: bool,
+    /// Centres of pressure as dots in --svg/--png: auto (default: along a 2D thrust line; dots
+    /// on their own — walls, façades, 3D — only when there are at most 60), on or off.
+    #[arg(long, value_enum, value_name = "WHEN")]
+    pub pressure_points: Option<PressureArg>,
 }
 
 impl DrawArgs {
@@ -73,16 +161,29 @@ impl DrawArgs {
     pub fn with(&self, f: &ForcesArgs) -> DrawArgs {
         DrawArgs {
             forces: f.forces,
+            pressure_points: f.pressure_points,
             ..self.clone()
         }
     }
 
+    /// These flags with the report's inputs, computed only when a report is asked for.
+    pub fn with_inputs(
+        self,
+        f: impl FnOnce() -> voussoir_io::report_parts::ReportInputs,
+    ) -> DrawArgs {
+        let inputs = self.report.is_some().then(f);
+        DrawArgs { inputs, ..self }
+    }
+
     /// Flags that draw 3D results only, refused on a 2D one (before any work).
     pub fn check_2d(&self) -> Result<(), Fail> {
-        if self.vtk.is_some() || self.view.is_some() {
+        if self.view.is_some() {
             return Err(Fail(
-                "--vtk and --view apply to 3D models (this model is 2D)".into(),
+                "--view applies to 3D models (this model is 2D)".into(),
             ));
+        }
+        if self.vtk.is_some() {
+            return Err(Fail("--vtk applies to 3D models (this model is 2D)".into()));
         }
         Ok(())
     }
@@ -115,21 +216,24 @@ impl DrawArgs {
                 "--forces draws contact-force arrows on 2D drawings only; a 3D result's forces are in -o/--json and in --vtk (the contact points' forces)".into(),
             ));
         }
+        self.refuse_without_figure()?;
         if let Some(path) = &self.report {
             let title = self.title.clone().unwrap_or_else(|| r.title());
-            let html =
-                voussoir_io::report3d::report3d_html(r, &title, &source.display().to_string())?;
+            let html = voussoir_io::report3d::report3d_html_with(
+                r,
+                &title,
+                &source.display().to_string(),
+                self.inputs.as_ref(),
+            )?;
             crate::outputs::stage(path, html.as_bytes())?;
         }
         if self.svg.is_some() || self.png.is_some() {
-            use voussoir_io::draw3d::{draw3d, Draw3dOptions, View};
-            let view = match self.view {
-                None | Some(ViewArg::Axonometric) => View::default(),
-                Some(ViewArg::Plan) => View::Plan,
-                Some(ViewArg::Elevation) => View::Elevation,
-            };
+            use voussoir_io::draw3d::{draw3d, Draw3dOptions};
             let opts = Draw3dOptions {
-                view,
+                view: self.view.map_or(Default::default(), ViewArg::view),
+                pressure_points: self
+                    .pressure_points
+                    .map_or(Default::default(), PressureArg::points),
                 scale: self.scale,
                 title: self.title.clone(),
                 ..Draw3dOptions::default()
@@ -156,6 +260,24 @@ impl DrawArgs {
         self.svg.is_some() || self.png.is_some() || self.report.is_some()
     }
 
+    /// `--view` and `--pressure-points` shape the --svg/--png drawing; a report draws its own
+    /// figures (the 3D report's viewer turns): refused without --svg or --png.
+    fn refuse_without_figure(&self) -> Result<(), Fail> {
+        if self.svg.is_none() && self.png.is_none() {
+            for (given, flag) in [
+                (self.view.is_some(), "--view"),
+                (self.pressure_points.is_some(), "--pressure-points"),
+            ] {
+                if given {
+                    return Err(Fail(format!(
+                        "{flag} shapes the --svg/--png drawing; give --svg or --png (a report draws its own figures)"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Check the flags (before any work).
     pub fn check(&self) -> Result<(), Fail> {
         if let Some(s) = self.scale {
@@ -174,6 +296,9 @@ impl DrawArgs {
         Ok(DrawOptions {
             scale: self.scale,
             forces: self.forces,
+            pressure_points: self
+                .pressure_points
+                .map_or(Default::default(), PressureArg::points),
             ..DrawOptions::default()
         })
     }
@@ -183,11 +308,13 @@ impl DrawArgs {
             title: self.title.clone(),
             source: source.display().to_string(),
             scale: self.scale,
+            inputs: self.inputs.clone(),
         }
     }
 
     /// Write the SVG/PNG of a scene and the report (built only if asked for).
     pub fn emit_scene(&self, scene: Scene, report: impl FnOnce() -> Report) -> Result<(), Fail> {
+        self.refuse_without_figure()?;
         if !self.any() {
             return Ok(());
         }

@@ -30,7 +30,7 @@ pub enum Gen {
     /// closed by a cap or open (--oculus), on supports base0 … base{segments-1}.
     Dome(DomeArgs),
     /// 3D: one box b×d×h on a support `base`, with a horizontal live load equal to its weight
-    /// along --azimuth.
+    /// along --direction.
     Block(BlockArgs),
     /// 3D: brick walls in running bond, plan I, L or U with bonded corners, on a support
     /// `ground`; live load W·[0, 1, 0] (out of plane) on the main wall.
@@ -348,7 +348,8 @@ pub fn run(g: Gen) -> Result<(), Fail> {
         }
         Gen::Block(b) => {
             let v = numbers("--size", &b.size, 3, "B,D,H in metres")?;
-            let m = generate3d::block([v[0], v[1], v[2]], b.azimuth, b.unit_weight)?;
+            let az = b.direction.azimuth("--direction").map_err(Fail)?;
+            let m = generate3d::block([v[0], v[1], v[2]], az, b.unit_weight)?;
             write3d(&m, &b.out)
         }
         Gen::Walls(w) => {
@@ -619,14 +620,17 @@ pub struct BlockArgs {
     /// Box size B,D,H in m along x, y, z.
     #[arg(long, default_value = "1,1,2", value_name = "B,D,H")]
     pub size: String,
-    /// Direction of the horizontal live load, degrees from +x towards +y.
+    /// Direction of the horizontal live load: +x, -x, +y, -y, an azimuth in degrees from +x
+    /// towards +y, or a horizontal vector DX,DY. (`--azimuth` is another name of this flag.)
     #[arg(
         long,
-        default_value_t = 0.0,
-        value_name = "DEG",
-        allow_negative_numbers = true
+        alias = "azimuth",
+        default_value = "+x",
+        value_name = "DIR",
+        allow_hyphen_values = true,
+        value_parser = crate::direction::parse
     )]
-    pub azimuth: f64,
+    pub direction: crate::direction::Direction,
     /// Unit weight γ in kN/m³.
     #[arg(long, default_value_t = 18.0, value_name = "KN_M3")]
     pub unit_weight: f64,

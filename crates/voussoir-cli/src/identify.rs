@@ -3,6 +3,7 @@
 
 use crate::common::{Fail, FormArgs, ModelArgs, OutArgs, SettleArgs};
 use crate::draw_args::{write_drawing, DrawArgs};
+use crate::import::UnitsArg;
 use clap::Args;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -11,16 +12,22 @@ use voussoir::analysis::identify::{
 };
 use voussoir::structure::Structure;
 use voussoir_io::draw::{self, ReportOptions};
+use voussoir_io::dxf::Units;
+use voussoir_io::lengths::Length;
+use voussoir_io::survey::{read_survey, SurveyOptions};
 
 #[derive(Args)]
 pub struct IdentifyArgs {
     #[command(flatten)]
     pub model: ModelArgs,
-    /// The observed cracks (JSON, see docs/identify.md): `{"tolerance": m, "cracks": [{"at":
-    /// [x, y], "opening": w} | {"joint": j, "opening": [w0, w1]}], "unobserved": [{"joint": j}
-    /// | {"region": [x0, y0, x1, y1]}]}`; every other joint point is observed closed.
+    /// The observed cracks (JSON, see docs/identify.md): `{"units": "mm", "tolerance": 0.1,
+    /// "cracks": [{"at": [x, y], "opening": w} | {"joint": j, "opening": [w0, w1]} |
+    /// {"polyline": [[x, y], …], "opening": w}], "unobserved": [{"joint": j} | {"region": [x0,
+    /// y0, x1, y1]}]}`; every other joint point is observed closed.
     #[arg(long, value_name = "OBS.json")]
-    pub cracks: PathBuf,
+    pub cracks: Option<PathBuf>,
+    #[command(flatten)]
+    pub survey: SurveyArgs,
     /// An unknown support motion: NAME=u,v,theta | A..B=v (segments sharing one value) |
     /// a profile with one value '?' (uniform:X0,X1,? | linear:X0,V0,X1,?). Bounds: u[LO:HI].
     /// Metres and radians. Repeatable.
@@ -41,17 +48,173 @@ pub struct IdentifyArgs {
     pub draw: DrawArgs,
 }
 
+/// A crack survey drawn in CAD (docs/identify.md, "A survey drawing").
+#[derive(Args, Clone, Debug, Default)]
+#[command(next_help_heading = "Crack survey drawing")]
+pub struct SurveyArgs {
+    /// A crack survey drawing (DXF): the lines (LWPOLYLINE, POLYLINE, LINE) of the survey
+    /// layers are crack lines, each with the width of the TEXT/MTEXT label next to it or in its
+    /// layer's name (CRACK-2mm). Added to the cracks of --cracks, if given.
+    #[arg(long, value_name = "SURVEY.dxf")]
+    pub survey: Option<PathBuf>,
+    /// A survey layer (case-insensitive; PREFIX* for every layer starting with PREFIX;
+    /// repeatable) [default: every layer whose name contains CRACK].
+    #[arg(long = "survey-layer", value_name = "LAYER")]
+    pub layers: Vec<String>,
+    /// Units of the survey drawing's coordinates [default: --units, else the drawing's
+    /// $INSUNITS, which must then be mm, cm or m].
+    #[arg(long = "survey-units", value_enum, ignore_case = true)]
+    pub units: Option<UnitsArg>,
+    /// Unit of a width label written without one ("2") [default: mm].
+    #[arg(long = "survey-width-units", value_enum, ignore_case = true)]
+    pub width_units: Option<UnitsArg>,
+    /// A joint point is on a crack line when it is within this distance of it, in m [default:
+    /// a quarter of the point's joint length].
+    #[arg(long = "survey-snap", value_name = "M")]
+    pub snap: Option<f64>,
+}
+
+fn units(u: UnitsArg) -> Units {
+    match u {
+        UnitsArg::Mm => Units::Mm,
+        UnitsArg::Cm => Units::Cm,
+        UnitsArg::M => Units::M,
+    }
+}
+
+impl SurveyArgs {
+    /// Refuse the survey flags without --survey.
+    fn check(&self) -> Result<(), Fail> {
+        if self.survey.is_none() {
+            let flag = [
+                (!self.layers.is_empty(), "--survey-layer"),
+                (self.units.is_some(), "--survey-units"),
+                (self.width_units.is_some(), "--survey-width-units"),
+                (self.snap.is_some(), "--survey-snap"),
+            ]
+            .into_iter()
+            .find(|(given, _)| *given);
+            if let Some((_, f)) = flag {
+                return Err(Fail(format!(
+                    "{f} applies to a survey drawing: give --survey FILE.dxf"
+                )));
+            }
+        }
+        if let Some(d) = self.snap {
+            if !(d.is_finite() && d > 0.0) {
+                return Err(Fail(format!(
+                    "--survey-snap {d}: must be a finite number > 0 (m)"
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The observations: the JSON file's cracks, then the survey drawing's lines. Also the
+/// description of each survey crack by its index, for messages.
+fn observations(
+    a: &IdentifyArgs,
+    model_units: Option<UnitsArg>,
+) -> Result<(Observations, Vec<(usize, String)>), Fail> {
+    let mut obs = match &a.cracks {
+        Some(path) => {
+            crate::outputs::input(path);
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| Fail(format!("cannot read {}: {e}", path.display())))?;
+            serde_json::from_str(&text)
+                .map_err(|e| Fail(format!("{}: invalid observations: {e}", path.display())))?
+        }
+        None => Observations::default(),
+    };
+    let mut names = Vec::new();
+    if let Some(path) = &a.survey.survey {
+        crate::outputs::input(path);
+        let opts = SurveyOptions {
+            layers: a.survey.layers.clone(),
+            units: a.survey.units.or(model_units).map(units),
+            width_units: a.survey.width_units.map(units).unwrap_or(Units::Mm),
+            snap: a.survey.snap,
+        };
+        let (cracks, report) = read_survey(path, &opts)?;
+        eprintln!("{}", report.summary());
+        for n in &report.notes {
+            eprintln!("note: {n}");
+        }
+        // In the JSON file's coordinate unit; widths in metres, said per crack.
+        let fc = match obs.coordinate_units.as_deref() {
+            None => 1.0,
+            Some(u) => voussoir::model::length_unit(u).ok_or_else(|| {
+                Fail(format!(
+                    "observations: \"coordinate_units\": unknown unit \"{u}\" (give \"m\", \"cm\" or \"mm\")"
+                ))
+            })?,
+        };
+        for (mut c, line) in cracks.into_iter().zip(&report.lines) {
+            if let Some(p) = c.polyline.as_mut() {
+                for q in p.iter_mut() {
+                    *q = [q[0] / fc, q[1] / fc];
+                }
+            }
+            c.snap = c.snap.map(|d| d / fc);
+            c.units = Some("m".into());
+            names.push((
+                obs.cracks.len(),
+                format!("{} of {}", line.entity, path.display()),
+            ));
+            obs.cracks.push(c);
+        }
+    }
+    Ok((obs, names))
+}
+
+/// `msg` with the drawing entity after every `cracks[i]` that came from the survey.
+fn annotate(msg: &str, names: &[(usize, String)]) -> String {
+    let mut out = msg.to_string();
+    for (i, name) in names.iter().rev() {
+        out = out.replace(&format!("cracks[{i}]"), &format!("cracks[{i}] ({name})"));
+    }
+    out
+}
+
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.draw.check()?;
-    let input = a.model.resolve()?;
+    a.draw.check_2d()?;
+    a.survey.check()?;
+    if a.cracks.is_none() && a.survey.survey.is_none() {
+        return Err(Fail(
+            "give the observed cracks: --cracks OBS.json, --survey SURVEY.dxf, or both".into(),
+        ));
+    }
+    // `--units` is the drawings' unit: the model's when it is a drawing, and the survey's
+    // (unless --survey-units); with a JSON model it is the survey's alone.
+    let mut model = a.model.clone();
+    let drawn = voussoir_io::dxf::is_dxf(&model.model) || voussoir_io::mesh::is_mesh(&model.model);
+    let model_units = model.dxf.units;
+    if a.survey.survey.is_some() && !drawn {
+        model.dxf.units = None;
+    }
+    let input = model.resolve()?;
     let motion = a.settle.resolve()?;
-    let st = input.structure(Some(&motion))?;
+    let mut model = input.load()?;
+    let mut splits = motion.apply(&mut model)?;
+    // Unknown profiles act on the foundations as drawn, as `--profile` does: a support that
+    // spans one of their breakpoints is cut there first.
+    let xs: Vec<f64> = a
+        .unknowns
+        .iter()
+        .flat_map(|spec| profile_unknown_breakpoints(spec))
+        .collect();
+    if !xs.is_empty() {
+        splits.extend(
+            voussoir::settlement_input::split_supports_at(&mut model, &xs)
+                .map_err(|e| Fail(format!("--unknown: {e}")))?,
+        );
+        voussoir::settlement_input::refresh_motions(&model, &mut splits);
+    }
+    let st = input.structure_of(model, None)?;
     let solver = input.solver;
-    crate::outputs::input(&a.cracks);
-    let text = std::fs::read_to_string(&a.cracks)
-        .map_err(|e| Fail(format!("cannot read {}: {e}", a.cracks.display())))?;
-    let obs: Observations = serde_json::from_str(&text)
-        .map_err(|e| Fail(format!("{}: invalid observations: {e}", a.cracks.display())))?;
+    let (obs, names) = observations(&a, model_units)?;
     let mut unknowns = Vec::new();
     for spec in &a.unknowns {
         unknowns.extend(parse_unknown(spec, &st)?);
@@ -65,7 +228,8 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
             ranges: !a.no_ranges,
             form: a.form.settlement_form.form(),
         },
-    )?;
+    )
+    .map_err(|e| Fail(annotate(&Fail::from(e).0, &names)))?;
     if a.draw.svg.is_some() || a.draw.png.is_some() {
         let d = draw::draw_identify(&r, &a.draw.options()?, a.draw.title.as_deref());
         write_drawing(&d.svg, a.draw.svg.as_deref(), a.draw.png.as_deref())?;
@@ -77,46 +241,60 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
                 title: a.draw.title.clone(),
                 source: a.model.model.display().to_string(),
                 scale: a.draw.scale,
+                inputs: None,
             },
         );
         crate::outputs::stage(path, rep.to_html().as_bytes())?;
     }
-    a.out.emit(&r, || summary(&st, &r))
+    // Each unknown's kind of length: a rotation (every support's θ only) or a motion.
+    let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
+    a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
 }
 
-fn summary(st: &Structure, r: &IdentifyResult) -> String {
+/// The summary; lengths by the README's rule ([`voussoir_io::lengths`]): support motions in
+/// cm, rotations in mrad, crack widths and misfits in mm, positions in m.
+fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
+    let kind = |i: usize| kinds.get(i).copied().unwrap_or(Length::Motion);
     let mut s = String::new();
     let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(s, "{}", r.message);
     let _ = writeln!(s, "unknowns:");
-    for u in &r.unknowns {
+    for (i, u) in r.unknowns.iter().enumerate() {
+        let k = kind(i);
         let range = match (u.range_min, u.range_max) {
-            (Some(lo), Some(hi)) => format!("range [{lo:.6e}, {hi:.6e}]"),
+            (Some(lo), Some(hi)) => {
+                format!("range [{}, {}] {}", k.number(lo), k.number(hi), k.unit())
+            }
             _ if u.range_computed => "range unbounded or empty".to_string(),
             _ => "range not computed".to_string(),
         };
         let _ = writeln!(
             s,
-            "  {:<20} = {:>14.6e}  {range}  — {}",
-            u.name, u.value, u.note
+            "  {:<20} = {:>14}  {range}  — {}",
+            u.name,
+            k.show(u.value),
+            u.note
         );
     }
     if !r.support_motions.is_empty() {
-        let _ = writeln!(s, "support motions (u, v in m, θ in rad):");
+        let _ = writeln!(s, "support motions:");
         for m in &r.support_motions {
             let _ = writeln!(
                 s,
-                "  {:>8}: u {:>12.6e}  v {:>12.6e}  θ {:>12.6e}",
-                m.support, m.u, m.v, m.theta
+                "  {:>8}: u {:>12}  v {:>12}  θ {:>14}",
+                m.support,
+                Length::Motion.show(m.u),
+                Length::Motion.show(m.v),
+                Length::Rotation.show(m.theta)
             );
         }
     }
     let _ = writeln!(
         s,
-        "observations ({} points), misfit {:.4} tolerances in total, largest {:.3e} m:",
+        "observations ({} points), misfit {:.4} tolerances in total, largest {}:",
         r.observations.len(),
         r.total_misfit,
-        r.max_misfit
+        Length::Opening.show(r.max_misfit)
     );
     for o in r
         .observations
@@ -125,15 +303,15 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
     {
         let _ = writeln!(
             s,
-            "  crack {:>3} joint {:>5} point {} at ({:.4}, {:.4}): observed {:.4e} m, predicted {:.4e} m, misfit {:+.2e} m{}",
+            "  crack {:>3} joint {:>5} point {} at ({}, {}) m: observed {}, predicted {}, misfit {}{}",
             o.crack,
             o.joint,
             o.point,
-            o.x,
-            o.y,
-            o.observed,
-            o.predicted,
-            o.misfit,
+            Length::Position.number(o.x),
+            Length::Position.number(o.y),
+            Length::Opening.show(o.observed),
+            Length::Opening.show(o.predicted),
+            Length::Opening.show_signed(o.misfit),
             if o.within_tolerance { "" } else { "  (outside tolerance)" }
         );
     }
@@ -143,8 +321,11 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
         .filter(|c| c.observed != "open")
         .map(|c| {
             format!(
-                "joint {} point {} ({}, {:.3e} m)",
-                c.joint, c.point, c.observed, c.opening
+                "joint {} point {} ({}, {})",
+                c.joint,
+                c.point,
+                c.observed,
+                Length::Opening.show(c.opening)
             )
         })
         .collect();
@@ -167,7 +348,8 @@ fn summary(st: &Structure, r: &IdentifyResult) -> String {
                 .unknowns
                 .iter()
                 .zip(&m.values)
-                .map(|(u, v)| format!("{} = {:.6e}", u.name, v))
+                .enumerate()
+                .map(|(i, (u, v))| format!("{} = {}", u.name, kind(i).show(*v)))
                 .collect();
             let mut notes = Vec::new();
             if i == 0 {
@@ -293,6 +475,29 @@ pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
         out.push(Unknown::supports(st, label, &names, comp, lo, hi)?);
     }
     Ok(out)
+}
+
+/// The breakpoints of an unknown profile (`uniform:X0,X1,?`, …; its positions are known), or
+/// none when `spec` is not one or cannot be read (its own parse reports why).
+fn profile_unknown_breakpoints(spec: &str) -> Vec<f64> {
+    let spec = spec.trim();
+    let Some(q) = spec.find('?') else {
+        return Vec::new();
+    };
+    if !matches!(
+        spec.split_once(':'),
+        Some(("uniform" | "linear" | "table", _))
+    ) {
+        return Vec::new();
+    }
+    let rest = &spec[q + 1..];
+    let tail = match rest.strip_prefix('[') {
+        Some(r) => r.find(']').map_or("", |end| &r[end + 1..]),
+        None => rest,
+    };
+    crate::common::parse_profile(&format!("{}0{tail}", &spec[..q]))
+        .map(|p| p.breakpoints())
+        .unwrap_or_default()
 }
 
 fn parse_profile_unknown(spec: &str, st: &Structure) -> Result<Unknown, Fail> {

@@ -70,11 +70,20 @@ pub struct DxfArgs {
     /// The polygon with this handle (hex) is a support (repeatable).
     #[arg(long = "support-handle", value_name = "HANDLE")]
     pub support_handles: Vec<String>,
-    /// Vertices closer than this are merged, in m (default: 1e-6 of the drawing's size).
-    #[arg(long, value_name = "M")]
-    pub merge_tolerance: Option<f64>,
-    /// Live load added to the model (drawings carry none) [default: horizontal].
-    #[arg(long = "dxf-live", id = "dxf_live", value_enum, ignore_case = true)]
+    /// Vertices closer than this are welded (merged), in metres (absolute, after --units)
+    /// [default: DXF 1e-6 of the drawing's size; OBJ/PLY 1e-7 of the model's bounding-box
+    /// diagonal]. (`--merge-tolerance` is another name of this flag.)
+    #[arg(long, alias = "merge-tolerance", value_name = "M")]
+    pub weld: Option<f64>,
+    /// Live load added to the model (drawings and meshes carry none) [default: horizontal].
+    /// (`--dxf-live` and `--mesh-live` are other names of this flag.)
+    #[arg(
+        long = "live",
+        alias = "dxf-live",
+        alias = "mesh-live",
+        value_enum,
+        ignore_case = true
+    )]
     pub live: Option<DxfLiveArg>,
     #[command(flatten)]
     pub mesh: MeshArgs,
@@ -92,13 +101,6 @@ pub struct MeshArgs {
     /// Bodies whose name starts with PREFIX are supports.
     #[arg(long = "support-prefix", value_name = "PREFIX")]
     pub support_prefix: Option<String>,
-    /// Vertices of a body closer than this are welded, in metres (absolute, after --units)
-    /// [default: 1e-7 of the model's bounding-box diagonal].
-    #[arg(long, value_name = "M")]
-    pub weld: Option<f64>,
-    /// Live load added to the model (meshes carry none) [default: horizontal].
-    #[arg(long = "mesh-live", id = "mesh_live", value_enum, ignore_case = true)]
-    pub live: Option<DxfLiveArg>,
 }
 
 impl MeshArgs {
@@ -107,8 +109,6 @@ impl MeshArgs {
         [
             (!self.supports.is_empty(), "--supports"),
             (self.support_prefix.is_some(), "--support-prefix"),
-            (self.weld.is_some(), "--weld"),
-            (self.live.is_some(), "--mesh-live"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -140,7 +140,7 @@ impl DxfArgs {
             width: self.dxf_width.unwrap_or(d.width),
             support_layers: self.support_layers.clone(),
             support_handles: self.support_handles.clone(),
-            merge_tolerance: self.merge_tolerance,
+            merge_tolerance: self.weld,
             live: match self.live.unwrap_or_default() {
                 DxfLiveArg::None => ImportLive::None,
                 DxfLiveArg::Horizontal => ImportLive::Horizontal,
@@ -159,8 +159,8 @@ impl DxfArgs {
             unit_weight: self.unit_weight.unwrap_or(d.unit_weight),
             supports: self.mesh.supports.clone(),
             support_prefix: self.mesh.support_prefix.clone(),
-            weld: self.mesh.weld,
-            live: match self.mesh.live.unwrap_or_default() {
+            weld: self.weld,
+            live: match self.live.unwrap_or_default() {
                 DxfLiveArg::None => ImportLive::None,
                 DxfLiveArg::Horizontal => ImportLive::Horizontal,
             },
@@ -172,6 +172,8 @@ impl DxfArgs {
         [
             (self.units.is_some(), "--units"),
             (self.unit_weight.is_some(), "--unit-weight"),
+            (self.weld.is_some(), "--weld"),
+            (self.live.is_some(), "--live"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -211,8 +213,6 @@ impl DxfArgs {
             (self.dxf_width.is_some(), "--dxf-width"),
             (!self.support_layers.is_empty(), "--support-layer"),
             (!self.support_handles.is_empty(), "--support-handle"),
-            (self.merge_tolerance.is_some(), "--merge-tolerance"),
-            (self.live.is_some(), "--dxf-live"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -224,8 +224,7 @@ impl DxfArgs {
         for (flag, v) in [
             ("--unit-weight", self.unit_weight),
             ("--dxf-width", self.dxf_width),
-            ("--merge-tolerance", self.merge_tolerance),
-            ("--weld", self.mesh.weld),
+            ("--weld", self.weld),
         ] {
             if let Some(x) = v {
                 if !(x.is_finite() && x > 0.0) {
@@ -298,6 +297,11 @@ pub struct ImportArgs {
     /// Where to write the model JSON (stdout if absent).
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Cut every support into N parts of equal x extent, named NAME@0 … NAME@(N-1) from the
+    /// left, so that each can be moved on its own (`settle model.json --move base@2=0,-1cm`).
+    /// N ≥ 2; a 3D support must be convex.
+    #[arg(long = "split-support", value_name = "N")]
+    pub split_support: Option<usize>,
     // Last: the flattened groups set the help heading of what follows them.
     #[command(flatten)]
     pub dxf: DxfArgs,
@@ -315,7 +319,8 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     if is_mesh(&a.drawing) {
         return run_mesh(a);
     }
-    let (model, rep) = read_dxf(&a.drawing, &a.dxf.options())?;
+    let (mut model, rep) = read_dxf(&a.drawing, &a.dxf.options())?;
+    let splits = split_equally(&mut model, a.split_support)?;
     // Validate now (overlaps, isolated blocks), so that a bad drawing fails at import.
     let st = structure_of(
         &model,
@@ -327,6 +332,7 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(&model)?;
     emit(a.output.as_deref(), &json)?;
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
+    eprint!("{}", crate::common::split_summary(&splits));
     for n in &rep.notes {
         eprintln!("note: {n}");
     }
@@ -334,6 +340,25 @@ pub fn run(a: ImportArgs) -> Result<(), Fail> {
         eprintln!("warning: {w}");
     }
     Ok(())
+}
+
+/// `--split-support N`: every support cut into N equal parts along x.
+fn split_equally<M: voussoir::settlement_input::ModelSupports>(
+    model: &mut M,
+    n: Option<usize>,
+) -> Result<Vec<voussoir::settlement_input::SupportSplit>, Fail> {
+    let Some(n) = n else { return Ok(Vec::new()) };
+    if n < 2 {
+        return Err(Fail(format!(
+            "--split-support {n}: give the number of equal parts, 2 or more"
+        )));
+    }
+    voussoir::settlement_input::split_supports_equally(model, n).map_err(|e| {
+        Fail(format!(
+            "--split-support {n}: {}",
+            e.to_string().trim_start_matches("invalid request: ")
+        ))
+    })
 }
 
 /// Write the model JSON to `output` (committed now, so that the summary printed after it is
@@ -355,7 +380,8 @@ fn emit(output: Option<&Path>, json: &str) -> Result<(), Fail> {
 /// found now, named by OBJ object), write the JSON model.
 fn run_mesh(a: ImportArgs) -> Result<(), Fail> {
     crate::outputs::input(&a.drawing);
-    let (model, rep) = read_mesh(&a.drawing, &a.dxf.mesh_options())?;
+    let (mut model, rep) = read_mesh(&a.drawing, &a.dxf.mesh_options())?;
+    let splits = split_equally(&mut model, a.split_support)?;
     let st = Structure3d::new(
         &model,
         BuildOptions {
@@ -366,6 +392,7 @@ fn run_mesh(a: ImportArgs) -> Result<(), Fail> {
     let json = voussoir_io::files::to_json(&model)?;
     emit(a.output.as_deref(), &json)?;
     eprintln!("{}; {} joints", rep.summary(), st.joints.len());
+    eprint!("{}", crate::common::split_summary(&splits));
     for n in &rep.notes {
         eprintln!("note: {n}");
     }

@@ -8,37 +8,42 @@ use std::io::IsTerminal;
 use voussoir::analysis::incremental::{
     incremental_with, settled, Control, EventKind, IncrementalOptions, IncrementalResult,
 };
+use voussoir_io::lengths::Length;
 
 #[derive(Args)]
 pub struct IncrementalArgs {
     /// Control point x,y (m): the block containing it, or the nearest one, carries it.
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub control: String,
-    /// Direction along which the control displacement is measured (a vector, any length).
+    /// Direction along which the control displacement is measured: +x, -x, +y, -y, an angle
+    /// in degrees from +x towards +y, or a vector DX,DY (any length).
     #[arg(
         long,
-        value_name = "DX,DY",
-        default_value = "1,0",
-        allow_hyphen_values = true
+        value_name = "DIR",
+        default_value = "+x",
+        allow_hyphen_values = true,
+        value_parser = crate::direction::parse
     )]
-    pub direction: String,
+    pub direction: crate::direction::Direction,
     /// Largest control displacement: a length with its unit (50mm, 5cm, 0.05m; a bare number is
-    /// in m). This analysis reports displacements in mm.
+    /// in m). The summary prints displacements in cm (README, "Units in the summaries").
     #[arg(long, value_name = "LENGTH", default_value = "50mm", value_parser = length)]
     pub max: f64,
     /// Control displacement per step: a length with its unit (0.5mm; a bare number is in m).
     #[arg(long, value_name = "LENGTH", default_value = "0.5mm", value_parser = length)]
     pub step: f64,
-    /// Settle first: NAME=u,v[,θ] (u, v in m or with a unit, `right=0,-2.5mm`; θ in degrees),
-    /// repeatable; the analysis starts from the settled geometry with the settlement's cracks
-    /// open.
+    /// Settle first by this support motion: NAME=u,v[,θ] (u, v in m or with a unit,
+    /// `right=0,-2.5mm`; θ in degrees), repeatable, as `--move` of `settle`; the analysis starts
+    /// from the settled geometry with the settlement's cracks open. (`--settle` is another name
+    /// of this flag.)
     #[arg(
-        long = "settle",
+        long = "move",
+        alias = "settle",
         value_name = "NAME=U,V[,THETA]",
         allow_hyphen_values = true
     )]
-    pub settle: Vec<String>,
-    /// Tie the blocks to this support for the settlement analysis (with --settle). Repeatable.
+    pub moves: Vec<String>,
+    /// Tie the blocks to this support for the settlement analysis (with --move). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
     pub fixed: Vec<String>,
     /// Keep `fixed` supports tied after the settlement (default: contact joints).
@@ -50,6 +55,8 @@ pub struct IncrementalArgs {
     /// Go on after λ has fallen to zero (up to --max).
     #[arg(long)]
     pub no_stop: bool,
+    #[command(flatten)]
+    pub split: crate::common::SplitArgs,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -84,12 +91,12 @@ fn pair(flag: &str, s: &str) -> Result<[f64; 2], Fail> {
 
 pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     let x = pair("control", &a.control)?;
-    let dir = pair("direction", &a.direction)?;
-    if a.settle.is_empty() && !a.fixed.is_empty() {
-        return Err(Fail("--fixed only applies with --settle".into()));
+    let dir = a.direction.planar("--direction").map_err(Fail)?;
+    if a.moves.is_empty() && !a.fixed.is_empty() {
+        return Err(Fail("--fixed only applies with --move".into()));
     }
-    if a.settle.is_empty() && a.keep_fixed {
-        return Err(Fail("--keep-fixed only applies with --settle".into()));
+    if a.moves.is_empty() && a.keep_fixed {
+        return Err(Fail("--keep-fixed only applies with --move".into()));
     }
     if a.step > a.max {
         return Err(Fail(format!(
@@ -99,22 +106,24 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         )));
     }
     a.draw.check()?;
+    a.draw.check_2d()?;
     let input = a.model.resolve()?;
     let motion = SettleArgs {
-        moves: a.settle.clone(),
+        moves: a.moves.clone(),
         fixed: a.fixed.clone(),
         profile: None,
+        split: a.split.clone(),
     }
     .resolve()?;
     let solver = input.solver;
     let st = input.structure(Some(&motion))?;
-    let start = if a.settle.is_empty() {
+    let start = if a.moves.is_empty() {
         st.clone()
     } else {
         settled(&st, &solver, !a.keep_fixed)?
     };
     // The block that carries the control point is chosen on the undeformed structure, so that
-    // a point on a joint (the crown) names the same block with and without --settle.
+    // a point on a joint (the crown) names the same block with and without --move.
     let block = Control::nearest(&st, x, dir)?.block;
     let control = Control::new(&start, block, x, dir)?;
     let opts = IncrementalOptions {
@@ -135,8 +144,8 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         let r = incremental_with(&start, &control, &opts, &mut |p| {
             bar.set_position((p.displacement.abs() * scale) as u64);
             bar.set_message(format!(
-                "{:.3} mm  λ = {:.5}",
-                p.displacement * 1e3,
+                "{}  λ = {:.5}",
+                Length::Motion.show(p.displacement),
                 p.load_multiplier
             ));
         });
@@ -146,7 +155,8 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         incremental_with(&start, &control, &opts, &mut |_| {})?
     };
     a.draw.emit_incremental(&r, &input.path)?;
-    a.out.emit(&r, || summary(&start, &r))
+    a.out
+        .emit_split(&r, &input.splits(), || summary(&start, &r))
 }
 
 fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
@@ -154,10 +164,10 @@ fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
     let _ = writeln!(s, "{}", crate::common::structure_line(st));
     let _ = writeln!(
         s,
-        "control: block {} at ({:.4}, {:.4}), direction ({:.3}, {:.3})",
+        "control: block {} at ({}, {}) m, direction ({:.3}, {:.3})",
         r.control.block,
-        r.control.point[0],
-        r.control.point[1],
+        Length::Position.number(r.control.point[0]),
+        Length::Position.number(r.control.point[1]),
         r.control.direction[0],
         r.control.direction[1]
     );
@@ -179,23 +189,24 @@ fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
         };
         let _ = writeln!(
             s,
-            "  step {:>5}  {:>9.4} mm  joint {:>4} point {} {kind} at ({:.4}, {:.4})",
+            "  step {:>5}  {:>9}  joint {:>4} point {} {kind} at ({}, {}) m",
             e.step,
-            e.displacement * 1e3,
+            Length::Motion.show(e.displacement),
             e.joint,
             e.point,
-            e.x,
-            e.y
+            Length::Position.number(e.x),
+            Length::Position.number(e.y)
         );
     }
-    let _ = writeln!(s, "{:>12}  {:>10}", "dx (mm)", "λ");
+    let head = format!("dx ({})", Length::Motion.unit());
+    let _ = writeln!(s, "{head:>12}  {:>10}", "λ");
     let every = (r.curve.len() / 25).max(1);
     for (i, p) in r.curve.iter().enumerate() {
         if i % every == 0 || i + 1 == r.curve.len() || p.before_closure {
             let _ = writeln!(
                 s,
-                "{:>12.4}  {:>10.6}",
-                p.displacement * 1e3,
+                "{:>12}  {:>10.6}",
+                Length::Motion.number(p.displacement),
                 p.load_multiplier
             );
         }

@@ -47,6 +47,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
     match c.input.load_any()? {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
+            let facts = crate::report_inputs::facts_2d(&model);
             let st = c.input.structure_of(model, None)?;
             a.crushing.check_strength(&st)?;
             let r = match (
@@ -72,7 +73,29 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 }
                 _ => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
             };
-            a.draw.with(&a.forces).emit_limit(&r, &c.input.path)?;
+            a.draw
+                .with(&a.forces)
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "limit",
+                        facts,
+                        &st,
+                        &c.input,
+                        &c.input.solver,
+                        crate::report_inputs::Laws {
+                            cone: None,
+                            crushing: Some(match c.crushing {
+                                Crushing::Linear => {
+                                    voussoir_io::report_parts::CrushingModel::Linear(c.facets)
+                                }
+                                Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
+                            }),
+                            non_associative: a.crushing.non_associative,
+                        },
+                        Vec::new(),
+                    )
+                })
+                .emit_limit(&r, &c.input.path)?;
             a.out.emit(&r, || {
                 crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
             })
@@ -83,6 +106,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                     "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),
                 ));
             }
+            let facts = crate::report_inputs::facts_3d(&model);
             let st = c.input.structure3d_any_cone(model, None)?;
             let cone = if c.input.exact_friction_cone {
                 Crushing::Conic
@@ -106,7 +130,24 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 }
                 _ => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
             };
-            a.draw.with(&a.forces).emit_3d(&r, &c.input.path)?;
+            a.draw
+                .with(&a.forces)
+                .with_inputs(|| {
+                    crate::report_inputs::report_inputs(
+                        "limit",
+                        facts,
+                        &st,
+                        &c.input,
+                        &c.input.solver3d,
+                        crate::report_inputs::Laws {
+                            cone: Some(crate::settle::friction_cone(&c.input, &st)),
+                            crushing: None,
+                            non_associative: a.crushing.non_associative,
+                        },
+                        Vec::new(),
+                    )
+                })
+                .emit_3d(&r, &c.input.path)?;
             a.out.emit(&r, || {
                 crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
             })

@@ -4,6 +4,7 @@ mod bench;
 mod canonical;
 mod capacity;
 mod common;
+mod direction;
 mod draw_args;
 mod gen;
 mod identify;
@@ -12,6 +13,7 @@ mod incremental;
 mod limit;
 mod outputs;
 mod plot;
+mod report_inputs;
 mod safety;
 mod settle;
 mod sweep;
@@ -118,7 +120,10 @@ fn commands_with_flag(cmd: &clap::Command, prefix: &str, name: &str, found: &mut
         } else {
             format!("{prefix} {}", sub.get_name())
         };
-        if sub.get_arguments().any(|a| a.get_long() == Some(name)) {
+        // A renamed flag's old name (a hidden alias) counts too.
+        if sub.get_arguments().any(|a| {
+            a.get_long() == Some(name) || a.get_all_aliases().is_some_and(|v| v.contains(&name))
+        }) {
             found.push(path.clone());
         }
         commands_with_flag(sub, &path, name, found);

@@ -4,12 +4,11 @@
 //! are drawn as curves on one plot (the paper's Fig 17).
 
 use crate::common::Fail;
-use crate::draw_args::{write_drawing, ViewArg};
+use crate::draw_args::{parse_view, write_drawing, PressureArg, ViewArg};
 use clap::Args;
 use std::path::PathBuf;
 use voussoir_io::draw::capacity::CapacityCurve;
 use voussoir_io::draw::{self, DrawOptions, ReportOptions, Saved};
-use voussoir_io::draw3d::View;
 
 #[derive(Args, Clone, Debug)]
 pub struct PlotArgs {
@@ -38,10 +37,16 @@ pub struct PlotArgs {
     /// Draw the dead loads (self-weight) as arrows too.
     #[arg(long)]
     pub dead_loads: bool,
-    /// 3D structures: the view of the .svg/.png drawing: axonometric (default), plan or
-    /// elevation (from −y).
-    #[arg(long, value_enum, value_name = "VIEW")]
+    /// 3D structures: the view of the .svg/.png drawing: `axonometric` (default: elevation 30°,
+    /// the azimuth turned to show the largest motions), `plan`, `elevation` (from −y), or
+    /// `AZ[,EL]` in degrees (azimuth from the front −y, counter-clockwise seen from above;
+    /// elevation −89 … 89, default 30).
+    #[arg(long, value_name = "VIEW", value_parser = parse_view, allow_hyphen_values = true)]
     pub view: Option<ViewArg>,
+    /// Centres of pressure as dots on a structure drawing: auto (default: along a 2D thrust
+    /// line; dots on their own — walls, façades, 3D — only when there are at most 60), on or off.
+    #[arg(long, value_enum, value_name = "WHEN")]
+    pub pressure_points: Option<PressureArg>,
     /// Title of the drawing (of the report with .html).
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
@@ -82,6 +87,9 @@ fn structure_flags(a: &PlotArgs) -> Vec<&'static str> {
     }
     if a.view.is_some() {
         v.push("--view");
+    }
+    if a.pressure_points.is_some() {
+        v.push("--pressure-points");
     }
     v
 }
@@ -218,6 +226,7 @@ fn check_flags(a: &PlotArgs, saved: &Saved, report: bool) -> Result<(), Fail> {
             (a.undeformed, "--undeformed"),
             (a.dead_loads, "--dead-loads"),
             (a.view.is_some(), "--view"),
+            (a.pressure_points.is_some(), "--pressure-points"),
             (a.width.is_some(), "--width"),
             (!a.labels.is_empty(), "--label"),
         ]
@@ -283,7 +292,7 @@ fn check_flags(a: &PlotArgs, saved: &Saved, report: bool) -> Result<(), Fail> {
         }
     } else if a.view.is_some() {
         return Err(Fail(format!(
-            "--view applies to 3D drawings (this {kind} is 2D)"
+            "--view applies to 3D models (this {kind} is 2D)"
         )));
     }
     Ok(())
@@ -319,6 +328,7 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
             title: a.title.clone(),
             source: input.display().to_string(),
             scale: a.scale,
+            inputs: None,
         };
         let html = draw::report_saved(&saved, &opts)?;
         crate::outputs::stage(&a.output, html.as_bytes())?;
@@ -363,14 +373,13 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
                 forces: a.forces,
                 deformed: !a.undeformed,
                 dead_loads: a.dead_loads,
+                pressure_points: a
+                    .pressure_points
+                    .map_or(Default::default(), PressureArg::points),
                 width: a.width.unwrap_or(1000.0),
                 ..DrawOptions::default()
             };
-            let view = match a.view {
-                None | Some(ViewArg::Axonometric) => View::default(),
-                Some(ViewArg::Plan) => View::Plan,
-                Some(ViewArg::Elevation) => View::Elevation,
-            };
+            let view = a.view.map_or(Default::default(), ViewArg::view);
             let d = draw::draw_saved_view(&saved, &opts, view, a.title.as_deref())?;
             (d.svg, d.scale)
         }

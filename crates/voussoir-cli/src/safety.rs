@@ -21,9 +21,10 @@ pub struct SafetyArgs {
     /// is 1 / that fraction).
     #[arg(long, default_value_t = 1e-6, value_name = "TOL")]
     pub bisection_tolerance: f64,
-    /// Leave out the ranges of the support reactions (two LPs per support and component).
-    #[arg(long)]
-    pub no_reactions: bool,
+    /// Leave out the ranges of the support reactions (two LPs per support and component), as
+    /// `settle --no-ranges`. (`--no-reactions` is another name of this flag.)
+    #[arg(long, alias = "no-reactions")]
+    pub no_ranges: bool,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -65,9 +66,15 @@ pub struct Bracket {
     /// Thickness (m) at which the structure must stand [default: radius / 2].
     #[arg(long, value_name = "M")]
     pub upper: Option<f64>,
-    /// Tolerance of the bisection, relative to the radius.
-    #[arg(long, default_value_t = 1e-6, value_name = "REL")]
-    pub relative_tolerance: f64,
+    /// Tolerance of the bisection, relative to the radius. (`--relative-tolerance` is another
+    /// name of this flag.)
+    #[arg(
+        long,
+        alias = "relative-tolerance",
+        default_value_t = 1e-6,
+        value_name = "REL"
+    )]
+    pub bisection_tolerance: f64,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,
@@ -113,7 +120,7 @@ pub fn run(a: SafetyArgs) -> Result<(), Fail> {
     let input = model.resolve()?;
     let opts = |solver| SafetyOptions {
         tolerance: tol,
-        reactions: !a.no_reactions,
+        reactions: !a.no_ranges,
         solver,
     };
     match input.load_any()? {
@@ -138,10 +145,10 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
     if !(radius.is_finite() && radius > 0.0) {
         return Err(Fail(format!("--radius {radius}: must be a number > 0")));
     }
-    let rel = bracket.relative_tolerance;
+    let rel = bracket.bisection_tolerance;
     if !(rel.is_finite() && rel > 0.0 && rel < 1.0) {
         return Err(Fail(format!(
-            "--relative-tolerance {rel}: must be a number between 0 and 1"
+            "--bisection-tolerance {rel}: must be a number between 0 and 1"
         )));
     }
     let lo = bracket.lower.unwrap_or(radius / 1000.0);

@@ -82,7 +82,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         AnyModel::Spatial(m) => return run3d(&a, &c, m),
     };
     a.draw.check_2d()?;
-    c.motion.apply(&mut model)?;
+    let splits = c.motion.apply(&mut model)?;
     // The model is validated first, so that a bad model is named before a missing motion.
     let st = c.input.structure_of(model.clone(), None)?;
     a.crushing.check_strength(&st)?;
@@ -113,8 +113,42 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
         }
         (form, _, _) => settle_with(&st, &c.input.solver, form)?,
     };
-    a.draw.with(&a.forces).emit_settlement(&r, &c.input.path)?;
-    a.out.emit(&r, || {
+    let solver = if a.crushing.non_associative_settlement().is_some() {
+        common::iteration_solver(&a.model, &c.input.solver)
+    } else {
+        c.input.solver
+    };
+    a.draw
+        .with(&a.forces)
+        .with_inputs(|| {
+            crate::report_inputs::report_inputs(
+                "settle",
+                crate::report_inputs::facts_2d(&model),
+                &st,
+                &c.input,
+                &solver,
+                crate::report_inputs::Laws {
+                    cone: None,
+                    crushing: Some(match c.crushing {
+                        Crushing::Linear => {
+                            voussoir_io::report_parts::CrushingModel::Linear(c.facets)
+                        }
+                        Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
+                    }),
+                    non_associative: a.crushing.non_associative,
+                },
+                vec![(
+                    "mechanism selection".into(),
+                    if r.canonical.is_some() {
+                        "canonical (docs/canonical.md)".into()
+                    } else {
+                        "the solver's own optimum".into()
+                    },
+                )],
+            )
+        })
+        .emit_settlement(&r, &c.input.path)?;
+    a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
 }
@@ -126,7 +160,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         ));
     }
     // --friction-facets and --friction-cone are honoured here (as by limit and tilt).
-    c.motion.apply(&mut model)?;
+    let splits = c.motion.apply(&mut model)?;
     let st = c.input.structure3d_any_cone(model.clone(), None)?;
     if !model
         .supports
@@ -156,8 +190,45 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
         (form, _) => settle_with(&st, &c.input.solver3d, form)?,
     };
-    a.draw.with(&a.forces).emit_3d(&r, &c.input.path)?;
-    a.out.emit(&r, || {
+    let solver = if a.crushing.non_associative_settlement().is_some() {
+        common::iteration_solver(&a.model, &c.input.solver3d)
+    } else {
+        c.input.solver3d
+    };
+    a.draw
+        .with(&a.forces)
+        .with_inputs(|| {
+            crate::report_inputs::report_inputs(
+                "settle",
+                crate::report_inputs::facts_3d(&model),
+                &st,
+                &c.input,
+                &solver,
+                crate::report_inputs::Laws {
+                    cone: Some(friction_cone(&c.input, &st)),
+                    crushing: None,
+                    non_associative: a.crushing.non_associative,
+                },
+                vec![(
+                    "mechanism selection".into(),
+                    "the solver's own optimum (3D)".into(),
+                )],
+            )
+        })
+        .emit_3d(&r, &c.input.path)?;
+    a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
+}
+
+/// The friction cone of a 3D analysis, for its report.
+pub fn friction_cone(
+    input: &common::Input,
+    st: &voussoir::Structure3d,
+) -> voussoir_io::report_parts::FrictionCone {
+    if input.exact_friction_cone {
+        voussoir_io::report_parts::FrictionCone::Exact
+    } else {
+        voussoir_io::report_parts::FrictionCone::Pyramid(st.friction_facets)
+    }
 }

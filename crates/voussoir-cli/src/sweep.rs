@@ -17,13 +17,15 @@ pub struct SweepArgs {
     /// The base settlement: moves, fixed supports, profile (as for `settle`).
     #[command(flatten)]
     pub settle: SettleArgs,
-    /// Magnitude sweep: the base motions scaled by k/STEPS, k = 1 … STEPS.
-    #[arg(long, value_name = "STEPS")]
-    pub steps: Option<usize>,
-    /// Direction sweep: the `--move` vectors (u, v) rotated through N angles 360°·k/N.
-    #[arg(long, value_name = "N")]
-    pub directions: Option<usize>,
-    /// Monte Carlo: N random settlement fields around the base motions.
+    /// Magnitude sweep: N analyses, the base motions scaled by k/N, k = 1 … N. (`--steps` is
+    /// another name of this flag.)
+    #[arg(long, alias = "steps", value_name = "N")]
+    pub magnitudes: Option<usize>,
+    /// Direction sweep: N analyses, the `--move` vectors (u, v) rotated through the N angles
+    /// 360°·k/N. (`--directions` is another name of this flag.)
+    #[arg(long, alias = "directions", value_name = "N")]
+    pub angles: Option<usize>,
+    /// Monte Carlo: N analyses, random settlement fields around the base motions.
     #[arg(long, value_name = "N")]
     pub samples: Option<usize>,
     /// Monte Carlo: coefficient of variation of each support's motion (dimensionless).
@@ -116,8 +118,8 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
     // Flags resolved before any work (a DXF flag on a JSON model, bad numbers).
     let input = a.model.resolve()?;
     let modes = [
-        a.steps.is_some(),
-        a.directions.is_some(),
+        a.magnitudes.is_some(),
+        a.angles.is_some(),
         a.samples.is_some(),
     ]
     .iter()
@@ -125,7 +127,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
     .count();
     if modes != 1 {
         return Err(Fail(
-            "give exactly one of --steps, --directions, --samples".into(),
+            "give exactly one of --magnitudes, --angles, --samples".into(),
         ));
     }
     let drawn = a.summary.is_some() || a.svg.is_some() || a.png.is_some() || a.report.is_some();
@@ -139,7 +141,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
             "--capacity-steps 0: a capacity curve needs at least one interval".into(),
         ));
     }
-    let kind = match (a.steps, a.directions, a.samples) {
+    let kind = match (a.magnitudes, a.angles, a.samples) {
         (Some(n), _, _) => SweepKind::Scale(n),
         (_, Some(n), _) => SweepKind::Direction(n),
         (_, _, Some(n)) => SweepKind::Sample {
@@ -154,7 +156,9 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
     // Sweeps are 2D: the 3D friction flags are refused as for any 2D model.
     input.refuse_3d_friction()?;
     a.model.override_materials(&mut model)?;
-    a.settle.apply(&mut model)?;
+    let splits = a.settle.apply(&mut model)?;
+    // The sweep's records carry no model: the supports cut are told on stderr.
+    eprint!("{}", crate::common::split_summary(&splits));
     let spec = SweepSpec {
         kind,
         build: BuildOptions {
@@ -251,6 +255,7 @@ fn write_distribution(a: &SweepArgs, records: &[SweepRecord]) -> Result<(), Fail
                 title: None,
                 source: a.model.model.display().to_string(),
                 scale: None,
+                inputs: None,
             },
         );
         crate::outputs::stage(p, rep.to_html().as_bytes())?;

@@ -135,10 +135,10 @@ fn flags_that_do_not_apply_are_absent_from_help_and_refused() {
     for cmd in ["limit", "settle", "tilt"] {
         assert!(help(&[cmd, "--help"]).contains("--forces"), "{cmd}");
     }
-    // Flags of the settlement before an incremental analysis need --settle.
+    // Flags of the settlement before an incremental analysis need --move.
     fails_in_one_line(
         &["incremental", &a, "--control", "0,3", "--keep-fixed"],
-        &["--keep-fixed only applies with --settle"],
+        &["--keep-fixed only applies with --move"],
     );
     // ... and present where they are used.
     let h = help(&["limit", "--help"]);
@@ -224,7 +224,6 @@ fn help_lists_own_flags_first_then_headed_shared_groups_with_every_value_describ
             ],
         ),
         ("settle", vec!["both", "force-only"]),
-        ("tilt", vec!["+x", "-x"]),
     ] {
         let h = help(&[cmd, "--help"]);
         for v in values {
@@ -235,6 +234,12 @@ fn help_lists_own_flags_first_then_headed_shared_groups_with_every_value_describ
             );
         }
     }
+    // `--direction` is no choice but one syntax (issue 32): its help says every form.
+    let t = help(&["tilt", "--help"]);
+    assert!(
+        t.contains("+x, -x, +y, -y, an azimuth in degrees") && t.contains("vector DX,DY"),
+        "{t}"
+    );
     let g = help(&["gen", "arch", "--help"]);
     for v in [
         "intrados",
@@ -457,12 +462,14 @@ fn incremental_uses_one_length_unit_on_flags_tables_and_plots() {
         svg.to_str().unwrap(),
     ]);
     let summary = stdout(&o);
+    // Issue 32: displacements in cm in the summary (README, "Units in the summaries") and on
+    // the plot alike.
     assert!(
-        summary.contains("dx (mm)") && !summary.contains("cm"),
+        summary.contains("dx (cm)") && !summary.contains(" mm"),
         "{summary}"
     );
     let plot = std::fs::read_to_string(&svg).unwrap();
-    assert!(plot.contains("control displacement dx (mm)") && !plot.contains("(cm)"));
+    assert!(plot.contains("control displacement dx (cm)") && !plot.contains("(mm)"));
     let help = help(&["incremental", "--help"]);
     assert!(
         help.contains("[default: 50mm]") && help.contains("[default: 0.5mm]"),

@@ -154,6 +154,7 @@ fn issue28_item1_tilt_direction_in_3d() {
 fn issue28_item1_tilt_direction_with_azimuth_refused() {
     let d = tmpdir("tiltconflict");
     run(&d, &["gen", "block", "-o", "b.json"]);
+    // Issue 32: `--azimuth` is another name of `--direction`; both at once is one flag twice.
     for dir in ["-x", "+x"] {
         refused(
             &d,
@@ -167,7 +168,7 @@ fn issue28_item1_tilt_direction_with_azimuth_refused() {
                 "-o",
                 "r.json",
             ],
-            "--azimuth",
+            "--direction",
             &["r.json"],
         );
     }
@@ -175,7 +176,7 @@ fn issue28_item1_tilt_direction_with_azimuth_refused() {
         refused(
             &d,
             &["tilt", "b.json", "--azimuth", bad, "-o", "r.json"],
-            "--azimuth",
+            "--direction",
             &["r.json"],
         );
     }
@@ -231,10 +232,14 @@ fn issue28_item1_tilt_2d_unchanged() {
     assert_eq!(plus["direction"].as_f64(), Some(1.0));
     assert_eq!(minus["direction"].as_f64(), Some(-1.0));
     assert!(plus["azimuth"].is_null());
+    // Issue 32: `--azimuth` is another name of `--direction`; in 2D, 180° is -x and an angle off
+    // the x axis is refused.
+    let az180 = tilt_json(&d, "t.json", &["--azimuth", "180"]);
+    assert_eq!(az180, minus);
     refused(
         &d,
-        &["tilt", "t.json", "--azimuth", "180"],
-        "--azimuth applies to 3D models",
+        &["tilt", "t.json", "--direction", "30"],
+        "a 2D model tilts along x",
         &[],
     );
 }
@@ -511,17 +516,17 @@ fn issue28_item4d_mesh_live_on_obj() {
         h["loads"]["live"],
         json!([{"type": "body", "coefficients": [1.0, 0.0, 0.0]}])
     );
-    // Each flag is named right where it does not apply.
-    refused(
+    // Issue 32: `--dxf-live` and `--mesh-live` are both other names of `--live`, which applies
+    // to drawings and meshes alike (was: each refused on the other format).
+    run(
         &d,
         &["import", "b.obj", "--dxf-live", "none", "-o", "x.json"],
-        "--dxf-live applies to DXF drawings only",
-        &["x.json"],
     );
+    assert_eq!(read_json(&d.join("x.json")), n);
     let dxf = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../voussoir-io/tests/fixtures/lact3/arch_1.dxf");
     let dxf = dxf.to_str().unwrap();
-    refused(
+    run(
         &d,
         &[
             "import",
@@ -533,14 +538,15 @@ fn issue28_item4d_mesh_live_on_obj() {
             "-o",
             "x.json",
         ],
-        "--mesh-live applies to OBJ/PLY meshes only",
-        &["x.json"],
     );
+    let x = read_json(&d.join("x.json"));
+    assert!(x["loads"]["live"].as_array().is_none_or(|l| l.is_empty()));
+    // Named where it does not apply (a JSON model carries its own loads).
     refused(
         &d,
-        &["limit", "b.json", "--mesh-live", "none", "-o", "x.json"],
-        "--mesh-live applies to imported DXF drawings and OBJ/PLY meshes only",
-        &["x.json"],
+        &["limit", "b.json", "--mesh-live", "none", "-o", "r2.json"],
+        "--live applies to imported DXF drawings and OBJ/PLY meshes only",
+        &["r2.json"],
     );
 }
 

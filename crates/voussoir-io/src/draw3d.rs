@@ -4,10 +4,20 @@
 //! of the 2D drawings ([`crate::draw::scene`]). PNG is the same SVG rendered by
 //! [`crate::draw::png`].
 //!
-//! - **View.** The default camera looks from azimuth −35°, elevation 30°: the direction from the
+//! - **View.** An axonometric camera at azimuth `az`, elevation `el`: the direction from the
 //!   model to the camera is `(sin az · cos el, −cos az · cos el, sin el)`, azimuth measured from
 //!   the front (−y) counter-clockwise seen from above, so −35° looks from the front-left and
 //!   above (the front, left and top faces of a box are seen), z up on the page.
+//! - **Automatic view** ([`View::Auto`], the default; [`auto_view`]). A model that does not move
+//!   is seen from azimuth −35°, elevation 30°. Otherwise the camera turns to show the largest
+//!   motions: for each azimuth −35° + 15°·k (k = 0 … 23) at elevation 30°, every body that moves
+//!   by at least a fifth of the largest displacement (the 48 that move most) scores the area of
+//!   its faces seen from there and not hidden by another body (tested at each face's centre),
+//!   times its displacement (relative to the largest) and the part of that displacement in the
+//!   picture plane; the azimuth with the largest sum wins, and among azimuths within 2 % of it the
+//!   one nearest −35° (then the first in the order −35°, −20°, −50°, …), so the choice is
+//!   deterministic and a symmetric mechanism keeps the usual view. A dome's settling sector
+//!   comes to the front; the legend states the view.
 //! - **Deformation.** Each body is moved by the finite rigid motion whose small motion is the
 //!   result's (translation `s·u` of its centroid and rotation by the angle `s·|θ|` about `θ`), so
 //!   blocks stay undistorted; `s` is chosen as in 2D ([`crate::draw::scene::auto_scale`]: the
@@ -25,10 +35,12 @@
 // `!(x > 0.0)` is how this module rejects NaN along with non-positive values (as in `draw`).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use crate::draw::legend::{self, Entry};
 use crate::draw::scene::{
-    auto_scale, scale_bar, wrap, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE, THRUST,
+    auto_scale, wrap, PressurePoints, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE,
+    THRUST,
 };
-use crate::draw::svg::{arrow, esc, human, num, polygon_path, text_width, FONT};
+use crate::draw::svg::{arrow, esc, human, num, polygon_path, FONT};
 use crate::draw::MotionUnits;
 use crate::result3d::{
     add, cross, dot, norm, polygon_order, scale as vscale, small_displacement, sub, validate,
@@ -40,8 +52,12 @@ use std::fmt::Write as _;
 use voussoir::result::JointState;
 
 /// Which way the camera looks.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum View {
+    /// Axonometric, turned to show the largest motions ([`auto_view`]); −35°, 30° when nothing
+    /// moves.
+    #[default]
+    Auto,
     /// Orthographic view from azimuth and elevation in degrees (see the module documentation).
     Axonometric { azimuth: f64, elevation: f64 },
     /// Seen from above: x right, y up the page.
@@ -50,14 +66,10 @@ pub enum View {
     Elevation,
 }
 
-impl Default for View {
-    fn default() -> Self {
-        View::Axonometric {
-            azimuth: -35.0,
-            elevation: 30.0,
-        }
-    }
-}
+/// The view of a model that does not move (and the azimuth [`View::Auto`] prefers on ties).
+pub const DEFAULT_AZIMUTH: f64 = -35.0;
+/// The elevation of the automatic view.
+pub const DEFAULT_ELEVATION: f64 = 30.0;
 
 impl View {
     /// `(right, up, toward the camera)`: an orthonormal, right-handed triple.
@@ -65,6 +77,11 @@ impl View {
         match *self {
             View::Plan => ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
             View::Elevation => ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]),
+            View::Auto => View::Axonometric {
+                azimuth: DEFAULT_AZIMUTH,
+                elevation: DEFAULT_ELEVATION,
+            }
+            .basis(),
             View::Axonometric { azimuth, elevation } => {
                 let az = if azimuth.is_finite() { azimuth } else { -35.0 };
                 // Elevations of ±90° would make "up" undefined: seen from (almost) above.
@@ -85,6 +102,11 @@ impl View {
 
     fn describe(&self) -> String {
         match *self {
+            View::Auto => View::Axonometric {
+                azimuth: DEFAULT_AZIMUTH,
+                elevation: DEFAULT_ELEVATION,
+            }
+            .describe(),
             View::Plan => "plan (seen from above)".to_string(),
             View::Elevation => "front elevation (seen from −y)".to_string(),
             View::Axonometric { azimuth, elevation } => format!(
@@ -140,8 +162,9 @@ pub struct Draw3dOptions {
     pub supports: bool,
     pub hinges: bool,
     pub cracks: bool,
-    /// Centres of pressure (the thrust points) as dots.
-    pub thrust_points: bool,
+    /// Centres of pressure (the thrust points) as dots: [`PressurePoints::Auto`] draws them
+    /// when there are at most [`crate::draw::scene::PRESSURE_POINTS_AUTO`].
+    pub pressure_points: PressurePoints,
     pub live_loads: bool,
     pub dead_loads: bool,
     pub legend: bool,
@@ -163,7 +186,7 @@ impl Default for Draw3dOptions {
             supports: true,
             hinges: true,
             cracks: true,
-            thrust_points: true,
+            pressure_points: PressurePoints::Auto,
             live_loads: true,
             dead_loads: false,
             legend: true,
@@ -185,6 +208,8 @@ pub struct Drawing3d {
     pub camera: Camera,
     /// Whether a deformed configuration was drawn.
     pub deformed: bool,
+    /// The view drawn ([`View::Auto`] resolved to its azimuth and elevation).
+    pub view: View,
 }
 
 /// A finite rigid motion: `x ↦ c + t + R (x − c)`.
@@ -482,6 +507,186 @@ fn paint_order(faces: &[Face], eps: f64) -> Vec<usize> {
     out
 }
 
+/// The azimuths [`View::Auto`] tries, in the order that settles ties: −35°, −20°, −50°, −5°,
+/// … (nearest −35° first), in (−180°, 180°].
+fn auto_azimuths() -> Vec<f64> {
+    let wrap180 = |a: f64| {
+        if a <= -180.0 {
+            a + 360.0
+        } else if a > 180.0 {
+            a - 360.0
+        } else {
+            a
+        }
+    };
+    let mut v = vec![DEFAULT_AZIMUTH];
+    for k in 1..=12 {
+        v.push(wrap180(DEFAULT_AZIMUTH + 15.0 * k as f64));
+        if k < 12 {
+            v.push(wrap180(DEFAULT_AZIMUTH - 15.0 * k as f64));
+        }
+    }
+    v
+}
+
+/// Bodies that [`view_scores`] weighs: at most this many, those that move most.
+const AUTO_BODIES: usize = 48;
+
+/// How well each azimuth of [`View::Auto`] (elevation 30°) shows the motions of `r`, in the
+/// order that settles ties (see the module documentation): `(azimuth in degrees, score)`. The
+/// score of an azimuth sums, over the bodies that move by at least a fifth of the largest
+/// displacement (the [`AUTO_BODIES`] that move most), the projected area (m²) of the body's faces
+/// that face the camera and whose centre no other face hides, times the body's largest
+/// displacement over the model's, times the fraction of that displacement in the picture plane.
+/// Empty when nothing moves (or the shapes are invalid).
+pub fn view_scores(r: &(impl Result3d + ?Sized)) -> Vec<(f64, f64)> {
+    if validate(r).is_err() {
+        return Vec::new();
+    }
+    let g = r.shapes();
+    let motions = Motions::of(r);
+    type Shape<'b> = (&'b [V3], &'b [Vec<usize>], (V3, [f64; 6]));
+    let bodies: Vec<Shape> = g
+        .blocks
+        .iter()
+        .zip(&motions.blocks)
+        .map(|(b, m)| (b.vertices.as_slice(), b.faces.as_slice(), *m))
+        .chain(
+            g.supports
+                .iter()
+                .zip(&motions.supports)
+                .map(|(s, m)| (s.vertices.as_slice(), s.faces.as_slice(), *m)),
+        )
+        .collect();
+    // The largest displacement of each body and its vector.
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let moves: Vec<(f64, V3)> = bodies
+        .iter()
+        .map(|(vs, _, (c, d))| {
+            let mut best = (0.0f64, [0.0; 3]);
+            for v in vs.iter() {
+                for k in 0..3 {
+                    lo[k] = lo[k].min(v[k]);
+                    hi[k] = hi[k].max(v[k]);
+                }
+                let u = small_displacement(*c, d, *v);
+                let m = norm(u);
+                if m > best.0 {
+                    best = (m, u);
+                }
+            }
+            best
+        })
+        .collect();
+    let dmax = moves.iter().map(|m| m.0).fold(0.0f64, f64::max);
+    if !(dmax > 0.0 && dmax.is_finite()) {
+        return Vec::new();
+    }
+    let size = (0..3)
+        .map(|k| hi[k] - lo[k])
+        .fold(0.0f64, f64::max)
+        .max(1e-9);
+    let mut movers: Vec<usize> = (0..bodies.len())
+        .filter(|&i| moves[i].0 >= 0.2 * dmax)
+        .collect();
+    movers.sort_by(|&a, &b| moves[b].0.total_cmp(&moves[a].0).then(a.cmp(&b)));
+    movers.truncate(AUTO_BODIES);
+    let eps = 1e-6 * size;
+    auto_azimuths()
+        .into_iter()
+        .map(|az| {
+            let (right, up, toward) = View::Axonometric {
+                azimuth: az,
+                elevation: DEFAULT_ELEVATION,
+            }
+            .basis();
+            let cam = Camera {
+                right,
+                up,
+                toward,
+                k: 1.0,
+                ox: 0.0,
+                oy: 0.0,
+            };
+            let mut faces: Vec<Face> = Vec::new();
+            for (bi, (vs, fs, _)) in bodies.iter().enumerate() {
+                for (fi, f) in fs.iter().enumerate() {
+                    let world: Vec<V3> = f.iter().map(|&i| vs[i]).collect();
+                    let n = newell(&world);
+                    let ln = norm(n);
+                    if !(ln > 0.0) {
+                        continue;
+                    }
+                    let n = vscale(n, 1.0 / ln);
+                    if dot(n, toward) <= 1e-9 {
+                        continue;
+                    }
+                    let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
+                    let mut fb = Bbox::new();
+                    for p in &px {
+                        fb.add(*p);
+                    }
+                    faces.push(Face {
+                        body: bi,
+                        index: fi,
+                        world,
+                        px,
+                        normal: n,
+                        depth: 0.0,
+                        bbox: fb.0,
+                    });
+                }
+            }
+            let mut score = 0.0;
+            for &i in &movers {
+                let (m, u) = moves[i];
+                let in_plane = norm(sub(u, vscale(toward, dot(u, toward)))) / m;
+                let mut area = 0.0;
+                for f in faces.iter().filter(|f| f.body == i) {
+                    let c = vscale(
+                        f.world.iter().fold([0.0; 3], |a, p| add(a, *p)),
+                        1.0 / f.world.len() as f64,
+                    );
+                    if !hidden(&faces, &cam, c, eps) {
+                        let n = f.px.len();
+                        area += (0..n)
+                            .map(|k| {
+                                let (p, q) = (f.px[k], f.px[(k + 1) % n]);
+                                p[0] * q[1] - q[0] * p[1]
+                            })
+                            .sum::<f64>()
+                            .abs()
+                            / 2.0;
+                    }
+                }
+                score += m / dmax * area * in_plane;
+            }
+            (az, score)
+        })
+        .collect()
+}
+
+/// The axonometric view that [`View::Auto`] draws `r` from: the azimuth of [`view_scores`] that
+/// shows the largest motions best (within 2 % of the best, the one nearest −35°), elevation 30°;
+/// azimuth −35° when nothing moves.
+pub fn auto_view(r: &(impl Result3d + ?Sized)) -> View {
+    let scores = view_scores(r);
+    let best = scores.iter().map(|s| s.1).fold(0.0f64, f64::max);
+    let azimuth = if best > 0.0 && best.is_finite() {
+        scores
+            .iter()
+            .find(|s| s.1 >= 0.98 * best)
+            .map_or(DEFAULT_AZIMUTH, |s| s.0)
+    } else {
+        DEFAULT_AZIMUTH
+    };
+    View::Axonometric {
+        azimuth,
+        elevation: DEFAULT_ELEVATION,
+    }
+}
+
 struct Bbox([f64; 4]);
 impl Bbox {
     fn new() -> Self {
@@ -665,7 +870,11 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     }
 
     // Camera basis and extent of everything drawn (in camera units).
-    let (right, up, toward) = opts.view.basis();
+    let view = match opts.view {
+        View::Auto => auto_view(r),
+        v => v,
+    };
+    let (right, up, toward) = view.basis();
     let cam0 = Camera {
         right,
         up,
@@ -714,44 +923,47 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
         .collect();
     let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
-    // The legend's first row wraps when its items are wider than the figure: the items it may
-    // hold (a superset of those drawn below), measured as drawn.
-    let legend_fs = 12.5;
-    let legend_rows = if opts.legend {
-        let live_max_l = human(live_max, 3);
-        let dead_max_l = human(dead_max, 3);
-        let live_label = format!("live load × λ (largest {live_max_l} kN)");
-        let dead_label = format!("dead load (largest {dead_max_l} kN)");
-        let items: Vec<&str> = [
-            (has_motion && opts.undeformed, "undeformed"),
-            (show_supports && !g.supports.is_empty(), "support"),
-            (opts.hinges && !r.hinges().is_empty(), "hinge (point, line)"),
-            (
-                opts.cracks && r.joints().iter().any(|j| j.state != JointState::Closed),
-                "crack (joint not closed)",
-            ),
-            (
-                opts.thrust_points && !r.thrust_line().is_empty(),
-                "centre of pressure",
-            ),
-            (loads.iter().any(|l| l.3), live_label.as_str()),
-            (loads.iter().any(|l| !l.3), dead_label.as_str()),
-        ]
+    let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
+    let (draw_w, draw_h) = (bw * k, bh * k);
+    // The legend: entries flowed and wrapped within the figure (crate::draw::legend). Its height
+    // is that of the entries that may be drawn (a superset of those drawn below).
+    let n_pressure = r
+        .thrust_line()
         .iter()
-        .filter(|(on, _)| *on)
-        .map(|(_, l)| *l)
-        .collect();
-        legend_row_count(&items, legend_fs, width - 2.0 * margin)
-    } else {
-        0
+        .filter(|t| crate::result3d::finite([t.x, t.y, t.z]))
+        .count();
+    let show_pressure = n_pressure > 0 && opts.pressure_points.lone(n_pressure);
+    let mut labels = LegendLabels {
+        undeformed: has_motion && opts.undeformed,
+        supports: show_supports && !g.supports.is_empty(),
+        hinges: opts.hinges && !r.hinges().is_empty(),
+        cracks: opts.cracks && r.joints().iter().any(|j| j.state != JointState::Closed),
+        pressure: show_pressure,
+        live: loads.iter().any(|l| l.3).then(|| {
+            crate::draw::legend::live_load_label(r.load_multiplier(), tilt_of(r), live_max)
+        }),
+        dead: loads
+            .iter()
+            .any(|l| !l.3)
+            .then(|| format!("dead load (largest {} kN)", human(dead_max, 3))),
+        motion: has_motion.then(|| match r.units() {
+            MotionUnits::Metres => format!("displacements drawn × {}", human(scale, 4)),
+            MotionUnits::Normalised => format!(
+                "mechanism drawn × {} (normalised: live loads do unit work)",
+                human(scale, 4)
+            ),
+        }),
+        view: describe_view(&view, &opts.view, has_motion),
+        id: esc(&opts.id),
+        size,
+        k,
     };
     let legend_h = if opts.legend {
-        58.0 + 22.0 * (legend_rows.max(1) - 1) as f64
+        let l = legend::layout(&labels.entries(), margin, width - margin);
+        legend::height(l.height)
     } else {
         8.0
     };
-    let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
-    let (draw_w, draw_h) = (bw * k, bh * k);
     let height = (title_h + margin + draw_h + margin + legend_h).ceil();
     // cam0.px gives (x·right, −x·up): bb.0[1] is the top.
     let cam = Camera {
@@ -1045,7 +1257,7 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
 
     // Centres of pressure.
     let mut n_thrust = 0;
-    if opts.thrust_points && !r.thrust_line().is_empty() {
+    if show_pressure {
         let dot_r = (hinge_r * 0.55).max(1.8);
         let mut dots = String::new();
         for t in r.thrust_line() {
@@ -1203,104 +1415,21 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     }
 
     if opts.legend {
-        let fs = legend_fs;
-        let top = height - legend_h;
-        let mut y = top + 16.0;
-        let _ = writeln!(
-            o,
-            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#dddddd\" stroke-width=\"1\"/>",
-            num(margin),
-            num(top),
-            num(width - margin),
-            num(top)
-        );
-        let mut x = margin;
-        let right_end = width - margin;
-        let mut put = |o: &mut String, symbol: &str, label: &str| {
-            let w = legend_item_width(label, fs);
-            if x > margin && x + w - 22.0 > right_end {
-                x = margin;
-                y += 22.0;
-            }
-            let _ = writeln!(
-                o,
-                "<g transform=\"translate({} {})\">{symbol}</g>",
-                num(x),
-                num(y)
-            );
-            let _ = writeln!(
-                o,
-                "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
-                num(x + 28.0),
-                num(y + 4.5),
-                esc(label)
-            );
-            x += w;
-        };
-        if has_motion && opts.undeformed {
-            put(&mut o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed");
+        labels.hinges = n_hinges > 0;
+        labels.cracks = n_cracks > 0;
+        labels.pressure = n_thrust > 0;
+        if n_live == 0 {
+            labels.live = None;
         }
-        if show_supports && !g.supports.is_empty() {
-            put(&mut o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support");
+        if n_dead == 0 {
+            labels.dead = None;
         }
-        if n_hinges > 0 {
-            put(&mut o, &format!("<path d=\"M1 4L21 -4\" stroke=\"{HINGE}\" stroke-width=\"2.5\" stroke-linecap=\"round\"/><circle cx=\"11\" cy=\"0\" r=\"4.5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge (point, line)");
-        }
-        if n_cracks > 0 {
-            put(&mut o, &format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke=\"{CRACK}\" stroke-width=\"1.5\"/>"), "crack (joint not closed)");
-        }
-        if n_thrust > 0 {
-            put(
-                &mut o,
-                &format!("<circle cx=\"11\" cy=\"0\" r=\"3.5\" fill=\"{THRUST}\"/>"),
-                "centre of pressure",
-            );
-        }
-        let arrow_sym = |c: &str| {
-            format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
-        };
-        if n_live > 0 {
-            put(
-                &mut o,
-                &arrow_sym(LOAD),
-                &format!("live load × λ (largest {} kN)", human(live_max, 3)),
-            );
-        }
-        if n_dead > 0 {
-            put(
-                &mut o,
-                &arrow_sym("#555555"),
-                &format!("dead load (largest {} kN)", human(dead_max, 3)),
-            );
-        }
-        // Last row: scale bar (lengths in the picture plane), displacement scale, view.
-        let y2 = top + 16.0 + 22.0 * (legend_rows.max(1) - 1) as f64 + 24.0;
-        let bx = margin;
-        let bar_end = scale_bar(&mut o, bx, y2, size, k, fs);
-        let mut tx = bar_end + 30.0;
-        if has_motion {
-            let text = match r.units() {
-                MotionUnits::Metres => format!("displacements drawn × {}", human(scale, 4)),
-                MotionUnits::Normalised => format!(
-                    "mechanism drawn × {} (normalised: live loads do unit work)",
-                    human(scale, 4)
-                ),
-            };
-            let _ = writeln!(
-                o,
-                "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
-                num(tx),
-                num(y2 + 4.5),
-                esc(&text)
-            );
-            tx += text_width(&text, fs) + 30.0;
-        }
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#777777\">{}</text>",
-            num(tx),
-            num(y2 + 4.5),
-            esc(&opts.view.describe())
+        legend::write(
+            &mut o,
+            &labels.entries(),
+            margin,
+            width - margin,
+            height - legend_h,
         );
     }
     o.push_str("</svg>\n");
@@ -1311,26 +1440,84 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         scale,
         camera: cam,
         deformed: has_motion,
+        view,
     })
 }
 
-/// Width of a legend item: its symbol, its label and the gap after it.
-fn legend_item_width(label: &str, fs: f64) -> f64 {
-    28.0 + text_width(label, fs) + 22.0
+/// The tilt of a tilting-table result for the legend: α and "towards azimuth …°".
+fn tilt_of(r: &(impl Result3d + ?Sized)) -> Option<(f64, String)> {
+    r.tilt()
+        .map(|(a, az)| (a, format!("towards azimuth {}°", human(az, 6))))
 }
 
-/// Rows that legend items with these labels take within `avail` pixels (at least 1).
-fn legend_row_count(labels: &[&str], fs: f64, avail: f64) -> usize {
-    let (mut rows, mut x) = (1, 0.0);
-    for l in labels {
-        let w = legend_item_width(l, fs);
-        if x > 0.0 && x + w - 22.0 > avail {
-            rows += 1;
-            x = 0.0;
-        }
-        x += w;
+/// The view as the legend states it; an automatic view says that it was chosen.
+fn describe_view(view: &View, asked: &View, has_motion: bool) -> String {
+    let d = view.describe();
+    if *asked == View::Auto && has_motion {
+        format!("{d} (chosen to show the largest motions)")
+    } else {
+        d
     }
-    rows
+}
+
+/// The texts and flags of a 3D legend.
+struct LegendLabels {
+    undeformed: bool,
+    supports: bool,
+    hinges: bool,
+    cracks: bool,
+    pressure: bool,
+    live: Option<String>,
+    dead: Option<String>,
+    /// "displacements drawn × …".
+    motion: Option<String>,
+    view: String,
+    /// The figure's id prefix (the hatch pattern).
+    id: String,
+    /// Model size (m) and pixels per metre, for the scale bar.
+    size: f64,
+    k: f64,
+}
+
+impl LegendLabels {
+    fn entries(&self) -> Vec<Entry> {
+        let id = &self.id;
+        let mut e = Vec::new();
+        if self.undeformed {
+            e.push(Entry::symbol(format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed"));
+        }
+        if self.supports {
+            e.push(Entry::symbol(format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support"));
+        }
+        if self.hinges {
+            e.push(Entry::symbol(format!("<path d=\"M1 4L21 -4\" stroke=\"{HINGE}\" stroke-width=\"2.5\" stroke-linecap=\"round\"/><circle cx=\"11\" cy=\"0\" r=\"4.5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge (point, line)"));
+        }
+        if self.cracks {
+            e.push(Entry::symbol(format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke=\"{CRACK}\" stroke-width=\"1.5\"/>"), "crack (joint not closed)"));
+        }
+        if self.pressure {
+            e.push(Entry::symbol(
+                format!("<circle cx=\"11\" cy=\"0\" r=\"3.5\" fill=\"{THRUST}\"/>"),
+                "centre of pressure",
+            ));
+        }
+        let arrow_sym = |c: &str| {
+            format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
+        };
+        if let Some(l) = &self.live {
+            e.push(Entry::symbol(arrow_sym(LOAD), l.clone()));
+        }
+        if let Some(l) = &self.dead {
+            e.push(Entry::symbol(arrow_sym("#555555"), l.clone()));
+        }
+        // Scale bar (lengths in the picture plane), displacement scale, view.
+        e.push(Entry::scale_bar(self.size, self.k));
+        if let Some(m) = &self.motion {
+            e.push(Entry::text(m.clone(), "#333333"));
+        }
+        e.push(Entry::text(self.view.clone(), "#777777"));
+        e
+    }
 }
 
 /// The drawing as PNG ([`crate::draw::PNG_ZOOM`] pixels per SVG pixel), with the drawing used.

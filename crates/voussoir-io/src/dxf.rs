@@ -175,7 +175,7 @@ fn handle_hex(e: &Entity) -> String {
 }
 
 /// Vertices of a polyline with bulges replaced by chords (at most 5° of arc each).
-fn expand_bulges(v: &[(Point, f64)], closed: bool) -> Vec<Point> {
+pub(crate) fn expand_bulges(v: &[(Point, f64)], closed: bool) -> Vec<Point> {
     let n = v.len();
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
@@ -328,7 +328,7 @@ fn merge_vertices(polys: &mut [Vec<Point>], tol: f64) -> usize {
     moved
 }
 
-fn units_of(drawing: &Drawing, over: Option<Units>) -> Result<Units, IoError> {
+pub(crate) fn units_of(drawing: &Drawing, over: Option<Units>) -> Result<Units, IoError> {
     if let Some(u) = over {
         return Ok(u);
     }

@@ -6,10 +6,14 @@ pub mod draw;
 pub mod draw3d;
 pub mod dxf;
 pub mod files;
+/// The summaries' units of length (README, "Units in the summaries"), shared with the library.
+pub use voussoir::lengths;
 pub mod mesh;
 pub mod motion;
 pub mod report3d;
+pub mod report_parts;
 pub mod result3d;
+pub mod survey;
 pub mod vtk;
 
 pub use files::{read_any_model, read_model, write_all_or_nothing, write_atomic, IoError};

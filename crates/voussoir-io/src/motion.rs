@@ -1,11 +1,12 @@
 //! Support motions as the command line writes them: `--move NAME=u,v[,θ]` (2D) or
-//! `NAME=u,v,w[,θx,θy,θz]` (3D), `--fixed NAME`, and `--profile KIND:NUMBERS`. Pure text parsing
+//! `NAME=u,v,w[,θx,θy,θz]` (3D), `--fixed NAME`, `--split NAME@X[,X…]` and `--profile KIND:NUMBERS`. Pure text parsing
 //! (no files, no flags framework), so that the front ends and the fuzz target `motion` share it.
 //! Every error is one line naming the flag and the value given.
 
 use crate::IoError;
 use voussoir::settlement_input::{
-    apply_profile, fix_support, move_support, ModelSupports, Profile,
+    apply_profile_as_drawn, fix_support, move_support, refresh_motions, split_support,
+    ModelSupports, Profile, SupportSplit,
 };
 
 /// A length in metres from the command line: a number in m, or with a unit `mm`, `cm` or `m`.
@@ -31,6 +32,32 @@ pub struct Motion {
     /// angles in degrees. Their meaning depends on the model's dimension ([`Motion::apply`]).
     pub moves: Vec<(String, Vec<(f64, bool)>)>,
     pub profile: Option<Profile>,
+    /// `--split NAME@X[,X…]`: a support and where to cut it (m).
+    pub splits: Vec<(String, Vec<f64>)>,
+}
+
+/// One `--split NAME@X[,X…]`: the support's name and the cuts (m; lengths may carry a unit).
+pub fn parse_split(s: &str) -> Result<(String, Vec<f64>), IoError> {
+    parse_split_inner(s).map_err(IoError::one_line)
+}
+
+fn parse_split_inner(s: &str) -> Result<(String, Vec<f64>), IoError> {
+    let form = || {
+        IoError(format!("--split {s}: expected NAME@X[,X…] (the support's name and where to cut it, x in m or with a unit)"))
+    };
+    let (name, xs) = s.rsplit_once('@').ok_or_else(form)?;
+    if name.is_empty() {
+        return Err(form());
+    }
+    let xs: Vec<f64> = xs
+        .split(',')
+        .map(signed_length)
+        .collect::<Option<_>>()
+        .ok_or_else(form)?;
+    if xs.iter().any(|x| !x.is_finite()) {
+        return Err(IoError(format!("--split {s}: every x must be finite")));
+    }
+    Ok((name.to_string(), xs))
 }
 
 /// One `--move NAME=u,v[,θ]` or `NAME=u,v,w[,θx,θy,θz]`: the support's name and the values
@@ -129,6 +156,27 @@ impl Motion {
         fixed: &[String],
         profile: Option<&str>,
     ) -> Result<Motion, IoError> {
+        Self::parse_with_splits(moves, fixed, profile, &[])
+    }
+
+    /// [`Motion::parse`] with the `--split` values.
+    pub fn parse_with_splits(
+        moves: &[String],
+        fixed: &[String],
+        profile: Option<&str>,
+        splits: &[String],
+    ) -> Result<Motion, IoError> {
+        let splits = splits
+            .iter()
+            .map(|s| parse_split(s))
+            .collect::<Result<Vec<_>, _>>()?;
+        for (k, (name, _)) in splits.iter().enumerate() {
+            if splits[..k].iter().any(|(n, _)| n == name) {
+                return Err(IoError(format!(
+                    "--split {name}@…: support '{name}' is split twice; give all its cuts in one --split ({name}@X1,X2,…)"
+                )));
+            }
+        }
         let moves = moves
             .iter()
             .map(|m| parse_move(m))
@@ -149,17 +197,33 @@ impl Motion {
             fixed: fixed.to_vec(),
             moves,
             profile,
+            splits,
         })
     }
 
-    /// Apply the moves, fixed supports and profile to a model of either dimension: in 2D a
-    /// move is `u, v[, θ]`, in 3D `u, v, w[, θx, θy, θz]` (lengths in m or with a unit, angles
-    /// in degrees).
-    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<(), IoError> {
+    /// Apply the splits, fixed supports, moves and profile to a model of either dimension, in
+    /// that order: `--split` first (so that `--move` and `--fixed` may name a part), then the
+    /// profile as drawn (every support spanning one of its breakpoints is cut there, its parts
+    /// keeping the motion and connection given to it). In 2D a move is `u, v[, θ]`, in 3D
+    /// `u, v, w[, θx, θy, θz]` (lengths in m or with a unit, angles in degrees). Returns the
+    /// supports cut, with their parts' final motions.
+    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<Vec<SupportSplit>, IoError> {
         self.apply_inner(model).map_err(IoError::one_line)
     }
 
-    fn apply_inner<M: ModelSupports>(&self, model: &mut M) -> Result<(), IoError> {
+    fn apply_inner<M: ModelSupports>(&self, model: &mut M) -> Result<Vec<SupportSplit>, IoError> {
+        let mut splits = Vec::new();
+        for (name, xs) in &self.splits {
+            let spec = xs
+                .iter()
+                .map(|x| voussoir::settlement_input::short_number(*x))
+                .collect::<Vec<_>>()
+                .join(",");
+            splits.push(
+                split_support(model, name, xs)
+                    .map_err(|e| IoError(format!("--split {name}@{spec}: {}", request(&e))))?,
+            );
+        }
         let lengths = M::MOTION / 2 + usize::from(M::MOTION == 3);
         for f in &self.fixed {
             fix_support(model, f)?;
@@ -189,9 +253,30 @@ impl Motion {
             move_support(model, name, &motion)?;
         }
         if let Some(p) = &self.profile {
-            apply_profile(model, p)?;
+            splits.extend(
+                apply_profile_as_drawn(model, p)
+                    .map_err(|e| IoError(format!("--profile: {}", request(&e))))?,
+            );
         }
-        Ok(())
+        refresh_motions(model, &mut splits);
+        Ok(splits)
+    }
+}
+
+/// A result with the supports cut for it: the result's fields, then `split_supports` (the
+/// CLI's and the Python package's JSON, byte for byte the same).
+#[derive(serde::Serialize)]
+pub struct WithSplits<'a, T> {
+    #[serde(flatten)]
+    pub result: &'a T,
+    pub split_supports: &'a [SupportSplit],
+}
+
+/// The message of a library error without its "invalid request: " kind.
+fn request(e: &voussoir::Error) -> String {
+    match e {
+        voussoir::Error::Request(m) | voussoir::Error::Model(m) => m.clone(),
+        e => e.to_string(),
     }
 }
 

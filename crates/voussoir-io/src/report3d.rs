@@ -15,8 +15,10 @@
 //! body by the finite rigid motion `x ↦ c + s·u + R(s·θ)(x − c)` at slider scale `s`, as the
 //! static drawing does.
 
+use crate::draw::report::{section_html, Item, Section};
 use crate::draw::svg::{esc, human};
 use crate::draw3d::{draw3d, Draw3dOptions};
+use crate::report_parts::{self as rp, Analysis, ModelEcho, ReportInputs};
 use crate::result3d::{self, polygon_order, tangents, validate, Motions, Result3d, V3};
 use crate::IoError;
 use serde_json::{json, Value};
@@ -25,7 +27,8 @@ use std::fmt::Write as _;
 use voussoir::result::{BodyName, JointState};
 
 /// The report as one HTML document. `title` empty: the result's own title; `source` names the
-/// model (shown under the title; empty: not shown).
+/// model (shown in the title block and the page footer; empty: not shown). The joint laws and
+/// materials are not known here: see [`report3d_html_with`].
 ///
 /// Fails (one line, naming the body) only when the result's shapes cannot be drawn: a vertex
 /// that is not finite or a face that refers to a missing vertex.
@@ -33,6 +36,17 @@ pub fn report3d_html(
     r: &(impl Result3d + ?Sized),
     title: &str,
     source: &str,
+) -> Result<String, IoError> {
+    report3d_html_with(r, title, source, None)
+}
+
+/// [`report3d_html`] with what the model and the command add: materials, the joint laws in
+/// force, the friction cone, tolerances and settings (the hypotheses and inputs sections).
+pub fn report3d_html_with(
+    r: &(impl Result3d + ?Sized),
+    title: &str,
+    source: &str,
+    inputs: Option<&ReportInputs>,
 ) -> Result<String, IoError> {
     validate(r)?;
     let title = if title.trim().is_empty() {
@@ -48,33 +62,61 @@ pub fn report3d_html(
         },
     )?;
     let data = scene_json(r, drawing.scale);
+    let g = r.shapes();
+    let echo = ModelEcho::of_3d(g, r.joints().len());
+    let analysis = if r.live_loads() {
+        Analysis::Limit(r.load_multiplier())
+    } else {
+        Analysis::Settlement
+    };
+    let command = inputs
+        .map(|i| i.command.clone())
+        .filter(|c| !c.is_empty())
+        .unwrap_or_else(|| {
+            match analysis {
+                Analysis::Limit(_) | Analysis::Capacity => "limit",
+                Analysis::Settlement => "settle",
+            }
+            .to_string()
+        });
     let mut o = String::with_capacity(64 * 1024 + drawing.svg.len());
     o.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
     o.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
     let _ = writeln!(o, "<title>{}</title>", esc(&title));
-    let _ = writeln!(o, "<style>\n{CSS}</style>\n</head>\n<body>\n<main>");
+    let _ = writeln!(
+        o,
+        "<style>\n{CSS}{}</style>\n</head>\n<body>\n<main>",
+        rp::print_css(&title, source)
+    );
     let _ = writeln!(o, "<h1>{}</h1>", esc(&title));
-    if !source.is_empty() {
-        let _ = writeln!(o, "<p class=\"subtitle\">model: {}</p>", esc(source));
-    }
+    o.push_str(&rp::title_block(source, &command));
+    let mut fig = 0;
+    section_html(
+        &mut o,
+        &rp::hypotheses(&echo, inputs, analysis, r.friction_iteration()),
+        "hypotheses",
+        &mut fig,
+    );
+    section_html(
+        &mut o,
+        &rp::inputs(
+            &echo,
+            inputs,
+            analysis,
+            source,
+            r.solver(),
+            r.certificate_rows(),
+        ),
+        "inputs",
+        &mut fig,
+    );
 
-    // Key numbers.
-    o.push_str("<section id=\"numbers\">\n<h2>Key numbers</h2>\n<table class=\"kv\">\n");
-    let g = r.shapes();
+    // Results: key numbers and the reactions.
+    let mut res = Section {
+        heading: "Results".into(),
+        items: Vec::new(),
+    };
     let mut rows = r.key_numbers();
-    rows.push((
-        "model".into(),
-        if r.joints().is_empty() {
-            format!("{} blocks, {} supports", g.blocks.len(), g.supports.len())
-        } else {
-            format!(
-                "{} blocks, {} supports, {} joints",
-                g.blocks.len(),
-                g.supports.len(),
-                r.joints().len()
-            )
-        },
-    ));
     rows.push((
         "motions".into(),
         match r.units() {
@@ -84,13 +126,71 @@ pub fn report3d_html(
             crate::draw::MotionUnits::Metres => "metres (the settlement's own size)".into(),
         },
     ));
-    for (k, v) in &rows {
-        let _ = writeln!(o, "<tr><th>{}</th><td>{}</td></tr>", esc(k), esc(v));
+    res.key_values(rows);
+    if !r.reactions().is_empty() {
+        let rows: Vec<_> = r
+            .reactions()
+            .iter()
+            .map(|re| {
+                (
+                    re.support.clone(),
+                    vec![re.fx, re.fy, re.fz],
+                    vec![re.mx, re.my, re.mz],
+                    vec![re.cx, re.cy, re.cz],
+                )
+            })
+            .collect();
+        let (head, rows, foot) = rp::reaction_table(&rows, 3);
+        res.items.push(Item::Table {
+            caption: "Support reactions (forces of each support on the structure)".into(),
+            head,
+            rows,
+            foot,
+            collapsed: false,
+        });
+        if analysis == Analysis::Settlement {
+            let fz: f64 = r.reactions().iter().map(|re| re.fz).sum();
+            let w = echo.total_weight();
+            res.text(format!(
+                "Check: the vertical reactions sum to {} kN; the total weight W is {} kN (difference {} kN).",
+                human(fz, 8),
+                human(w, 8),
+                human(fz - w, 2)
+            ));
+        }
     }
-    o.push_str("</table>\n</section>\n");
+    section_html(&mut o, &res, "numbers", &mut fig);
 
-    // The interactive view.
-    o.push_str("<section id=\"view\">\n<h2>Mechanism in 3D</h2>\n");
+    // Cracked joints.
+    let mut cr = Section {
+        heading: "Cracked joints".into(),
+        items: Vec::new(),
+    };
+    let cracks = rp::crack_rows_3d(r.joints());
+    if cracks.is_empty() {
+        cr.text("No joint opens or slides.");
+    } else {
+        if r.units() == crate::draw::MotionUnits::Normalised {
+            cr.text("The mechanism of a limit analysis is a rate (normalised): its crack widths compare the joints' openings with each other, they are not millimetres of a real displacement; the positions and lengths are geometric.");
+        }
+        let (head, rows) = rp::crack_table(&cracks, 3);
+        cr.items.push(Item::table(
+            "Cracks (position: centroid of the opened part; width: largest opening; length: of the opened part, along the crack's line)",
+            head,
+            rows,
+        ));
+    }
+    section_html(&mut o, &cr, "cracks", &mut fig);
+
+    // The static drawing.
+    o.push_str("<section id=\"drawing\">\n<h2>Static drawing</h2>\n<figure>\n");
+    o.push_str(drawing.svg.trim_end());
+    o.push_str(
+        "\n<figcaption>Axonometric view of the mechanism (the printed counterpart of the interactive view).</figcaption>\n</figure>\n</section>\n",
+    );
+
+    // The interactive view (not printed).
+    o.push_str("<section id=\"view\" class=\"screen-only\">\n<h2>Mechanism in 3D</h2>\n");
     o.push_str(
         "<div class=\"controls\"><label>displacement scale × <output id=\"v3-scale-out\">1</output> \
          <input id=\"v3-scale\" type=\"range\" min=\"0\" max=\"3\" step=\"0.01\" value=\"1\" aria-label=\"displacement scale\"></label>\
@@ -102,67 +202,14 @@ pub fn report3d_html(
     );
     o.push_str(
         "<div class=\"viewer\"><canvas id=\"v3-canvas\" width=\"1000\" height=\"620\"></canvas>\
-         <p id=\"v3-nogl\" hidden>WebGL is not available in this browser: the static drawing below shows the mechanism.</p></div>\n",
+         <p id=\"v3-nogl\" hidden>WebGL is not available in this browser: the static drawing above shows the mechanism.</p></div>\n",
     );
     o.push_str(
         "<p class=\"hint\">Drag to rotate · right-drag or shift-drag to pan · wheel to zoom. \
          Red: cracks (the joint's outline on both faces). Blue: contact forces, an arrow along \
          the joint's normal at the centre of pressure, length proportional to the normal force.</p>\n</section>\n",
     );
-
-    // Cracked joints.
-    o.push_str("<section id=\"cracks\">\n<h2>Cracked joints</h2>\n");
-    let cracked: Vec<_> = r
-        .joints()
-        .iter()
-        .filter(|j| j.state != JointState::Closed)
-        .collect();
-    if cracked.is_empty() {
-        o.push_str("<p>No joint opens or slides.</p>\n");
-    } else {
-        let cp = centres_of_pressure(r);
-        o.push_str("<div class=\"scroll\"><table class=\"grid\">\n<thead><tr><th>joint</th><th>bodies</th><th>state</th><th>N (kN)</th><th>largest opening</th><th>centre of pressure (m)</th></tr></thead>\n<tbody>\n");
-        for j in cracked {
-            let opening = j
-                .points
-                .iter()
-                .map(|p| p.opening)
-                .filter(|x| x.is_finite())
-                .fold(0.0, f64::max);
-            let c = cp
-                .get(&j.id)
-                .map(|p| {
-                    // Round-off below a nanometre is shown as 0, not as 2.2e-16.
-                    let c = |x: f64| human(if x.abs() < 1e-9 { 0.0 } else { x }, 4);
-                    format!("({}, {}, {})", c(p[0]), c(p[1]), c(p[2]))
-                })
-                .unwrap_or_else(|| "—".into());
-            let _ = writeln!(
-                o,
-                "<tr><td>{}</td><td>{} | {}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
-                j.id,
-                esc(&body_name(&j.a)),
-                esc(&body_name(&j.b)),
-                state_name(j.state),
-                if j.normal_force.is_finite() {
-                    human(j.normal_force, 4)
-                } else {
-                    "—".into()
-                },
-                human(opening, 3),
-                c
-            );
-        }
-        o.push_str("</tbody></table></div>\n");
-    }
-    o.push_str("</section>\n");
-
-    // The static drawing.
-    o.push_str("<section id=\"drawing\">\n<h2>Static drawing</h2>\n<figure>\n");
-    o.push_str(drawing.svg.trim_end());
-    o.push_str(
-        "\n<figcaption>Axonometric view of the mechanism (the printable counterpart of the view above).</figcaption>\n</figure>\n</section>\n",
-    );
+    o.push_str(rp::sign_off());
     let _ = writeln!(
         o,
         "<footer>voussoir {} — rigid no-tension blocks in unilateral contact. Units: m, kN, kN·m.</footer>",
@@ -175,13 +222,6 @@ pub fn report3d_html(
     o.push_str(VIEWER_JS);
     o.push_str("</script>\n</body>\n</html>\n");
     Ok(o)
-}
-
-fn body_name(b: &BodyName) -> String {
-    match b {
-        BodyName::Block(i) => format!("block {i}"),
-        BodyName::Support(s) => s.clone(),
-    }
 }
 
 fn state_name(s: JointState) -> &'static str {
@@ -392,7 +432,6 @@ figure{margin:18px 0 24px}
 figure svg{max-width:100%;height:auto;display:block;border:1px solid #e6e6e6}
 figcaption{color:#444;font-size:14px;margin-top:6px}
 footer{margin-top:36px;color:#777;font-size:13px}
-@media print{#view{display:none}main{box-shadow:none}}
 "#;
 
 /// The viewer: WebGL 1, one shader (Lambert lighting of flat-shaded triangles; unlit lines),

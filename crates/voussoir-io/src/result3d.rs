@@ -11,8 +11,11 @@ use crate::IoError;
 use voussoir::analysis::tilt::TiltResult;
 use voussoir::analysis::{CapacityResult, LimitResult, LimitStatus, SettlementResult};
 use voussoir::dim::Three;
+use voussoir::lp::SolverInfo;
 use voussoir::result::spatial::{SpatialMotion, SpatialShapes};
-use voussoir::result::{BlockMotion, BodyName, Hinge, JointResult, JointState, ThrustPoint};
+use voussoir::result::{
+    BlockMotion, BodyName, FrictionIteration, Hinge, JointResult, JointState, Reaction, ThrustPoint,
+};
 
 /// A 3D result that can be written to VTK or drawn: a limit or a settlement result.
 pub trait Result3d {
@@ -39,6 +42,50 @@ pub trait Result3d {
             .map(|l| (String::new(), l))
             .collect()
     }
+    /// Support reactions (none where the result has no forces).
+    fn reactions(&self) -> &[Reaction<Three>] {
+        &[]
+    }
+    /// The solver and method that produced the result.
+    fn solver(&self) -> Option<&SolverInfo> {
+        None
+    }
+    /// The non-associative friction iteration, when one was run.
+    fn friction_iteration(&self) -> Option<&FrictionIteration> {
+        None
+    }
+    /// The collapse load multiplier λ that the drawn live loads are multiplied by (a limit
+    /// analysis that found a mechanism); `None`: the live loads are drawn unfactored.
+    fn load_multiplier(&self) -> Option<f64> {
+        None
+    }
+    /// A tilting-table result: the critical tilt angle α and the azimuth of the tilt, degrees.
+    fn tilt(&self) -> Option<(f64, f64)> {
+        None
+    }
+    /// The certificate as (name, value) rows for a report's inputs.
+    fn certificate_rows(&self) -> Vec<(String, String)> {
+        Vec::new()
+    }
+}
+
+fn limit_certificate_rows(r: &LimitResult<Three>) -> Vec<(String, String)> {
+    vec![(
+        "certificate of λ".to_string(),
+        match &r.certificate {
+            Some(c) => format!(
+                "gap |λ − λ_kin|/|λ| = {}, admissibility {} — {}",
+                crate::draw::svg::human(c.gap, 3),
+                crate::draw::svg::human(c.admissibility, 3),
+                if c.ok {
+                    "certified (≤ 1e-6)"
+                } else {
+                    "NOT certified"
+                }
+            ),
+            None => "not computed for this outcome or joint law".to_string(),
+        },
+    )]
 }
 
 /// A number for a report table: up to 6 significant digits, or "—" when absent or not finite.
@@ -69,6 +116,18 @@ fn crack_summary(joints: &[JointResult<Three>]) -> String {
 }
 
 impl Result3d for LimitResult<Three> {
+    fn reactions(&self) -> &[Reaction<Three>] {
+        &self.reactions
+    }
+    fn solver(&self) -> Option<&SolverInfo> {
+        Some(&self.solver)
+    }
+    fn friction_iteration(&self) -> Option<&FrictionIteration> {
+        self.friction_iteration.as_ref()
+    }
+    fn certificate_rows(&self) -> Vec<(String, String)> {
+        limit_certificate_rows(self)
+    }
     fn blocks(&self) -> &[BlockMotion<Three>] {
         &self.blocks
     }
@@ -135,9 +194,39 @@ impl Result3d for LimitResult<Three> {
         k.push(("cracked joints".to_string(), crack_summary(&self.joints)));
         k
     }
+    fn load_multiplier(&self) -> Option<f64> {
+        self.load_multiplier
+            .filter(|l| l.is_finite() && self.status == LimitStatus::Collapse)
+    }
 }
 
 impl Result3d for SettlementResult<Three> {
+    fn reactions(&self) -> &[Reaction<Three>] {
+        &self.reactions
+    }
+    fn solver(&self) -> Option<&SolverInfo> {
+        Some(&self.solver)
+    }
+    fn friction_iteration(&self) -> Option<&FrictionIteration> {
+        self.friction_iteration.as_ref()
+    }
+    fn certificate_rows(&self) -> Vec<(String, String)> {
+        vec![(
+            "duality certificate".to_string(),
+            match &self.certificate {
+                Some(c) => format!(
+                    "relative gap {} — {}",
+                    crate::draw::svg::human(c.relative_gap, 3),
+                    if c.ok {
+                        "certified (≤ 1e-7)"
+                    } else {
+                        "NOT certified"
+                    }
+                ),
+                None => "none (no mechanism)".to_string(),
+            },
+        )]
+    }
     fn blocks(&self) -> &[BlockMotion<Three>] {
         &self.blocks
     }
@@ -224,6 +313,18 @@ impl Result3d for SettlementResult<Three> {
 
 /// The tilting-table result: its limit analysis, titled and summed up by the tilt angle.
 impl Result3d for TiltResult<Three> {
+    fn reactions(&self) -> &[Reaction<Three>] {
+        &self.limit.reactions
+    }
+    fn solver(&self) -> Option<&SolverInfo> {
+        Some(&self.limit.solver)
+    }
+    fn friction_iteration(&self) -> Option<&FrictionIteration> {
+        self.limit.friction_iteration.as_ref()
+    }
+    fn certificate_rows(&self) -> Vec<(String, String)> {
+        limit_certificate_rows(&self.limit)
+    }
     fn blocks(&self) -> &[BlockMotion<Three>] {
         self.limit.blocks()
     }
@@ -278,6 +379,14 @@ impl Result3d for TiltResult<Three> {
         ));
         k.extend(self.limit.key_numbers());
         k
+    }
+    fn load_multiplier(&self) -> Option<f64> {
+        self.limit.load_multiplier()
+    }
+    fn tilt(&self) -> Option<(f64, f64)> {
+        self.tilt_angle
+            .filter(|a| a.is_finite())
+            .map(|a| (a, self.azimuth.unwrap_or(0.0)))
     }
 }
 

@@ -31,6 +31,20 @@ struct UnknownSpec {
     upper: Option<f64>,
 }
 
+/// The breakpoints of the unknown profiles (none if the text cannot be read: [`unknowns`]
+/// says why).
+fn profile_breakpoints(text: &str) -> Vec<f64> {
+    serde_json::from_str::<Vec<UnknownSpec>>(text)
+        .map(|specs| {
+            specs
+                .iter()
+                .filter_map(|s| s.profile.as_ref())
+                .flat_map(|[p0, _]| p0.breakpoints())
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
 fn unknowns(st: &Structure, text: &str) -> Result<Vec<Unknown>, Fail> {
     let specs: Vec<UnknownSpec> =
         serde_json::from_str(text).map_err(|e| Fail::Model(format!("unknowns: {e}")))?;
@@ -69,7 +83,14 @@ pub fn identify(
     ranges: bool,
 ) -> PyResult<String> {
     crate::detached(py, || {
-        let m = common.model(&model, Some(&settle))?;
+        let (mut m, mut splits) = common.model_split(&model, Some(&settle))?;
+        // Unknown profiles act on the foundations as drawn, as in the CLI: a support spanning
+        // one of their breakpoints is cut there first.
+        let xs = profile_breakpoints(&unknown);
+        if !xs.is_empty() {
+            splits.extend(voussoir::settlement_input::split_supports_at(&mut m, &xs)?);
+            voussoir::settlement_input::refresh_motions(&m, &mut splits);
+        }
         let st = Structure::new(
             &m,
             BuildOptions {
@@ -84,6 +105,6 @@ pub fn identify(
             ranges,
             form: common.settlement_form()?,
         };
-        crate::json(&identify_motions(&st, &obs, &us, &opts)?)
+        crate::json_split(&identify_motions(&st, &obs, &us, &opts)?, &splits)
     })
 }

@@ -82,6 +82,21 @@ fn json<T: serde::Serialize>(v: &T) -> Result<String, Fail> {
     Ok(to_json(v)?)
 }
 
+/// [`json`] of a result whose model had supports cut (a profile's breakpoints): with
+/// `split_supports`, as the CLI writes it; without any, exactly [`json`].
+fn json_split<T: serde::Serialize>(
+    v: &T,
+    splits: &[voussoir::settlement_input::SupportSplit],
+) -> Result<String, Fail> {
+    if splits.is_empty() {
+        return json(v);
+    }
+    json(&voussoir_io::motion::WithSplits {
+        result: v,
+        split_supports: splits,
+    })
+}
+
 // ---------------------------------------------------------------------------------------------
 // Models
 
@@ -398,7 +413,7 @@ fn settle(
     ranges: Option<bool>,
 ) -> PyResult<String> {
     detached(py, || {
-        let m = common.model(&model, Some(&settle))?;
+        let (m, splits) = common.model_split(&model, Some(&settle))?;
         // Validated first, so that a bad model is named before a missing motion (as the CLI).
         let st = Structure::new(
             &m,
@@ -436,7 +451,7 @@ fn settle(
             };
             settle_canonical(&st, &opts, form, &copts)?
         };
-        json(&r)
+        json_split(&r, &splits)
     })
 }
 
@@ -458,7 +473,7 @@ fn capacity(
                 "capacity needs a settlement: give move={NAME: (u, v)} (or profile=...)".into(),
             ));
         }
-        let (st, solver) = common.structure(&model, Some(&settle))?;
+        let (st, solver, splits) = common.structure_split(&model, Some(&settle))?;
         let opts = CapacityOptions {
             steps,
             hot_start: !cold,
@@ -467,7 +482,7 @@ fn capacity(
             solver,
             ..CapacityOptions::default()
         };
-        json(&capacity_analysis(&st, &opts)?)
+        json_split(&capacity_analysis(&st, &opts)?, &splits)
     })
 }
 
@@ -586,6 +601,7 @@ fn report_html(
                 title,
                 source,
                 scale,
+                inputs: None,
             },
         )?)
     })

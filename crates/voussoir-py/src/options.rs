@@ -9,7 +9,9 @@ use pyo3::prelude::*;
 use voussoir::analysis::limit::Crushing;
 use voussoir::analysis::settlement::SettlementForm;
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{apply_profile, fix_support, move_support, Profile};
+use voussoir::settlement_input::{
+    apply_profile_as_drawn, fix_support, move_support, refresh_motions, Profile, SupportSplit,
+};
 use voussoir::{BuildOptions, Model, Structure};
 
 /// A failure: one line; `Solver` for the solver's own failures, `Model` for everything else.
@@ -56,7 +58,10 @@ pub struct Settle {
 }
 
 impl Settle {
-    pub fn apply(&self, model: &mut Model) -> Result<(), Fail> {
+    /// Apply the fixed supports, moves and profile (as drawn: a support spanning one of its
+    /// breakpoints is cut there first, as by the CLI); the supports cut.
+    pub fn apply(&self, model: &mut Model) -> Result<Vec<SupportSplit>, Fail> {
+        let mut splits = Vec::new();
         for f in &self.fixed {
             fix_support(model, f)?;
         }
@@ -78,9 +83,10 @@ impl Settle {
             let profile: Profile = serde_json::from_str(p)
                 .map_err(|e| Fail::Model(format!("invalid settlement profile: {e}")))?;
             profile.validate()?;
-            apply_profile(model, &profile)?;
+            splits = apply_profile_as_drawn(model, &profile)?;
         }
-        Ok(())
+        refresh_motions(model, &mut splits);
+        Ok(splits)
     }
 }
 
@@ -139,12 +145,22 @@ impl Common {
 
     /// The model with materials overridden and the settlement applied.
     pub fn model(&self, model_json: &str, settle: Option<&Settle>) -> Result<Model, Fail> {
+        Ok(self.model_split(model_json, settle)?.0)
+    }
+
+    /// [`Common::model`] and the supports the settlement cut.
+    pub fn model_split(
+        &self,
+        model_json: &str,
+        settle: Option<&Settle>,
+    ) -> Result<(Model, Vec<SupportSplit>), Fail> {
         let mut model = voussoir_io::files::parse_model(model_json)?;
         self.override_materials(&mut model)?;
-        if let Some(s) = settle {
-            s.apply(&mut model)?;
-        }
-        Ok(model)
+        let splits = match settle {
+            Some(s) => s.apply(&mut model)?,
+            None => Vec::new(),
+        };
+        Ok((model, splits))
     }
 
     /// Load, apply the settlement, validate and discretise (the CLI's `ModelArgs::structure`).
@@ -153,14 +169,24 @@ impl Common {
         model_json: &str,
         settle: Option<&Settle>,
     ) -> Result<(Structure, SolverOptions), Fail> {
-        let model = self.model(model_json, settle)?;
+        let (st, opts, _) = self.structure_split(model_json, settle)?;
+        Ok((st, opts))
+    }
+
+    /// [`Common::structure`] and the supports the settlement cut.
+    pub fn structure_split(
+        &self,
+        model_json: &str,
+        settle: Option<&Settle>,
+    ) -> Result<(Structure, SolverOptions, Vec<SupportSplit>), Fail> {
+        let (model, splits) = self.model_split(model_json, settle)?;
         let st = Structure::new(
             &model,
             BuildOptions {
                 tolerance: self.tolerance,
             },
         )?;
-        Ok((st, self.solver()?))
+        Ok((st, self.solver()?, splits))
     }
 
     /// Limit analysis with the chosen crushing model.

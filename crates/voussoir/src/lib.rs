@@ -42,6 +42,7 @@ pub mod generate3d;
 pub mod generate_facade;
 pub mod geometry;
 pub mod geometry3d;
+pub mod lengths;
 pub mod lp;
 pub mod model;
 pub mod model3d;
@@ -51,6 +52,7 @@ pub mod result;
 pub mod scale;
 pub mod settlement_input;
 pub mod structure;
+pub mod support_split;
 pub mod sweep;
 
 pub use error::{Error, Result};

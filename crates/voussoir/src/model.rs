@@ -47,18 +47,57 @@ pub enum Width {
     PerPoint(Vec<f64>),
 }
 
+impl Default for Width {
+    fn default() -> Self {
+        Width::One(0.0)
+    }
+}
+
+/// Metres per unit of a length unit named in a crack survey: `"m"`, `"cm"` or `"mm"` (also
+/// spelt out: `"millimetres"`, …). `None` for anything else.
+pub fn length_unit(name: &str) -> Option<f64> {
+    match name.trim().to_ascii_lowercase().as_str() {
+        "m" | "metre" | "metres" | "meter" | "meters" => Some(1.0),
+        "cm" | "centimetre" | "centimetres" | "centimeter" | "centimeters" => Some(1e-2),
+        "mm" | "millimetre" | "millimetres" | "millimeter" | "millimeters" => Some(1e-3),
+        _ => None,
+    }
+}
+
+/// Metres per unit of the optional unit `name` given in `field` of `what` (default metres);
+/// an unknown unit is refused in one line naming the field.
+pub fn length_unit_of(what: &str, field: &str, name: Option<&str>) -> Result<f64, String> {
+    match name {
+        None => Ok(1.0),
+        Some(n) => length_unit(n).ok_or_else(|| {
+            format!("{what}: \"{field}\": unknown unit \"{n}\" (give \"m\", \"cm\" or \"mm\")")
+        }),
+    }
+}
+
 /// A crack measured in the structure as it stands. Exactly one of `at` (the nearest
-/// collocation point of any joint: the surveyor's coordinates, in m) and `joint` (a joint id:
-/// widths at its points in order, start then end, or one width for all of them).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+/// collocation point of any joint: the surveyor's coordinates, in m), `joint` (a joint id:
+/// widths at its points in order, start then end, or one width for all of them) and
+/// `polyline` (a crack line as drawn: every joint point within `snap` of it, default a quarter
+/// of the point's joint length; one width, or two at its start and end, interpolated along it).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ExistingCrack {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub at: Option<[f64; 2]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<usize>,
-    /// Width (m), ≥ 0.
+    /// A crack line `[[x, y], …]` (m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub polyline: Option<Vec<[f64; 2]>>,
+    /// Catch distance of a `polyline` (m); default a quarter of each point's joint length.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub snap: Option<f64>,
+    /// Width (≥ 0), in `units`.
     pub opening: Width,
+    /// Unit of the width: `"m"` (default), `"cm"` or `"mm"`. Coordinates stay in metres.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub units: Option<String>,
 }
 
 /// Material of a block.

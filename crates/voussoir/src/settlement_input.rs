@@ -4,6 +4,14 @@
 //! A profile `v(x)` (vertical, m, positive up) is applied to each support as the rigid motion
 //! that matches it at the support's centroid: translation `v(c_x)` and rotation `dv/dx`
 //! (exact for a linear profile). Supports outside the profile's range do not move.
+//!
+//! Foundations as drawn: [`apply_profile_as_drawn`] first cuts every support that spans one of
+//! the profile's breakpoints ([`Profile::breakpoints`]) at those x values
+//! ([`split_supports_at`]), so that each part lies on one linear piece of the profile and moves
+//! exactly as it says; [`split_support`] cuts one support where asked. The parts of support
+//! `NAME` are named `NAME@0`, `NAME@1`, … from the left (by their leftmost x, then their lowest
+//! point: a strip of a non-convex support may hold several pieces). A support that spans no
+//! breakpoint is left untouched.
 
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -54,6 +62,18 @@ impl Profile {
         }
     }
 
+    /// The x values where the profile is not one linear function: its ends and, for a table,
+    /// every point (increasing, without repeats).
+    pub fn breakpoints(&self) -> Vec<f64> {
+        let mut xs = match self {
+            Profile::Uniform { x0, x1, .. } | Profile::Linear { x0, x1, .. } => vec![*x0, *x1],
+            Profile::Table { points } => points.iter().map(|p| p[0]).collect(),
+        };
+        xs.sort_by(f64::total_cmp);
+        xs.dedup();
+        xs
+    }
+
     pub fn validate(&self) -> Result<()> {
         let bad = |m: &str| Err(Error::Request(format!("settlement profile: {m}")));
         match self {
@@ -97,6 +117,14 @@ pub trait ModelSupports {
     /// x of the support's centroid (`None` for a shape too broken to have one; the model's
     /// validation names it later).
     fn centroid_x(&self, i: usize) -> Option<f64>;
+    /// The x range of the support's vertices.
+    fn x_range(&self, i: usize) -> [f64; 2];
+    fn motion(&self, i: usize) -> &[f64];
+    /// Replace support `i` by its parts cut at `cuts` (increasing, strictly inside its x range),
+    /// named `NAME@0`, `NAME@1`, … from the left, in its place in the list. Each part keeps the
+    /// support's connection and moves with it rigidly (its motion re-expressed about the part's
+    /// centroid). Returns the number of parts.
+    fn split(&mut self, i: usize, cuts: &[f64]) -> Result<usize>;
 }
 
 impl ModelSupports for Model {
@@ -114,6 +142,41 @@ impl ModelSupports for Model {
     fn centroid_x(&self, i: usize) -> Option<f64> {
         let p = &self.supports[i].polygon;
         (p.len() >= 3).then(|| crate::geometry::area_centroid(p).1[0])
+    }
+    fn x_range(&self, i: usize) -> [f64; 2] {
+        crate::support_split::x_range2(&self.supports[i].polygon)
+    }
+    fn motion(&self, i: usize) -> &[f64] {
+        &self.supports[i].motion
+    }
+    fn split(&mut self, i: usize, cuts: &[f64]) -> Result<usize> {
+        use crate::geometry::area_centroid;
+        let s = &self.supports[i];
+        if s.polygon.len() < 3 {
+            return Err(Error::Request(
+                "its polygon has fewer than 3 vertices".into(),
+            ));
+        }
+        let c0 = area_centroid(&s.polygon).1;
+        let [u, v, t] = s.motion;
+        let parts: Vec<crate::model::Support> =
+            crate::support_split::split_polygon(&s.polygon, cuts)?
+                .into_iter()
+                .flatten()
+                .enumerate()
+                .map(|(k, polygon)| {
+                    let c = area_centroid(&polygon).1;
+                    crate::model::Support {
+                        name: format!("{}@{k}", s.name),
+                        motion: [u - t * (c[1] - c0[1]), v + t * (c[0] - c0[0]), t],
+                        polygon,
+                        connection: s.connection,
+                    }
+                })
+                .collect();
+        let n = parts.len();
+        self.supports.splice(i..=i, parts);
+        Ok(n)
     }
 }
 
@@ -135,6 +198,219 @@ impl ModelSupports for Model3d {
         crate::geometry3d::clean_polyhedron("support", &s.vertices, &s.faces, 1e-12)
             .ok()
             .map(|p| p.centroid[0])
+    }
+    fn x_range(&self, i: usize) -> [f64; 2] {
+        crate::support_split::x_range3(&self.supports[i].vertices)
+    }
+    fn motion(&self, i: usize) -> &[f64] {
+        &self.supports[i].motion
+    }
+    fn split(&mut self, i: usize, cuts: &[f64]) -> Result<usize> {
+        use crate::geometry3d::clean_polyhedron;
+        let s = &self.supports[i];
+        let centroid = |v: &[[f64; 3]], f: &[Vec<usize>]| {
+            clean_polyhedron("support", v, f, 1e-12).map(|p| p.centroid)
+        };
+        let c0 = centroid(&s.vertices, &s.faces)?;
+        let m = s.motion;
+        let mut parts = Vec::new();
+        for (k, (vertices, faces)) in
+            crate::support_split::split_polyhedron(&s.vertices, &s.faces, cuts)?
+                .into_iter()
+                .enumerate()
+        {
+            let c = centroid(&vertices, &faces)?;
+            // A rigid motion (t, θ) about c0 moves c by t + θ × (c − c0).
+            let r = [c[0] - c0[0], c[1] - c0[1], c[2] - c0[2]];
+            let w = [m[3], m[4], m[5]];
+            let motion = [
+                m[0] + w[1] * r[2] - w[2] * r[1],
+                m[1] + w[2] * r[0] - w[0] * r[2],
+                m[2] + w[0] * r[1] - w[1] * r[0],
+                m[3],
+                m[4],
+                m[5],
+            ];
+            parts.push(crate::model3d::Support3d {
+                name: format!("{}@{k}", s.name),
+                vertices,
+                faces,
+                motion,
+                connection: s.connection,
+            });
+        }
+        let n = parts.len();
+        self.supports.splice(i..=i, parts);
+        Ok(n)
+    }
+}
+
+/// One part of a split support, as reported.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SupportPart {
+    pub name: String,
+    /// x range of the part's vertices (m).
+    pub x_range: [f64; 2],
+    /// The part's motion (`[u, v, θ]` in 2D, `[u, v, w, θx, θy, θz]` in 3D; m and rad, about
+    /// its centroid), once every motion is applied ([`refresh_motions`]).
+    pub motion: Vec<f64>,
+}
+
+/// A support cut into parts: where, and the parts from the left.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SupportSplit {
+    pub support: String,
+    /// The cuts `x = c` (m), increasing.
+    pub cuts: Vec<f64>,
+    pub parts: Vec<SupportPart>,
+}
+
+/// A number for a message: plain where that is short, else in e-notation (1e-300, not 300
+/// zeros).
+pub fn short_number(x: f64) -> String {
+    if x == 0.0 || (1e-4..1e15).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// Cut support `name` at the x values `cuts` (any order; each strictly inside the support's x
+/// range) into parts `NAME@0`, `NAME@1`, … from the left (see the module's notes). Refused: an
+/// unknown support, a cut that is not a finite number or lies outside the support, a model
+/// that already has a support named `NAME@K`.
+pub fn split_support<M: ModelSupports>(
+    model: &mut M,
+    name: &str,
+    cuts: &[f64],
+) -> Result<SupportSplit> {
+    let i = support_index(model, name)?;
+    let bad = |m: String| Err(Error::Request(format!("support '{name}': {m}")));
+    if let Some(c) = cuts.iter().find(|c| !c.is_finite()) {
+        return bad(format!(
+            "the cut x = {} is not a finite number",
+            short_number(*c)
+        ));
+    }
+    let mut cuts = cuts.to_vec();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    if cuts.is_empty() {
+        return bad("no cut given".into());
+    }
+    let r = model.x_range(i);
+    if let Some(c) = cuts
+        .iter()
+        .find(|c| !crate::support_split::strictly_inside(r, **c))
+    {
+        return bad(format!(
+            "the cut x = {} m is not inside the support (it spans x = {} … {} m)",
+            short_number(*c),
+            short_number(r[0]),
+            short_number(r[1])
+        ));
+    }
+    let prefix = format!("{name}@");
+    if let Some(other) = model.support_names().into_iter().find(|s| {
+        s.strip_prefix(&prefix)
+            .is_some_and(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
+    }) {
+        return bad(format!(
+            "its parts would be named {prefix}0, {prefix}1, … and the model already has a support '{other}'"
+        ));
+    }
+    let n = model.split(i, &cuts).map_err(|e| match e {
+        Error::Request(m) | Error::Model(m) => Error::Request(format!("support '{name}': {m}")),
+        e => e,
+    })?;
+    let parts = (i..i + n)
+        .map(|k| SupportPart {
+            name: model.support_names()[k].to_string(),
+            x_range: model.x_range(k),
+            motion: model.motion(k).to_vec(),
+        })
+        .collect();
+    Ok(SupportSplit {
+        support: name.to_string(),
+        cuts,
+        parts,
+    })
+}
+
+/// Cut every support that spans one of the x values `xs` (strictly inside its x range) there;
+/// the others are left untouched. Returns the supports cut, in the model's order.
+pub fn split_supports_at<M: ModelSupports>(model: &mut M, xs: &[f64]) -> Result<Vec<SupportSplit>> {
+    let names: Vec<String> = model
+        .support_names()
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    let mut out = Vec::new();
+    for name in names {
+        let i = support_index(model, &name)?;
+        let r = model.x_range(i);
+        let cuts: Vec<f64> = xs
+            .iter()
+            .copied()
+            .filter(|&c| crate::support_split::strictly_inside(r, c))
+            .collect();
+        if !cuts.is_empty() {
+            out.push(split_support(model, &name, &cuts)?);
+        }
+    }
+    Ok(out)
+}
+
+/// Cut every support into `n` parts of equal x extent (`NAME@0` … from the left; `n ≥ 2`).
+pub fn split_supports_equally<M: ModelSupports>(
+    model: &mut M,
+    n: usize,
+) -> Result<Vec<SupportSplit>> {
+    if n < 2 {
+        return Err(Error::Request(format!(
+            "cannot cut a support into {n} part(s): give 2 or more"
+        )));
+    }
+    let names: Vec<String> = model
+        .support_names()
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    let mut out = Vec::new();
+    for name in names {
+        let i = support_index(model, &name)?;
+        let [x0, x1] = model.x_range(i);
+        let cuts: Vec<f64> = (1..n)
+            .map(|k| x0 + (x1 - x0) * k as f64 / n as f64)
+            .collect();
+        out.push(split_support(model, &name, &cuts)?);
+    }
+    Ok(out)
+}
+
+/// Apply a profile to the supports as drawn: cut every support that spans a breakpoint of the
+/// profile there ([`split_supports_at`]), then apply the profile to every support by its
+/// centroid ([`apply_profile`]; exact for each part, which lies on one linear piece). Returns
+/// the supports cut.
+pub fn apply_profile_as_drawn<M: ModelSupports>(
+    model: &mut M,
+    profile: &Profile,
+) -> Result<Vec<SupportSplit>> {
+    profile.validate()?;
+    let mut splits = split_supports_at(model, &profile.breakpoints())?;
+    apply_profile(model, profile)?;
+    refresh_motions(model, &mut splits);
+    Ok(splits)
+}
+
+/// Update the motions reported for the parts of `splits` from the model (after later moves or
+/// profiles; a part cut again keeps the motion it had).
+pub fn refresh_motions<M: ModelSupports>(model: &M, splits: &mut [SupportSplit]) {
+    let names = model.support_names();
+    for p in splits.iter_mut().flat_map(|s| s.parts.iter_mut()) {
+        if let Some(i) = names.iter().position(|n| *n == p.name) {
+            p.motion = model.motion(i).to_vec();
+        }
     }
 }
 

@@ -27,6 +27,7 @@ fn thick_arch(thickness: f64, crack: Option<f64>) -> Model {
             at: Some(CROWN_INTRADOS),
             joint: None,
             opening: Width::One(w),
+            ..Default::default()
         }];
     }
     m
@@ -165,6 +166,7 @@ fn bad_crack_descriptions_are_one_line_errors_naming_the_crack() {
                 at: Some(CROWN_INTRADOS),
                 joint: Some(3),
                 opening: Width::One(0.001),
+                ..Default::default()
             },
             "exactly one of",
         ),
@@ -173,6 +175,7 @@ fn bad_crack_descriptions_are_one_line_errors_naming_the_crack() {
                 at: None,
                 joint: Some(9999),
                 opening: Width::One(0.001),
+                ..Default::default()
             },
             "joint 9999 does not exist",
         ),
@@ -181,6 +184,7 @@ fn bad_crack_descriptions_are_one_line_errors_naming_the_crack() {
                 at: Some(CROWN_INTRADOS),
                 joint: None,
                 opening: Width::One(-0.001),
+                ..Default::default()
             },
             "finite number ≥ 0",
         ),
@@ -189,6 +193,7 @@ fn bad_crack_descriptions_are_one_line_errors_naming_the_crack() {
                 at: None,
                 joint: Some(3),
                 opening: Width::PerPoint(vec![0.001]),
+                ..Default::default()
             },
             "2 points, 1 widths",
         ),
@@ -210,6 +215,7 @@ fn bad_crack_descriptions_are_one_line_errors_naming_the_crack() {
         at: Some(CROWN_INTRADOS),
         joint: None,
         opening: Width::One(0.001),
+        ..Default::default()
     };
     m.cracks = vec![twice.clone(), twice];
     let e = Structure::new(&m, BuildOptions::default()).err().unwrap();

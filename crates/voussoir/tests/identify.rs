@@ -97,6 +97,7 @@ fn pattern(
                         joint: None,
                         opening: Width::One(*w),
                         tolerance: tol.map(|t| t(*w)),
+                        ..Default::default()
                     });
                 }
             }
@@ -107,6 +108,7 @@ fn pattern(
                 joint: Some(j.id),
                 opening: Width::PerPoint(ws),
                 tolerance: t,
+                ..Default::default()
             });
         }
     }
@@ -114,6 +116,7 @@ fn pattern(
         tolerance: None,
         cracks,
         unobserved: vec![],
+        ..Default::default()
     }
 }
 
@@ -416,8 +419,10 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
             joint: None,
             opening: Width::One(p.opening),
             tolerance: None,
+            ..Default::default()
         }],
         unobserved: vec![],
+        ..Default::default()
     };
     let r = run(
         &st,

@@ -36,6 +36,7 @@ fn at(x: f64, y: f64, w: f64) -> Crack {
         joint: None,
         opening: Width::One(w),
         tolerance: None,
+        ..Default::default()
     }
 }
 
@@ -62,6 +63,7 @@ fn issue_observations() -> Observations {
             at(2.562, 1.9, 0.0004),
         ],
         unobserved: vec![],
+        ..Default::default()
     }
 }
 
@@ -193,6 +195,7 @@ fn issue28_item9_identify_reports_separate_minima() {
                 joint: Some(*j),
                 opening: Width::PerPoint(w),
                 tolerance: None,
+                ..Default::default()
             }
         })
         .collect();
@@ -200,6 +203,7 @@ fn issue28_item9_identify_reports_separate_minima() {
         tolerance: Some(tau),
         cracks,
         unobserved: vec![],
+        ..Default::default()
     };
     let st = structure(&paper_arch());
     let us = unknowns(&st, &["right"], &[Component::V]);
@@ -394,12 +398,14 @@ fn issue28_item9_identify_misfit_never_above_the_true_motions() {
                 joint: Some(j.id),
                 opening: Width::PerPoint(ws),
                 tolerance: None,
+                ..Default::default()
             });
         }
         let obs = Observations {
             tolerance: Some(tau),
             cracks,
             unobserved: vec![],
+            ..Default::default()
         };
         let rest = st_moved.with_support_motions(&vec![[0.0; 3]; st_moved.supports.len()]);
         let us = unknowns(&rest, &names, &comps);

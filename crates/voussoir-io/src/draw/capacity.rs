@@ -30,12 +30,13 @@ pub fn linear_fit_text<D: Spatial>(r: &CapacityResult<D>) -> Option<LinearFitTex
     let f = r.linear_fit.as_ref()?;
     let dev = human(100.0 * f.max_relative_deviation, 3);
     if f.max_relative_deviation <= LINEAR_FIT_TOLERANCE {
+        // s in the unit of the curve's axis and of the summaries (cm, or mrad for rotations).
         Some(LinearFitText::Fits(format!(
             "λ ≈ {} {} {}·s (s in {}); largest deviation {} % of λ(0)",
             fmt_fixed(f.intercept, 4),
             if f.slope < 0.0 { "−" } else { "+" },
-            human(f.slope.abs(), 4),
-            r.unit().si(),
+            human(f.slope.abs() / r.unit().factor(), 4),
+            r.unit().shown(),
             dev
         )))
     } else {
@@ -232,6 +233,8 @@ fn largest<D: Spatial>(r: &CapacityResult<D>) -> f64 {
 /// axonometric drawing of [`crate::draw3d`]).
 pub trait CapacityFigures: Spatial + Sized {
     fn model_rows(r: &CapacityResult<Self>, source: &str) -> Vec<(String, String)>;
+    /// The geometry, loads and supports of the result for the report's inputs.
+    fn echo(r: &CapacityResult<Self>) -> crate::report_parts::ModelEcho;
     fn direction_text(d: &SupportDirection, unit: SettlementUnit) -> String;
     /// The settlement mechanism at the largest settlement and its caption, if anything moves.
     fn mechanism_figure(r: &CapacityResult<Self>, scale: Option<f64>) -> Option<(String, String)>;
@@ -253,6 +256,9 @@ fn direction_parts(d: &SupportDirection, names: &[&str], unit: SettlementUnit) -
 }
 
 impl CapacityFigures for Two {
+    fn echo(r: &CapacityResult<Two>) -> crate::report_parts::ModelEcho {
+        crate::report_parts::ModelEcho::of_2d(&r.geometry, 0)
+    }
     fn model_rows(r: &CapacityResult<Two>, source: &str) -> Vec<(String, String)> {
         model_summary(&r.geometry, 0, source)
     }
@@ -296,6 +302,9 @@ impl CapacityFigures for Two {
 }
 
 impl CapacityFigures for Three {
+    fn echo(r: &CapacityResult<Three>) -> crate::report_parts::ModelEcho {
+        crate::report_parts::ModelEcho::of_3d(&r.geometry, 0)
+    }
     fn model_rows(r: &CapacityResult<Three>, source: &str) -> Vec<(String, String)> {
         crate::result3d::model_rows_3d(&r.geometry, source)
     }
@@ -340,6 +349,24 @@ pub fn capacity_report<D: CapacityFigures>(r: &CapacityResult<D>, opts: &ReportO
             .unwrap_or_else(|| "Capacity after settlement".to_string()),
     );
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = "capacity".into();
+    let echo = D::echo(r);
+    let analysis = crate::report_parts::Analysis::Capacity;
+    rep.sections.push(crate::report_parts::hypotheses(
+        &echo,
+        opts.inputs.as_ref(),
+        analysis,
+        None,
+    ));
+    rep.sections.push(crate::report_parts::inputs(
+        &echo,
+        opts.inputs.as_ref(),
+        analysis,
+        &opts.source,
+        Some(&r.solver),
+        Vec::new(),
+    ));
     let mut kv = vec![(
         "outcome".to_string(),
         match r.status {
@@ -386,9 +413,7 @@ pub fn capacity_report<D: CapacityFigures>(r: &CapacityResult<D>, opts: &ReportO
         "LP solves / simplex iterations".into(),
         format!("{} / {}", r.solves, r.iterations),
     ));
-    rep.section("Key numbers").key_values(kv);
-    rep.section("Model")
-        .key_values(D::model_rows(r, &opts.source));
+    rep.section("Results").key_values(kv);
     let sec = rep.section("Figures");
     let p = capacity_plot(&[("λ(s)", r)], "Collapse load multiplier after settlement");
     sec.figure(

@@ -5,9 +5,11 @@ use super::plot::{plot, Mark, Plot, PlotSpec, Series, SERIES_COLOURS};
 use super::report::{model_summary, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
+use crate::lengths::Length;
 use voussoir::analysis::incremental::{EventKind, IncrementalResult};
 
-/// The curve of one result: control displacement in mm against λ = max(λ, 0). Two points at
+/// The curve of one result: control displacement in cm (the summaries' unit of displacements,
+/// [`crate::lengths`]) against λ = max(λ, 0). Two points at
 /// the same displacement (just before and just after a closure) draw the jump.
 pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> Series {
     Series {
@@ -17,7 +19,7 @@ pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> S
             .iter()
             .map(|p| {
                 if p.displacement.is_finite() && p.load_multiplier.is_finite() {
-                    [p.displacement * 1000.0, p.load_multiplier]
+                    [p.displacement * Length::Motion.factor(), p.load_multiplier]
                 } else {
                     [f64::NAN, f64::NAN]
                 }
@@ -45,7 +47,7 @@ pub fn incremental_plot(curves: &[(&str, &IncrementalResult)], title: &str) -> P
             && r.peak_load_multiplier > 0.0
         {
             marks.push(Mark::new(
-                r.peak_displacement * 1000.0,
+                r.peak_displacement * Length::Motion.factor(),
                 r.peak_load_multiplier,
                 format!("peak λ = {}", fmt_fixed(r.peak_load_multiplier, 3)),
             ));
@@ -55,7 +57,7 @@ pub fn incremental_plot(curves: &[(&str, &IncrementalResult)], title: &str) -> P
         &series,
         &PlotSpec {
             title: title.to_string(),
-            x_label: "control displacement dx (mm)".into(),
+            x_label: format!("control displacement dx ({})", Length::Motion.unit()),
             y_label: "load multiplier λ".into(),
             marks,
             id: "inc".into(),
@@ -96,7 +98,11 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         ),
         (
             "at control displacement".into(),
-            format!("{} mm", human(r.peak_displacement * 1000.0, 4)),
+            format!(
+                "{} {}",
+                human(r.peak_displacement * Length::Motion.factor(), 4),
+                Length::Motion.unit()
+            ),
         ),
         (
             "joints open at the start".into(),
@@ -127,8 +133,9 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
     };
     for (k, s) in picks.into_iter().enumerate() {
         let title = format!(
-            "Mechanism at dx = {} mm (λ = {})",
-            human(s.displacement * 1000.0, 4),
+            "Mechanism at dx = {} {} (λ = {})",
+            human(s.displacement * Length::Motion.factor(), 4),
+            Length::Motion.unit(),
             fmt_fixed(s.load_multiplier, 4)
         );
         let mut scene = Scene::geometry(&s.geometry, &title);
@@ -153,7 +160,7 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         .map(|e| {
             vec![
                 e.step.to_string(),
-                fmt_fixed(e.displacement * 1000.0, 4),
+                Length::Motion.number(e.displacement),
                 match e.kind {
                     EventKind::Opened => "opened".to_string(),
                     EventKind::Closed => "closed".to_string(),
@@ -166,10 +173,15 @@ pub fn incremental_report(r: &IncrementalResult, opts: &ReportOptions) -> Report
         .collect();
     rep.section("Events").collapsed_table(
         "Contact changes",
-        ["step", "dx (mm)", "event", "joint", "x (m)", "y (m)"]
-            .iter()
-            .map(|s| s.to_string())
-            .collect(),
+        [
+            "step".to_string(),
+            format!("dx ({})", Length::Motion.unit()),
+            "event".to_string(),
+            "joint".to_string(),
+            "x (m)".to_string(),
+            "y (m)".to_string(),
+        ]
+        .to_vec(),
         rows,
     );
     rep

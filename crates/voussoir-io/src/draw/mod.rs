@@ -14,6 +14,7 @@ pub mod capacity;
 pub mod distribution;
 pub mod identify;
 pub mod incremental;
+pub(crate) mod legend;
 pub mod plot;
 pub mod png;
 pub mod report;
@@ -28,7 +29,7 @@ pub use plot::{plot, plot_curves, Mark, Plot, PlotSpec, Series};
 pub use png::svg_to_png;
 pub use report::{limit_report, settlement_report, Report, ReportOptions, Section};
 pub use safety::{safety_figure, safety_report};
-pub use scene::{draw, DrawOptions, Drawing, Frame, MotionUnits, Scene};
+pub use scene::{draw, DrawOptions, Drawing, Frame, MotionUnits, PressurePoints, Scene};
 
 use crate::draw3d::{draw3d, Draw3dOptions, View};
 use crate::result3d::{Figure3d, Result3d};
@@ -238,6 +239,7 @@ pub fn tilt_scene(r: &TiltResult) -> Scene<'_> {
             0,
             format!("critical tilt angle α = {a:.3}°   ·   live load: horizontal, λ = tan α"),
         );
+        scene.tilt = Some((a, format!("towards {towards}")));
     }
     scene
 }
@@ -263,7 +265,7 @@ pub fn draw_saved(
 /// Draw a saved file, with an optional title: a structure (2D scene, or the 3D drawing of
 /// [`crate::draw3d`] seen from `view`), a capacity or incremental result as its curve, a
 /// safety result as its chart of reaction ranges. Of `opts`, 3D drawings use the scale, the
-/// width, `deformed` and `dead_loads`. Fails only on a 3D result whose shapes cannot be drawn.
+/// width, `deformed`, `dead_loads` and `pressure_points`. Fails only on a 3D result whose shapes cannot be drawn.
 pub fn draw_saved_view(
     saved: &Saved,
     opts: &DrawOptions,
@@ -287,6 +289,7 @@ pub fn draw_saved_view(
             width: opts.width,
             deformed: opts.deformed,
             dead_loads: opts.dead_loads,
+            pressure_points: opts.pressure_points,
             title: title.map(str::to_string),
             ..Draw3dOptions::default()
         };

@@ -455,7 +455,16 @@ pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
         }
     }
 
-    // Marks: a ring and a label beside it.
+    // Marks: a ring and a label beside it, on a white box, placed where the box crosses no
+    // curve, no other label and stays in the plot area (the first of the places around the
+    // ring that does; else the one crossing fewest curve segments).
+    let segments: Vec<([f64; 2], [f64; 2])> = series
+        .iter()
+        .flat_map(|s| s.points.windows(2))
+        .filter(|w2| finite(&w2[0]) && finite(&w2[1]))
+        .map(|w2| ([px(w2[0][0]), py(w2[0][1])], [px(w2[1][0]), py(w2[1][1])]))
+        .collect();
+    let mut placed: Vec<[f64; 4]> = Vec::new();
     for m in spec
         .marks
         .iter()
@@ -465,24 +474,32 @@ pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
         if x < left - 1.0 || x > right + 1.0 || y < top - 1.0 || y > bottom + 1.0 {
             continue;
         }
-        let tw = text_width(&m.label, 12.5);
-        let (tx, anchor) = if x + 10.0 + tw > right - 4.0 {
-            (x - 9.0, "end")
-        } else {
-            (x + 9.0, "start")
-        };
-        let ty = if y - 10.0 < top + 14.0 {
-            y + 20.0
-        } else {
-            y - 10.0
-        };
+        let (fs, ring) = (12.5, 6.0);
+        let tw = mark_label_width(&m.label, fs);
+        let place = mark_label_place(
+            x,
+            y,
+            tw,
+            fs,
+            ring,
+            [left, top, right, bottom],
+            &segments,
+            &placed,
+        );
+        placed.push(place.bbox);
+        let [bx0, by0, bx1, by1] = place.bbox;
         let _ = writeln!(
             o,
-            "<g class=\"mark\"><circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"none\" stroke=\"#111111\" stroke-width=\"1.6\"/><text x=\"{}\" y=\"{}\" font-size=\"12.5\" fill=\"#111111\" text-anchor=\"{anchor}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">{}</text></g>",
+            "<g class=\"mark\"><circle cx=\"{}\" cy=\"{}\" r=\"{ring}\" fill=\"none\" stroke=\"#111111\" stroke-width=\"1.6\"/><rect class=\"mark-box\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#ffffff\" fill-opacity=\"0.9\" rx=\"2\"/><text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#111111\" text-anchor=\"{}\">{}</text></g>",
             num(x),
             num(y),
-            num(tx),
-            num(ty),
+            num(bx0),
+            num(by0),
+            num(bx1 - bx0),
+            num(by1 - by0),
+            num(place.x),
+            num(place.y),
+            place.anchor,
             esc(&m.label)
         );
     }
@@ -593,6 +610,131 @@ pub fn plot(series: &[Series], spec: &PlotSpec) -> Plot {
         y_axis: ya,
         area: [left, top, right, bottom],
     }
+}
+
+/// Width of a mark's label with 8 % to spare (for a browser's substitute font).
+pub(crate) fn mark_label_width(label: &str, fs: f64) -> f64 {
+    1.08 * text_width(label, fs)
+}
+
+/// Where a mark's label goes: its text position and anchor, and the box it takes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LabelPlace {
+    pub x: f64,
+    pub y: f64,
+    pub anchor: &'static str,
+    /// `[x0, y0, x1, y1]` in pixels.
+    pub bbox: [f64; 4],
+}
+
+/// Whether segment `a`–`b` meets the box `[x0, y0, x1, y1]` (Liang–Barsky clipping).
+pub(crate) fn segment_meets_box(a: [f64; 2], b: [f64; 2], bx: [f64; 4]) -> bool {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, a[0] - bx[0]),
+        (dx, bx[2] - a[0]),
+        (-dy, a[1] - bx[1]),
+        (dy, bx[3] - a[1]),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+            if t0 > t1 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The place of a label `tw` pixels wide beside a ring of radius `ring` at `(x, y)` in the
+/// plot area `area`: the first of eight places (above right, below right, above left, below
+/// left, right, left, then farther above and below) whose box stays in the area and meets no
+/// segment and no box in `taken`; else the one meeting fewest segments.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn mark_label_place(
+    x: f64,
+    y: f64,
+    tw: f64,
+    fs: f64,
+    ring: f64,
+    area: [f64; 4],
+    segments: &[([f64; 2], [f64; 2])],
+    taken: &[[f64; 4]],
+) -> LabelPlace {
+    let pad = 2.0;
+    let gap = ring + 4.0;
+    let place = |dx: f64, dy: f64, start: bool| {
+        let tx = if start { x + dx } else { x - dx };
+        let ty = y + dy;
+        let (x0, x1) = if start { (tx, tx + tw) } else { (tx - tw, tx) };
+        LabelPlace {
+            x: tx,
+            y: ty,
+            anchor: if start { "start" } else { "end" },
+            bbox: [
+                x0 - pad,
+                ty - 0.8 * fs - pad,
+                x1 + pad,
+                ty + 0.25 * fs + pad,
+            ],
+        }
+    };
+    let above = -gap;
+    let below = gap + 0.8 * fs;
+    let candidates = [
+        place(gap, above, true),
+        place(gap, below, true),
+        place(gap, above, false),
+        place(gap, below, false),
+        place(gap + 2.0, 0.3 * fs, true),
+        place(gap + 2.0, 0.3 * fs, false),
+        place(gap, above - fs - 6.0, true),
+        place(gap, below + fs + 6.0, true),
+        place(gap, above - fs - 6.0, false),
+        place(gap, below + fs + 6.0, false),
+    ];
+    let inside =
+        |b: &[f64; 4]| b[0] >= area[0] && b[2] <= area[2] && b[1] >= area[1] && b[3] <= area[3];
+    let overlaps =
+        |b: &[f64; 4], c: &[f64; 4]| b[0] < c[2] && c[0] < b[2] && b[1] < c[3] && c[1] < b[3];
+    // Curves are drawn 2.2 pixels wide: a box within 1.5 pixels of one is struck through.
+    let crossings = |b: &[f64; 4]| {
+        let g = [b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5];
+        segments
+            .iter()
+            .filter(|(p, q)| segment_meets_box(*p, *q, g))
+            .count()
+    };
+    let ring_box = [
+        x - ring - 1.0,
+        y - ring - 1.0,
+        x + ring + 1.0,
+        y + ring + 1.0,
+    ];
+    let mut best: Option<(usize, LabelPlace)> = None;
+    for c in candidates {
+        if !inside(&c.bbox) || overlaps(&c.bbox, &ring_box) {
+            continue;
+        }
+        let n = crossings(&c.bbox) + 1000 * taken.iter().filter(|t| overlaps(&c.bbox, t)).count();
+        if n == 0 {
+            return c;
+        }
+        if best.as_ref().is_none_or(|(m, _)| n < *m) {
+            best = Some((n, c));
+        }
+    }
+    best.map_or(candidates[0], |(_, c)| c)
 }
 
 #[cfg(test)]

@@ -15,18 +15,39 @@ use voussoir::result::{BodyName, Geometry, JointResult, JointState};
 pub enum Item {
     /// A paragraph of plain text.
     Text(String),
+    /// A sub-heading.
+    Heading(String),
+    /// A bulleted list of plain-text sentences.
+    List(Vec<String>),
     /// A two-column table of names and values.
     KeyValues(Vec<(String, String)>),
-    /// A table with a header row; `collapsed` puts it in a `<details>` element.
+    /// A table with a header row and footer rows (totals); `collapsed` puts it in a
+    /// `<details>` element (not printed).
     Table {
         caption: String,
         head: Vec<String>,
         rows: Vec<Vec<String>>,
+        foot: Vec<Vec<String>>,
         collapsed: bool,
     },
     /// An inline SVG figure with its caption. A drawing made with `interactive: true` gets a
     /// displacement-scale slider.
     Figure { svg: String, caption: String },
+    /// HTML written as is (our own markup only).
+    Html(String),
+}
+
+impl Item {
+    /// A table that is not collapsed and has no footer.
+    pub fn table(caption: impl Into<String>, head: Vec<String>, rows: Vec<Vec<String>>) -> Item {
+        Item::Table {
+            caption: caption.into(),
+            head,
+            rows,
+            foot: Vec::new(),
+            collapsed: false,
+        }
+    }
 }
 
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -50,12 +71,7 @@ impl Section {
         head: Vec<String>,
         rows: Vec<Vec<String>>,
     ) -> &mut Self {
-        self.items.push(Item::Table {
-            caption: caption.into(),
-            head,
-            rows,
-            collapsed: false,
-        });
+        self.items.push(Item::table(caption, head, rows));
         self
     }
     pub fn collapsed_table(
@@ -68,6 +84,7 @@ impl Section {
             caption: caption.into(),
             head,
             rows,
+            foot: Vec::new(),
             collapsed: true,
         });
         self
@@ -86,6 +103,9 @@ impl Section {
 pub struct Report {
     pub title: String,
     pub subtitle: String,
+    /// The model file and the analysis, shown in the title block and the page footer.
+    pub source: String,
+    pub command: String,
     pub sections: Vec<Section>,
 }
 
@@ -112,11 +132,19 @@ impl Report {
         o.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
         o.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
         let _ = writeln!(o, "<title>{}</title>", esc(&self.title));
-        let _ = writeln!(o, "<style>\n{CSS}</style>\n</head>\n<body>\n<main>");
+        let _ = writeln!(
+            o,
+            "<style>\n{CSS}{}</style>\n</head>\n<body>\n<main>",
+            crate::report_parts::print_css(&self.title, &self.source)
+        );
         let _ = writeln!(o, "<h1>{}</h1>", esc(&self.title));
         if !self.subtitle.is_empty() {
             let _ = writeln!(o, "<p class=\"subtitle\">{}</p>", esc(&self.subtitle));
         }
+        o.push_str(&crate::report_parts::title_block(
+            &self.source,
+            &self.command,
+        ));
         if self.sections.len() > 2 {
             o.push_str("<nav><ul>");
             for (i, s) in self.sections.iter().enumerate() {
@@ -131,79 +159,9 @@ impl Report {
         }
         let mut fig = 0;
         for (i, s) in self.sections.iter().enumerate() {
-            let _ = writeln!(
-                o,
-                "<section id=\"s{}\">\n<h2>{}</h2>",
-                i + 1,
-                esc(&s.heading)
-            );
-            for item in &s.items {
-                match item {
-                    Item::Text(t) => {
-                        let _ = writeln!(o, "<p>{}</p>", esc(t));
-                    }
-                    Item::KeyValues(kv) => {
-                        o.push_str("<table class=\"kv\">\n");
-                        for (k, v) in kv {
-                            let _ = writeln!(o, "<tr><th>{}</th><td>{}</td></tr>", esc(k), esc(v));
-                        }
-                        o.push_str("</table>\n");
-                    }
-                    Item::Table {
-                        caption,
-                        head,
-                        rows,
-                        collapsed,
-                    } => {
-                        if *collapsed {
-                            let _ = writeln!(
-                                o,
-                                "<details><summary>{} ({} rows)</summary>",
-                                esc(caption),
-                                rows.len()
-                            );
-                        } else if !caption.is_empty() {
-                            let _ = writeln!(o, "<h3>{}</h3>", esc(caption));
-                        }
-                        o.push_str("<div class=\"scroll\"><table class=\"grid\">\n<thead><tr>");
-                        for h in head {
-                            let _ = write!(o, "<th>{}</th>", esc(h));
-                        }
-                        o.push_str("</tr></thead>\n<tbody>\n");
-                        for r in rows {
-                            o.push_str("<tr>");
-                            for c in r {
-                                let _ = write!(o, "<td>{}</td>", esc(c));
-                            }
-                            o.push_str("</tr>\n");
-                        }
-                        o.push_str("</tbody></table></div>\n");
-                        if *collapsed {
-                            o.push_str("</details>\n");
-                        }
-                    }
-                    Item::Figure { svg, caption } => {
-                        fig += 1;
-                        let _ = writeln!(o, "<figure id=\"fig{fig}\">");
-                        if svg.contains("data-motions=\"") {
-                            let _ = writeln!(
-                                o,
-                                "<div class=\"slider\"><label>displacement scale × <output>1</output> <input type=\"range\" min=\"0\" max=\"3\" step=\"0.01\" value=\"1\" aria-label=\"displacement scale\"></label> <button type=\"button\">reset</button></div>"
-                            );
-                        }
-                        // The SVG is our own output: written as is (no XML prolog).
-                        o.push_str(svg.trim_end());
-                        o.push('\n');
-                        let _ = writeln!(
-                            o,
-                            "<figcaption>Figure {fig}. {}</figcaption>\n</figure>",
-                            esc(caption)
-                        );
-                    }
-                }
-            }
-            o.push_str("</section>\n");
+            section_html(&mut o, s, &format!("s{}", i + 1), &mut fig);
         }
+        o.push_str(crate::report_parts::sign_off());
         let _ = writeln!(
             o,
             "<footer>voussoir {} — rigid no-tension blocks in unilateral contact. Units: m, kN, kN·m.</footer>",
@@ -214,7 +172,111 @@ impl Report {
     }
 }
 
-const CSS: &str = r#"body{margin:0;background:#f4f3ef;color:#1d1d1d;font:15px/1.5 "DejaVu Sans",Verdana,Arial,sans-serif}
+/// Tables of up to this many rows are not broken across printed pages.
+const KEEP_ROWS: usize = 30;
+
+/// One section as HTML (`id`: its anchor); figures are numbered on from `fig`.
+pub(crate) fn section_html(o: &mut String, s: &Section, id: &str, fig: &mut usize) {
+    let _ = writeln!(o, "<section id=\"{id}\">\n<h2>{}</h2>", esc(&s.heading));
+    for item in &s.items {
+        match item {
+            Item::Text(t) => {
+                let _ = writeln!(o, "<p>{}</p>", esc(t));
+            }
+            Item::Heading(t) => {
+                let _ = writeln!(o, "<h3>{}</h3>", esc(t));
+            }
+            Item::Html(h) => o.push_str(h),
+            Item::List(v) => {
+                o.push_str("<ul class=\"hyp\">\n");
+                for t in v {
+                    let _ = writeln!(o, "<li>{}</li>", esc(t));
+                }
+                o.push_str("</ul>\n");
+            }
+            Item::KeyValues(kv) => {
+                o.push_str("<table class=\"kv\">\n");
+                for (k, v) in kv {
+                    let _ = writeln!(o, "<tr><th>{}</th><td>{}</td></tr>", esc(k), esc(v));
+                }
+                o.push_str("</table>\n");
+            }
+            Item::Table {
+                caption,
+                head,
+                rows,
+                foot,
+                collapsed,
+            } => {
+                if *collapsed {
+                    let _ = writeln!(
+                        o,
+                        "<details><summary>{} ({} rows)</summary>",
+                        esc(caption),
+                        rows.len()
+                    );
+                } else if !caption.is_empty() {
+                    let _ = writeln!(o, "<h3>{}</h3>", esc(caption));
+                }
+                // A table that fits on a printed page is kept whole; a longer one breaks
+                // between rows, its header repeated.
+                o.push_str(if rows.len() + foot.len() <= KEEP_ROWS {
+                    "<div class=\"scroll keep\"><table class=\"grid\">\n<thead><tr>"
+                } else {
+                    "<div class=\"scroll\"><table class=\"grid\">\n<thead><tr>"
+                });
+                for h in head {
+                    let _ = write!(o, "<th>{}</th>", esc(h));
+                }
+                o.push_str("</tr></thead>\n<tbody>\n");
+                for r in rows {
+                    o.push_str("<tr>");
+                    for c in r {
+                        let _ = write!(o, "<td>{}</td>", esc(c));
+                    }
+                    o.push_str("</tr>\n");
+                }
+                o.push_str("</tbody>");
+                if !foot.is_empty() {
+                    o.push_str("\n<tfoot>\n");
+                    for r in foot {
+                        o.push_str("<tr class=\"total\">");
+                        for c in r {
+                            let _ = write!(o, "<td>{}</td>", esc(c));
+                        }
+                        o.push_str("</tr>\n");
+                    }
+                    o.push_str("</tfoot>");
+                }
+                o.push_str("</table></div>\n");
+                if *collapsed {
+                    o.push_str("</details>\n");
+                }
+            }
+            Item::Figure { svg, caption } => {
+                *fig += 1;
+                let _ = writeln!(o, "<figure id=\"fig{fig}\">");
+                if svg.contains("data-motions=\"") {
+                    let _ = writeln!(
+                        o,
+                        "<div class=\"slider\"><label>displacement scale × <output>1</output> <input type=\"range\" min=\"0\" max=\"3\" step=\"0.01\" value=\"1\" aria-label=\"displacement scale\"></label> <button type=\"button\">reset</button></div>"
+                    );
+                }
+                // The SVG is our own output: written as is (no XML prolog).
+                o.push_str(svg.trim_end());
+                o.push('\n');
+                let _ = writeln!(
+                    o,
+                    "<figcaption>Figure {fig}. {}</figcaption>\n</figure>",
+                    esc(caption)
+                );
+            }
+        }
+    }
+    o.push_str("</section>\n");
+}
+
+pub(crate) const CSS: &str = r#"body{margin:0;background:#f4f3ef;color:#1d1d1d;font:15px/1.5 "DejaVu Sans",Verdana,Arial,sans-serif}
 main{max-width:1060px;margin:0 auto;padding:24px 28px 40px;background:#ffffff;box-shadow:0 0 12px rgba(0,0,0,.06)}
 h1{font-size:26px;margin:4px 0 2px;font-weight:600}
 h2{font-size:19px;margin:30px 0 10px;padding-bottom:4px;border-bottom:2px solid #e3dccb;font-weight:600}
@@ -298,6 +360,9 @@ pub struct ReportOptions {
     pub source: String,
     /// Displacement scale of the mechanism figure (`None`: automatic).
     pub scale: Option<f64>,
+    /// What the model and the command add (materials, joint laws, tolerances); `None`: the
+    /// report says that the joint laws were not recorded.
+    pub inputs: Option<crate::report_parts::ReportInputs>,
 }
 
 fn f4(x: f64) -> String {
@@ -443,46 +508,8 @@ fn joint_rows(joints: &[JointResult]) -> Vec<Vec<String>> {
         .collect()
 }
 
-fn reaction_rows(r: &[voussoir::result::Reaction]) -> Vec<Vec<String>> {
-    r.iter()
-        .map(|re| vec![re.support.clone(), f4(re.fx), f4(re.fy), f4(re.m)])
-        .collect()
-}
-
 fn strings(v: &[&str]) -> Vec<String> {
     v.iter().map(|s| s.to_string()).collect()
-}
-
-/// Hinge, reaction and joint tables of a mechanism; `titles`: hinge table, reaction table,
-/// opening column.
-fn joint_sections(
-    sec: &mut Section,
-    (hinges, joints, reactions): (
-        &[voussoir::result::Hinge],
-        &[JointResult],
-        &[voussoir::result::Reaction],
-    ),
-    titles: [&str; 3],
-) {
-    if !hinges.is_empty() {
-        sec.table(
-            titles[0],
-            strings(&["joint", "body a", "body b", "x (m)", "y (m)", "N (kN)"]),
-            hinge_rows(hinges, joints),
-        );
-    }
-    sec.table(
-        titles[1],
-        strings(&["support", "Fx (kN)", "Fy (kN)", "M (kN·m)"]),
-        reaction_rows(reactions),
-    );
-    sec.collapsed_table(
-        "All joints",
-        strings(&[
-            "joint", "body a", "body b", "state", "N (kN)", "V (kN)", "e (m)", titles[2],
-        ]),
-        joint_rows(joints),
-    );
 }
 
 fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f64>, what: &str) {
@@ -516,7 +543,7 @@ fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f
         sec.figure(
             d1.svg,
             format!(
-                "{what}: deformed configuration (displacements × {}; drag the slider to change), undeformed outline dashed, hinges as dots, cracks as red wedges, thrust line in blue.",
+                "{what}: deformed configuration (displacements × {}; on screen the slider changes the scale), undeformed outline dashed, hinges as dots, cracks as red wedges, thrust line in blue.",
                 human(d1.scale, 4)
             ),
         );
@@ -539,14 +566,139 @@ fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f
     );
 }
 
+/// The crack table (mm) and the reaction table (with the total force) of a 2D result, and the
+/// check of the vertical reactions against the total weight.
+fn result_tables(
+    sec: &mut Section,
+    joints: &[JointResult],
+    reactions: &[voussoir::result::Reaction],
+    echo: &crate::report_parts::ModelEcho,
+    vertical_check: bool,
+) {
+    use crate::report_parts as rp;
+    let cracks = rp::crack_rows_2d(joints);
+    if cracks.is_empty() {
+        sec.items.push(Item::Heading("Cracks".into()));
+        sec.text("No joint opens or slides.");
+    } else {
+        let (head, rows) = rp::crack_table(&cracks, 2);
+        sec.table(
+            "Cracks (position: centroid of the opened part; width: largest opening; length: of the opened part)",
+            head,
+            rows,
+        );
+    }
+    let rows: Vec<_> = reactions
+        .iter()
+        .map(|re| {
+            (
+                re.support.clone(),
+                vec![re.fx, re.fy],
+                vec![re.m],
+                vec![re.cx, re.cy],
+            )
+        })
+        .collect();
+    let (head, rows, foot) = rp::reaction_table(&rows, 2);
+    sec.items.push(Item::Table {
+        caption: "Support reactions (forces of each support on the structure)".into(),
+        head,
+        rows,
+        foot,
+        collapsed: false,
+    });
+    if vertical_check && !reactions.is_empty() {
+        let fy: f64 = reactions.iter().map(|r| r.fy).sum();
+        let w = echo.total_weight();
+        sec.text(format!(
+            "Check: the vertical reactions sum to {} kN; the total weight W is {} kN (difference {} kN).",
+            human(fy, 8),
+            human(w, 8),
+            human(fy - w, 2)
+        ));
+    }
+}
+
+fn hinges_and_joints(
+    sec: &mut Section,
+    r: (&[voussoir::result::Hinge], &[JointResult]),
+    title: &str,
+) {
+    let (hinges, joints) = r;
+    if !hinges.is_empty() {
+        sec.table(
+            title,
+            strings(&["joint", "body a", "body b", "x (m)", "y (m)", "N (kN)"]),
+            hinge_rows(hinges, joints),
+        );
+    }
+    sec.collapsed_table(
+        "All joints",
+        strings(&[
+            "joint",
+            "body a",
+            "body b",
+            "state",
+            "N (kN)",
+            "V (kN)",
+            "e (m)",
+            "max opening (m)",
+        ]),
+        joint_rows(joints),
+    );
+}
+
 /// Report of a limit analysis.
 pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
+    use crate::report_parts::{self as rp, Analysis, ModelEcho};
     let mut rep = Report::new(
         opts.title
             .clone()
             .unwrap_or_else(|| "Limit analysis".to_string()),
     );
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = opts
+        .inputs
+        .as_ref()
+        .map(|i| i.command.clone())
+        .unwrap_or_else(|| "limit".into());
+    let echo = ModelEcho::of_2d(&r.geometry, r.joints.len());
+    let analysis = Analysis::Limit(r.load_multiplier);
+    rep.sections.push(rp::hypotheses(
+        &echo,
+        opts.inputs.as_ref(),
+        analysis,
+        r.friction_iteration.as_ref(),
+    ));
+    let mut cert = Vec::new();
+    match &r.certificate {
+        Some(c) => cert.push((
+            "certificate of λ".to_string(),
+            format!(
+                "gap |λ − λ_kin|/|λ| = {}, admissibility {} — {}",
+                human(c.gap, 3),
+                human(c.admissibility, 3),
+                if c.ok {
+                    "certified (≤ 1e-6)"
+                } else {
+                    "NOT certified"
+                }
+            ),
+        )),
+        None => cert.push((
+            "certificate of λ".to_string(),
+            "not computed for this outcome or joint law".to_string(),
+        )),
+    }
+    rep.sections.push(rp::inputs(
+        &echo,
+        opts.inputs.as_ref(),
+        analysis,
+        &opts.source,
+        Some(&r.solver),
+        cert,
+    ));
     let mut kv = vec![(
         "outcome".to_string(),
         match r.status {
@@ -556,7 +708,10 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
         },
     )];
     if let Some(l) = r.load_multiplier {
-        kv.push(("collapse load multiplier λ".into(), fmt_fixed(l, 6)));
+        kv.push((
+            "collapse load multiplier λ (safety factor on the live loads)".into(),
+            fmt_fixed(l, 6),
+        ));
     }
     if let (Some(wd), Some(wl)) = (r.work_dead_loads, r.work_live_loads) {
         kv.push((
@@ -571,9 +726,10 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
     }
     kv.push(("hinges".into(), r.hinges.len().to_string()));
     kv.push(("simplex iterations".into(), r.iterations.to_string()));
-    rep.section("Key numbers").key_values(kv);
-    rep.section("Model")
-        .key_values(model_summary(&r.geometry, r.joints.len(), &opts.source));
+    let res = rep.section("Results");
+    res.key_values(kv);
+    res.text("The mechanism of a limit analysis is a rate (normalised to unit work of the live loads): its crack widths compare the joints' openings with each other, they are not millimetres of a real displacement; the positions and lengths are geometric.");
+    result_tables(res, &r.joints, &r.reactions, &echo, false);
     figures(
         rep.section("Figures"),
         Scene::limit(r),
@@ -581,26 +737,69 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
         opts.scale,
         "Collapse mechanism",
     );
-    joint_sections(
-        rep.section("Hinges, reactions and joints"),
-        (&r.hinges, &r.joints, &r.reactions),
-        [
-            "Hinges of the collapse mechanism",
-            "Support reactions at collapse",
-            "max opening",
-        ],
+    hinges_and_joints(
+        rep.section("Hinges and joints"),
+        (&r.hinges, &r.joints),
+        "Hinges of the collapse mechanism",
     );
     rep
 }
 
 /// Report of a settlement analysis.
 pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
+    use crate::report_parts::{self as rp, Analysis, ModelEcho};
     let mut rep = Report::new(
         opts.title
             .clone()
             .unwrap_or_else(|| "Settlement analysis".to_string()),
     );
     rep.subtitle = r.message.clone();
+    rep.source = opts.source.clone();
+    rep.command = opts
+        .inputs
+        .as_ref()
+        .map(|i| i.command.clone())
+        .unwrap_or_else(|| "settle".into());
+    let echo = ModelEcho::of_2d(&r.geometry, r.joints.len());
+    rep.sections.push(rp::hypotheses(
+        &echo,
+        opts.inputs.as_ref(),
+        Analysis::Settlement,
+        r.friction_iteration.as_ref(),
+    ));
+    let mut cert = Vec::new();
+    if let Some(c) = &r.certificate {
+        cert.push((
+            "duality certificate".into(),
+            format!(
+                "relative gap {} — {}",
+                human(c.relative_gap, 3),
+                if c.ok {
+                    "certified (≤ 1e-7)"
+                } else {
+                    "NOT certified"
+                }
+            ),
+        ));
+        cert.push((
+            "complementarity, max |opening × N|".into(),
+            format!("{} kN·m", human(c.complementarity, 3)),
+        ));
+        cert.push((
+            "equilibrium residual".into(),
+            format!("{} kN", human(c.equilibrium_residual, 3)),
+        ));
+    } else {
+        cert.push(("duality certificate".into(), "none (no mechanism)".into()));
+    }
+    rep.sections.push(rp::inputs(
+        &echo,
+        opts.inputs.as_ref(),
+        Analysis::Settlement,
+        &opts.source,
+        Some(&r.solver),
+        cert,
+    ));
     let mut kv = Vec::new();
     if let Some(m) = super::scene::support_motion_text(&r.geometry) {
         kv.push((
@@ -622,26 +821,6 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
             "work on the supports (dual)".into(),
             format!("{} kN·m", human(c.dual, 10)),
         ));
-        kv.push((
-            "duality certificate".into(),
-            format!(
-                "relative gap {} — {}",
-                human(c.relative_gap, 3),
-                if c.ok {
-                    "certified (≤ 1e-7)"
-                } else {
-                    "NOT certified"
-                }
-            ),
-        ));
-        kv.push((
-            "complementarity, max |opening × N|".into(),
-            format!("{} kN·m", human(c.complementarity, 3)),
-        ));
-        kv.push((
-            "equilibrium residual".into(),
-            format!("{} kN", human(c.equilibrium_residual, 3)),
-        ));
     }
     let open = r
         .joints
@@ -657,24 +836,9 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
         "largest block-centroid displacement".into(),
         format!("{} mm", human(dmax * 1000.0, 4)),
     ));
-    rep.section("Key numbers").key_values(kv);
-    // A settlement analysis has no λ: the model's live loads are listed as not applied.
-    let model: Vec<(String, String)> = model_summary(&r.geometry, r.joints.len(), &opts.source)
-        .into_iter()
-        .map(|(k, v)| {
-            if k == "live loads (× λ)" {
-                let v = if v == "none" {
-                    v
-                } else {
-                    format!("{v}; not applied (a settlement analysis has no λ)")
-                };
-                ("live loads".to_string(), v)
-            } else {
-                (k, v)
-            }
-        })
-        .collect();
-    rep.section("Model").key_values(model);
+    let res = rep.section("Results");
+    res.key_values(kv);
+    result_tables(res, &r.joints, &r.reactions, &echo, true);
     figures(
         rep.section("Figures"),
         Scene::settlement(r),
@@ -682,10 +846,10 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
         opts.scale,
         "Settlement mechanism",
     );
-    joint_sections(
-        rep.section("Hinges, reactions and joints"),
-        (&r.hinges, &r.joints, &r.reactions),
-        ["Hinges", "Support reactions", "max opening (m)"],
+    hinges_and_joints(
+        rep.section("Hinges and joints"),
+        (&r.hinges, &r.joints),
+        "Hinges",
     );
     rep
 }

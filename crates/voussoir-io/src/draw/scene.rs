@@ -7,6 +7,7 @@
 //! so each macro-block moves as one rigid piece and is drawn in one colour; a block at rest is
 //! drawn in stone grey.
 
+use super::legend::Entry;
 use super::svg::{
     arrow, esc, fmt_fixed, human, nice, num, points_attr, polygon_path, text_width, FONT,
 };
@@ -48,6 +49,12 @@ pub struct Scene<'a> {
     /// Whether the analysis multiplies the live loads by λ (limit analyses, models). A
     /// settlement analysis has no λ and ignores live loads: they are not drawn.
     pub live_loads: bool,
+    /// The collapse load multiplier the live loads are multiplied by (a limit analysis that
+    /// found a mechanism): the legend states the factored load. `None`: drawn unfactored.
+    pub load_multiplier: Option<f64>,
+    /// A tilting table: the critical tilt angle α (degrees) and where the structure falls
+    /// ("towards +x"), for the legend.
+    pub tilt: Option<(f64, String)>,
 }
 
 impl<'a> Scene<'a> {
@@ -76,6 +83,8 @@ impl<'a> Scene<'a> {
             thrust_line: &[],
             units: MotionUnits::Metres,
             live_loads: true,
+            load_multiplier: None,
+            tilt: None,
         }
     }
 
@@ -105,6 +114,10 @@ impl<'a> Scene<'a> {
             thrust_line: &r.thrust_line,
             units: MotionUnits::Normalised,
             live_loads: true,
+            load_multiplier: r
+                .load_multiplier
+                .filter(|l| l.is_finite() && r.status == LimitStatus::Collapse),
+            tilt: None,
         }
     }
 
@@ -145,6 +158,8 @@ impl<'a> Scene<'a> {
             thrust_line: &r.thrust_line,
             units: MotionUnits::Metres,
             live_loads: false,
+            load_multiplier: None,
+            tilt: None,
         }
     }
 }
@@ -246,6 +261,33 @@ pub fn support_motion_text(g: &Geometry) -> Option<String> {
     Some(format!("prescribed support motion: {}", parts.join("; ")))
 }
 
+/// Whether the centres of pressure are drawn as dots (2D and 3D drawings).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum PressurePoints {
+    /// Dots on a 2D thrust line (an arch's chain of joints) always; dots on their own (walls,
+    /// façades, every 3D drawing) only when there are at most [`PRESSURE_POINTS_AUTO`].
+    #[default]
+    Auto,
+    /// Every centre of pressure.
+    On,
+    /// None (a 2D thrust line is still drawn).
+    Off,
+}
+
+/// [`PressurePoints::Auto`] draws lone centres of pressure up to this many.
+pub const PRESSURE_POINTS_AUTO: usize = 60;
+
+impl PressurePoints {
+    /// Whether `n` lone centres of pressure are drawn.
+    pub fn lone(self, n: usize) -> bool {
+        match self {
+            PressurePoints::Auto => n <= PRESSURE_POINTS_AUTO,
+            PressurePoints::On => true,
+            PressurePoints::Off => false,
+        }
+    }
+}
+
 /// How to draw a scene.
 #[derive(Clone, Debug)]
 pub struct DrawOptions {
@@ -263,6 +305,8 @@ pub struct DrawOptions {
     pub hinges: bool,
     pub cracks: bool,
     pub thrust_line: bool,
+    /// The centres of pressure as dots.
+    pub pressure_points: PressurePoints,
     /// Contact-force resultants as arrows (scaled by magnitude) at the centres of pressure.
     pub forces: bool,
     pub live_loads: bool,
@@ -285,6 +329,7 @@ impl Default for DrawOptions {
             hinges: true,
             cracks: true,
             thrust_line: true,
+            pressure_points: PressurePoints::Auto,
             forces: false,
             live_loads: true,
             dead_loads: false,
@@ -799,8 +844,26 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
         .collect();
     let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
-    let legend_h = if opts.legend { 58.0 } else { 8.0 };
     let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
+    // The legend's height: the entries that may be drawn (a superset of those drawn below),
+    // flowed and wrapped within the figure (super::legend).
+    let may = LegendItems {
+        undeformed: has_motion && opts.undeformed,
+        hinges: opts.hinges && !scene.hinges.is_empty(),
+        cracks: opts.cracks && scene.joints.iter().any(|j| j.state != JointState::Closed),
+        crack_lines: opts.cracks && !scene.cracks.is_empty(),
+        thrust: (opts.thrust_line && !scene.thrust_line.is_empty()).then_some("centre of pressure"),
+        live: loads.iter().any(|l| l.3).then_some(live_max),
+        dead: loads.iter().any(|l| !l.3).then_some(dead_max),
+        forces: (!forces.is_empty()).then_some(force_max),
+        supports: b.nb < b.bodies.len(),
+    };
+    let legend_h = if opts.legend {
+        let e = legend_entries(scene, &may, &opts.id, k, b.size, has_motion, 0.0, false);
+        super::legend::height(super::legend::layout(&e, margin, width - margin).height)
+    } else {
+        8.0
+    };
     let draw_w = bw * k;
     let draw_h = bh * k;
     let height = (title_h + margin + draw_h + margin + legend_h).ceil();
@@ -1173,9 +1236,13 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     }
 
     // Thrust line: centres of pressure, joined along chains of bodies.
-    let mut drew_thrust = false;
+    let mut drew_thrust = None;
     if opts.thrust_line && !scene.thrust_line.is_empty() {
         let chains = thrust_chains(scene, &b, &joint_by_id);
+        // Dots on a thrust line (up to 400 a chain) unless --pressure-points off; dots on their
+        // own (walls, façades) by the rule of PressurePoints.
+        let lone = chains.iter().filter(|c| c.len() == 1).count();
+        let lone_dots = opts.pressure_points.lone(lone);
         let mut lines = String::new();
         let mut dots = String::new();
         let dot_r = (hinge_r * 0.45).max(1.2);
@@ -1191,7 +1258,13 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
                 }
                 lines.push_str("/>\n");
             }
-            if chain.len() <= 400 {
+            let dots_here = match (chain.len(), opts.pressure_points) {
+                (1, _) => lone_dots,
+                (_, PressurePoints::Off) => false,
+                (n, PressurePoints::Auto) => n <= 400,
+                (_, PressurePoints::On) => true,
+            };
+            if dots_here {
                 for p in &pts {
                     let _ = write!(
                         dots,
@@ -1208,16 +1281,22 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             }
         }
         if !lines.is_empty() || !dots.is_empty() {
-            drew_thrust = true;
+            drew_thrust = Some(if lines.is_empty() {
+                "centre of pressure"
+            } else {
+                "thrust line"
+            });
             let _ = writeln!(
                 o,
                 "<g class=\"thrust-line\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"{}\" stroke-linejoin=\"round\">\n{lines}</g>",
                 num((stroke * 2.2).clamp(1.2, 2.2))
             );
-            let _ = writeln!(
-                o,
-                "<g class=\"pressure-centres\" fill=\"{THRUST}\">\n{dots}</g>"
-            );
+            if !dots.is_empty() {
+                let _ = writeln!(
+                    o,
+                    "<g class=\"pressure-centres\" fill=\"{THRUST}\">\n{dots}</g>"
+                );
+            }
         }
     }
 
@@ -1290,20 +1369,17 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             forces: (!forces.is_empty()).then_some(force_max),
             supports: b.nb < b.bodies.len(),
         };
-        legend(
-            &mut o,
-            &id,
+        let e = legend_entries(
+            scene,
             &items,
-            width,
-            height - legend_h,
-            margin,
+            &id,
             k,
             b.size,
             has_motion,
             scale,
-            scene.units,
             interactive,
         );
+        super::legend::write(&mut o, &e, margin, width - margin, height - legend_h);
     }
     o.push_str("</svg>\n");
     Drawing {
@@ -1405,7 +1481,8 @@ struct LegendItems {
     hinges: bool,
     cracks: bool,
     crack_lines: bool,
-    thrust: bool,
+    /// The thrust line (a line through dots) or centres of pressure (dots): its label.
+    thrust: Option<&'static str>,
     /// Largest arrow of each kind (kN), when drawn.
     live: Option<f64>,
     dead: Option<f64>,
@@ -1413,56 +1490,27 @@ struct LegendItems {
     supports: bool,
 }
 
+/// The entries of a 2D legend (super::legend lays them out).
 #[allow(clippy::too_many_arguments)]
-fn legend(
-    o: &mut String,
-    id: &str,
+fn legend_entries(
+    scene: &Scene,
     it: &LegendItems,
-    width: f64,
-    top: f64,
-    margin: f64,
+    id: &str,
     k: f64,
     size: f64,
     has_motion: bool,
     scale: f64,
-    units: MotionUnits,
     interactive: bool,
-) {
-    let fs = 12.5;
-    let y = top + 16.0;
-    let _ = writeln!(
-        o,
-        "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#dddddd\" stroke-width=\"1\"/>",
-        num(margin),
-        num(top),
-        num(width - margin),
-        num(top)
-    );
-    let mut x = margin;
-    let mut put = |o: &mut String, symbol: &str, label: &str| {
-        let _ = writeln!(
-            o,
-            "<g transform=\"translate({} {})\">{symbol}</g>",
-            num(x),
-            num(y)
-        );
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
-            num(x + 28.0),
-            num(y + 4.5),
-            esc(label)
-        );
-        x += 28.0 + text_width(label, fs) + 22.0;
-    };
+) -> Vec<Entry> {
+    let mut e = Vec::new();
     if it.undeformed {
-        put(o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed");
+        e.push(Entry::symbol(format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed"));
     }
     if it.supports {
-        put(o, &format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support");
+        e.push(Entry::symbol(format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support"));
     }
     if it.hinges {
-        put(o, &format!("<circle cx=\"11\" cy=\"0\" r=\"5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge");
+        e.push(Entry::symbol(format!("<circle cx=\"11\" cy=\"0\" r=\"5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge"));
     }
     if it.cracks || it.crack_lines {
         // The wedge (the opening) and the line (the crack as traced, numbered by width) share
@@ -1485,63 +1533,63 @@ fn legend(
             (false, true) => "crack (1 = widest)",
             _ => "crack (opening)",
         };
-        put(o, &sym, label);
+        e.push(Entry::symbol(sym, label));
     }
-    if it.thrust {
-        put(
-            o,
-            &format!("<path d=\"M0 3L11 -3L22 2\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"2\"/><circle cx=\"11\" cy=\"-3\" r=\"2\" fill=\"{THRUST}\"/>"),
-            "thrust line",
-        );
+    if let Some(label) = it.thrust {
+        let symbol = if label == "thrust line" {
+            format!("<path d=\"M0 3L11 -3L22 2\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"2\"/><circle cx=\"11\" cy=\"-3\" r=\"2\" fill=\"{THRUST}\"/>")
+        } else {
+            format!("<circle cx=\"11\" cy=\"0\" r=\"3\" fill=\"{THRUST}\"/>")
+        };
+        e.push(Entry::symbol(symbol, label));
     }
     let arrow_sym = |c: &str| {
         format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
     };
     if let Some(m) = it.live {
-        put(
-            o,
-            &arrow_sym(LOAD),
-            &format!("live load × λ (largest {} kN)", human(m, 3)),
-        );
+        e.push(Entry::symbol(
+            arrow_sym(LOAD),
+            super::legend::live_load_label(scene.load_multiplier, scene.tilt.clone(), m),
+        ));
     }
     if let Some(m) = it.dead {
-        put(
-            o,
-            &arrow_sym("#555555"),
-            &format!("dead load (largest {} kN)", human(m, 3)),
-        );
+        e.push(Entry::symbol(
+            arrow_sym("#555555"),
+            format!("dead load (largest {} kN)", human(m, 3)),
+        ));
     }
     if let Some(m) = it.forces {
-        put(
-            o,
-            &arrow_sym(FORCE),
-            &format!("contact force (largest {} kN)", human(m, 3)),
-        );
+        e.push(Entry::symbol(
+            arrow_sym(FORCE),
+            format!("contact force (largest {} kN)", human(m, 3)),
+        ));
     }
-    // Second row: scale bar and displacement scale.
-    let y2 = y + 24.0;
-    let bx = margin;
-    let bar_end = scale_bar(o, bx, y2, size, k, fs);
+    // Next row: scale bar and displacement scale.
+    e.push(Entry::scale_bar(size, k));
     if has_motion {
-        let (lead, tail) = match units {
-            MotionUnits::Metres => ("displacements drawn × ", String::new()),
+        let (lead, tail) = match scene.units {
+            MotionUnits::Metres => ("displacements drawn × ", ""),
             MotionUnits::Normalised => (
                 "mechanism drawn × ",
-                " (normalised: live loads do unit work)".to_string(),
+                " (normalised: live loads do unit work)",
             ),
         };
-        let tx = bar_end + 30.0;
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}<tspan class=\"scale-value\"{}>{}</tspan>{}</text>",
-            num(tx),
-            num(y2 + 4.5),
-            lead,
-            if interactive { " data-scale-label=\"1\"" } else { "" },
-            esc(&human(scale, 4)),
-            esc(&tail)
-        );
+        let value = human(scale, 4);
+        let mut t = Entry::text(format!("{lead}{value}{tail}"), "#333333");
+        t.markup = Some(format!(
+            "{}<tspan class=\"scale-value\"{}>{}</tspan>{}",
+            esc(lead),
+            if interactive {
+                " data-scale-label=\"1\""
+            } else {
+                ""
+            },
+            esc(&value),
+            esc(tail)
+        ));
+        e.push(t);
     }
+    e
 }
 
 #[cfg(test)]
@@ -1604,34 +1652,4 @@ mod tests {
         assert_eq!(auto_scale(0.01, 0.01, 6.38), 10.0);
         assert_eq!(auto_scale(0.0, 0.0, 6.38), 1.0);
     }
-}
-
-/// The legend's scale bar at `(bx, y2)`: a bar of a round length near 18 % of the model's `size`
-/// (m) drawn at `k` pixels per metre, and its label; returns the x where the label ends.
-/// Shared by the 2D and the 3D drawings.
-pub(crate) fn scale_bar(o: &mut String, bx: f64, y2: f64, size: f64, k: f64, fs: f64) -> f64 {
-    let bar_m = nice(0.18 * size, true);
-    let bar_px = bar_m * k;
-    let _ = writeln!(
-    o,
-    "<g stroke=\"#333333\" stroke-width=\"1.2\"><path d=\"M{x0} {ya}L{x0} {yb}M{x0} {y2}L{x1} {y2}M{x1} {ya}L{x1} {yb}\" fill=\"none\"/></g>",
-    x0 = num(bx),
-    x1 = num(bx + bar_px),
-    y2 = num(y2),
-    ya = num(y2 - 4.0),
-    yb = num(y2 + 4.0)
-);
-    let bar_label = if bar_m >= 1.0 {
-        format!("{} m", human(bar_m, 3))
-    } else {
-        format!("{} cm", human(bar_m * 100.0, 3))
-    };
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" font-size=\"{fs}\" fill=\"#333333\">{}</text>",
-        num(bx + bar_px + 8.0),
-        num(y2 + 4.5),
-        esc(&bar_label)
-    );
-    bx + bar_px + 8.0 + text_width(&bar_label, fs)
 }

@@ -59,6 +59,10 @@ pub fn text_width(s: &str, size: f64) -> f64 {
             'i' | 'l' | 'j' | '.' | ',' | ':' | ';' | '|' | '\'' | ' ' | '!' | '(' | ')' | '['
             | ']' => 0.32,
             'm' | 'w' | 'M' | 'W' | '—' | '×' => 0.9,
+            // Mathematical signs are as wide as digits and more in DejaVu Sans.
+            '−' | '=' | '+' | '<' | '>' | '≤' | '≥' | '~' | '#' => 0.84,
+            '%' => 0.95,
+            '…' | '@' => 1.0,
             c if c.is_ascii_uppercase() => 0.7,
             c if c.is_ascii_digit() => 0.64,
             _ => 0.6,

@@ -111,7 +111,9 @@ def settle(
     degrees counter-clockwise about the support's centroid (the CLI's ``--move right=u,v[,θ]``;
     strings in that syntax are accepted too). ``fixed``: support name(s) declared fixed
     (bilateral). ``profile``: vertical settlement profile along x applied to every support,
-    ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``.
+    ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``; a support that
+    spans one of its breakpoints is first cut there into parts ``NAME@0``, ``NAME@1``, … (listed
+    in the JSON's ``split_supports``; docs/import.md).
     ``settlement_form``: ``"both"`` (default) or ``"force-only"``.
 
     As the CLI, the result is the canonical one (docs/canonical.md): the least-crack mechanism
@@ -164,9 +166,10 @@ def incremental(
     model: ModelLike,
     *,
     control: Sequence[float],
-    direction: Sequence[float] = (1.0, 0.0),
+    direction: Union[str, float, Sequence[float]] = "+x",
     max: float = 0.05,
     step: float = 0.0005,
+    move: o.Moves = None,
     settle: o.Moves = None,
     fixed: Union[str, Iterable[str], None] = None,
     keep_fixed: bool = False,
@@ -182,17 +185,19 @@ def incremental(
     displacement of a control point as the mechanism evolves and cracks close.
 
     ``control``: the control point (x, y) in m (the block containing it, or the nearest).
-    ``direction``: along which the control displacement is measured. ``max``: largest control
-    displacement (m); ``step``: per step (m). ``settle``: settle first, ``{"right": (u, v)}``
-    (θ in degrees as third value); ``fixed``/``keep_fixed`` as for :func:`capacity`.
+    ``direction``: along which the control displacement is measured, as the CLI's
+    ``--direction``: ``"+x"``, ``"-x"``, ``"+y"``, ``"-y"``, an angle in degrees from +x towards
+    +y, or a vector (dx, dy). ``max``: largest control displacement (m); ``step``: per step
+    (m). ``move``: settle first, ``{"right": (u, v)}`` (θ in degrees as third value; the old
+    keyword ``settle=`` is still accepted); ``fixed``/``keep_fixed`` as for :func:`capacity`.
     ``snapshot_every``: keep the mechanism every N steps. ``no_stop``: go on after λ reaches 0.
     """
     c = o.common(tolerance, method, friction, compressive_strength)
-    s = o.settle(settle, fixed, None)
+    s = o.settle(o.renamed("move", move, "settle", settle), fixed, None)
     args = (
         c,
         o.pair("control", control),
-        o.pair("direction", direction),
+        o.direction("direction", direction),
         float(max),
         float(step),
         s,
@@ -206,7 +211,7 @@ def incremental(
 def tilt(
     model: ModelLike,
     *,
-    direction: str = "+x",
+    direction: Union[str, float, Sequence[float]] = "+x",
     tolerance: Optional[float] = None,
     method: str = "dual-simplex",
     friction: Optional[float] = None,
@@ -216,11 +221,13 @@ def tilt(
     executor=None,
 ) -> TiltResult:
     """Tilting-table analysis (``voussoir tilt``): the critical tilt angle (degrees) towards
-    ``direction`` (``"+x"`` or ``"-x"``)."""
-    if direction not in ("+x", "-x"):
-        raise ValueError(f"direction={direction!r}: expected '+x' or '-x'")
+    ``direction``, as the CLI's ``--direction`` on a 2D model: along x, ``"+x"`` or ``"-x"``
+    (or 0, 180, (dx, 0))."""
+    dx, dy = o.direction("direction", direction)
+    if dy != 0.0:
+        raise ValueError(f"direction={direction!r}: a 2D model tilts along x: '+x' or '-x'")
     c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
-    return _dispatch("tilt", model, (c, direction), executor)
+    return _dispatch("tilt", model, (c, "+x" if dx > 0 else "-x"), executor)
 
 
 def _sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, seed: int) -> str:
@@ -249,9 +256,11 @@ def sweep(
     move: o.Moves = None,
     fixed: Union[str, Iterable[str], None] = None,
     profile: Optional[str] = None,
+    magnitudes: Optional[int] = None,
+    angles: Optional[int] = None,
+    samples: Optional[int] = None,
     steps: Optional[int] = None,
     directions: Optional[int] = None,
-    samples: Optional[int] = None,
     cov: float = 0.3,
     seed: int = 1,
     shard: Union[str, Tuple[int, int], None] = None,
@@ -265,8 +274,8 @@ def sweep(
 ) -> SweepResult:
     """Many settlement analyses (``voussoir sweep``): give exactly one of
 
-    * ``steps=N``: the base motions (``move``/``profile``) scaled by k/N, k = 1 … N;
-    * ``directions=N``: the ``move`` vectors (u, v) rotated through 360°·k/N;
+    * ``magnitudes=N``: the base motions (``move``/``profile``) scaled by k/N, k = 1 … N;
+    * ``angles=N``: the ``move`` vectors (u, v) rotated through 360°·k/N;
     * ``samples=N``: Monte Carlo, each support's motion times (1 + ``cov``·ξ), ξ standard
       normal, from ``seed`` (the same seed gives the CLI's samples on any machine).
 
@@ -274,10 +283,18 @@ def sweep(
     with one, each scenario is a task submitted to it (e.g. a Dask ``Client`` or
     ``client.get_executor()``), and the records come back in task order. ``shard=(i, n)`` runs
     only the tasks with index ≡ i (mod n). The records equal the CLI's, field for field.
+    (``steps=`` and ``directions=`` are the old names of ``magnitudes=`` and ``angles=``.)
     """
-    modes = [x for x in (("steps", steps), ("directions", directions), ("samples", samples)) if x[1] is not None]
+    magnitudes = o.renamed("magnitudes", magnitudes, "steps", steps)
+    angles = o.renamed("angles", angles, "directions", directions)
+    # The native module's names of the three kinds.
+    modes = [
+        x
+        for x in (("steps", magnitudes), ("directions", angles), ("samples", samples))
+        if x[1] is not None
+    ]
     if len(modes) != 1:
-        raise ValueError("give exactly one of steps=, directions=, samples=")
+        raise ValueError("give exactly one of magnitudes=, angles=, samples=")
     kind, n = modes[0][0], int(modes[0][1])
     if n < 1:
         raise ValueError("the number of analyses must be at least 1")

@@ -8,7 +8,7 @@ from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _native
+from . import _native, _options
 from ._io import write_atomic
 
 PathOrStr = Union[str, "os.PathLike[str]"]
@@ -70,16 +70,21 @@ class Model:
         dxf_width: float = 1.0,
         support_layers: Sequence[str] = (),
         support_handles: Sequence[str] = (),
+        weld: Optional[float] = None,
+        live: Optional[str] = None,
         merge_tolerance: Optional[float] = None,
-        dxf_live: str = "horizontal",
+        dxf_live: Optional[str] = None,
     ) -> "Model":
         """A model from a DXF drawing (closed polylines are blocks), as ``voussoir import``.
 
         Keywords are the CLI's DXF flags: ``units`` (``"mm"``, ``"cm"``, ``"m"``; default the
         drawing's ``$INSUNITS``), ``unit_weight`` (kN/m³), ``dxf_width`` (m), ``support_layers``
         and ``support_handles`` (default: the lowest, widest polygon is the support ``base``),
-        ``merge_tolerance`` (m), ``dxf_live`` (``"horizontal"``: tilting-table loads, or
-        ``"none"``). The import summary is in :attr:`import_summary`."""
+        ``weld`` (m; vertices closer are merged), ``live`` (``"horizontal"``, the default:
+        tilting-table loads, or ``"none"``). ``merge_tolerance`` and ``dxf_live`` are the old
+        names of ``weld`` and ``live``. The import summary is in :attr:`import_summary`."""
+        merge_tolerance = _options.renamed("weld", weld, "merge_tolerance", merge_tolerance)
+        dxf_live = _options.renamed("live", live, "dxf_live", dxf_live) or "horizontal"
         text, summary, notes = _native.model_from_dxf(
             os.fspath(path),
             units,

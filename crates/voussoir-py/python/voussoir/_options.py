@@ -159,6 +159,51 @@ def settle(move: Moves = None, fixed=None, profile=None) -> dict:
     return {"moves": moves(move), "fixed": fixed_list(fixed), "profile": p}
 
 
+_AXES = {
+    "+x": (1.0, 0.0), "x": (1.0, 0.0), "right": (1.0, 0.0), "positive": (1.0, 0.0),
+    "-x": (-1.0, 0.0), "left": (-1.0, 0.0), "negative": (-1.0, 0.0),
+    "+y": (0.0, 1.0), "y": (0.0, 1.0), "-y": (0.0, -1.0),
+}
+
+
+def direction(name: str, d) -> tuple:
+    """A 2D direction as the CLI's ``--direction``: ``"+x"``, ``"-x"``, ``"+y"``, ``"-y"``, an
+    angle in degrees from +x towards +y, or a vector (dx, dy); returned as (dx, dy)."""
+    if isinstance(d, str):
+        key = d.strip().replace("−", "-").lower()
+        if key in _AXES:
+            return _AXES[key]
+        try:
+            d = float(key) if "," not in key else tuple(float(v) for v in key.split(","))
+        except ValueError:
+            raise ValueError(
+                f"{name}={d!r}: expected '+x', '-x', '+y', '-y', an angle in degrees or (dx, dy)"
+            ) from None
+    if isinstance(d, (int, float)) and not isinstance(d, bool):
+        a = float(d)
+        if not math.isfinite(a):
+            raise ValueError(f"{name}={d!r}: an angle must be a finite number of degrees")
+        r = a % 360.0
+        exact = {0.0: (1.0, 0.0), 90.0: (0.0, 1.0), 180.0: (-1.0, 0.0), 270.0: (0.0, -1.0)}
+        if r in exact:
+            return exact[r]
+        t = math.radians(a)
+        return (math.cos(t), math.sin(t))
+    x, y = pair(name, d)
+    if not (math.isfinite(x) and math.isfinite(y)) or (x == 0.0 and y == 0.0):
+        raise ValueError(f"{name}={d!r}: expected a finite, non-zero vector (dx, dy)")
+    return (x, y)
+
+
+def renamed(new: str, value, old: str, old_value):
+    """The value of a keyword given by its new name or by its old one (not both)."""
+    if old_value is None:
+        return value
+    if value is not None:
+        raise ValueError(f"give {new}= or its old name {old}=, not both")
+    return old_value
+
+
 def pair(name: str, p) -> tuple:
     try:
         x, y = (float(v) for v in p)

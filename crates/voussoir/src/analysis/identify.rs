@@ -57,20 +57,31 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-4;
 pub use crate::model::Width;
 
 /// One observed crack. Exactly one of `at` (the nearest collocation point of any joint: the
-/// surveyor's coordinates) and `joint` (a joint id: widths at its points in order, start then
-/// end, or one width for all of them). A width of 0 says "observed closed here".
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+/// surveyor's coordinates), `joint` (a joint id: widths at its points in order, start then
+/// end, or one width for all of them) and `polyline` (a crack line as drawn: every joint point
+/// within `snap` of it, default a quarter of that point's joint length; one width, or two at
+/// its start and end, interpolated along it). A width of 0 says "observed closed here".
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Crack {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub at: Option<[f64; 2]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<usize>,
-    /// Width (m), ≥ 0.
+    /// A crack line `[[x, y], …]`, in the file's `coordinate_units`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub polyline: Option<Vec<[f64; 2]>>,
+    /// Catch distance of a `polyline`, in the file's `coordinate_units`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub snap: Option<f64>,
+    /// Width, ≥ 0, in `units` (this crack's, else the file's; default m).
     pub opening: Width,
-    /// Measurement tolerance of this crack (m); default: the file's.
+    /// Measurement tolerance of this crack, in the same unit as its width; default: the file's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+    /// Unit of this crack's width and tolerance: `"m"`, `"cm"` or `"mm"` (default: the file's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub units: Option<String>,
 }
 
 /// Where nothing was observed (plaster, not surveyed): a joint, or every joint point inside an
@@ -89,7 +100,14 @@ pub struct Unobserved {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Observations {
-    /// Global measurement tolerance (m), default [`DEFAULT_TOLERANCE`].
+    /// Unit of the widths and tolerances: `"m"` (default), `"cm"` or `"mm"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub units: Option<String>,
+    /// Unit of the coordinates (`at`, `polyline`, `snap`, `region`): `"m"` (default), `"cm"`
+    /// or `"mm"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coordinate_units: Option<String>,
+    /// Global measurement tolerance (in `units`), default [`DEFAULT_TOLERANCE`] m.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
     #[serde(default)]
@@ -119,12 +137,27 @@ impl Observations {
         map: &KinematicMap,
     ) -> Result<(Vec<PointRole>, Vec<PointObs>)> {
         let bad = |m: String| Err(Error::Request(m));
-        let tol = self.tolerance.unwrap_or(DEFAULT_TOLERANCE);
-        if !(tol.is_finite() && tol > 0.0) {
-            return bad(format!(
-                "observations: tolerance {tol} must be a finite number > 0 (m)"
-            ));
-        }
+        let unit = |what: &str, field: &str, name: Option<&str>| {
+            crate::model::length_unit_of(what, field, name).map_err(Error::Request)
+        };
+        let fw = unit("observations", "units", self.units.as_deref())?;
+        let fc = unit(
+            "observations",
+            "coordinate_units",
+            self.coordinate_units.as_deref(),
+        )?;
+        let file_unit = self.units.as_deref().unwrap_or("m");
+        let tol = match self.tolerance {
+            Some(t) => {
+                if !(t.is_finite() && t > 0.0) {
+                    return bad(format!(
+                        "observations: tolerance {t} must be a finite number > 0 ({file_unit})"
+                    ));
+                }
+                t * fw
+            }
+            None => DEFAULT_TOLERANCE,
+        };
         let npts = map.num_points();
         let xy = |k: usize| st.joints[map.points[k].joint].points[map.points[k].index].x;
         let mut roles = vec![PointRole::Closed; npts];
@@ -147,6 +180,7 @@ impl Observations {
                     if ![x0, y0, x1, y1].iter().all(|v| v.is_finite()) || x1 < x0 || y1 < y0 {
                         return bad(format!("unobserved[{i}]: region must be finite [x0, y0, x1, y1] with x0 ≤ x1, y0 ≤ y1"));
                     }
+                    let [x0, y0, x1, y1] = [x0 * fc, y0 * fc, x1 * fc, y1 * fc];
                     for (k, r) in roles.iter_mut().enumerate() {
                         let p = xy(k);
                         if p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1 {
@@ -164,14 +198,34 @@ impl Observations {
         let mut seen: Vec<Option<usize>> = vec![None; npts];
         let mut obs = Vec::new();
         for (i, c) in self.cracks.iter().enumerate() {
-            let tau = c.tolerance.unwrap_or(tol);
-            if !(tau.is_finite() && tau > 0.0) {
-                return bad(format!(
-                    "cracks[{i}]: tolerance {tau} must be a finite number > 0 (m)"
-                ));
-            }
+            let what = format!("cracks[{i}]");
+            let (cw, cunit) = match c.units.as_deref() {
+                Some(u) => (unit(&what, "units", Some(u))?, u),
+                None => (fw, file_unit),
+            };
+            let tau = match c.tolerance {
+                Some(t) => {
+                    if !(t.is_finite() && t > 0.0) {
+                        return bad(format!(
+                            "cracks[{i}]: tolerance {t} must be a finite number > 0 ({cunit})"
+                        ));
+                    }
+                    t * cw
+                }
+                None => tol,
+            };
+            let site = crate::structure::CrackSite {
+                at: c.at,
+                joint: c.joint,
+                polyline: c.polyline.as_deref(),
+                snap: c.snap,
+                opening: &c.opening,
+                width_scale: cw,
+                width_unit: cunit,
+                coordinate_scale: fc,
+            };
             let points: Vec<(usize, f64)> = st
-                .crack_points(&format!("cracks[{i}]"), c.at, c.joint, &c.opening)?
+                .crack_site_points(&what, &site)?
                 .into_iter()
                 .map(|(j, k, w)| (map.joint_start[j] + k, w))
                 .collect();
@@ -1766,10 +1820,12 @@ fn result(
             match (lo, hi) {
                 (Some(l), Some(h)) => {
                     let w = h - l;
+                    let len = u.length();
+                    let range = format!("[{}, {}] {}", len.number(l), len.number(h), len.unit());
                     if w > value.abs() {
-                        (false, format!("not identifiable: the range [{l:.6e}, {h:.6e}] is wider than the value"))
+                        (false, format!("not identifiable: the range {range} is wider than the value"))
                     } else {
-                        (true, format!("identifiable within [{l:.6e}, {h:.6e}]"))
+                        (true, format!("identifiable within {range}"))
                     }
                 }
                 _ => (false, "not identifiable: unbounded over the motions that fit the observations (no observed crack depends on it)".to_string()),
@@ -1803,6 +1859,7 @@ fn result(
             joints(&best.shut)
         ));
     }
+    let maxm_text = crate::lengths::Length::Opening.show(maxm);
     let mut message = if !identified {
         let reason = if pattern_feasible {
             "the motions that make it a settlement mechanism leave, on their own forward settlement analysis, an observed crack closed or open another"
@@ -1815,7 +1872,7 @@ fn result(
     } else if best.within && best.opens_pattern() {
         let reproduced = certificate.as_ref().is_none_or(|c| c.reproduces);
         format!(
-            "identified: the settlement mechanism of these support motions opens the observed cracks (misfit {total:.3} tolerances in total, largest {maxm:.3e} m){}",
+            "identified: the settlement mechanism of these support motions opens the observed cracks (misfit {total:.3} tolerances in total, largest {maxm_text}){}",
             if reproduced {
                 ", and the forward settlement analysis reproduces it"
             } else {
@@ -1824,18 +1881,18 @@ fn result(
         )
     } else if best.within {
         format!(
-            "identified: the forward settlement analysis of these support motions reproduces every observed width within its tolerance (misfit {all:.3} tolerances over every observed point, largest {maxm:.3e} m){}",
+            "identified: the forward settlement analysis of these support motions reproduces every observed width within its tolerance (misfit {all:.3} tolerances over every observed point, largest {maxm_text}){}",
             why.replace("; it", "; it still")
         )
     } else {
         // The least misfit does not fit every width within its tolerance.
         let mut m = if best.opens_pattern() {
             format!(
-                "identified: the settlement mechanism of these support motions opens the observed crack pattern with the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m), though not every width within its tolerance"
+                "identified: the settlement mechanism of these support motions opens the observed crack pattern with the least misfit ({all:.3} tolerances over every observed point, largest {maxm_text}), though not every width within its tolerance"
             )
         } else {
             format!(
-                "identified: the least misfit ({all:.3} tolerances over every observed point, largest {maxm:.3e} m) is this motion's{why}"
+                "identified: the least misfit ({all:.3} tolerances over every observed point, largest {maxm_text}) is this motion's{why}"
             )
             .replace("motion's; it", "motion's: it")
         };
@@ -1900,19 +1957,28 @@ fn result(
     })
 }
 
-/// `name = value` for each unknown (mm for translations, rad for rotations).
+impl Unknown {
+    /// The kind of length of this unknown's value, for the summaries ([`crate::lengths`]): a
+    /// rotation (only the supports' θ move with it), else a translation.
+    pub fn length(&self) -> crate::lengths::Length {
+        let rotation = self.unit.iter().all(|m| m[0] == 0.0 && m[1] == 0.0)
+            && self.unit.iter().any(|m| m[2] != 0.0);
+        if rotation {
+            crate::lengths::Length::Rotation
+        } else {
+            crate::lengths::Length::Motion
+        }
+    }
+}
+
+/// `name = value` for each unknown, in the summaries' units ([`crate::lengths`]): cm for
+/// translations, mrad for rotations.
 fn values_text(s: &Setup, a: &[f64]) -> String {
     let parts: Vec<String> = s
         .unknowns
         .iter()
         .zip(a)
-        .map(|(u, v)| {
-            if u.name.ends_with(".theta") {
-                format!("{} = {:.6e} rad", u.name, v + 0.0)
-            } else {
-                format!("{} = {:.6e} m", u.name, v + 0.0)
-            }
-        })
+        .map(|(u, v)| format!("{} = {}", u.name, u.length().show(*v)))
         .collect();
     format!("({})", parts.join(", "))
 }
@@ -2079,8 +2145,9 @@ fn reproduction(
         )
     } else if work_ok {
         format!(
-            "the forward analysis finds a mechanism with the same work of the dead loads (the predicted one is also optimal: the settlement mechanism is not unique), but {} (largest width difference {diff:.3e} m)",
-            if same { "different widths" } else { "different open points" }
+            "the forward analysis finds a mechanism with the same work of the dead loads (the predicted one is also optimal: the settlement mechanism is not unique), but {} (largest width difference {})",
+            if same { "different widths" } else { "different open points" },
+            crate::lengths::Length::Opening.show(diff)
         )
     } else {
         format!("the forward analysis finds more work of the dead loads ({:.6e} against {predicted_work:.6e} kN·m)", fw.unwrap_or(f64::NAN))

@@ -433,9 +433,9 @@ pub fn incremental_with(
         .filter(|e| e.kind == EventKind::Closed)
         .count();
     let message = format!(
-        "peak λ = {:.6} at a control displacement of {:.3} mm; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
+        "peak λ = {:.6} at a control displacement of {}; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
         peak_l,
-        peak.1 * 1000.0,
+        crate::lengths::Length::Motion.show(peak.1),
         steps,
         if steps == 1 { "" } else { "s" },
         closed,

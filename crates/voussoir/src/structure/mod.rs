@@ -74,6 +74,39 @@ pub struct Joint {
     pub bilateral: bool,
 }
 
+/// Where a crack is and how wide: one of `at`, `joint` and `polyline` (see
+/// [`Structure::crack_site_points`]), with the scales of its units.
+#[derive(Clone, Copy, Debug)]
+pub struct CrackSite<'a> {
+    pub at: Option<[f64; 2]>,
+    pub joint: Option<usize>,
+    pub polyline: Option<&'a [[f64; 2]]>,
+    /// Catch distance of a polyline, in the coordinate unit.
+    pub snap: Option<f64>,
+    pub opening: &'a crate::model::Width,
+    /// Metres per unit of the widths, and that unit's name (for messages).
+    pub width_scale: f64,
+    pub width_unit: &'a str,
+    /// Metres per unit of the coordinates (`at`, `polyline`, `snap`).
+    pub coordinate_scale: f64,
+}
+
+impl Default for CrackSite<'_> {
+    fn default() -> Self {
+        static ZERO: crate::model::Width = crate::model::Width::One(0.0);
+        CrackSite {
+            at: None,
+            joint: None,
+            polyline: None,
+            snap: None,
+            opening: &ZERO,
+            width_scale: 1.0,
+            width_unit: "m",
+            coordinate_scale: 1.0,
+        }
+    }
+}
+
 impl Joint {
     /// Unit tangent `t = (−n_y, n_x)`.
     pub fn tangent(&self) -> Point {
@@ -269,13 +302,46 @@ impl Structure {
         joint: Option<usize>,
         opening: &crate::model::Width,
     ) -> Result<Vec<(usize, usize, f64)>> {
+        self.crack_site_points(
+            what,
+            &CrackSite {
+                at,
+                joint,
+                opening,
+                ..CrackSite::default()
+            },
+        )
+    }
+
+    /// The collocation points a crack names, as `(joint, point index, width in m)`: by `at`,
+    /// the nearest point of any joint (ties to the lowest joint and point); by `joint`, its
+    /// points with one width each or one for all; by `polyline`, every joint point within the
+    /// snap distance of the line (default a quarter of that point's joint length), with one
+    /// width or two (at the line's start and end, interpolated along its length at the point's
+    /// projection). Widths are scaled by `width_scale`, coordinates and snap by
+    /// `coordinate_scale`. `what` names the crack in errors.
+    pub fn crack_site_points(&self, what: &str, c: &CrackSite) -> Result<Vec<(usize, usize, f64)>> {
         use crate::model::Width;
         let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
-        let points = match (at, joint, opening) {
-            (Some(p), None, Width::One(w)) => {
+        let (ws, fc) = (c.width_scale, c.coordinate_scale);
+        let unit = c.width_unit;
+        for &w in match c.opening {
+            Width::One(w) => std::slice::from_ref(w),
+            Width::PerPoint(v) => v.as_slice(),
+        } {
+            if !(w.is_finite() && w >= 0.0) {
+                return bad(format!("width {w} must be a finite number ≥ 0 ({unit})"));
+            }
+        }
+        if c.snap.is_some() && c.polyline.is_none() {
+            return bad("\"snap\" applies to a crack given by \"polyline\"".into());
+        }
+        let points = match (c.at, c.joint, c.polyline, c.opening) {
+            (Some(p), None, None, Width::One(w)) => {
                 if !(p[0].is_finite() && p[1].is_finite()) {
                     return bad("\"at\" must be two finite coordinates".into());
                 }
+                let p = [p[0] * fc, p[1] * fc];
                 let mut best: Option<(f64, usize, usize)> = None;
                 for (j, jt) in self.joints.iter().enumerate() {
                     for (k, q) in jt.points.iter().enumerate() {
@@ -286,14 +352,14 @@ impl Structure {
                     }
                 }
                 match best {
-                    Some((_, j, k)) => vec![(j, k, *w)],
+                    Some((_, j, k)) => vec![(j, k, *w * ws)],
                     None => return bad("the structure has no joints".into()),
                 }
             }
-            (Some(_), None, Width::PerPoint(_)) => {
+            (Some(_), None, None, Width::PerPoint(_)) => {
                 return bad("a crack located by \"at\" takes one width".into())
             }
-            (None, Some(j), w) => {
+            (None, Some(j), None, w) => {
                 let Some(jt) = self.joints.get(j) else {
                     return bad(format!(
                         "joint {j} does not exist (the structure has {} joints)",
@@ -302,26 +368,110 @@ impl Structure {
                 };
                 let n = jt.points.len();
                 match w {
-                    Width::One(w) => (0..n).map(|k| (j, k, *w)).collect(),
-                    Width::PerPoint(ws) => {
-                        if ws.len() != n {
+                    Width::One(w) => (0..n).map(|k| (j, k, *w * ws)).collect(),
+                    Width::PerPoint(v) => {
+                        if v.len() != n {
                             return bad(format!(
                                 "joint {j} has {n} points, {} widths given",
-                                ws.len()
+                                v.len()
                             ));
                         }
-                        ws.iter().enumerate().map(|(k, &w)| (j, k, w)).collect()
+                        v.iter().enumerate().map(|(k, &w)| (j, k, w * ws)).collect()
                     }
                 }
             }
-            _ => return bad("give exactly one of \"at\" and \"joint\"".into()),
+            (None, None, Some(line), w) => self.polyline_points(what, line, c.snap, w, ws, fc)?,
+            _ => return bad("give exactly one of \"at\", \"joint\" and \"polyline\"".into()),
         };
-        for &(_, _, w) in &points {
-            if !(w.is_finite() && w >= 0.0) {
-                return bad(format!("width {w} must be a finite number ≥ 0 (m)"));
+        Ok(points)
+    }
+
+    /// The joint points a crack line catches (see [`Structure::crack_site_points`]).
+    fn polyline_points(
+        &self,
+        what: &str,
+        line: &[[f64; 2]],
+        snap: Option<f64>,
+        w: &crate::model::Width,
+        ws: f64,
+        fc: f64,
+    ) -> Result<Vec<(usize, usize, f64)>> {
+        use crate::model::Width;
+        let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
+        if line.is_empty() {
+            return bad("\"polyline\" needs at least one point [x, y]".into());
+        }
+        if line.iter().any(|p| !(p[0].is_finite() && p[1].is_finite())) {
+            return bad("\"polyline\": every point must be two finite coordinates".into());
+        }
+        if let Some(d) = snap {
+            if !(d.is_finite() && d > 0.0) {
+                return bad(format!("\"snap\" {d} must be a finite number > 0"));
             }
         }
-        Ok(points)
+        let line: Vec<[f64; 2]> = line.iter().map(|p| [p[0] * fc, p[1] * fc]).collect();
+        let (w0, w1) = match w {
+            Width::One(w) => (*w * ws, *w * ws),
+            Width::PerPoint(v) if v.len() == 2 => (v[0] * ws, v[1] * ws),
+            Width::PerPoint(v) => {
+                return bad(format!(
+                    "a crack given by \"polyline\" takes one width, or two (at its start and end); {} given",
+                    v.len()
+                ))
+            }
+        };
+        // Cumulative length at each vertex.
+        let mut cum = vec![0.0];
+        for s in line.windows(2) {
+            let l = (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]);
+            cum.push(cum.last().unwrap() + l);
+        }
+        let total = *cum.last().unwrap();
+        // Distance from p to the line and the arc length of its projection.
+        let project = |p: [f64; 2]| -> (f64, f64) {
+            if line.len() == 1 {
+                return ((p[0] - line[0][0]).hypot(p[1] - line[0][1]), 0.0);
+            }
+            let mut best = (f64::INFINITY, 0.0);
+            for (i, s) in line.windows(2).enumerate() {
+                let d = [s[1][0] - s[0][0], s[1][1] - s[0][1]];
+                let l2 = d[0] * d[0] + d[1] * d[1];
+                let t = if l2 > 0.0 {
+                    (((p[0] - s[0][0]) * d[0] + (p[1] - s[0][1]) * d[1]) / l2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let q = [s[0][0] + t * d[0], s[0][1] + t * d[1]];
+                let dist = (p[0] - q[0]).hypot(p[1] - q[1]);
+                if dist < best.0 {
+                    best = (dist, cum[i] + t * l2.sqrt());
+                }
+            }
+            best
+        };
+        let mut out = Vec::new();
+        for (j, jt) in self.joints.iter().enumerate() {
+            let reach = snap.map(|d| d * fc).unwrap_or(0.25 * jt.length);
+            for (k, q) in jt.points.iter().enumerate() {
+                let (dist, s) = project(q.x);
+                if dist <= reach {
+                    let f = if total > 0.0 { s / total } else { 0.0 };
+                    out.push((j, k, w0 + (w1 - w0) * f));
+                }
+            }
+        }
+        if out.is_empty() {
+            let reach = match snap {
+                Some(d) => format!("within \"snap\" {d} of it"),
+                None => "within a quarter of its joint's length of it".to_string(),
+            };
+            let (a, b) = (line[0], line[line.len() - 1]);
+            return bad(format!(
+                "the polyline from ({:.4}, {:.4}) to ({:.4}, {:.4}) m catches no joint point (none {reach}): draw it along a joint or give a larger \"snap\"",
+                a[0], a[1], b[0], b[1]
+            ));
+        }
+        Ok(out)
     }
 
     /// Give the points of the model's existing cracks their gaps.
@@ -329,8 +479,22 @@ impl Structure {
         let mut seen: std::collections::HashMap<(usize, usize), usize> = Default::default();
         for (i, c) in cracks.iter().enumerate() {
             let what = format!("cracks[{i}]");
+            let scale = crate::model::length_unit_of(&what, "units", c.units.as_deref())
+                .map_err(Error::Model)?;
             let points = self
-                .crack_points(&what, c.at, c.joint, &c.opening)
+                .crack_site_points(
+                    &what,
+                    &CrackSite {
+                        at: c.at,
+                        joint: c.joint,
+                        polyline: c.polyline.as_deref(),
+                        snap: c.snap,
+                        opening: &c.opening,
+                        width_scale: scale,
+                        width_unit: c.units.as_deref().unwrap_or("m"),
+                        coordinate_scale: 1.0,
+                    },
+                )
                 .map_err(|e| match e {
                     Error::Request(m) => Error::Model(m),
                     e => e,

@@ -211,12 +211,6 @@ fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
             );
         }
     }
-    s.push_str(&crate::common::cracks_section(
-        "cracks of the final state",
-        "widths in mm, widest first",
-        &r.cracks,
-        true,
-    ));
     let _ = writeln!(
         s,
         "{} LP solves, {} simplex iterations",

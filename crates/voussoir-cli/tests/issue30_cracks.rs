@@ -66,9 +66,9 @@ fn issue32_settle_summary_lists_the_crack_widths_in_mm() {
         let p1 = &c["points"][1];
         let xy = |p: &serde_json::Value| {
             let f = |v: f64| {
-                let t = format!("{v:.3}");
-                if t == "-0.000" {
-                    "0.000".to_string()
+                let t = format!("{v:.4}");
+                if t == "-0.0000" {
+                    "0.0000".to_string()
                 } else {
                     t
                 }
@@ -80,7 +80,7 @@ fn issue32_settle_summary_lists_the_crack_widths_in_mm() {
             )
         };
         let want = format!(
-            "crack  {}: {mm:.2} mm wide, 0.33 m long, joint {}",
+            "crack  {}: {mm:.3} mm wide, 0.3300 m long, joint {}",
             i + 1,
             c["joints"][0]
         );
@@ -90,16 +90,16 @@ fn issue32_settle_summary_lists_the_crack_widths_in_mm() {
         );
         assert!(
             line.contains(&format!(
-                "from {} to {} (closing at a hinge)",
+                "from {} to {} m (closing at a hinge)",
                 xy(p0),
                 xy(p1)
             )),
             "{line}"
         );
     }
-    // The crown's crack is the widest: 2.22 mm (twice each haunch's 1.11 mm).
-    assert!(lines[0].contains("2.22 mm wide"), "{}", lines[0]);
-    assert!(lines[1].contains("1.11 mm wide") && lines[2].contains("1.11 mm wide"));
+    // The crown's crack is the widest: 2.220 mm (twice each haunch's 1.110 mm).
+    assert!(lines[0].contains("2.220 mm wide"), "{}", lines[0]);
+    assert!(lines[1].contains("1.110 mm wide") && lines[2].contains("1.110 mm wide"));
 }
 
 #[test]
@@ -148,7 +148,7 @@ fn issue32_settle_summary_lists_ten_cracks_then_the_rest_counted() {
     for (line, c) in crack_lines(&s).iter().zip(cracks) {
         let mm = c["max_opening"].as_f64().unwrap() * 1000.0;
         assert!(
-            line.contains(&format!(": {mm:.2} mm wide")),
+            line.contains(&format!(": {mm:.3} mm wide")),
             "{line} vs {mm}"
         );
     }
@@ -170,7 +170,7 @@ fn issue30_item3_limit_summary_lists_the_mechanism_cracks_without_widths() {
     );
     let lines = crack_lines(&s);
     assert_eq!(lines.len(), 4);
-    assert!(lines[0].contains("relative opening 1.00"), "{}", lines[0]);
+    assert!(lines[0].contains("relative opening 1.000"), "{}", lines[0]);
     assert!(!s.contains(" mm wide"), "{s}");
     // Drawn as four numbered lines.
     let svg = std::fs::read_to_string(d.join("c.svg")).unwrap();

@@ -865,36 +865,34 @@ pub trait CrackText {
     fn describe(&self, widths: bool, largest: f64) -> String;
 }
 
-/// A width in mm with two decimals ("< 0.01 mm" below 0.005 mm), or an opening relative to the
-/// largest.
+/// A width in mm (the summaries' unit for openings, [`crate::lengths`]; "< 0.001 mm" below
+/// half a micrometre), or an opening relative to the largest.
 fn width_text(w: f64, widths: bool, largest: f64) -> String {
+    use crate::lengths::Length;
     if widths {
-        let mm = w * 1000.0;
-        if mm < 0.005 {
-            "< 0.01 mm wide".to_string()
+        if w * 1000.0 < 0.0005 {
+            "< 0.001 mm wide".to_string()
         } else {
-            format!("{mm:.2} mm wide")
+            format!("{} wide", Length::Opening.show(w))
         }
     } else if largest > 0.0 {
-        format!("relative opening {:.2}", w / largest)
+        format!("relative opening {:.3}", w / largest)
     } else {
         "relative opening 0".to_string()
     }
 }
 
+/// A position `(x, y[, z])` in the summaries' unit for positions (m, without the unit).
 fn xy(p: &[f64]) -> String {
     let c: Vec<String> = p
         .iter()
-        .map(|v| {
-            let t = format!("{v:.3}");
-            // No "-0.000" for a coordinate of round-off size.
-            match t.strip_prefix('-') {
-                Some(r) if r.chars().all(|c| c == '0' || c == '.') => r.to_string(),
-                _ => t,
-            }
-        })
+        .map(|v| crate::lengths::Length::Position.number(*v))
         .collect();
     format!("({})", c.join(", "))
+}
+
+fn long(l: f64) -> String {
+    crate::lengths::Length::Position.show(l)
 }
 
 fn body_text(b: &BodyName) -> String {
@@ -924,9 +922,9 @@ impl CrackText for Crack {
         let first = self.points.first().copied().unwrap_or([0.0; 2]);
         let last = self.points.last().copied().unwrap_or([0.0; 2]);
         let mut s = format!(
-            "{}, {:.2} m long, {joints}, from {} to {}",
+            "{}, {} long, {joints}, from {} to {} m",
             width_text(self.max_opening, widths, largest),
-            self.length,
+            long(self.length),
             xy(&first),
             xy(&last)
         );
@@ -961,9 +959,9 @@ impl CrackText for Crack3d {
             format!("{} joints", self.joints.len())
         };
         format!(
-            "{}, {what} {:.2} m long, {joints}, centre {}",
+            "{}, {what} {} long, {joints}, centre {} m",
             width_text(self.max_opening, widths, largest),
-            self.length,
+            long(self.length),
             xy(&self.position)
         )
     }

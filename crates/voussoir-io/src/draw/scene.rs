@@ -1127,33 +1127,57 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
                 let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
             }
             lines.push_str("/>\n");
-            if n < 10 && !interactive {
-                // The label at the polyline's middle (by length), offset off the line.
+            if n < 10 {
+                // The label at the crack's middle (by length, in the undeformed geometry),
+                // carried by the body there, offset off the line.
+                let w: Vec<[f64; 2]> = c
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|p| p[0].is_finite() && p[1].is_finite())
+                    .collect();
                 let half = 0.5
-                    * xy.windows(2)
-                        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+                    * w.windows(2)
+                        .map(|s| (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]))
                         .sum::<f64>();
                 let mut acc = 0.0;
-                let mut m = xy[0];
-                for w in xy.windows(2) {
-                    let l = (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
+                let mut mw = w[0];
+                for s in w.windows(2) {
+                    let l = (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]);
                     if acc + l >= half && l > 0.0 {
                         let t = (half - acc) / l;
-                        m = [
-                            w[0][0] + t * (w[1][0] - w[0][0]),
-                            w[0][1] + t * (w[1][1] - w[0][1]),
+                        mw = [
+                            s[0][0] + t * (s[1][0] - s[0][0]),
+                            s[0][1] + t * (s[1][1] - s[0][1]),
                         ];
                         break;
                     }
                     acc += l;
                 }
-                let _ = writeln!(
-                    labels,
-                    "<text x=\"{}\" y=\"{}\">{}</text>",
-                    num(m[0] + 4.0),
-                    num(m[1] - 4.0),
-                    n + 1
-                );
+                if let Some(a) = body_at(mw) {
+                    let (p1, data) = at(a, mw);
+                    if interactive {
+                        // Written at its undeformed place and moved by the slider (data-at).
+                        let p0 = fr.px(mw);
+                        let _ = writeln!(
+                            labels,
+                            "<text x=\"{}\" y=\"{}\" transform=\"translate({} {})\" data-at=\"{data}\">{}</text>",
+                            num(p0[0] + 4.0),
+                            num(p0[1] - 4.0),
+                            num(p1[0] - p0[0]),
+                            num(p1[1] - p0[1]),
+                            n + 1
+                        );
+                    } else {
+                        let _ = writeln!(
+                            labels,
+                            "<text x=\"{}\" y=\"{}\">{}</text>",
+                            num(p1[0] + 4.0),
+                            num(p1[1] - 4.0),
+                            n + 1
+                        );
+                    }
+                }
             }
         }
         if !lines.is_empty() {

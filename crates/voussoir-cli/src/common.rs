@@ -63,10 +63,110 @@ pub struct ModelArgs {
     /// exact friction cone (a second-order cone program, Clarabel).
     #[arg(long, value_enum, value_name = "CONE")]
     pub friction_cone: Option<FrictionConeArg>,
+    /// Existing cracks from a crack survey drawing (DXF), added to the 2D model's cracks
+    /// (docs/joint-laws.md, "Existing cracks"): the lines of the survey layers, each with the
+    /// width of its label or of its layer's name (CRACK-2mm), read as `identify --survey` reads
+    /// them (the "Crack survey drawing" flags).
+    #[arg(long = "existing-cracks", value_name = "SURVEY.dxf")]
+    pub existing_cracks: Option<PathBuf>,
     #[command(flatten)]
     pub dxf: crate::import::DxfArgs,
     #[command(flatten)]
     pub solver: SolverArgs,
+    #[command(flatten)]
+    pub survey: SurveyArgs,
+}
+
+/// How to read a crack survey drawing (DXF): `identify --survey` (observed cracks) and
+/// `--existing-cracks` (a model's existing cracks); docs/identify.md, "A survey drawing".
+#[derive(Args, Clone, Debug, Default)]
+#[command(next_help_heading = "Crack survey drawing")]
+pub struct SurveyArgs {
+    /// A survey layer (case-insensitive; PREFIX* for every layer starting with PREFIX;
+    /// repeatable) [default: every layer whose name contains CRACK].
+    #[arg(long = "survey-layer", value_name = "LAYER")]
+    pub layers: Vec<String>,
+    /// Units of the survey drawing's coordinates [default: --units, else the drawing's
+    /// $INSUNITS, which must then be mm, cm or m].
+    #[arg(long = "survey-units", value_enum, ignore_case = true)]
+    pub units: Option<crate::import::UnitsArg>,
+    /// Unit of a width label written without one ("2") [default: mm].
+    #[arg(long = "survey-width-units", value_enum, ignore_case = true)]
+    pub width_units: Option<crate::import::UnitsArg>,
+    /// A joint point is on a crack line when it is within this distance of it, in m [default:
+    /// a quarter of the point's joint length].
+    #[arg(long = "survey-snap", value_name = "M")]
+    pub snap: Option<f64>,
+}
+
+impl SurveyArgs {
+    /// Refuse the survey flags without the survey drawing (`file_flag`, e.g. `--survey`), and a
+    /// bad snap distance.
+    pub fn check(&self, given: bool, file_flag: &str) -> Result<(), Fail> {
+        if !given {
+            let flag = [
+                (!self.layers.is_empty(), "--survey-layer"),
+                (self.units.is_some(), "--survey-units"),
+                (self.width_units.is_some(), "--survey-width-units"),
+                (self.snap.is_some(), "--survey-snap"),
+            ]
+            .into_iter()
+            .find(|(given, _)| *given);
+            if let Some((_, f)) = flag {
+                return Err(Fail(format!(
+                    "{f} applies to a survey drawing: give {file_flag} FILE.dxf"
+                )));
+            }
+        }
+        if let Some(d) = self.snap {
+            if !(d.is_finite() && d > 0.0) {
+                return Err(Fail(format!(
+                    "--survey-snap {d}: must be a finite number > 0 (m)"
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The reading options; `drawing_units` (the `--units` of the command) is the coordinates'
+    /// unit unless --survey-units is given.
+    pub fn options(
+        &self,
+        drawing_units: Option<crate::import::UnitsArg>,
+    ) -> voussoir_io::survey::SurveyOptions {
+        use voussoir_io::dxf::Units;
+        voussoir_io::survey::SurveyOptions {
+            layers: self.layers.clone(),
+            units: self.units.or(drawing_units).map(crate::import::units),
+            width_units: self
+                .width_units
+                .map(crate::import::units)
+                .unwrap_or(Units::Mm),
+            snap: self.snap,
+        }
+    }
+}
+
+/// The drawing entity of each existing crack read from a drawing (crack layers, a survey), by
+/// index in the model's cracks, for messages.
+static CRACK_SOURCES: std::sync::Mutex<Vec<(usize, String)>> = std::sync::Mutex::new(Vec::new());
+
+/// Remember the drawing entity of the model's crack `index`.
+pub fn note_crack_source(index: usize, entity: String) {
+    if let Ok(mut v) = CRACK_SOURCES.lock() {
+        v.push((index, entity));
+    }
+}
+
+/// `msg` with the drawing entity after every `cracks[i]` that came from a drawing.
+pub fn annotate_cracks(msg: &str) -> String {
+    let mut out = msg.to_string();
+    if let Ok(v) = CRACK_SOURCES.lock() {
+        for (i, name) in v.iter().rev() {
+            out = out.replace(&format!("cracks[{i}]"), &format!("cracks[{i}] ({name})"));
+        }
+    }
+    out
 }
 
 /// The friction cone of a 3D joint.
@@ -345,11 +445,12 @@ pub fn split_summary(splits: &[SupportSplit]) -> String {
                 .zip(labels)
                 .enumerate()
                 .map(|(k, (v, l))| {
-                    if k < lengths {
-                        format!("{l} {:.3} mm", v * 1e3)
+                    let kind = if k < lengths {
+                        voussoir::lengths::Length::Motion
                     } else {
-                        format!("{l} {v:.3e} rad")
-                    }
+                        voussoir::lengths::Length::Rotation
+                    };
+                    format!("{l} {}", kind.show(*v))
                 })
                 .collect();
             let _ = writeln!(
@@ -381,6 +482,8 @@ pub struct Input {
     pub friction: Option<f64>,
     pub compressive_strength: Option<f64>,
     pub dxf: crate::import::DxfArgs,
+    /// `--existing-cracks`: the survey drawing and how to read it.
+    pub existing_cracks: Option<(PathBuf, voussoir_io::survey::SurveyOptions)>,
     pub solver: SolverOptions,
     /// The solver for a 3D model (interior point unless --method says otherwise).
     pub solver3d: SolverOptions,
@@ -394,6 +497,44 @@ pub struct Input {
 impl ModelArgs {
     /// Check every model-input flag: numbers in range; DXF flags only with a `.dxf` model.
     pub fn resolve(&self) -> Result<Input, Fail> {
+        self.resolve_with(None)
+    }
+
+    /// [`ModelArgs::resolve`]; `identify_survey`: for `identify`, whether its `--survey` was
+    /// given (the survey flags are then its, and the model must be sound).
+    pub fn resolve_with(&self, identify_survey: Option<bool>) -> Result<Input, Fail> {
+        let drawn =
+            voussoir_io::dxf::is_dxf(&self.model) || voussoir_io::mesh::is_mesh(&self.model);
+        let mut dxf = self.dxf.clone();
+        match identify_survey {
+            Some(given) => {
+                if self.existing_cracks.is_some() || !self.dxf.crack_layers.is_empty() {
+                    let f = if self.existing_cracks.is_some() {
+                        "--existing-cracks"
+                    } else {
+                        "--crack-layer"
+                    };
+                    return Err(Fail(format!(
+                        "{f}: identify starts from the sound structure; give the cracks as observations (--survey FILE.dxf --survey-layer LAYER)"
+                    )));
+                }
+                self.survey.check(given, "--survey")?;
+            }
+            None => {
+                self.survey
+                    .check(self.existing_cracks.is_some(), "--existing-cracks")?;
+                // With a JSON model, --units is the survey drawing's.
+                if self.existing_cracks.is_some() && !drawn {
+                    dxf.units = None;
+                }
+            }
+        }
+        if !drawn && !self.dxf.crack_layers.is_empty() {
+            return Err(Fail(format!(
+                "--crack-layer reads a layer of a .dxf model, and {} is not one: give the crack survey drawing with --existing-cracks FILE.dxf (--survey-layer LAYER)",
+                self.model.display()
+            )));
+        }
         if let Some(t) = self.tolerance {
             if !(t.is_finite() && t > 0.0) {
                 return Err(Fail(format!(
@@ -402,8 +543,8 @@ impl ModelArgs {
             }
         }
         check_materials(self.friction, self.compressive_strength)?;
-        self.dxf.refuse_foreign(&self.model)?;
-        self.dxf.check()?;
+        dxf.refuse_foreign(&self.model)?;
+        dxf.check()?;
         if let Some(k) = self.friction_facets {
             if !FRICTION_FACETS.contains(&k) {
                 return Err(Fail(format!(
@@ -428,7 +569,11 @@ impl ModelArgs {
             },
             friction: self.friction,
             compressive_strength: self.compressive_strength,
-            dxf: self.dxf.clone(),
+            dxf,
+            existing_cracks: self
+                .existing_cracks
+                .clone()
+                .map(|p| (p, self.survey.options(self.dxf.units))),
             solver: self.solver(),
             solver3d: SolverOptions {
                 method: if self.solver.method.is_none() {
@@ -498,6 +643,16 @@ impl Input {
     pub fn load_any(&self) -> Result<AnyModel, Fail> {
         let mut m = self.dxf.read_any(&self.path)?.0;
         match &mut m {
+            AnyModel::Planar(p) => self.add_existing_cracks(p)?,
+            AnyModel::Spatial(_) if self.existing_cracks.is_some() => {
+                return Err(Fail(format!(
+                    "--existing-cracks applies to 2D models, and {} is a 3D model",
+                    self.path.display()
+                )))
+            }
+            AnyModel::Spatial(_) => {}
+        }
+        match &mut m {
             AnyModel::Planar(p) => p.override_joint_laws(self.friction, self.compressive_strength),
             AnyModel::Spatial(s) => s.override_joint_laws(self.friction, self.compressive_strength),
         }
@@ -566,8 +721,32 @@ impl Input {
     /// Read the model (JSON, or DXF by extension) and apply the material overrides.
     pub fn load(&self) -> Result<Model, Fail> {
         let mut m = self.dxf.read(&self.path)?.0;
+        self.add_existing_cracks(&mut m)?;
         m.override_joint_laws(self.friction, self.compressive_strength);
         Ok(m)
+    }
+
+    /// `--existing-cracks`: the survey drawing's crack lines added to the model's cracks
+    /// (after its own), each remembered by its entity for messages.
+    pub fn add_existing_cracks(&self, m: &mut Model) -> Result<(), Fail> {
+        let Some((path, opts)) = &self.existing_cracks else {
+            return Ok(());
+        };
+        crate::outputs::input(path);
+        let (cracks, report) = voussoir_io::survey::read_survey(path, opts)
+            .map_err(|e| Fail(format!("--existing-cracks {}", e.0)))?;
+        eprintln!("existing cracks from {}", report.summary());
+        for n in &report.notes {
+            eprintln!("note: {n}");
+        }
+        for (c, line) in cracks.into_iter().zip(report.lines) {
+            note_crack_source(
+                m.cracks.len(),
+                format!("{} of {}", line.entity, path.display()),
+            );
+            m.cracks.push(voussoir_io::survey::existing_crack(c));
+        }
+        Ok(())
     }
 
     /// Load, apply a support motion, validate and discretise.
@@ -585,7 +764,8 @@ impl Input {
         if let Some(s) = motion {
             self.note_splits(s.apply(&mut model)?);
         }
-        let st = Structure::new(&model, self.build)?;
+        let st = Structure::new(&model, self.build)
+            .map_err(|e| Fail(annotate_cracks(&e.to_string())))?;
         for w in model.warnings() {
             eprintln!("warning: {w}");
         }

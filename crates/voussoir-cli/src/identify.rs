@@ -12,9 +12,8 @@ use voussoir::analysis::identify::{
 };
 use voussoir::structure::Structure;
 use voussoir_io::draw::{self, ReportOptions};
-use voussoir_io::dxf::Units;
 use voussoir_io::lengths::Length;
-use voussoir_io::survey::{read_survey, SurveyOptions};
+use voussoir_io::survey::read_survey;
 
 #[derive(Args)]
 pub struct IdentifyArgs {
@@ -26,8 +25,12 @@ pub struct IdentifyArgs {
     /// y0, x1, y1]}]}`; every other joint point is observed closed.
     #[arg(long, value_name = "OBS.json")]
     pub cracks: Option<PathBuf>,
-    #[command(flatten)]
-    pub survey: SurveyArgs,
+    /// A crack survey drawing (DXF): the lines (LWPOLYLINE, POLYLINE, LINE) of the survey
+    /// layers are crack lines, each with the width of the TEXT/MTEXT label next to it or in its
+    /// layer's name (CRACK-2mm); read with the "Crack survey drawing" flags. Added to the
+    /// cracks of --cracks, if given.
+    #[arg(long, value_name = "SURVEY.dxf")]
+    pub survey: Option<PathBuf>,
     /// An unknown support motion: NAME=u,v,theta | A..B=v (segments sharing one value) |
     /// a profile with one value '?' (uniform:X0,X1,? | linear:X0,V0,X1,?). Bounds: u[LO:HI].
     /// Metres and radians. Repeatable.
@@ -48,69 +51,6 @@ pub struct IdentifyArgs {
     pub draw: DrawArgs,
 }
 
-/// A crack survey drawn in CAD (docs/identify.md, "A survey drawing").
-#[derive(Args, Clone, Debug, Default)]
-#[command(next_help_heading = "Crack survey drawing")]
-pub struct SurveyArgs {
-    /// A crack survey drawing (DXF): the lines (LWPOLYLINE, POLYLINE, LINE) of the survey
-    /// layers are crack lines, each with the width of the TEXT/MTEXT label next to it or in its
-    /// layer's name (CRACK-2mm). Added to the cracks of --cracks, if given.
-    #[arg(long, value_name = "SURVEY.dxf")]
-    pub survey: Option<PathBuf>,
-    /// A survey layer (case-insensitive; PREFIX* for every layer starting with PREFIX;
-    /// repeatable) [default: every layer whose name contains CRACK].
-    #[arg(long = "survey-layer", value_name = "LAYER")]
-    pub layers: Vec<String>,
-    /// Units of the survey drawing's coordinates [default: --units, else the drawing's
-    /// $INSUNITS, which must then be mm, cm or m].
-    #[arg(long = "survey-units", value_enum, ignore_case = true)]
-    pub units: Option<UnitsArg>,
-    /// Unit of a width label written without one ("2") [default: mm].
-    #[arg(long = "survey-width-units", value_enum, ignore_case = true)]
-    pub width_units: Option<UnitsArg>,
-    /// A joint point is on a crack line when it is within this distance of it, in m [default:
-    /// a quarter of the point's joint length].
-    #[arg(long = "survey-snap", value_name = "M")]
-    pub snap: Option<f64>,
-}
-
-fn units(u: UnitsArg) -> Units {
-    match u {
-        UnitsArg::Mm => Units::Mm,
-        UnitsArg::Cm => Units::Cm,
-        UnitsArg::M => Units::M,
-    }
-}
-
-impl SurveyArgs {
-    /// Refuse the survey flags without --survey.
-    fn check(&self) -> Result<(), Fail> {
-        if self.survey.is_none() {
-            let flag = [
-                (!self.layers.is_empty(), "--survey-layer"),
-                (self.units.is_some(), "--survey-units"),
-                (self.width_units.is_some(), "--survey-width-units"),
-                (self.snap.is_some(), "--survey-snap"),
-            ]
-            .into_iter()
-            .find(|(given, _)| *given);
-            if let Some((_, f)) = flag {
-                return Err(Fail(format!(
-                    "{f} applies to a survey drawing: give --survey FILE.dxf"
-                )));
-            }
-        }
-        if let Some(d) = self.snap {
-            if !(d.is_finite() && d > 0.0) {
-                return Err(Fail(format!(
-                    "--survey-snap {d}: must be a finite number > 0 (m)"
-                )));
-            }
-        }
-        Ok(())
-    }
-}
-
 /// The observations: the JSON file's cracks, then the survey drawing's lines. Also the
 /// description of each survey crack by its index, for messages.
 fn observations(
@@ -128,14 +68,9 @@ fn observations(
         None => Observations::default(),
     };
     let mut names = Vec::new();
-    if let Some(path) = &a.survey.survey {
+    if let Some(path) = &a.survey {
         crate::outputs::input(path);
-        let opts = SurveyOptions {
-            layers: a.survey.layers.clone(),
-            units: a.survey.units.or(model_units).map(units),
-            width_units: a.survey.width_units.map(units).unwrap_or(Units::Mm),
-            snap: a.survey.snap,
-        };
+        let opts = a.model.survey.options(model_units);
         let (cracks, report) = read_survey(path, &opts)?;
         eprintln!("{}", report.summary());
         for n in &report.notes {
@@ -180,8 +115,8 @@ fn annotate(msg: &str, names: &[(usize, String)]) -> String {
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.draw.check()?;
     a.draw.check_2d()?;
-    a.survey.check()?;
-    if a.cracks.is_none() && a.survey.survey.is_none() {
+    a.model.survey.check(a.survey.is_some(), "--survey")?;
+    if a.cracks.is_none() && a.survey.is_none() {
         return Err(Fail(
             "give the observed cracks: --cracks OBS.json, --survey SURVEY.dxf, or both".into(),
         ));
@@ -191,10 +126,10 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     let mut model = a.model.clone();
     let drawn = voussoir_io::dxf::is_dxf(&model.model) || voussoir_io::mesh::is_mesh(&model.model);
     let model_units = model.dxf.units;
-    if a.survey.survey.is_some() && !drawn {
+    if a.survey.is_some() && !drawn {
         model.dxf.units = None;
     }
-    let input = model.resolve()?;
+    let input = model.resolve_with(Some(a.survey.is_some()))?;
     let motion = a.settle.resolve()?;
     let mut model = input.load()?;
     let mut splits = motion.apply(&mut model)?;

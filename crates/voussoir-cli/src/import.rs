@@ -15,6 +15,15 @@ use voussoir_io::mesh::{is_mesh, read_mesh, MeshOptions, MeshReport};
 /// default weld of `voussoir import`).
 const DEFAULT_REL_TOLERANCE: f64 = 1e-7;
 
+/// The drawing unit of a `--units`-like flag.
+pub fn units(u: UnitsArg) -> Units {
+    match u {
+        UnitsArg::Mm => Units::Mm,
+        UnitsArg::Cm => Units::Cm,
+        UnitsArg::M => Units::M,
+    }
+}
+
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnitsArg {
     /// Millimetres.
@@ -67,6 +76,12 @@ pub struct DxfArgs {
     /// is the one support `base`.
     #[arg(long = "support-layer", value_name = "LAYER")]
     pub support_layers: Vec<String>,
+    /// The lines (LWPOLYLINE, POLYLINE, LINE) on this layer are the model's existing cracks
+    /// (case-insensitive; PREFIX*; repeatable), each with the width of the TEXT/MTEXT label
+    /// next to it (a bare number is in mm) or in its layer's name (CRACK-2mm); as `identify
+    /// --survey` reads a survey (docs/import.md). The layer gives no blocks.
+    #[arg(long = "crack-layer", value_name = "LAYER")]
+    pub crack_layers: Vec<String>,
     /// The polygon with this handle (hex) is a support (repeatable).
     #[arg(long = "support-handle", value_name = "HANDLE")]
     pub support_handles: Vec<String>,
@@ -140,6 +155,7 @@ impl DxfArgs {
             width: self.dxf_width.unwrap_or(d.width),
             support_layers: self.support_layers.clone(),
             support_handles: self.support_handles.clone(),
+            crack_layers: self.crack_layers.clone(),
             merge_tolerance: self.weld,
             live: match self.live.unwrap_or_default() {
                 DxfLiveArg::None => ImportLive::None,
@@ -213,6 +229,7 @@ impl DxfArgs {
             (self.dxf_width.is_some(), "--dxf-width"),
             (!self.support_layers.is_empty(), "--support-layer"),
             (!self.support_handles.is_empty(), "--support-handle"),
+            (!self.crack_layers.is_empty(), "--crack-layer"),
         ]
         .into_iter()
         .find(|(given, _)| *given)
@@ -255,6 +272,9 @@ impl DxfArgs {
             let (m, rep) = read_dxf(path, &self.options())?;
             for w in &rep.warnings {
                 eprintln!("warning: {w}");
+            }
+            for (i, e) in rep.crack_entities.iter().enumerate() {
+                crate::common::note_crack_source(i, e.clone());
             }
             Ok((AnyModel::Planar(m), Some(rep)))
         } else if is_mesh(path) {

@@ -152,7 +152,8 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         _ => unreachable!("exactly one mode"),
     };
     let n = kind.count();
-    let (mut model, _) = a.model.dxf.read(&a.model.model)?;
+    let (mut model, _) = input.dxf.read(&a.model.model)?;
+    input.add_existing_cracks(&mut model)?;
     // Sweeps are 2D: the 3D friction flags are refused as for any 2D model.
     input.refuse_3d_friction()?;
     a.model.override_materials(&mut model)?;

@@ -186,7 +186,7 @@ fn issue32_item1_portal_settles_its_right_pier() {
         "{text}"
     );
     assert!(
-        text.contains("base@1       x 1.2500 … 2.5000 m  u 0.000 mm, v -10.000 mm"),
+        text.contains("base@1       x 1.2500 … 2.5000 m  u 0.0000 cm, v -1.0000 cm"),
         "{text}"
     );
 }

@@ -14,6 +14,10 @@
 //!   so that the faces of neighbouring blocks coincide exactly.
 //! * An open or self-intersecting polyline is an error naming the entity by its handle.
 //!
+//! * The lines of the layers in [`DxfOptions::crack_layers`] are the model's existing cracks,
+//!   read as a crack survey ([`crate::survey`]: a width per line from its label or its layer's
+//!   name); those layers give no blocks.
+//!
 //! DXF carries no loads: the model gets self-weight with the given unit weight and, if asked,
 //! the tilting-table live load (a horizontal force equal to each block's weight).
 
@@ -92,6 +96,8 @@ pub struct DxfOptions {
     /// Vertex merging tolerance in metres (None: 1e-6 of the drawing's bounding-box diagonal).
     pub merge_tolerance: Option<f64>,
     pub live: ImportLive,
+    /// Layers of crack lines, the model's existing cracks (case-insensitive; `PREFIX*`).
+    pub crack_layers: Vec<String>,
 }
 
 impl Default for DxfOptions {
@@ -104,6 +110,7 @@ impl Default for DxfOptions {
             support_handles: Vec::new(),
             merge_tolerance: None,
             live: ImportLive::Horizontal,
+            crack_layers: Vec::new(),
         }
     }
 }
@@ -117,6 +124,8 @@ pub struct ImportReport {
     /// Entity type and handle of each block (by block index) and of each support.
     pub block_entities: Vec<String>,
     pub support_entities: Vec<String>,
+    /// Entity of each existing crack (by index in the model's cracks), from the crack layers.
+    pub crack_entities: Vec<String>,
     /// Entities of other types that were skipped, by type.
     pub ignored: BTreeMap<String, usize>,
     /// Number of vertices moved by merging, and the tolerance used (m).
@@ -133,7 +142,11 @@ impl ImportReport {
     /// Append the DXF entity to every "block N" that a message names, so that an error found
     /// later (an overlap, a block that touches nothing) points into the drawing.
     pub fn annotate(&self, msg: &str) -> String {
-        crate::dxf::annotate_blocks(msg, &self.block_entities)
+        let mut out = crate::dxf::annotate_blocks(msg, &self.block_entities);
+        for (i, e) in self.crack_entities.iter().enumerate().rev() {
+            out = out.replace(&format!("cracks[{i}]"), &format!("cracks[{i}] ({e})"));
+        }
+        out
     }
 
     /// One line: what was imported.
@@ -155,6 +168,12 @@ impl ImportReport {
                 .map(|(k, n)| format!("{n} {k}"))
                 .collect();
             s.push_str(&format!("; ignored: {}", list.join(", ")));
+        }
+        if !self.crack_entities.is_empty() {
+            s.push_str(&format!(
+                "; {} existing crack line(s)",
+                self.crack_entities.len()
+            ));
         }
         s
     }
@@ -218,11 +237,16 @@ pub(crate) fn expand_bulges(v: &[(Point, f64)], closed: bool) -> Vec<Point> {
 fn collect(
     drawing: &Drawing,
     ignored: &mut BTreeMap<String, usize>,
+    crack_layers: &[String],
 ) -> Result<Vec<RawPolygon>, IoError> {
     let mut out = Vec::new();
     for e in drawing.entities() {
         if e.common.is_in_paper_space {
             *ignored.entry("paper-space entities".into()).or_default() += 1;
+            continue;
+        }
+        // The crack layers are read as a survey, not as blocks.
+        if !crack_layers.is_empty() && crate::survey::on_layer(&e.common.layer, crack_layers) {
             continue;
         }
         let handle = handle_hex(e);
@@ -373,7 +397,14 @@ pub fn drawing_to_model(
     let units = units_of(drawing, opts.units)?;
     let scale = units.scale();
     let mut ignored = BTreeMap::new();
-    let mut raw = collect(drawing, &mut ignored)?;
+    for layer in &opts.support_layers {
+        if !opts.crack_layers.is_empty() && crate::survey::on_layer(layer, &opts.crack_layers) {
+            return Err(IoError(format!(
+                "layer '{layer}' is named both a support layer and a crack layer"
+            )));
+        }
+    }
+    let mut raw = collect(drawing, &mut ignored, &opts.crack_layers)?;
     if raw.is_empty() {
         let found = if ignored.is_empty() {
             "the drawing has no entities".to_string()
@@ -452,7 +483,7 @@ pub fn drawing_to_model(
                 0.0
             };
             return Err(IoError(format!(
-                "DXF entity {}: the polyline is open (its ends are {gap:.6} {} apart); blocks must be closed polylines",
+                "DXF entity {}: the polyline is open (its ends are {gap:.6} {} apart); blocks must be closed polylines (crack lines: read their layer with --crack-layer)",
                 r.what,
                 units.name()
             )));
@@ -613,6 +644,24 @@ pub fn drawing_to_model(
         tolerance: None,
         cracks: Vec::new(),
     };
+    let mut model = model;
+    let mut crack_entities = Vec::new();
+    if !opts.crack_layers.is_empty() {
+        let (cracks, survey) = crate::survey::drawing_to_survey(
+            drawing,
+            &crate::survey::SurveyOptions {
+                layers: opts.crack_layers.clone(),
+                units: Some(units),
+                ..Default::default()
+            },
+        )?;
+        model.cracks = cracks
+            .into_iter()
+            .map(crate::survey::existing_crack)
+            .collect();
+        crack_entities = survey.lines.into_iter().map(|l| l.entity).collect();
+        notes.extend(survey.notes);
+    }
     Ok((
         model,
         ImportReport {
@@ -620,6 +669,7 @@ pub fn drawing_to_model(
             scale,
             block_entities,
             support_entities,
+            crack_entities,
             ignored,
             merged_vertices: merged,
             merge_tolerance: tol,

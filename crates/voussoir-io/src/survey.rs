@@ -22,7 +22,7 @@ use dxf::Drawing;
 use std::collections::BTreeMap;
 use std::path::Path;
 use voussoir::analysis::identify::{Crack, Width};
-use voussoir::model::Point;
+use voussoir::model::{ExistingCrack, Point};
 
 /// How to read a survey drawing.
 #[derive(Clone, Debug, PartialEq)]
@@ -204,7 +204,9 @@ fn layer_width(layer: &str) -> Option<f64> {
     number.parse::<f64>().ok().map(|v| v * scale)
 }
 
-fn on_layer(layer: &str, wanted: &[String]) -> bool {
+/// Whether `layer` is one of `wanted` (case-insensitive, `PREFIX*`); none wanted: a layer
+/// whose name contains "crack".
+pub(crate) fn on_layer(layer: &str, wanted: &[String]) -> bool {
     if wanted.is_empty() {
         return layer.to_ascii_lowercase().contains("crack");
     }
@@ -403,8 +405,14 @@ pub fn drawing_to_survey(
         } else {
             format!("its layers: {}", all_layers.join(", "))
         };
+        // With no layer named, say how to name one; a named layer without lines is the error.
+        let hint = if opts.layers.is_empty() {
+            ": pass --survey-layer NAME"
+        } else {
+            ""
+        };
         return Err(IoError(format!(
-            "no crack line (LWPOLYLINE, POLYLINE or LINE) on the survey layers ({wanted}; {have}): pass --survey-layer NAME"
+            "no crack line (LWPOLYLINE, POLYLINE or LINE) on the survey layers ({wanted}; {have}){hint}"
         )));
     }
     for l in &mut lines {
@@ -509,6 +517,19 @@ pub fn drawing_to_survey(
             notes,
         },
     ))
+}
+
+/// A surveyed crack line as one of a model's existing cracks (same line, catch distance and
+/// widths, in metres).
+pub fn existing_crack(c: Crack) -> ExistingCrack {
+    ExistingCrack {
+        at: c.at,
+        joint: c.joint,
+        polyline: c.polyline,
+        snap: c.snap,
+        opening: c.opening,
+        units: c.units,
+    }
 }
 
 /// Read a survey drawing (see the module documentation).

@@ -152,6 +152,7 @@ fn model_from_dxf(
             support_handles,
             merge_tolerance,
             live,
+            crack_layers: Vec::new(),
         };
         let (m, rep) = read_dxf(&path, &opts)?;
         // Validate now, naming the DXF entity of a bad block (as `voussoir import` does).

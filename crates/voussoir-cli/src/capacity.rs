@@ -242,6 +242,12 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
             hinges.join(", ")
         );
     }
+    s.push_str(&crate::common::cracks_section(
+        "cracks at the largest settlement",
+        "widths in mm, widest first",
+        &r.cracks,
+        true,
+    ));
     if let Some(z) = r.zero_capacity_settlement {
         let _ = writeln!(s, "zero-capacity {}: {}", unit.noun(), len.show(z));
     }

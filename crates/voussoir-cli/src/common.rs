@@ -8,7 +8,7 @@ use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS
 use voussoir::analysis::{LimitResult, SettlementResult};
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::model3d::{AnyModel, Model3d};
-use voussoir::result::{Hinge, Spatial};
+use voussoir::result::{CrackText, Hinge, Spatial};
 use voussoir::settlement_input::ModelSupports;
 use voussoir::structure::Body;
 use voussoir::Assembly;
@@ -875,6 +875,37 @@ fn hinges_section<S: Assembly>(st: &S, heading: &str, hinges: &[Hinge<S::D>]) ->
     s
 }
 
+/// Cracks listed in a summary: at most this many lines, then "… and N more".
+pub const CRACK_LINES: usize = 10;
+
+/// The cracks of a result, widest first: `crack 1: 2.41 mm wide, 1.30 m long, …` (`widths`:
+/// a settlement's widths in mm; otherwise openings relative to the largest), at most
+/// [`CRACK_LINES`] lines then "… and N more".
+pub fn cracks_section<C: CrackText>(
+    heading: &str,
+    note: &str,
+    cracks: &[C],
+    widths: bool,
+) -> String {
+    let mut s = String::new();
+    if cracks.is_empty() {
+        return s;
+    }
+    let largest = cracks.iter().fold(0.0f64, |m, c| m.max(c.max_opening()));
+    let _ = writeln!(s, "{heading}: {} ({note})", cracks.len());
+    for (i, c) in cracks.iter().take(CRACK_LINES).enumerate() {
+        let _ = writeln!(s, "  crack {:>2}: {}", i + 1, c.describe(widths, largest));
+    }
+    if cracks.len() > CRACK_LINES {
+        let _ = writeln!(
+            s,
+            "  … and {} more (all in the result's \"cracks\")",
+            cracks.len() - CRACK_LINES
+        );
+    }
+    s
+}
+
 /// The prescribed motion of every moving support, one line each, in the summaries' units
 /// (README, "Units in the summaries"): translations in cm, rotations in mrad.
 pub fn motions_section<S: Assembly>(st: &S) -> String {
@@ -940,6 +971,12 @@ pub fn limit_summary<S: Assembly>(st: &S, r: &LimitResult<S::D>) -> String {
         "hinges of the collapse mechanism",
         &r.hinges,
     ));
+    s.push_str(&cracks_section(
+        "cracks of the collapse mechanism",
+        "openings relative to the largest: a mechanism's amplitude is arbitrary",
+        &r.cracks,
+        false,
+    ));
     s
 }
 
@@ -955,6 +992,12 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
     }
     s.push_str(&motions_section(st));
     s.push_str(&hinges_section(st, "hinges", &r.hinges));
+    s.push_str(&cracks_section(
+        "cracks",
+        "widths in mm, widest first",
+        &r.cracks,
+        true,
+    ));
     let open = r
         .joints
         .iter()

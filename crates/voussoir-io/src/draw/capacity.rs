@@ -276,6 +276,7 @@ impl CapacityFigures for Two {
         );
         scene.blocks = &motions;
         scene.hinges = &r.settlement_hinges;
+        scene.cracks = &r.cracks;
         scene.units = MotionUnits::Metres;
         let d = draw(
             &scene,

@@ -16,7 +16,7 @@ use std::fmt::Write as _;
 use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
 use voussoir::geometry::{area_centroid, RigidMotion};
 use voussoir::result::{
-    BlockMotion, BodyName, Geometry, Hinge, JointResult, JointState, ThrustPoint,
+    BlockMotion, BodyName, Crack, Geometry, Hinge, JointResult, JointState, ThrustPoint,
 };
 
 /// What the block motions of a scene mean.
@@ -41,6 +41,9 @@ pub struct Scene<'a> {
     pub blocks: &'a [BlockMotion],
     pub joints: &'a [JointResult],
     pub hinges: &'a [Hinge],
+    /// The cracks as polylines, widest first ([`voussoir::result::cracks`]): drawn as lines,
+    /// the first ten numbered as the summaries number them.
+    pub cracks: &'a [Crack],
     pub thrust_line: &'a [ThrustPoint],
     pub units: MotionUnits,
     /// Whether the analysis multiplies the live loads by λ (limit analyses, models). A
@@ -76,6 +79,7 @@ impl<'a> Scene<'a> {
             blocks: &[],
             joints: &[],
             hinges: &[],
+            cracks: &[],
             thrust_line: &[],
             units: MotionUnits::Metres,
             live_loads: true,
@@ -106,6 +110,7 @@ impl<'a> Scene<'a> {
             blocks: &r.blocks,
             joints: &r.joints,
             hinges: &r.hinges,
+            cracks: &r.cracks,
             thrust_line: &r.thrust_line,
             units: MotionUnits::Normalised,
             live_loads: true,
@@ -149,6 +154,7 @@ impl<'a> Scene<'a> {
             blocks: &r.blocks,
             joints: &r.joints,
             hinges: &r.hinges,
+            cracks: &r.cracks,
             thrust_line: &r.thrust_line,
             units: MotionUnits::Metres,
             live_loads: false,
@@ -373,6 +379,10 @@ pub(crate) const THRUST: &str = "#1f5fbf";
 pub(crate) const LOAD: &str = "#7b2d8e";
 pub(crate) const FORCE: &str = "#1a9850";
 pub(crate) const HINGE: &str = "#111111";
+/// Cracks narrower than this fraction of the widest are not drawn as lines (hairlines).
+pub(crate) const HAIRLINE: f64 = 0.01;
+/// The crack lines (darker than the crack wedges' fill).
+pub(crate) const CRACK_LINE: &str = "#7a0177";
 pub(crate) const PALETTE: [&str; 8] = [
     "#f6c97f", "#9ecae1", "#b5dba0", "#f4a582", "#c9b8e0", "#f2e394", "#8fd3c8", "#e7b3cf",
 ];
@@ -841,6 +851,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         undeformed: has_motion && opts.undeformed,
         hinges: opts.hinges && !scene.hinges.is_empty(),
         cracks: opts.cracks && scene.joints.iter().any(|j| j.state != JointState::Closed),
+        crack_lines: opts.cracks && !scene.cracks.is_empty(),
         thrust: (opts.thrust_line && !scene.thrust_line.is_empty()).then_some("centre of pressure"),
         live: loads.iter().any(|l| l.3).then_some(live_max),
         dead: loads.iter().any(|l| !l.3).then_some(dead_max),
@@ -1041,6 +1052,149 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         }
     }
 
+    // Crack lines: each crack's polyline, its points carried by the first body of the joint
+    // they lie on (the face the wedge opens from); the first ten numbered as in the summaries.
+    let mut n_crack_lines = 0;
+    let mut crack_interior: Vec<[f64; 2]> = Vec::new();
+    let mut hairline_tips: Vec<[f64; 2]> = Vec::new();
+    if opts.cracks && !scene.cracks.is_empty() {
+        let mut lines = String::new();
+        let mut labels = String::new();
+        let lw = (stroke * 2.4).clamp(1.4, 2.6);
+        // Line width grows with the square root of the opening; cracks narrower than 1 % of the
+        // widest (hairlines) are left out of the drawing (the summaries and the JSON list them).
+        let widest = scene
+            .cracks
+            .iter()
+            .fold(0.0f64, |m, c| m.max(c.max_opening));
+        let fs = 11.0;
+        for (n, c) in scene.cracks.iter().enumerate() {
+            if c.points.len() > 2 {
+                crack_interior.extend_from_slice(&c.points[1..c.points.len() - 1]);
+            }
+            if !(c.max_opening >= HAIRLINE * widest) {
+                // A settlement's hairline is left out with its hinges (a collapse mechanism's
+                // hinges are all drawn: each is part of the mechanism).
+                if scene.units == MotionUnits::Metres {
+                    hairline_tips.extend(c.points.iter().copied());
+                }
+                continue;
+            }
+            let on: Vec<&JointResult> = c
+                .joints
+                .iter()
+                .filter_map(|j| joint_by_id.get(j).copied())
+                .collect();
+            let body_at = |p: [f64; 2]| -> Option<usize> {
+                let mut best: Option<(f64, usize)> = None;
+                for j in &on {
+                    let Some(a) = b.body_of(&j.a) else { continue };
+                    let d = j
+                        .points
+                        .windows(2)
+                        .map(|w| {
+                            voussoir::geometry::point_segment_distance(
+                                p,
+                                [w[0].x, w[0].y],
+                                [w[1].x, w[1].y],
+                            )
+                        })
+                        .fold(f64::INFINITY, f64::min);
+                    if best.is_none_or(|(bd, _)| d < bd) {
+                        best = Some((d, a));
+                    }
+                }
+                best.map(|(_, a)| a).or_else(|| nearest_block(&b, p))
+            };
+            let pts: Vec<([f64; 2], String)> = c
+                .points
+                .iter()
+                .filter(|p| p[0].is_finite() && p[1].is_finite())
+                .filter_map(|p| body_at(*p).map(|a| at(a, *p)))
+                .collect();
+            if pts.len() < 2 {
+                continue;
+            }
+            n_crack_lines += 1;
+            let xy: Vec<[f64; 2]> = pts.iter().map(|p| p.0).collect();
+            let _ = write!(lines, "<polyline points=\"{}\"", points_attr(&xy));
+            if widest > 0.0 && c.max_opening < widest {
+                let w = (lw * (c.max_opening / widest).sqrt()).max(0.6);
+                let _ = write!(lines, " stroke-width=\"{}\"", num(w));
+            }
+            if interactive {
+                let data: Vec<&str> = pts.iter().map(|p| p.1.as_str()).collect();
+                let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
+            }
+            lines.push_str("/>\n");
+            if n < 10 {
+                // The label at the crack's middle (by length, in the undeformed geometry),
+                // carried by the body there, offset off the line.
+                let w: Vec<[f64; 2]> = c
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|p| p[0].is_finite() && p[1].is_finite())
+                    .collect();
+                let half = 0.5
+                    * w.windows(2)
+                        .map(|s| (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]))
+                        .sum::<f64>();
+                let mut acc = 0.0;
+                let mut mw = w[0];
+                for s in w.windows(2) {
+                    let l = (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]);
+                    if acc + l >= half && l > 0.0 {
+                        let t = (half - acc) / l;
+                        mw = [
+                            s[0][0] + t * (s[1][0] - s[0][0]),
+                            s[0][1] + t * (s[1][1] - s[0][1]),
+                        ];
+                        break;
+                    }
+                    acc += l;
+                }
+                if let Some(a) = body_at(mw) {
+                    let (p1, data) = at(a, mw);
+                    if interactive {
+                        // Written at its undeformed place and moved by the slider (data-at).
+                        let p0 = fr.px(mw);
+                        let _ = writeln!(
+                            labels,
+                            "<text x=\"{}\" y=\"{}\" transform=\"translate({} {})\" data-at=\"{data}\">{}</text>",
+                            num(p0[0] + 4.0),
+                            num(p0[1] - 4.0),
+                            num(p1[0] - p0[0]),
+                            num(p1[1] - p0[1]),
+                            n + 1
+                        );
+                    } else {
+                        let _ = writeln!(
+                            labels,
+                            "<text x=\"{}\" y=\"{}\">{}</text>",
+                            num(p1[0] + 4.0),
+                            num(p1[1] - 4.0),
+                            n + 1
+                        );
+                    }
+                }
+            }
+        }
+        if !lines.is_empty() {
+            let _ = writeln!(
+                o,
+                "<g class=\"crack-lines\" fill=\"none\" stroke=\"{CRACK_LINE}\" stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n{lines}</g>",
+                num(lw)
+            );
+        }
+        if !labels.is_empty() {
+            let _ = writeln!(
+                o,
+                "<g class=\"crack-labels\" font-size=\"{fs}\" font-weight=\"bold\" fill=\"{CRACK_LINE}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">\n{labels}</g>"
+            );
+        }
+    }
+
     // Load arrows (kept in their direction, carried by their block).
     let head = (0.018 * width).clamp(6.0, 11.0);
     let draw_arrows = |o: &mut String,
@@ -1182,6 +1336,16 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             if !h.x.is_finite() || !h.y.is_finite() {
                 continue;
             }
+            // A closed point a crack runs through is a bend of that crack, not a hinge; the
+            // hinges of a settlement's hairlines are left out with them.
+            let tol = 1e-9 * b.size;
+            if crack_interior
+                .iter()
+                .chain(&hairline_tips)
+                .any(|p| (p[0] - h.x).hypot(p[1] - h.y) <= tol)
+            {
+                continue;
+            }
             // The hinge moves with body a of its joint; results without joints (capacity
             // curves) use the block nearest to the hinge.
             let a = match joint_by_id.get(&h.joint).and_then(|j| b.body_of(&j.a)) {
@@ -1222,6 +1386,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
             undeformed: has_motion && opts.undeformed,
             hinges: n_hinges > 0,
             cracks: n_cracks > 0,
+            crack_lines: n_crack_lines > 0,
             thrust: drew_thrust,
             live: (!live.is_empty()).then_some(live_max),
             dead: (!dead.is_empty()).then_some(dead_max),
@@ -1339,6 +1504,7 @@ struct LegendItems {
     undeformed: bool,
     hinges: bool,
     cracks: bool,
+    crack_lines: bool,
     /// The thrust line (a line through dots) or centres of pressure (dots): its label.
     thrust: Option<&'static str>,
     /// Largest arrow of each kind (kN), when drawn.
@@ -1370,11 +1536,28 @@ fn legend_entries(
     if it.hinges {
         e.push(Entry::symbol(format!("<circle cx=\"11\" cy=\"0\" r=\"5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge"));
     }
-    if it.cracks {
-        e.push(Entry::symbol(
-            format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.85\"/>"),
-            "crack (opening)",
-        ));
+    if it.cracks || it.crack_lines {
+        // The wedge (the opening) and the line (the crack as traced, numbered by width) share
+        // one legend entry.
+        let mut sym = String::new();
+        if it.cracks {
+            let _ = write!(
+                sym,
+                "<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.85\"/>"
+            );
+        }
+        if it.crack_lines {
+            let _ = write!(
+                sym,
+                "<path d=\"M2 6L22 -6\" stroke=\"{CRACK_LINE}\" stroke-width=\"2\"/>"
+            );
+        }
+        let label = match (it.cracks, it.crack_lines) {
+            (true, true) => "crack, opening (1 = widest)",
+            (false, true) => "crack (1 = widest)",
+            _ => "crack (opening)",
+        };
+        e.push(Entry::symbol(sym, label));
     }
     if let Some(label) = it.thrust {
         let symbol = if label == "thrust line" {

@@ -190,6 +190,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             linear_fit: None,
             settlement_mechanism: vec![],
             settlement_hinges: vec![],
+            cracks: vec![],
             mechanisms: vec![],
             solves: 0,
             iterations: 0,
@@ -202,6 +203,27 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         vec![0.0; umap.num_tangent_rows()],
     );
     let srep = report(&path.unit, &umap, &path.mechanism, 1.0, &pn0, &pt0);
+    // The cracks at the largest settlement: the unit settlement's openings times s_max (plus
+    // the gap of an existing crack).
+    let swidths: Vec<Vec<f64>> = srep
+        .joints
+        .iter()
+        .zip(&srep.open)
+        .map(|(j, o)| {
+            j.points
+                .iter()
+                .zip(o)
+                .map(|(p, &op)| {
+                    if op {
+                        (p.opening * smax + p.gap).max(0.0)
+                    } else {
+                        0.0
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let settlement_cracks = path.unit.cracks(&srep.joints, &srep.open, &swidths);
 
     let mut warm = WarmLimit::new(&opts.solver, opts.hot_start)
         .with_crushing(opts.crushing)
@@ -358,6 +380,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         linear_fit,
         settlement_mechanism: srep.blocks,
         settlement_hinges: srep.hinges,
+        cracks: settlement_cracks,
         mechanisms,
         solves,
         iterations,

@@ -455,6 +455,7 @@ pub fn incremental_with(
         peak_load_multiplier: peak_l,
         peak_displacement: peak.1,
         initial_open_joints: open_joints(start),
+        cracks: crate::result::cracks::cracks_of_gaps(&st),
         steps,
         snaps,
         solves: warm.solves,

@@ -440,6 +440,11 @@ pub fn limit_result<S: Assembly>(
         s.mechanism.clone()
     };
     let rep = report(st, map, &d, 0.0, &s.pn, &s.pt);
+    let cracks = if s.mechanism.is_empty() {
+        vec![]
+    } else {
+        rep.cracks(st)
+    };
     let (dead, live) = (st.load_vector(false), st.load_vector(true));
     let (wd, wl) = load_works(&s.mechanism, &dead, &live);
     let unit = crate::scale::lambda_unit(map.dofs_per_block, &dead, &live);
@@ -508,6 +513,7 @@ pub fn limit_result<S: Assembly>(
         } else {
             rep.hinges
         },
+        cracks,
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         iterations: s.iterations,

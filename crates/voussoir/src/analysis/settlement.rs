@@ -183,6 +183,7 @@ pub fn settlement_result<S: Assembly>(
             blocks: vec![],
             joints: vec![],
             hinges: vec![],
+            cracks: vec![],
             thrust_line: vec![],
             reactions: vec![],
             friction_iteration: None,
@@ -191,6 +192,7 @@ pub fn settlement_result<S: Assembly>(
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
+    let cracks = rep.cracks(st);
     // The gap on the problem's own work scale (crate::scale): the total dead load times the
     // largest displacement the support motions give a contact point.
     let wscale = crate::scale::settlement_work_scale(map, &st.load_vector(false));
@@ -239,6 +241,7 @@ pub fn settlement_result<S: Assembly>(
         blocks: rep.blocks,
         joints: rep.joints,
         hinges: rep.hinges,
+        cracks,
         thrust_line: rep.thrust_line,
         reactions: rep.reactions,
         friction_iteration: None,

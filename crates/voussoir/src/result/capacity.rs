@@ -157,6 +157,10 @@ pub struct CapacityResult<D: Spatial = Two> {
     /// Settlement mechanism per unit settlement and its hinges.
     pub settlement_mechanism: Vec<BlockMotion<D>>,
     pub settlement_hinges: Vec<Hinge<D>>,
+    /// The cracks the settlement opens at its largest value `max_settlement` (the settlement
+    /// mechanism per unit settlement times `max_settlement`; m): [`super::cracks`].
+    #[serde(default)]
+    pub cracks: Vec<D::Crack>,
     /// Collapse mechanism per step (empty unless requested).
     pub mechanisms: Vec<CapacityMechanism<D>>,
     /// LP solves and simplex iterations spent (curve and root finding).

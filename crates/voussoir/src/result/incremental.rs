@@ -105,6 +105,10 @@ pub struct IncrementalResult {
     pub peak_displacement: f64,
     /// Joints open at the start (e.g. opened by a settlement).
     pub initial_open_joints: Vec<usize>,
+    /// The cracks of the final state: the open points of the final geometry, widths their gaps
+    /// (m) ([`super::cracks`]).
+    #[serde(default)]
+    pub cracks: Vec<super::Crack>,
     pub steps: usize,
     /// Steps without equilibrium for any λ in which the dead loads alone moved the structure
     /// until an open point closed (a hinge moving to the next joint); they add no curve point.

@@ -77,6 +77,10 @@ pub struct LimitResult<D: Spatial = Two> {
     pub blocks: Vec<BlockMotion<D>>,
     pub joints: Vec<JointResult<D>>,
     pub hinges: Vec<Hinge<D>>,
+    /// The cracks ([`super::cracks`]): polylines through consecutive open joints in 2D
+    /// (`points`, `length` m, `max_opening`: opening rates of the normalised mechanism, whose amplitude is arbitrary), one record per cracked joint in 3D; widest first.
+    #[serde(default)]
+    pub cracks: Vec<D::Crack>,
     pub thrust_line: Vec<ThrustPoint<D>>,
     pub reactions: Vec<Reaction<D>>,
     /// Simplex iterations spent.

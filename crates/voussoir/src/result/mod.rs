@@ -6,6 +6,7 @@
 
 pub mod canonical;
 pub mod capacity;
+pub mod cracks;
 pub mod incremental;
 pub mod limit;
 pub mod nonassociative;
@@ -15,6 +16,7 @@ pub mod tilt;
 
 pub use canonical::*;
 pub use capacity::*;
+pub use cracks::{Crack, Crack3d, CrackEnd, CrackFront, CrackGeometry, CrackText};
 pub use incremental::*;
 pub use limit::*;
 pub use nonassociative::*;
@@ -250,6 +252,19 @@ pub struct JointReport<D: Spatial = Two> {
     pub thrust_line: Vec<ThrustPoint<D>>,
     pub reactions: Vec<Reaction<D>>,
     pub openings: Vec<f64>,
+    /// Per joint and point (in the order of `joints[j].points`): whether the point is open
+    /// (on the motion's scale, [`crate::scale`]), and its opening — for a finite motion
+    /// (`support_scale > 0`) the gap it had before plus the opening, else the opening rate.
+    /// What [`Assembly::cracks`] traces the cracks from.
+    pub open: Vec<Vec<bool>>,
+    pub widths: Vec<Vec<f64>>,
+}
+
+impl<D: Spatial> JointReport<D> {
+    /// The cracks of this report on structure `st` ([`crate::result::cracks`]).
+    pub fn cracks<S: Assembly<D = D>>(&self, st: &S) -> Vec<D::Crack> {
+        st.cracks(&self.joints, &self.open, &self.widths)
+    }
 }
 
 /// Build joints, hinges, thrust line and reactions from block motions `d` (with the prescribed
@@ -294,6 +309,8 @@ pub fn report<S: Assembly>(
     let mut joints = Vec::with_capacity(contact.len());
     let mut hinges = Vec::new();
     let mut thrust_line = Vec::new();
+    let mut open_flags = Vec::with_capacity(contact.len());
+    let mut widths = Vec::with_capacity(contact.len());
     for (j, joint) in contact.iter().enumerate() {
         let range = map.joint_start[j]..map.joint_start[j + 1];
         let ts = joint.tangents.as_ref();
@@ -311,6 +328,8 @@ pub fn report<S: Assembly>(
         let mut centre = [0.0f64; 3];
         let mut points: Vec<PointResult<S::D>> = Vec::new();
         let mut closed = Vec::new();
+        let mut jopen = Vec::new();
+        let mut jwidth = Vec::new();
         let (mut n_open, mut sliding) = (0, false);
         for k in range {
             let (x, gap) = joint.points[map.points[k].index];
@@ -332,6 +351,14 @@ pub fn report<S: Assembly>(
             } else {
                 closed.push(x);
             }
+            jopen.push(is_open);
+            jwidth.push(if !is_open {
+                0.0
+            } else if support_scale > 0.0 {
+                (gap + o).max(0.0)
+            } else {
+                o.max(0.0)
+            });
             let fn_ = clean(pn[k], fscale);
             let mut fs = [0.0f64; 2];
             for (m, f) in fs.iter_mut().enumerate().take(nt) {
@@ -392,6 +419,8 @@ pub fn report<S: Assembly>(
         } else {
             None
         };
+        open_flags.push(jopen);
+        widths.push(jwidth);
         let sfc: Vec<f64> = sf[..nt].iter().map(|v| clean(*v, fscale)).collect();
         joints.push(JointResult {
             id: j,
@@ -416,6 +445,8 @@ pub fn report<S: Assembly>(
         thrust_line,
         reactions,
         openings: open,
+        open: open_flags,
+        widths,
     }
 }
 

@@ -63,6 +63,10 @@ pub struct SettlementResult<D: Spatial = Two> {
     pub blocks: Vec<BlockMotion<D>>,
     pub joints: Vec<JointResult<D>>,
     pub hinges: Vec<Hinge<D>>,
+    /// The cracks ([`super::cracks`]): polylines through consecutive open joints in 2D
+    /// (`points`, `length` m, `max_opening` m), one record per cracked joint in 3D; widest first.
+    #[serde(default)]
+    pub cracks: Vec<D::Crack>,
     pub thrust_line: Vec<ThrustPoint<D>>,
     pub reactions: Vec<Reaction<D>>,
     /// The non-associative friction iteration, when one was run.

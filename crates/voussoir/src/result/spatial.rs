@@ -24,6 +24,16 @@ pub trait Spatial: Dim {
     type Wrench: Clone + Debug + PartialEq + Serialize + DeserializeOwned + Send + Sync;
     /// The shapes a result refers to, so that a saved result can be drawn on its own.
     type Shapes: Clone + Debug + PartialEq + Serialize + DeserializeOwned + Send + Sync;
+    /// A crack as results report it: a polyline in 2D ([`super::Crack`]), a record per
+    /// cracked joint in 3D ([`super::Crack3d`]).
+    type Crack: Clone
+        + Debug
+        + PartialEq
+        + Serialize
+        + DeserializeOwned
+        + Send
+        + Sync
+        + super::cracks::CrackText;
 
     /// `Dim::DOFS` values as a motion.
     fn motion(dofs: &[f64]) -> Self::Motion;
@@ -137,6 +147,7 @@ impl Spatial for Two {
     type Tangential = f64;
     type Wrench = PlanarWrench;
     type Shapes = super::Geometry;
+    type Crack = super::Crack;
 
     fn motion(d: &[f64]) -> PlanarMotion {
         PlanarMotion {
@@ -174,6 +185,7 @@ impl Spatial for Three {
     type Tangential = [f64; 2];
     type Wrench = SpatialWrench;
     type Shapes = SpatialShapes;
+    type Crack = super::Crack3d;
 
     fn motion(d: &[f64]) -> SpatialMotion {
         SpatialMotion {

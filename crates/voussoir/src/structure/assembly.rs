@@ -41,6 +41,16 @@ pub trait Assembly: Clone + Send + Sync {
     /// The shapes a result refers to.
     fn shapes(&self) -> <Self::D as Spatial>::Shapes;
 
+    /// The cracks of a report's joints (`open[j][k]`: point `k` of joint `j` is open;
+    /// `widths[j][k]`: its opening): polylines in 2D, one record per cracked joint in 3D
+    /// ([`crate::result::cracks`]).
+    fn cracks(
+        &self,
+        joints: &[crate::result::JointResult<Self::D>],
+        open: &[Vec<bool>],
+        widths: &[Vec<f64>],
+    ) -> Vec<<Self::D as Spatial>::Crack>;
+
     /// Magnitude of the support motions: the largest translation (or rotation if none).
     fn settlement_magnitude(&self) -> f64;
 

@@ -821,6 +821,20 @@ impl Assembly for Structure {
         crate::result::Geometry::of(self)
     }
 
+    fn cracks(
+        &self,
+        joints: &[crate::result::JointResult],
+        open: &[Vec<bool>],
+        widths: &[Vec<f64>],
+    ) -> Vec<crate::result::Crack> {
+        crate::result::cracks::trace_cracks(
+            joints,
+            open,
+            widths,
+            &crate::result::CrackGeometry::of_structure(self),
+        )
+    }
+
     fn settlement_magnitude(&self) -> f64 {
         Structure::settlement_magnitude(self)
     }

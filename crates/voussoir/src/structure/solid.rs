@@ -525,6 +525,15 @@ impl Assembly for Structure3d {
         Ok(s)
     }
 
+    fn cracks(
+        &self,
+        joints: &[crate::result::JointResult<crate::dim::Three>],
+        open: &[Vec<bool>],
+        widths: &[Vec<f64>],
+    ) -> Vec<crate::result::Crack3d> {
+        crate::result::cracks::crack_records_3d(joints, open, widths, self.tolerance)
+    }
+
     fn shapes(&self) -> SpatialShapes {
         SpatialShapes {
             blocks: self.blocks.iter().map(|b| polyhedron(&b.shape)).collect(),

@@ -1204,7 +1204,7 @@ body{{background:#fff;font-size:10pt}}
 main{{max-width:none;margin:0;padding:0;box-shadow:none}}
 nav,.slider,.controls,.hint,.viewer,details,button,input,.screen-only,main>footer{{display:none!important}}
 .print-only{{display:block}}
-h1,h2,h3{{break-after:avoid;page-break-after:avoid}}
+h1,h2,h3{{break-after:avoid;page-break-after:avoid;break-inside:avoid;page-break-inside:avoid}}
 h2{{margin-top:18px}}
 figure,table.kv,table.titleblock,.signoff,tr,ul.hyp li{{break-inside:avoid;page-break-inside:avoid}}
 .scroll{{overflow:visible}}

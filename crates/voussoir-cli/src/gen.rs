@@ -172,9 +172,11 @@ pub struct ArchArgs {
     /// horizontal (equal to each block's weight).
     #[arg(long, value_enum, ignore_case = true, default_value = "none")]
     pub live: LiveArg,
-    /// Live load intensity q in kN/m² per unit horizontal projection of the extrados.
-    #[arg(long, default_value_t = 1.0)]
-    pub live_load: f64,
+    /// Live load intensity q in kN/m² per unit horizontal projection of the extrados, for
+    /// `--live full|left|right` [default: 1] (refused with `none` or `horizontal`, which have
+    /// no intensity).
+    #[arg(long)]
+    pub live_load: Option<f64>,
     /// Segmental arch: half of the angle the arch subtends, in degrees.
     #[arg(long, default_value_t = 60.0)]
     pub half_angle: f64,
@@ -280,7 +282,17 @@ fn write_json<T: serde::Serialize>(
 }
 
 impl ArchArgs {
-    pub fn spec(&self) -> ArchSpec {
+    pub fn spec(&self) -> Result<ArchSpec, Fail> {
+        if let (Some(q), LiveArg::None | LiveArg::Horizontal) = (self.live_load, self.live) {
+            return Err(Fail(format!(
+                "--live-load {q}: applies to a vertical live load (--live full, left or right); \
+                 --live {} has no intensity",
+                match self.live {
+                    LiveArg::None => "none",
+                    _ => "horizontal",
+                }
+            )));
+        }
         let shape = match self.shape {
             ShapeArg::Semicircular => ArchShape::Semicircular,
             ShapeArg::Segmental => ArchShape::Segmental {
@@ -290,7 +302,7 @@ impl ArchArgs {
                 offset: self.offset,
             },
         };
-        ArchSpec {
+        Ok(ArchSpec {
             shape,
             radius: self.radius,
             radius_at: self.radius_at.into(),
@@ -299,8 +311,8 @@ impl ArchArgs {
             unit_weight: self.unit_weight,
             width: self.width,
             live: self.live.into(),
-            live_load: self.live_load,
-        }
+            live_load: self.live_load.unwrap_or(1.0),
+        })
     }
 }
 
@@ -330,7 +342,7 @@ fn numbers(flag: &str, text: &str, n: usize, what: &str) -> Result<Vec<f64>, Fai
 pub fn run(g: Gen) -> Result<(), Fail> {
     match g {
         Gen::Arch(a) => {
-            let m = generate::arch(&a.spec())?;
+            let m = generate::arch(&a.spec()?)?;
             write(&m, &a.out)
         }
         Gen::Vault(v) => {
@@ -339,7 +351,7 @@ pub fn run(g: Gen) -> Result<(), Fail> {
                     "--width does not apply to `gen vault`: its depth along y is --depth".into(),
                 ));
             }
-            let m = generate3d::vault(&v.arch.spec(), v.depth, v.rings, v.bond.into())?;
+            let m = generate3d::vault(&v.arch.spec()?, v.depth, v.rings, v.bond.into())?;
             write3d(&m, &v.arch.out)
         }
         Gen::Dome(d) => {

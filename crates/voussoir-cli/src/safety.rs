@@ -247,7 +247,7 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
     let mut solver = bracket.solver.options();
     let (generator, found, model_json) = match &g {
         Generated::Arch(x) => {
-            let spec = x.arch.spec();
+            let spec = x.arch.spec()?;
             let make = |t: f64| {
                 voussoir::generate::arch(&voussoir::generate::ArchSpec {
                     thickness: t,

@@ -19,7 +19,7 @@ fn run(args: &[&str]) -> Output {
 
 fn paper_arch(dir: &Path, live: &str) -> String {
     let p = dir.join(format!("arch-{live}.json"));
-    let o = run(&[
+    let mut args = vec![
         "gen",
         "arch",
         "--radius",
@@ -34,11 +34,13 @@ fn paper_arch(dir: &Path, live: &str) -> String {
         "18",
         "--live",
         live,
-        "--live-load",
-        "1",
-        "-o",
-        p.to_str().unwrap(),
-    ]);
+    ];
+    // An intensity only for a vertical live load (`--live none` refuses it).
+    if live != "none" {
+        args.extend(["--live-load", "1"]);
+    }
+    args.extend(["-o", p.to_str().unwrap()]);
+    let o = run(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     p.to_str().unwrap().to_string()
 }

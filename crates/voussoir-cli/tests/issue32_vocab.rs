@@ -4,52 +4,13 @@
 //! mm, motions and displacements in cm, positions in m), checked against the JSON (× 1000,
 //! × 100) within the printed precision; `--help` lists the new names.
 
-use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
-fn voussoir(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run voussoir")
-}
-
-/// Run and expect success; stdout.
-fn run(dir: &Path, args: &[&str]) -> String {
-    let o = voussoir(dir, args);
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-/// Run and expect a one-line refusal containing `needle`.
-fn refused(dir: &Path, args: &[&str], needle: &str) {
-    let o = voussoir(dir, args);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert!(!o.status.success(), "voussoir {args:?} succeeded");
-    assert!(o.stdout.is_empty(), "voussoir {args:?} printed to stdout");
-    let lines: Vec<&str> = err.lines().collect();
-    assert_eq!(lines.len(), 1, "voussoir {args:?}: not one line: {err}");
-    assert!(
-        lines[0].starts_with("error: ") && lines[0].contains(needle),
-        "voussoir {args:?}: {err}"
-    );
-}
+mod common;
+use common::{json, refused, run};
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i32vocab-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn json(text: &str) -> Value {
-    serde_json::from_str(text).unwrap()
+    common::tmpdir("i32vocab", name)
 }
 
 /// `base` run with `old` and with `new` (each a list of extra arguments): the same stdout.

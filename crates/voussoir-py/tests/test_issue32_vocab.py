@@ -54,3 +54,18 @@ def test_issue32_item4_dxf_weld_and_live():
     old = v.Model.from_dxf(DXF, units="mm", merge_tolerance=0.001, dxf_live="none")
     assert new == old
     assert v.Model.from_dxf(DXF, units="mm") == v.Model.from_dxf(DXF, units="mm", live="horizontal")
+
+
+def test_arch_live_load_without_a_vertical_live_load_is_refused():
+    """Regression (session 10): live_load with live="none" was ignored; now refused, and
+    honoured with a vertical live load (λ inversely proportional to q, the paper's 0.2189)."""
+    import pytest
+
+    with pytest.raises(ValueError, match="no intensity"):
+        v.generate.arch(live="none", live_load=5)
+    with pytest.raises(ValueError, match="no intensity"):
+        v.generate.arch(live="horizontal", live_load=2)
+    l1 = v.limit(v.generate.arch(live="left")).load_multiplier
+    l5 = v.limit(v.generate.arch(live="left", live_load=5)).load_multiplier
+    assert abs(l1 - 0.2189) < 5e-4
+    assert abs(5 * l5 - l1) <= 1e-9 * l1

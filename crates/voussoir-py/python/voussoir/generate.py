@@ -27,7 +27,7 @@ def arch(
     unit_weight: float = 18.0,
     width: float = 1.0,
     live: str = "none",
-    live_load: float = 1.0,
+    live_load: Optional[float] = None,
     half_angle: float = 60.0,
     offset: float = 0.5,
 ) -> Model:
@@ -37,8 +37,14 @@ def arch(
     degrees) or ``"pointed"`` (``offset``: each arc's centre from the middle, fraction of the
     intrados radius; 0.5 is equilateral). ``radius_at``: ``"intrados"``, ``"centreline"`` or
     ``"extrados"``. ``live``: ``"none"``, ``"full"``, ``"left"``, ``"right"`` (vertical, on the
-    extrados, ``live_load`` kN/m² per unit horizontal projection) or ``"horizontal"`` (each
-    block's weight)."""
+    extrados, ``live_load`` kN/m² per unit horizontal projection, default 1) or
+    ``"horizontal"`` (each block's weight). ``live_load`` with ``"none"`` or ``"horizontal"``
+    raises ``ValueError`` (they have no intensity), as the CLI refuses it."""
+    if live_load is not None and str(live).lower() in ("none", "horizontal"):
+        raise ValueError(
+            f"live_load={live_load}: applies to a vertical live load (live='full', 'left' or "
+            f"'right'); live='{live}' has no intensity"
+        )
     return Model(
         _native.gen_arch(
             shape,
@@ -49,7 +55,7 @@ def arch(
             float(unit_weight),
             float(width),
             live,
-            float(live_load),
+            float(1.0 if live_load is None else live_load),
             float(half_angle),
             float(offset),
         )

@@ -364,10 +364,15 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
     };
     let rest = at_rest(&st);
     let u = Unknown::supports(&rest, "right", &["right".into()], Component::U, None, None).unwrap();
-    let e = identify(&rest, &obs, std::slice::from_ref(&u), &IdentifyOptions::default())
-        .err()
-        .unwrap()
-        .to_string();
+    let e = identify(
+        &rest,
+        &obs,
+        std::slice::from_ref(&u),
+        &IdentifyOptions::default(),
+    )
+    .err()
+    .unwrap()
+    .to_string();
     assert!(
         e.contains("cracks[1]: the polyline from") && e.contains("catches no joint point"),
         "{e}"
@@ -377,7 +382,13 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
     let mut obs2 = obs.clone();
     obs2.cracks[1].snap = Some(0.2);
     obs2.cracks[1].opening = Width::One(0.0);
-    assert!(identify(&rest, &obs2, std::slice::from_ref(&u), &IdentifyOptions::default()).is_ok());
+    assert!(identify(
+        &rest,
+        &obs2,
+        std::slice::from_ref(&u),
+        &IdentifyOptions::default()
+    )
+    .is_ok());
     let mut obs3 = obs.clone();
     obs3.cracks[1].opening = Width::PerPoint(vec![0.001, 0.0, 0.002]);
     let e = identify(&rest, &obs3, &[u], &IdentifyOptions::default())

@@ -288,14 +288,7 @@ fn shade(hex: &str, f: f64) -> String {
 
 /// Newell's normal of a polygon (not normalised; zero for a degenerate one).
 fn newell(p: &[V3]) -> V3 {
-    let mut n = [0.0; 3];
-    for i in 0..p.len() {
-        let (a, b) = (p[i], p[(i + 1) % p.len()]);
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    n
+    voussoir::vector::newell(p.len(), |i| p[i])
 }
 
 /// Whether two projected polygons overlap by more than `tol` pixels (separating axes of their

@@ -413,34 +413,11 @@ impl UnionFind {
     }
 }
 
-type V3 = [f64; 3];
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
-}
+use voussoir::vector::{self, cross, dot3 as dot, norm3 as norm, sub3 as sub, V3};
 
 /// Newell's normal of a polygon (length: twice its area).
 fn newell(v: &[V3], f: &[usize]) -> V3 {
-    let mut n = [0.0; 3];
-    for k in 0..f.len() {
-        let (p, q) = (v[f[k]], v[f[(k + 1) % f.len()]]);
-        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    n
+    vector::newell(f.len(), |k| v[f[k]])
 }
 
 /// Six times the signed volume enclosed by the faces (about the first vertex).

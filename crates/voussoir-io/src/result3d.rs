@@ -688,33 +688,11 @@ pub fn support_motion_text(g: &SpatialShapes) -> Option<String> {
     Some(format!("prescribed support motion: {}", parts.join("; ")))
 }
 
-pub type V3 = [f64; 3];
-
-pub fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-pub fn add(a: V3, b: V3) -> V3 {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-pub fn scale(a: V3, s: f64) -> V3 {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
-pub fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-pub fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-pub fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
-}
-pub fn finite(a: V3) -> bool {
-    a.iter().all(|x| x.is_finite())
-}
+/// Vector operations under their short names (defined once, in `voussoir::vector`).
+pub use voussoir::vector::{
+    add3 as add, cross, dot3 as dot, finite3 as finite, norm3 as norm, scale3 as scale,
+    sub3 as sub, V3,
+};
 
 /// Small rigid motion of point `x` of a body moving by `m = [u, v, w, θx, θy, θz]` about `c`:
 /// `u + θ × (x − c)`.

@@ -18,6 +18,7 @@
 //! Generics over this trait were chosen over cargo features so that one binary reads and
 //! analyses both 2D and 3D models (see `docs/architecture.md`).
 
+use crate::vector::{self, cross};
 use std::fmt::Debug;
 
 /// A spatial dimension: its vector type, DOFs per block and tangents per contact point.
@@ -74,11 +75,11 @@ impl Dim for Two {
 
     #[inline]
     fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
-        [a[0] - b[0], a[1] - b[1]]
+        vector::sub2(a, b)
     }
     #[inline]
     fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
-        a[0] * b[0] + a[1] * b[1]
+        vector::dot2(a, b)
     }
     #[inline]
     fn dof_row(r: [f64; 2], e: [f64; 2], out: &mut [f64]) {
@@ -96,16 +97,6 @@ impl Dim for Two {
     }
 }
 
-/// `a × b` in 3D.
-#[inline]
-pub fn cross3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 impl Dim for Three {
     const N: usize = 3;
     const DOFS: usize = 6;
@@ -115,16 +106,16 @@ impl Dim for Three {
 
     #[inline]
     fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-        [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+        vector::sub3(a, b)
     }
     #[inline]
     fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+        vector::dot3(a, b)
     }
     #[inline]
     fn dof_row(r: [f64; 3], e: [f64; 3], out: &mut [f64]) {
         // (ω × r)·e = ω·(r × e)
-        let m = cross3(r, e);
+        let m = cross(r, e);
         out[..3].copy_from_slice(&e);
         out[3..6].copy_from_slice(&m);
     }
@@ -143,11 +134,11 @@ impl Dim for Three {
         let t = [e[0] - d * n[0], e[1] - d * n[1], e[2] - d * n[2]];
         let l = Self::dot(t, t).sqrt();
         let t1 = [t[0] / l, t[1] / l, t[2] / l];
-        [t1, cross3(n, t1)]
+        [t1, cross(n, t1)]
     }
     #[inline]
     fn small_displacement(c: [f64; 3], d: &[f64], x: [f64; 3]) -> [f64; 3] {
-        let w = cross3([d[3], d[4], d[5]], Self::sub(x, c));
+        let w = cross([d[3], d[4], d[5]], Self::sub(x, c));
         [d[0] + w[0], d[1] + w[1], d[2] + w[2]]
     }
 }
@@ -207,7 +198,7 @@ mod tests {
             ] {
                 assert!((Three::dot(a, b) - v).abs() < 1e-15);
             }
-            let c = cross3(t1, t2);
+            let c = cross(t1, t2);
             assert!((Three::dot(c, n) - 1.0).abs() < 1e-15);
         }
         // Horizontal bed joint: the tangents are the x and y axes.

@@ -36,6 +36,7 @@ use crate::generate::{self, ArchSpec, LiveLoad, RadiusAt};
 use crate::geometry::signed_area;
 use crate::model::{Connection, Load, Material, Model, Per, Point};
 use crate::model3d::{Block3d, Load3d, Loads3d, Model3d, PerArea, Point3, Support3d};
+use crate::vector::{self, add3, cross, dot3, scale3, sub3};
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
@@ -73,47 +74,17 @@ pub enum Bond {
 // ---------------------------------------------------------------------------------------------
 // Small vector algebra and a polyhedron builder that orients each face outward.
 
-fn sub3(a: Point3, b: Point3) -> Point3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn cross3(a: Point3, b: Point3) -> Point3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn dot3(a: Point3, b: Point3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn scale3(a: Point3, s: f64) -> Point3 {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
-fn add3(a: Point3, b: Point3) -> Point3 {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
 fn unit3(a: Point3) -> Point3 {
     let l = dot3(a, a).sqrt();
     scale3(a, 1.0 / l)
 }
 fn mean3(ps: &[Point3]) -> Point3 {
-    let mut c = [0.0; 3];
-    for p in ps {
-        c = add3(c, *p);
-    }
-    scale3(c, 1.0 / ps.len() as f64)
+    vector::mean3(ps.len(), |i| ps[i])
 }
 
 /// Newell's normal of a planar polygon (length twice its area).
 fn newell(ps: &[Point3]) -> Point3 {
-    let mut n = [0.0; 3];
-    for i in 0..ps.len() {
-        let (a, b) = (ps[i], ps[(i + 1) % ps.len()]);
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    n
+    vector::newell(ps.len(), |i| ps[i])
 }
 
 #[derive(Default)]
@@ -746,7 +717,7 @@ pub fn dome(s: &DomeSpec) -> Result<Model3d> {
         let j1 = (j + 1) % n;
         let top_face = [at(ri, 0, j), at(ri, 0, j1), at(re, 0, j1), at(re, 0, j)];
         let (_, down) = mid(psi[0], psi[1], j);
-        let mut nrm = unit3(cross3(dir(0, j), dir(0, j1)));
+        let mut nrm = unit3(cross(dir(0, j), dir(0, j1)));
         if dot3(nrm, down) < 0.0 {
             nrm = scale3(nrm, -1.0);
         }

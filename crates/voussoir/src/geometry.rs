@@ -43,23 +43,8 @@ pub fn area_centroid(p: &[Point]) -> (f64, Point) {
     )
 }
 
-/// 2D cross product.
-#[inline]
-pub fn cross(a: Point, b: Point) -> f64 {
-    a[0] * b[1] - a[1] * b[0]
-}
-#[inline]
-pub fn sub(a: Point, b: Point) -> Point {
-    [a[0] - b[0], a[1] - b[1]]
-}
-#[inline]
-pub fn dot(a: Point, b: Point) -> f64 {
-    a[0] * b[0] + a[1] * b[1]
-}
-#[inline]
-pub fn norm(a: Point) -> f64 {
-    a[0].hypot(a[1])
-}
+/// The plane's vector operations under their short names (defined once, in [`crate::vector`]).
+pub use crate::vector::{dot2 as dot, norm2 as norm, perp_dot as cross, sub2 as sub};
 
 /// Axis-aligned bounding box `[xmin, ymin, xmax, ymax]`.
 pub fn bbox(p: &[Point]) -> [f64; 4] {

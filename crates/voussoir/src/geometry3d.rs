@@ -27,37 +27,8 @@ use i_overlay::float::overlay::{FloatOverlay, OverlayOptions};
 use rayon::prelude::*;
 use std::collections::HashMap;
 
-type V3 = [f64; 3];
+use crate::vector::{add3, cross, dot3, norm3, scale3, sub3, V3};
 type P2 = [f64; 2];
-
-#[inline]
-fn sub3(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-#[inline]
-fn add3(a: V3, b: V3) -> V3 {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-#[inline]
-fn scale3(a: V3, s: f64) -> V3 {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
-#[inline]
-fn dot3(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-#[inline]
-fn cross3(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-#[inline]
-fn norm3(a: V3) -> f64 {
-    dot3(a, a).sqrt()
-}
 
 /// A validated polyhedron: faces outward (counter-clockwise seen from outside), mass properties.
 #[derive(Clone, Debug, PartialEq)]
@@ -80,15 +51,9 @@ fn exceeds(a: f64, b: f64) -> bool {
 /// for planar non-convex faces), and the mean of its vertices.
 fn newell(vertices: &[V3], face: &[usize]) -> (V3, V3) {
     let o = vertices[face[0]];
-    let mut nv = [0.0; 3];
-    let mut c = [0.0; 3];
-    for i in 0..face.len() {
-        let p = sub3(vertices[face[i]], o);
-        let q = sub3(vertices[face[(i + 1) % face.len()]], o);
-        nv = add3(nv, cross3(p, q));
-        c = add3(c, p);
-    }
-    (nv, add3(o, scale3(c, 1.0 / face.len() as f64)))
+    let nv = crate::vector::newell(face.len(), |i| vertices[face[i]]);
+    let c = crate::vector::mean3(face.len(), |i| sub3(vertices[face[i]], o));
+    (nv, add3(o, c))
 }
 
 /// Diameter of a face's vertex set (diagonal of its bounding box).
@@ -281,7 +246,7 @@ pub fn clean_polyhedron(
         for i in 1..f.len() - 1 {
             let b = sub3(vertices[f[i]], o);
             let c = sub3(vertices[f[i + 1]], o);
-            let v6 = dot3(a, cross3(b, c));
+            let v6 = dot3(a, cross(b, c));
             vol6[s] += v6;
             mom[s] = add3(mom[s], scale3(add3(add3(a, b), c), v6));
         }
@@ -400,8 +365,14 @@ fn check_cavities(
         let inside = used
             .iter()
             .all(|&i| outer_q.strictly_contains(vertices[i], tol))
-            && !q.edges.iter().any(|&(p, r)| outer_q.crossed_by(p, r, tol))
-            && !outer_q.edges.iter().any(|&(p, r)| q.crossed_by(p, r, tol));
+            && !q
+                .edges
+                .iter()
+                .any(|&(p, r)| outer_q.is_crossed_by(p, r, tol))
+            && !outer_q
+                .edges
+                .iter()
+                .any(|&(p, r)| q.is_crossed_by(p, r, tol));
         let label = faces_label(&shells[s]);
         let cavity = (vol6[s] < 0.0) != (vol6[outer] < 0.0);
         if cavity && !inside {
@@ -457,9 +428,9 @@ fn plane_frame(n: V3) -> (V3, V3) {
     } else {
         [0.0, 0.0, 1.0]
     };
-    let u = cross3(e, n);
+    let u = cross(e, n);
     let u = scale3(u, 1.0 / norm3(u));
-    (u, cross3(n, u))
+    (u, cross(n, u))
 }
 
 /// A face of some body, as interface detection sees it.
@@ -1095,7 +1066,7 @@ impl QFace {
 fn solid_angle(t: &[V3; 3], q: V3) -> f64 {
     let (a, b, c) = (sub3(t[0], q), sub3(t[1], q), sub3(t[2], q));
     let (la, lb, lc) = (norm3(a), norm3(b), norm3(c));
-    let num = dot3(a, cross3(b, c));
+    let num = dot3(a, cross(b, c));
     let den = la * lb * lc + dot3(a, b) * lc + dot3(a, c) * lb + dot3(b, c) * la;
     2.0 * num.atan2(den)
 }
@@ -1209,7 +1180,7 @@ impl QBody {
 
     /// Whether segment `p`–`q` properly crosses a face: ends on strictly opposite sides, the
     /// crossing strictly inside the face.
-    fn crossed_by(&self, p: V3, q: V3, tol: f64) -> bool {
+    fn is_crossed_by(&self, p: V3, q: V3, tol: f64) -> bool {
         self.faces.iter().any(|f| {
             let (hp, hq) = (f.height(p), f.height(q));
             if !((hp > tol && hq < -tol) || (hp < -tol && hq > tol)) {
@@ -1224,8 +1195,8 @@ impl QBody {
 fn bodies_overlap(a: &QBody, b: &QBody, tol: f64) -> bool {
     a.probes.iter().any(|&p| b.strictly_contains(p, tol))
         || b.probes.iter().any(|&p| a.strictly_contains(p, tol))
-        || a.edges.iter().any(|&(p, q)| b.crossed_by(p, q, tol))
-        || b.edges.iter().any(|&(p, q)| a.crossed_by(p, q, tol))
+        || a.edges.iter().any(|&(p, q)| b.is_crossed_by(p, q, tol))
+        || b.edges.iter().any(|&(p, q)| a.is_crossed_by(p, q, tol))
 }
 
 /// First pair (i, j), i < j, of bodies whose interiors overlap by more than `tol`, skipping
@@ -1382,7 +1353,7 @@ mod tests {
             [0.0, -1.0, 0.0],
         ] {
             let (u, v) = plane_frame(n);
-            let w = cross3(u, v);
+            let w = cross(u, v);
             assert!(norm3(sub3(w, n)) < 1e-15, "{n:?}");
             assert!(dot3(u, n).abs() < 1e-15 && dot3(v, n).abs() < 1e-15);
         }

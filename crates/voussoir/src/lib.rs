@@ -54,6 +54,7 @@ pub mod settlement_input;
 pub mod structure;
 pub mod support_split;
 pub mod sweep;
+pub mod vector;
 
 pub use error::{Error, Result};
 pub use model::Model;

@@ -60,7 +60,7 @@ pub fn strictly_inside(r: [f64; 2], c: f64) -> bool {
 }
 
 /// The ordinate where a polygon's edge crosses `x = c` nearest to `y` (`None` if none does).
-fn crossing_y(p: &[Point], c: f64, y: f64) -> Option<f64> {
+fn y_crossing(p: &[Point], c: f64, y: f64) -> Option<f64> {
     let n = p.len();
     let mut best: Option<f64> = None;
     for i in 0..n {
@@ -134,7 +134,7 @@ pub fn split_polygon(poly: &[Point], cuts: &[f64]) -> Result<Vec<Vec<Vec<Point>>
                         [lo, hi]
                             .into_iter()
                             .find(|c| (q[0] - c).abs() <= eps)
-                            .and_then(|c| crossing_y(poly, c, q[1]).map(|y| [c, y]))
+                            .and_then(|c| y_crossing(poly, c, q[1]).map(|y| [c, y]))
                     })
                     .unwrap_or(*q);
                 if ring.last() != Some(&snapped) {
@@ -174,29 +174,14 @@ pub fn split_polygon(poly: &[Point], cuts: &[f64]) -> Result<Vec<Vec<Vec<Point>>
     Ok(strips)
 }
 
-type V3 = [f64; 3];
-
-fn sub3(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot3(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
+use crate::vector::{self, dot3, sub3, V3};
 
 /// Newell's normal (twice the vector area) and the mean of a face's vertices.
 fn newell(v: &[V3], f: &[usize]) -> (V3, V3) {
-    let mut n = [0.0; 3];
-    let mut c = [0.0; 3];
-    for k in 0..f.len() {
-        let (a, b) = (v[f[k]], v[f[(k + 1) % f.len()]]);
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-        for i in 0..3 {
-            c[i] += a[i] / f.len() as f64;
-        }
-    }
-    (n, c)
+    (
+        vector::newell(f.len(), |k| v[f[k]]),
+        vector::mean3(f.len(), |k| v[f[k]]),
+    )
 }
 
 /// A polyhedron: vertices and faces (counter-clockwise seen from outside).

@@ -7,7 +7,7 @@
 //! cross. A key for the two overlay symbols sits in the top-right corner.
 
 use super::report::{settlement_report, Report, ReportOptions};
-use super::scene::{draw, DrawOptions, Drawing, Scene};
+use super::scene::{centroid, draw, DrawOptions, Drawing, Scene};
 use super::svg::{esc, fmt_fixed, human, num, text_width};
 use crate::lengths::Length;
 use std::fmt::Write as _;
@@ -96,10 +96,6 @@ fn point_motion(r: &IdentifyResult, joint: usize, p: [f64; 2]) -> [f64; 2] {
     };
     let (a, b) = (side(&j.a), side(&j.b));
     [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]
-}
-
-fn centroid(poly: &[[f64; 2]]) -> [f64; 2] {
-    voussoir::geometry::area_centroid(poly).1
 }
 
 /// The figure: the settlement drawing with the observations on top.

@@ -417,7 +417,7 @@ fn finite3(d: [f64; 3]) -> [f64; 3] {
     }
 }
 
-fn centroid(p: &[[f64; 2]]) -> [f64; 2] {
+pub(crate) fn centroid(p: &[[f64; 2]]) -> [f64; 2] {
     if p.is_empty() {
         return [0.0, 0.0];
     }

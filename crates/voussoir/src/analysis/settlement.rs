@@ -565,6 +565,4 @@ impl<S: Assembly> SettlementPath<S> {
     }
 }
 
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
+use crate::vector::dot_n as dot;

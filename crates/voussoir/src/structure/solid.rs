@@ -11,13 +11,14 @@ use super::{
     body_load_blocks, check_load_block, check_materials, check_support, relative_tolerance,
     Assembly, Body, BuildOptions,
 };
-use crate::dim::{cross3, Dim, Three};
+use crate::dim::{Dim, Three};
 use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
 use crate::error::{model_err, Error, Result};
 use crate::geometry3d::{self, Solid};
 use crate::model::{Connection, Material};
 use crate::model3d::{Load3d, Model3d, PerArea, Point3, Polyhedron};
 use crate::result::spatial::{LoadArrow3d, SpatialShapes, SupportSolid};
+use crate::vector::cross;
 use nalgebra::{Rotation3, Vector3};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -371,7 +372,7 @@ fn face_area_centroid(p: &[Point3]) -> (Point3, Point3) {
     let n = p.len();
     let mut area = [0.0; 3];
     for k in 0..n {
-        let c = cross3(p[k], p[(k + 1) % n]);
+        let c = cross(p[k], p[(k + 1) % n]);
         for i in 0..3 {
             area[i] += 0.5 * c[i];
         }
@@ -384,7 +385,7 @@ fn face_area_centroid(p: &[Point3]) -> (Point3, Point3) {
     let o = p[0];
     let (mut centroid, mut total) = ([0.0; 3], 0.0);
     for k in 1..n.saturating_sub(1) {
-        let a = 0.5 * Three::dot(cross3(Three::sub(p[k], o), Three::sub(p[k + 1], o)), unit);
+        let a = 0.5 * Three::dot(cross(Three::sub(p[k], o), Three::sub(p[k + 1], o)), unit);
         for c in 0..3 {
             centroid[c] += a * (o[c] + p[k][c] + p[k + 1][c]) / 3.0;
         }
@@ -482,7 +483,7 @@ impl Assembly for Structure3d {
         for l in self.loads.iter().filter(|l| l.live == live) {
             let c = self.blocks[l.block].shape.centroid;
             let r = Three::sub(l.at, c);
-            let m = cross3(r, l.force);
+            let m = cross(r, l.force);
             for k in 0..3 {
                 row[k] = l.force[k];
                 row[3 + k] = m[k] + l.moment[k];

@@ -35,12 +35,12 @@
 // `!(x > 0.0)` is how this module rejects NaN along with non-positive values (as in `draw`).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::draw::legend::{self, Entry};
-use crate::draw::scene::{
-    auto_scale, wrap, PressurePoints, CRACK, EDGE, FAINT, HINGE, LOAD, PALETTE, STILL, STONE,
-    THRUST,
+use crate::draw::chrome::{
+    Bbox, Page, CRACK, EDGE, FAINT, HINGE, LOAD, MARGIN, PALETTE, STILL, STONE, THRUST,
 };
-use crate::draw::svg::{arrow, esc, human, num, polygon_path, FONT};
+use crate::draw::legend::{self, Entry};
+use crate::draw::scene::{auto_scale, PressurePoints};
+use crate::draw::svg::{arrow, esc, human, num, polygon_path};
 use crate::draw::MotionUnits;
 use crate::result3d::{
     add, cross, dot, norm, polygon_order, scale as vscale, small_displacement, sub, validate,
@@ -680,29 +680,6 @@ pub fn auto_view(r: &(impl Result3d + ?Sized)) -> View {
     }
 }
 
-struct Bbox([f64; 4]);
-impl Bbox {
-    fn new() -> Self {
-        Bbox([
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ])
-    }
-    fn add(&mut self, p: [f64; 2]) {
-        if p[0].is_finite() && p[1].is_finite() {
-            self.0[0] = self.0[0].min(p[0]);
-            self.0[1] = self.0[1].min(p[1]);
-            self.0[2] = self.0[2].max(p[0]);
-            self.0[3] = self.0[3].max(p[1]);
-        }
-    }
-    fn valid(&self) -> bool {
-        self.0[0] <= self.0[2] && self.0[1] <= self.0[3]
-    }
-}
-
 /// Draw a 3D result as SVG.
 pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Drawing3d, IoError> {
     validate(r)?;
@@ -899,23 +876,8 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
 
     // Layout (as in 2D).
-    let width = if opts.width.is_finite() && opts.width >= 200.0 {
-        opts.width
-    } else {
-        1000.0
-    };
-    let max_h = if opts.max_height.is_finite() && opts.max_height >= 100.0 {
-        opts.max_height
-    } else {
-        700.0
-    };
-    let margin = 28.0;
-    let info: Vec<String> = r
-        .info()
-        .iter()
-        .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
-        .collect();
-    let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
+    let page = Page::new(opts.width, opts.max_height, 700.0, &r.info());
+    let (width, max_h, margin, title_h) = (page.width, page.max_height, MARGIN, page.title_h);
     let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
     let (draw_w, draw_h) = (bw * k, bh * k);
     // The legend: entries flowed and wrapped within the figure (crate::draw::legend). Its height
@@ -1032,39 +994,10 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
 
     let id = esc(&opts.id);
     let mut o = String::with_capacity(4096 + 160 * faces.len());
-    let _ = writeln!(
-        o,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\">",
-        w = num(width),
-        h = num(height)
-    );
+    page.open(&mut o, height);
+    o.push_str(">\n");
     let title = opts.title.clone().unwrap_or_else(|| r.title());
-    let _ = writeln!(o, "<title>{}</title>", esc(&title));
-    let _ = writeln!(
-        o,
-        "<defs><pattern id=\"{id}-hatch\" patternUnits=\"userSpaceOnUse\" width=\"7\" height=\"7\" patternTransform=\"rotate(45)\"><rect width=\"7\" height=\"7\" fill=\"#ffffff\"/><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"7\" stroke=\"#444444\" stroke-width=\"1.6\"/></pattern></defs>"
-    );
-    let _ = writeln!(
-        o,
-        "<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
-        num(width),
-        num(height)
-    );
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"30\" font-size=\"19\" fill=\"#111111\">{}</text>",
-        num(margin),
-        esc(&title)
-    );
-    for (i, line) in info.iter().enumerate() {
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"13\" fill=\"#444444\">{}</text>",
-            num(margin),
-            num(52.0 + 19.0 * i as f64),
-            esc(line)
-        );
-    }
+    page.head(&mut o, &id, height, &title);
 
     // Undeformed edges, faint, behind the solids.
     if has_motion && opts.undeformed {
@@ -1358,12 +1291,7 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     }
 
     if bodies.is_empty() {
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"14\" fill=\"#888888\" text-anchor=\"middle\">(no blocks to draw)</text>",
-            num(width / 2.0),
-            num(title_h + margin + draw_h / 2.0)
-        );
+        page.nothing_to_draw(&mut o, draw_h);
     }
 
     // Axes: a small triad in the lower right corner of the drawing area.

@@ -4,7 +4,7 @@
 //! [`text_width`] (which estimates the bundled DejaVu Sans) for a browser that draws the SVG
 //! with a wider substitute font; a label wider than the figure on its own is broken into lines.
 
-use super::scene::wrap;
+use super::chrome::wrap;
 use super::svg::{esc, human, nice, num, text_width};
 use std::fmt::Write as _;
 

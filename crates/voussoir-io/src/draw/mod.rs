@@ -11,6 +11,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod capacity;
+pub(crate) mod chrome;
 pub mod distribution;
 pub mod identify;
 pub mod incremental;

@@ -8,9 +8,7 @@
 //! drawn in stone grey.
 
 use super::legend::Entry;
-use super::svg::{
-    arrow, esc, fmt_fixed, human, nice, num, points_attr, polygon_path, text_width, FONT,
-};
+use super::svg::{arrow, esc, fmt_fixed, human, nice, num, points_attr, polygon_path};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
@@ -162,28 +160,6 @@ impl<'a> Scene<'a> {
             tilt: None,
         }
     }
-}
-
-/// A line of text broken at spaces into lines at most `max` pixels wide (at font size `size`);
-/// a word longer than `max` stays whole.
-pub(crate) fn wrap(line: &str, size: f64, max: f64) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut cur = String::new();
-    for w in line.split(' ') {
-        let candidate = if cur.is_empty() {
-            w.to_string()
-        } else {
-            format!("{cur} {w}")
-        };
-        if !cur.is_empty() && text_width(&candidate, size) > max {
-            out.push(std::mem::take(&mut cur));
-            cur = w.to_string();
-        } else {
-            cur = candidate;
-        }
-    }
-    out.push(cur);
-    out
 }
 
 fn plural(n: usize, what: &str) -> String {
@@ -369,23 +345,10 @@ pub struct Drawing {
     pub deformed: bool,
 }
 
-// Colours: calm, print-friendly, distinguishable in grey scale by shape as well as hue.
-pub(crate) const STONE: &str = "#e3dccb";
-pub(crate) const STILL: &str = "#d9d6cf";
-pub(crate) const EDGE: &str = "#3a3a3a";
-pub(crate) const FAINT: &str = "#a8a8a8";
-pub(crate) const CRACK: &str = "#d7301f";
-pub(crate) const THRUST: &str = "#1f5fbf";
-pub(crate) const LOAD: &str = "#7b2d8e";
-pub(crate) const FORCE: &str = "#1a9850";
-pub(crate) const HINGE: &str = "#111111";
-/// Cracks narrower than this fraction of the widest are not drawn as lines (hairlines).
-pub(crate) const HAIRLINE: f64 = 0.01;
-/// The crack lines (darker than the crack wedges' fill).
-pub(crate) const CRACK_LINE: &str = "#7a0177";
-pub(crate) const PALETTE: [&str; 8] = [
-    "#f6c97f", "#9ecae1", "#b5dba0", "#f4a582", "#c9b8e0", "#f2e394", "#8fd3c8", "#e7b3cf",
-];
+use super::chrome::{Bbox, Page, MARGIN};
+pub(crate) use super::chrome::{
+    CRACK, CRACK_LINE, EDGE, FAINT, FORCE, HAIRLINE, HINGE, LOAD, PALETTE, STILL, STONE, THRUST,
+};
 
 /// One body (block or support).
 struct Body {
@@ -438,29 +401,6 @@ fn clean_poly(p: &[[f64; 2]]) -> Vec<[f64; 2]> {
         .copied()
         .filter(|q| q[0].is_finite() && q[1].is_finite())
         .collect()
-}
-
-struct Bbox([f64; 4]);
-impl Bbox {
-    fn new() -> Self {
-        Bbox([
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ])
-    }
-    fn add(&mut self, p: [f64; 2]) {
-        if p[0].is_finite() && p[1].is_finite() {
-            self.0[0] = self.0[0].min(p[0]);
-            self.0[1] = self.0[1].min(p[1]);
-            self.0[2] = self.0[2].max(p[0]);
-            self.0[3] = self.0[3].max(p[1]);
-        }
-    }
-    fn valid(&self) -> bool {
-        self.0[0] <= self.0[2] && self.0[1] <= self.0[3]
-    }
 }
 
 /// Everything computed about the bodies before layout.
@@ -827,23 +767,8 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
 
     // Layout.
-    let width = if opts.width.is_finite() && opts.width >= 200.0 {
-        opts.width
-    } else {
-        1000.0
-    };
-    let max_h = if opts.max_height.is_finite() && opts.max_height >= 100.0 {
-        opts.max_height
-    } else {
-        760.0
-    };
-    let margin = 28.0;
-    let info: Vec<String> = scene
-        .info
-        .iter()
-        .flat_map(|l| wrap(l, 13.0, width - 2.0 * margin))
-        .collect();
-    let title_h = 16.0 + 24.0 + 19.0 * info.len() as f64;
+    let page = Page::new(opts.width, opts.max_height, 760.0, &scene.info);
+    let (width, max_h, margin, title_h) = (page.width, page.max_height, MARGIN, page.title_h);
     let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
     // The legend's height: the entries that may be drawn (a superset of those drawn below),
     // flowed and wrapped within the figure (super::legend).
@@ -881,12 +806,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     let interactive = opts.interactive && has_motion;
 
     let mut o = String::with_capacity(4096 + 120 * b.bodies.len());
-    let _ = write!(
-        o,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\"",
-        w = num(width),
-        h = num(height)
-    );
+    page.open(&mut o, height);
     if interactive {
         let mut m = String::new();
         for (i, g) in pxm.iter().enumerate() {
@@ -911,33 +831,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         );
     }
     o.push_str(">\n");
-    let _ = writeln!(o, "<title>{}</title>", esc(&scene.title));
-    let _ = writeln!(
-        o,
-        "<defs><pattern id=\"{id}-hatch\" patternUnits=\"userSpaceOnUse\" width=\"7\" height=\"7\" patternTransform=\"rotate(45)\"><rect width=\"7\" height=\"7\" fill=\"#ffffff\"/><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"7\" stroke=\"#444444\" stroke-width=\"1.6\"/></pattern></defs>"
-    );
-    let _ = writeln!(
-        o,
-        "<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
-        num(width),
-        num(height)
-    );
-    // Title and info.
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"30\" font-size=\"19\" fill=\"#111111\">{}</text>",
-        num(margin),
-        esc(&scene.title)
-    );
-    for (i, line) in info.iter().enumerate() {
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"13\" fill=\"#444444\">{}</text>",
-            num(margin),
-            num(52.0 + 19.0 * i as f64),
-            esc(line)
-        );
-    }
+    page.head(&mut o, &id, height, &scene.title);
 
     // Undeformed outline, faint.
     if has_motion && opts.undeformed {
@@ -1373,12 +1267,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     }
 
     if b.bodies.is_empty() {
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" font-size=\"14\" fill=\"#888888\" text-anchor=\"middle\">(no blocks to draw)</text>",
-            num(width / 2.0),
-            num(title_h + margin + draw_h / 2.0)
-        );
+        page.nothing_to_draw(&mut o, draw_h);
     }
 
     if opts.legend {
@@ -1619,6 +1508,7 @@ fn legend_entries(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::draw::chrome::wrap;
 
     #[test]
     fn pixel_matrix_matches_the_world_rigid_motion() {

@@ -3,7 +3,7 @@
 
 use voussoir::analysis::capacity::{capacity, CapacityOptions};
 use voussoir::analysis::limit::solve_limit;
-use voussoir::analysis::settlement::SettlementPath;
+use voussoir::analysis::paths::SettlementPath;
 use voussoir::analysis::{limit, LimitStatus};
 use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};

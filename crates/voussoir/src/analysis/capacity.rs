@@ -45,17 +45,16 @@
 //! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
 
-use crate::analysis::limit::{
-    check_facets, Crushing, LimitSolution, LimitStatus, WarmLimit, DEFAULT_FACETS,
-};
-use crate::analysis::settlement::{SettlementPath, SettlementStatus};
+pub use crate::analysis::laws::closing_joints;
+use crate::analysis::limit::{check_facets, Crushing, LimitSolution, LimitStatus, DEFAULT_FACETS};
+use crate::analysis::paths::{SettlementPath, WarmLimit};
+use crate::analysis::settlement::SettlementStatus;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
 pub use crate::result::capacity::*;
 use crate::result::report;
 use crate::structure::Assembly;
-use crate::structure::OPEN_TOLERANCE;
 
 /// Options of the capacity analysis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,26 +110,6 @@ fn capacity_solver(opts: &CapacityOptions) -> crate::lp::SolverInfo {
         },
         Crushing::Linear => opts.solver.info(),
     }
-}
-
-/// Open points whose opening rate under mechanism `d` is negative: the joints whose settlement
-/// cracks the mechanism would close.
-pub fn closing_joints<S: Assembly>(st: &S, map: &KinematicMap, d: &[f64]) -> Vec<usize> {
-    if d.is_empty() {
-        return vec![];
-    }
-    let (rate, _) = map.jumps(d, 0.0);
-    let tol = OPEN_TOLERANCE * crate::scale::motion_scale(map, d, 0.0);
-    let mut out: Vec<usize> = map
-        .points
-        .iter()
-        .enumerate()
-        .filter(|(k, _)| map.gap[*k] > 0.0 && rate[*k] < -tol)
-        .map(|(_, p)| p.joint)
-        .collect();
-    out.dedup();
-    let _ = st;
-    out
 }
 
 /// λ as a number for root finding: locked counts as +∞, no equilibrium at all as −∞.

@@ -38,8 +38,7 @@
 //! (locked) or no equilibrium.
 
 use crate::analysis::limit::LimitStatus;
-use crate::analysis::limit::WarmLimit;
-use crate::analysis::settlement::SettlementPath;
+use crate::analysis::paths::{SettlementPath, WarmLimit};
 use crate::analysis::settlement::SettlementStatus;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};

@@ -4,6 +4,7 @@
 //! Kinematic (its dual, read from the equilibrium rows' duals): the collapse mechanism `d`,
 //! normalised so that the live loads do unit work, `F_Lᵀ d = 1`; then `λ = −F_Dᵀ d`.
 
+pub use super::laws::{check_facets, Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, LpSolution, LpStatus, SolverInfo, SolverOptions};
@@ -11,7 +12,6 @@ use crate::programs::{self, ForceProgram};
 pub use crate::result::limit::*;
 use crate::result::report;
 use crate::structure::Assembly;
-use serde::{Deserialize, Serialize};
 
 /// The raw vectors of a limit analysis, for the analyses built on top of it.
 #[derive(Clone, Debug)]
@@ -180,7 +180,7 @@ fn with_least_multiplier(
 pub const LEAST_TOLERANCE: f64 = 1e-9;
 
 /// Dead and live load vectors; an error if there is no live load.
-fn load_vectors<S: Assembly>(st: &S) -> Result<(Vec<f64>, Vec<f64>)> {
+pub(crate) fn load_vectors<S: Assembly>(st: &S) -> Result<(Vec<f64>, Vec<f64>)> {
     if !st.has_live_loads() {
         return Err(Error::Request(
             "limit analysis needs live loads (the model has none)".into(),
@@ -336,36 +336,6 @@ pub fn limit_solution(
     }
 }
 
-/// How finite compressive strength enters the limit analysis.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Crushing {
-    /// Inscribed polygon with `facets` chords: an LP (HiGHS). The default.
-    #[default]
-    Linear,
-    /// The exact parabola as second-order cones (Clarabel).
-    Conic,
-}
-
-/// Fewest and most facets of the inscribed crushing polygon. Two chords are the coarsest
-/// polygon that still allows an eccentric thrust; 4,096 chords put the polygon within
-/// (t/2)·(1/4096)² of the parabola, far below any tolerance of the solvers, while bounding the
-/// program's size (two rows per facet and joint).
-pub const MIN_FACETS: usize = 2;
-pub const MAX_FACETS: usize = 4096;
-/// Facets of the inscribed crushing polygon unless told otherwise.
-pub const DEFAULT_FACETS: usize = 16;
-
-/// A one-line error unless `facets` is within [`MIN_FACETS`]..=[`MAX_FACETS`].
-pub fn check_facets(facets: usize) -> Result<()> {
-    if !(MIN_FACETS..=MAX_FACETS).contains(&facets) {
-        return Err(Error::Request(format!(
-            "facets {facets}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
-        )));
-    }
-    Ok(())
-}
-
 /// Limit analysis with a choice of crushing model and number of facets.
 pub fn limit_with<S: Assembly>(
     st: &S,
@@ -417,7 +387,7 @@ fn limit_certificate(
     let gap = crate::scale::relative_gap(l, -wd / wl, lambda_unit);
     let scale = crate::scale::motion_scale(map, &s.mechanism, 0.0);
     let admissibility = if scale > 0.0 {
-        crate::analysis::settlement::kinematic_violation(map, &s.mechanism, 0.0) / scale
+        super::laws::kinematic_violation(map, &s.mechanism, 0.0) / scale
     } else {
         0.0
     };
@@ -468,7 +438,7 @@ pub fn limit_result<S: Assembly>(
     };
     // Existing cracks carry nothing in limit analysis; a mechanism that would close one is
     // not the structure's collapse (the crack closes first and then carries force).
-    let closing = crate::analysis::capacity::closing_joints(st, map, &s.mechanism);
+    let closing = super::laws::closing_joints(st, map, &s.mechanism);
     if !closing.is_empty() {
         message.push_str(&format!(
             "; WARNING: the collapse mechanism closes the open crack of joint {} (limit analysis is not valid there: after that crack closes the structure carries more; use the incremental analysis)",
@@ -520,88 +490,5 @@ pub fn limit_result<S: Assembly>(
         friction_iteration: None,
         geometry: st.shapes(),
         canonical: None,
-    }
-}
-
-/// A limit LP kept between solves on structures of one topology (same blocks, joints and
-/// points): all points are columns, open ones fixed at zero
-/// ([`programs::limit_force_program_fixed_topology`]), and the optimal basis of a solve starts
-/// the next one, where the backend has bases ([`lp::solve_warm`]).
-pub struct WarmLimit {
-    solver: SolverOptions,
-    hot: bool,
-    crushing: Crushing,
-    nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
-    /// Solves whose non-associative friction iteration did not converge.
-    pub unconverged: usize,
-    basis: Option<lp::Basis>,
-    /// LP solves and simplex iterations so far.
-    pub solves: usize,
-    pub iterations: i64,
-}
-
-impl WarmLimit {
-    /// `hot = false` solves every LP from scratch with [`solve_limit`].
-    pub fn new(solver: &SolverOptions, hot: bool) -> WarmLimit {
-        WarmLimit {
-            solver: *solver,
-            hot,
-            crushing: Crushing::Linear,
-            nonassociative: None,
-            unconverged: 0,
-            basis: None,
-            solves: 0,
-            iterations: 0,
-        }
-    }
-
-    /// Solve with the exact crushing cones ([`solve_limit_conic`], from scratch) instead of
-    /// the inscribed polygon.
-    pub fn with_crushing(mut self, crushing: Crushing) -> WarmLimit {
-        self.crushing = crushing;
-        self
-    }
-
-    /// Solve with non-associative friction (the iteration from scratch each time).
-    pub fn with_nonassociative(
-        mut self,
-        o: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
-    ) -> WarmLimit {
-        self.nonassociative = o;
-        self
-    }
-
-    /// Limit analysis of `st` (same meaning as [`solve_limit`]).
-    pub fn solve<S: Assembly>(&mut self, st: &S, map: &KinematicMap) -> Result<LimitSolution> {
-        self.solves += 1;
-        if let Some(o) = &self.nonassociative {
-            let mut m = map.clone();
-            let (_, it) = crate::analysis::nonassociative::solve_limit_nonassociative(
-                st,
-                &mut m,
-                &self.solver,
-                o,
-            )?;
-            self.unconverged += usize::from(!it.converged);
-            self.iterations += it.last.iterations;
-            return Ok(it.last);
-        }
-        if self.crushing == Crushing::Conic {
-            let sol = solve_limit_conic(st, map, &self.solver)?;
-            self.iterations += sol.iterations;
-            return Ok(sol);
-        }
-        // Joint laws (friction, crushing) give gapped points roles of their own in the force
-        // program: those structures are solved from scratch.
-        let sol = if self.hot && !map.has_joint_laws() {
-            let (dead, live) = load_vectors(st)?;
-            let fp = programs::limit_force_program_fixed_topology(map, &dead, &live);
-            let sol = lp::solve_warm(&fp.lp, &self.solver, &mut self.basis)?;
-            limit_solution(map, &fp, &live, &sol, self.solver.info())
-        } else {
-            solve_limit(st, map, &self.solver)?
-        };
-        self.iterations += sol.iterations;
-        Ok(sol)
     }
 }

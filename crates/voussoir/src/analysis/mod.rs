@@ -1,8 +1,10 @@
 //! Analyses: each is a composition of the structure, the kinematic map and the two LP forms.
 
 pub mod canonical;
+pub mod laws;
 pub mod limit;
 pub mod nonassociative;
+pub mod paths;
 pub mod safety;
 pub mod settlement;
 pub mod tilt;

@@ -22,6 +22,7 @@
 //! `(μ n̄_k + c)·|slip|` of each point, so a frictional wall no longer dilates where its blocks
 //! slide. The converged value is the work of the dead loads less that dissipation.
 
+pub use super::laws::NonAssociativeOptions;
 use super::limit::{limit_result, solve_limit, LimitResult, LimitSolution, LimitStatus};
 use super::settlement::{
     settlement_result, solve_settlement_crushing, SettlementResult, SettlementSolution,
@@ -33,44 +34,6 @@ use crate::error::Result;
 use crate::lp::SolverOptions;
 pub use crate::result::nonassociative::*;
 use crate::structure::Assembly;
-
-/// Settings of the iteration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NonAssociativeOptions {
-    pub max_iterations: usize,
-    /// Relaxation α in (0, 1].
-    pub relaxation: f64,
-    /// Convergence: relative change of the value (λ or the work) and of the normal forces.
-    pub tolerance: f64,
-    /// Iterations over which the value must stay within `tolerance` (2: consecutive values,
-    /// with the normal forces within `√tolerance` too; more: a window of values only).
-    pub window: usize,
-}
-
-impl Default for NonAssociativeOptions {
-    fn default() -> Self {
-        NonAssociativeOptions {
-            max_iterations: 200,
-            relaxation: 0.5,
-            tolerance: 1e-7,
-            window: 2,
-        }
-    }
-}
-
-impl NonAssociativeOptions {
-    /// The settings of the settlement and capacity analyses: the optimal force fields of a
-    /// settlement are rarely unique, so the normal forces wander on the optimal face while the
-    /// work settles; convergence is a spread of the work below 1e-3 over 8 iterations.
-    pub fn settlement() -> Self {
-        NonAssociativeOptions {
-            max_iterations: 120,
-            relaxation: 0.5,
-            tolerance: 1e-3,
-            window: 8,
-        }
-    }
-}
 
 /// Where the fixed-point iteration ended.
 pub struct Iterated<T> {

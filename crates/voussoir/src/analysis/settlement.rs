@@ -17,15 +17,15 @@
 //! Both LPs are homogeneous of degree one in the prescribed motions, so every displacement of
 //! the result is proportional to the settlement magnitude and the forces do not depend on it.
 
-use crate::analysis::limit::{check_facets, Crushing, DEFAULT_FACETS};
-use crate::analysis::nonassociative::NonAssociativeOptions;
+pub use super::laws::kinematic_violation;
+use super::laws::{check_facets, Crushing};
 use crate::discretize::KinematicMap;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::lp::{self, LpStatus, SolverOptions};
 use crate::programs::{self, ForceProgram};
 use crate::result::report;
 pub use crate::result::settlement::*;
-use crate::structure::{Assembly, Structure};
+use crate::structure::Assembly;
 use serde::{Deserialize, Serialize};
 
 /// Raw vectors of a settlement analysis.
@@ -267,42 +267,6 @@ pub enum SettlementForm {
     ForceOnly,
 }
 
-/// Largest violation of kinematic admissibility of block motions `d` (with the prescribed
-/// support motions scaled by `support_scale`: 1 for a settlement, 0 for a collapse mechanism,
-/// which is a rate with the supports held still): interpenetration `max(0, −(N d + g_n))` at
-/// contact points, `|N d + g_n|` at bilateral points, and sliding `|T d + g_t|` on joints
-/// without friction, over points that carry force (for a collapse mechanism, not the points of
-/// an existing crack, which carry nothing until they close).
-pub fn kinematic_violation(map: &KinematicMap, d: &[f64], support_scale: f64) -> f64 {
-    let (open, slide) = map.jumps(d, support_scale);
-    let mut v = 0.0f64;
-    for k in 0..map.num_points() {
-        // A point with a gap (an existing crack) may close it, not pass through it. A collapse
-        // mechanism (`support_scale` 0) is a rate: an open crack carries nothing and its rate
-        // of opening or closing is free (the limit programs leave it so), whatever the width.
-        if support_scale == 0.0 && map.gap[k] > 0.0 {
-            continue;
-        }
-        let o = if map.bilateral[k] {
-            open[k].abs()
-        } else {
-            (-(open[k] + map.gap[k])).max(0.0)
-        };
-        // Sliding is a violation only where the joint law forbids it (Heyman's joints); a
-        // frictional joint may slide (its dilatancy is in the opening rows).
-        let nt = map.tangents_per_point;
-        let s = if map.laws[map.points[k].joint].friction.is_some() || map.gap[k] > 0.0 {
-            0.0
-        } else {
-            slide[k * nt..(k + 1) * nt]
-                .iter()
-                .fold(0.0f64, |m, x| m.max(x.abs()))
-        };
-        v = v.max(o).max(s);
-    }
-    v
-}
-
 /// Turn a solved settlement force LP into a settlement solution: forces from its primal, the
 /// mechanism from its row duals (`d = −y`: HiGHS's duals of `min cᵀx, A x = b` satisfy
 /// `c − Aᵀy ≥ 0`, which for `d = −y` reads `N d + g_n ≥ 0`, `T d + g_t = 0`). The primal value is
@@ -401,168 +365,6 @@ pub fn settle_with<S: Assembly>(
     let map = KinematicMap::new(st);
     let s = solve_settlement_with(st, &map, opts, form)?;
     Ok(settlement_result_checked(st, &map, &s))
-}
-
-/// The settlement path: the structure with unit support motions, its settlement mechanism and
-/// openings, from which every deformed structure is made.
-///
-/// Without existing cracks the settlement LPs are homogeneous in the magnitude: one mechanism
-/// per unit settlement, scaled. A structure with existing cracks (gaps) is not: cracks close
-/// at some magnitude and the mechanism changes there, so every deformed structure is solved at
-/// its own magnitude.
-pub struct SettlementPath<S: Assembly = Structure> {
-    /// The structure with its support motions divided by `max_settlement`.
-    pub unit: S,
-    pub max_settlement: f64,
-    pub status: SettlementStatus,
-    /// Settlement mechanism per unit settlement (empty unless `status` is a mechanism); with
-    /// existing cracks, the mechanism of the largest settlement divided by its magnitude.
-    pub mechanism: Vec<f64>,
-    /// The points (map indices) of existing cracks, with their initial gaps.
-    pub existing_cracks: Vec<(usize, f64)>,
-    openings: Vec<Vec<f64>>,
-    open_tol: f64,
-    solver: SolverOptions,
-    crushing: Crushing,
-    facets: usize,
-    nonassociative: Option<NonAssociativeOptions>,
-}
-
-impl<S: Assembly> SettlementPath<S> {
-    pub fn new(st: &S, solver: &SolverOptions) -> Result<SettlementPath<S>> {
-        Self::with_crushing(st, solver, Crushing::Linear, DEFAULT_FACETS)
-    }
-
-    /// [`SettlementPath::new`] with a choice of crushing model and facet count.
-    pub fn with_crushing(
-        st: &S,
-        solver: &SolverOptions,
-        crushing: Crushing,
-        facets: usize,
-    ) -> Result<SettlementPath<S>> {
-        Self::with_laws(st, solver, crushing, facets, None)
-    }
-
-    /// [`SettlementPath::with_crushing`], with non-associative friction when `nonassociative`
-    /// is given (every settlement solve is then the iteration's last iterate).
-    pub fn with_laws(
-        st: &S,
-        solver: &SolverOptions,
-        crushing: Crushing,
-        facets: usize,
-        nonassociative: Option<NonAssociativeOptions>,
-    ) -> Result<SettlementPath<S>> {
-        let mag = st.settlement_magnitude();
-        if !(mag.is_finite() && mag > 0.0) {
-            return Err(Error::Request(
-                "capacity analysis needs a settlement: no support has a prescribed motion".into(),
-            ));
-        }
-        let motions: Vec<Vec<f64>> = (0..st.num_supports())
-            .map(|s| st.support_motion(s).iter().map(|x| x / mag).collect())
-            .collect();
-        let unit = st.with_support_motions(&motions);
-        let mut map = KinematicMap::new(&unit);
-        map.facets = facets;
-        let existing_cracks: Vec<(usize, f64)> = map
-            .gap
-            .iter()
-            .enumerate()
-            .filter(|(_, g)| **g > 0.0)
-            .map(|(k, g)| (k, *g))
-            .collect();
-        let mut path = SettlementPath {
-            unit,
-            max_settlement: mag,
-            status: SettlementStatus::Mechanism,
-            mechanism: vec![],
-            existing_cracks,
-            openings: vec![],
-            open_tol: 0.0,
-            solver: *solver,
-            crushing,
-            facets,
-            nonassociative,
-        };
-        if path.existing_cracks.is_empty() {
-            let sol = path.solve(&path.unit, &mut map)?;
-            if sol.status == SettlementStatus::Mechanism {
-                (path.openings, path.open_tol) =
-                    path.unit.joint_openings(&map, &sol.mechanism, 1.0);
-            }
-            path.status = sol.status;
-            path.mechanism = sol.mechanism;
-        } else {
-            let (at, map, sol) = path.solve_at(mag)?;
-            let _ = (at, map);
-            path.status = sol.status;
-            path.mechanism = sol.mechanism.iter().map(|x| x / mag).collect();
-        }
-        Ok(path)
-    }
-
-    /// The structure with the support motions of a settlement `s`, its map and its solution.
-    fn solve_at(&self, s: f64) -> Result<(S, KinematicMap, SettlementSolution)> {
-        let motions: Vec<Vec<f64>> = (0..self.unit.num_supports())
-            .map(|k| self.unit.support_motion(k).iter().map(|x| x * s).collect())
-            .collect();
-        let at = self.unit.with_support_motions(&motions);
-        let mut map = KinematicMap::new(&at);
-        map.facets = self.facets;
-        let sol = self.solve(&at, &mut map)?;
-        Ok((at, map, sol))
-    }
-
-    /// One settlement solve under the path's joint laws.
-    fn solve(&self, st: &S, map: &mut KinematicMap) -> Result<SettlementSolution> {
-        match &self.nonassociative {
-            Some(o) => Ok(
-                crate::analysis::nonassociative::solve_settlement_nonassociative(
-                    st,
-                    map,
-                    &self.solver,
-                    self.crushing,
-                    o,
-                )?
-                .1
-                .last,
-            ),
-            None => solve_settlement_crushing(st, map, &self.solver, self.crushing),
-        }
-    }
-
-    /// The structure after a settlement `s` (m). `s = 0` returns the undeformed structure as is.
-    pub fn deformed(&self, s: f64) -> Result<S> {
-        let mut st = if s == 0.0 || self.mechanism.is_empty() {
-            self.unit.clone()
-        } else if self.existing_cracks.is_empty() {
-            self.unit
-                .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol)
-        } else {
-            let (at, map, sol) = self.solve_at(s)?;
-            if sol.status != SettlementStatus::Mechanism {
-                return Err(Error::Request(format!(
-                    "at a settlement of {s} m: {}",
-                    sol.status.sentence()
-                )));
-            }
-            let (openings, tol) = at.joint_openings(&map, &sol.mechanism, 1.0);
-            at.deformed(&sol.mechanism, 1.0, &openings, tol)
-        };
-        let still = vec![0.0; <S::D as crate::dim::Dim>::DOFS];
-        for k in 0..st.num_supports() {
-            st.set_support_motion(k, &still);
-        }
-        Ok(st)
-    }
-
-    /// How many points of the existing cracks are still open in a deformed structure's map.
-    pub fn existing_cracks_open(&self, map: &KinematicMap) -> usize {
-        self.existing_cracks
-            .iter()
-            .filter(|(k, _)| map.gap.get(*k).is_some_and(|g| *g > 0.0))
-            .count()
-    }
 }
 
 use crate::vector::dot_n as dot;

@@ -16,8 +16,8 @@ use crate::draw::svg::{esc, human};
 use crate::result3d::{self, polygon_order, tangents, V3};
 use voussoir::dim::{Three, Two};
 use voussoir::lp::SolverInfo;
-use voussoir::result::nonassociative::FrictionIteration;
 use voussoir::result::spatial::SpatialShapes;
+use voussoir::result::FrictionIteration;
 use voussoir::result::{BodyName, Geometry, JointResult, JointState};
 
 /// A material as the model gives it (after `--friction` / `--compressive-strength`).

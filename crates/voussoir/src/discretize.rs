@@ -14,8 +14,15 @@
 //! block resultants `Nᵀ p_n + Tᵀ p_t`, so that equilibrium reads `F + Nᵀ p_n + Tᵀ p_t = 0`.
 
 use crate::dim::Dim;
-use crate::structure::{Assembly, Body};
+use serde::{Deserialize, Serialize};
 use sprs::CsMat;
+
+/// A body of the structure: a block (3 DOFs) or a support (prescribed motion).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub enum Body {
+    Block(usize),
+    Support(usize),
+}
 
 /// A collocation point in the global numbering: joint index and point index in the joint.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -155,12 +162,6 @@ pub struct KinematicMap {
 }
 
 impl KinematicMap {
-    /// The map of a structure (either dimension): its joints in contact-frame form,
-    /// assembled by [`KinematicMap::assemble`].
-    pub fn new<S: Assembly>(st: &S) -> KinematicMap {
-        st.kinematic_map()
-    }
-
     /// Assemble the opening and sliding rows from contact frames only: each point's position,
     /// its joint's normal and tangents, and the bodies' reference points. The jump
     /// `[u] = u_b(x) − u_a(x)` along a direction `e` is `Σ ± (e·u + (r × e)·ω)` over the two

@@ -465,7 +465,7 @@ pub fn canonical_forces<S: Assembly>(
         let ns = st.num_supports();
         let mut coeff: Vec<Vec<Vec<(usize, f64)>>> = vec![vec![Vec::new(); nd]; ns];
         let mut loaded = vec![false; ns];
-        crate::result::reaction_terms(st, map, |s, k, which, row| {
+        crate::reporting::reaction_terms(st, map, |s, k, which, row| {
             let col = if which == 0 {
                 fp.pn[k]
             } else {

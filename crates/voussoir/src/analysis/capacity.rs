@@ -52,8 +52,8 @@ use crate::analysis::settlement::SettlementStatus;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
+use crate::reporting::report;
 pub use crate::result::capacity::*;
-use crate::result::report;
 use crate::structure::Assembly;
 
 /// Options of the capacity analysis.

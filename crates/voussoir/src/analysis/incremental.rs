@@ -45,8 +45,9 @@ use crate::error::{Error, Result};
 use crate::geometry::{self, small_displacement, RigidMotion};
 use crate::lp::SolverOptions;
 use crate::model::Point;
+use crate::reporting::report;
 pub use crate::result::incremental::*;
-use crate::result::{report, Geometry};
+use crate::result::Geometry;
 use crate::structure::OPEN_TOLERANCE;
 use crate::structure::{Assembly, Structure};
 
@@ -454,7 +455,7 @@ pub fn incremental_with(
         peak_load_multiplier: peak_l,
         peak_displacement: peak.1,
         initial_open_joints: open_joints(start),
-        cracks: crate::result::cracks::cracks_of_gaps(&st),
+        cracks: crate::reporting::cracks_of_gaps(&st),
         steps,
         snaps,
         solves: warm.solves,

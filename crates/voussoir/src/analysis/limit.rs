@@ -9,8 +9,8 @@ use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, LpSolution, LpStatus, SolverInfo, SolverOptions};
 use crate::programs::{self, ForceProgram};
+use crate::reporting::report;
 pub use crate::result::limit::*;
-use crate::result::report;
 use crate::structure::Assembly;
 
 /// The raw vectors of a limit analysis, for the analyses built on top of it.

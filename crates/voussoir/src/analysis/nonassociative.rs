@@ -33,6 +33,7 @@ use crate::discretize::KinematicMap;
 use crate::error::Result;
 use crate::lp::SolverOptions;
 pub use crate::result::nonassociative::*;
+use crate::result::FrictionIteration;
 use crate::structure::Assembly;
 
 /// Where the fixed-point iteration ended.

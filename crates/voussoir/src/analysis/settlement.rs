@@ -23,7 +23,7 @@ use crate::discretize::KinematicMap;
 use crate::error::Result;
 use crate::lp::{self, LpStatus, SolverOptions};
 use crate::programs::{self, ForceProgram};
-use crate::result::report;
+use crate::reporting::report;
 pub use crate::result::settlement::*;
 use crate::structure::Assembly;
 use serde::{Deserialize, Serialize};

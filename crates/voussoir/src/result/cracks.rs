@@ -27,7 +27,6 @@
 
 use super::{BodyName, Geometry, JointResult};
 use crate::dim::Three;
-use crate::structure::{Body, Structure};
 use serde::{Deserialize, Serialize};
 
 /// One end of a 2D crack.
@@ -116,14 +115,6 @@ pub struct CrackGeometry<'a> {
 }
 
 impl<'a> CrackGeometry<'a> {
-    pub fn of_structure(st: &'a Structure) -> Self {
-        CrackGeometry {
-            blocks: st.blocks.iter().map(|b| b.polygon.as_slice()).collect(),
-            supports: st.supports.iter().map(|s| s.polygon.as_slice()).collect(),
-            tolerance: st.tolerance,
-        }
-    }
-
     /// From a saved result's geometry; the tolerance is 1e-9 of the geometry's size (the
     /// default relative tolerance of a model).
     pub fn of_geometry(g: &'a Geometry) -> Self {
@@ -160,11 +151,11 @@ impl<'a> CrackGeometry<'a> {
 }
 
 /// A joint's points as the tracer reads them: position, opening, open or not.
-struct JointPoints {
-    joint: usize,
-    faces: [BodyName; 2],
-    tangent: [f64; 2],
-    points: Vec<([f64; 2], f64, bool)>,
+pub(crate) struct JointPoints {
+    pub joint: usize,
+    pub faces: [BodyName; 2],
+    pub tangent: [f64; 2],
+    pub points: Vec<([f64; 2], f64, bool)>,
 }
 
 /// The cracks of a 2D result's joints. `open[j][k]` says whether point `k` of joint `j` is open
@@ -232,32 +223,6 @@ pub fn cracks_of_result(joints: &[JointResult], geometry: &Geometry, finite: boo
         &widths,
         &CrackGeometry::of_geometry(geometry),
     )
-}
-
-/// The cracks a deformed structure carries: its points with a gap (the final state of an
-/// incremental analysis, the settled structure of a capacity curve). Widths are the gaps (m).
-pub fn cracks_of_gaps(st: &Structure) -> Vec<Crack> {
-    let name = |b: Body| match b {
-        Body::Block(i) => BodyName::Block(i),
-        Body::Support(s) => BodyName::Support(st.supports[s].name.clone()),
-    };
-    let input: Vec<JointPoints> = st
-        .joints
-        .iter()
-        .enumerate()
-        .filter(|(_, j)| j.points.iter().any(|p| p.gap > 0.0))
-        .map(|(j, jt)| JointPoints {
-            joint: j,
-            faces: [name(jt.a), name(jt.b)],
-            tangent: jt.tangent(),
-            points: jt
-                .points
-                .iter()
-                .map(|p| (p.x, p.gap, p.gap > 0.0))
-                .collect(),
-        })
-        .collect();
-    trace(input, &CrackGeometry::of_structure(st))
 }
 
 /// A segment along one joint: its points in order along the joint.
@@ -385,7 +350,7 @@ fn quantise(w: f64, largest: f64) -> i64 {
     }
 }
 
-fn trace(input: Vec<JointPoints>, geo: &CrackGeometry) -> Vec<Crack> {
+pub(crate) fn trace(input: Vec<JointPoints>, geo: &CrackGeometry) -> Vec<Crack> {
     let tol = geo.tolerance.max(0.0);
     let mut segs = segments_of(input, tol);
     if segs.is_empty() {

@@ -87,7 +87,7 @@ pub struct LimitResult<D: Spatial = Two> {
     pub iterations: i64,
     /// The non-associative friction iteration, when one was run.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub friction_iteration: Option<super::nonassociative::FrictionIteration>,
+    pub friction_iteration: Option<super::FrictionIteration>,
     /// The geometry analysed (for drawing a saved result).
     pub geometry: D::Shapes,
     /// The canonical selection among optimal solutions (absent for the solver's own

@@ -16,13 +16,3 @@ pub struct NonAssociativeResult<D: Spatial = Two> {
     /// The final limit analysis (forces, mechanism without dilatancy).
     pub limit: LimitResult<D>,
 }
-
-/// The non-associative friction iteration behind a result (absent with associative friction).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct FrictionIteration {
-    /// The value with associative friction (dilatant sliding): λ, or the settlement work.
-    pub associative: Option<f64>,
-    /// The value per iteration (λ, or the work of the dead loads less the sliding dissipation).
-    pub history: Vec<f64>,
-    pub converged: bool,
-}

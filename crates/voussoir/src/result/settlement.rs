@@ -71,7 +71,7 @@ pub struct SettlementResult<D: Spatial = Two> {
     pub reactions: Vec<Reaction<D>>,
     /// The non-associative friction iteration, when one was run.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub friction_iteration: Option<super::nonassociative::FrictionIteration>,
+    pub friction_iteration: Option<super::FrictionIteration>,
     /// The geometry analysed (for drawing a saved result).
     pub geometry: D::Shapes,
     /// The canonical selection among optimal solutions (absent for the solver's own

@@ -128,3 +128,11 @@ pub trait Assembly: Clone + Send + Sync {
         Ok(self.deformed(d, s, &openings, (s.abs() * tol).max(0.0)))
     }
 }
+
+impl KinematicMap {
+    /// The map of a structure (either dimension): its joints in contact-frame form,
+    /// assembled by [`KinematicMap::assemble`].
+    pub fn new<S: Assembly>(st: &S) -> KinematicMap {
+        st.kinematic_map()
+    }
+}

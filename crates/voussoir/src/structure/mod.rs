@@ -7,6 +7,7 @@
 pub mod assembly;
 pub mod deform;
 pub mod solid;
+pub use crate::discretize::Body;
 pub use assembly::Assembly;
 pub use deform::OPEN_TOLERANCE;
 pub use solid::Structure3d;
@@ -17,18 +18,11 @@ use crate::error::Error;
 use crate::error::{model_err, Result};
 use crate::geometry::{self, area_centroid, bbox, RigidMotion};
 use crate::model::{Connection, Load, Material, Model, Per, Point};
-use serde::{Deserialize, Serialize};
+use crate::result::{Geometry, LoadArrow, SupportShape};
 
 /// Most cells of the overlap check's grid (cells of the median block's size) a body is put in;
 /// a larger body is compared with every other body directly.
 const MAX_CELLS_PER_BODY: f64 = 64.0;
-
-/// A body of the structure: a block (3 DOFs) or a support (prescribed motion).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
-pub enum Body {
-    Block(usize),
-    Support(usize),
-}
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct BlockGeom {
@@ -1065,4 +1059,56 @@ fn resolve_loads(model: &Model, st: &Structure) -> Result<Vec<AppliedLoad>> {
         }
     }
     Ok(out)
+}
+
+// Constructors of result types from a 2D structure (here, so that `result` needs no
+// structure).
+impl crate::result::BodyName {
+    pub fn of(st: &Structure, b: Body) -> crate::result::BodyName {
+        match b {
+            Body::Block(i) => crate::result::BodyName::Block(i),
+            Body::Support(s) => crate::result::BodyName::Support(st.supports[s].name.clone()),
+        }
+    }
+}
+
+impl crate::result::Geometry {
+    pub fn of(st: &Structure) -> Geometry {
+        Geometry {
+            blocks: st.blocks.iter().map(|b| b.polygon.clone()).collect(),
+            supports: st
+                .supports
+                .iter()
+                .map(|s| SupportShape {
+                    name: s.name.clone(),
+                    polygon: s.polygon.clone(),
+                    motion: s.motion,
+                    fixed: s.connection == crate::model::Connection::Fixed,
+                })
+                .collect(),
+            loads: st
+                .loads
+                .iter()
+                .map(|l| LoadArrow {
+                    block: l.block,
+                    x: l.at[0],
+                    y: l.at[1],
+                    fx: l.force[0],
+                    fy: l.force[1],
+                    live: l.live,
+                })
+                .collect(),
+        }
+    }
+}
+
+impl<'a> crate::result::CrackGeometry<'a> {
+    /// The shapes of a 2D structure, and its tolerance.
+    pub fn of_structure(st: &'a Structure) -> Self {
+        crate::result::CrackGeometry {
+            blocks: st.blocks.iter().map(|b| b.polygon.as_slice()).collect(),
+            supports: st.supports.iter().map(|s| s.polygon.as_slice()).collect(),
+            tolerance: st.tolerance,
+        }
+    }
 }

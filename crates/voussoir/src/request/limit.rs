@@ -44,17 +44,7 @@ impl LimitRequest {
     }
 
     pub(super) fn validate(&self, req: &Request) -> Result<()> {
-        self.laws().validate(req.names)?;
-        if !req.motion.is_empty() {
-            return invalid(format!(
-                "limit takes no support motion ({}, {}, {}, {}): the limit analysis of a settled structure is capacity",
-                req.names.name("move"),
-                req.names.name("fixed"),
-                req.names.name("profile"),
-                req.names.name("split")
-            ));
-        }
-        Ok(())
+        self.laws().validate(req.names)
     }
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {

@@ -23,15 +23,21 @@ pub mod motion;
 
 mod capacity;
 mod limit;
+mod safety;
 mod settle;
+mod tilt;
 
 pub use capacity::CapacityRequest;
 pub use limit::LimitRequest;
 pub use motion::{parse_profile, signed_length, Move, Split, SupportMotion};
+pub use safety::SafetyRequest;
 pub use settle::SettleRequest;
+pub use tilt::TiltRequest;
 
 use crate::analysis::canonical::CanonicalOptions;
 use crate::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
+use crate::analysis::safety::SafetyResult;
+use crate::analysis::tilt::TiltResult;
 use crate::analysis::{CapacityResult, LimitResult, SettlementResult};
 use crate::error::{Error, Result};
 use crate::lp::{Method, SolverOptions};
@@ -309,15 +315,24 @@ pub enum Analysis {
     Limit(LimitRequest),
     Settle(SettleRequest),
     Capacity(CapacityRequest),
+    Tilt(TiltRequest),
+    Safety(SafetyRequest),
 }
 
 impl Analysis {
+    /// Whether the analysis takes a support motion (settle, capacity).
+    pub fn takes_motion(&self) -> bool {
+        matches!(self, Analysis::Settle(_) | Analysis::Capacity(_))
+    }
+
     /// The command's name (`limit`, `settle`, …).
     pub fn name(&self) -> &'static str {
         match self {
             Analysis::Limit(_) => "limit",
             Analysis::Settle(_) => "settle",
             Analysis::Capacity(_) => "capacity",
+            Analysis::Tilt(_) => "tilt",
+            Analysis::Safety(_) => "safety",
         }
     }
 }
@@ -371,7 +386,20 @@ impl Request {
             Analysis::Limit(r) => r.validate(self),
             Analysis::Settle(r) => r.validate(self),
             Analysis::Capacity(r) => r.validate(self),
+            Analysis::Tilt(r) => r.validate(self),
+            Analysis::Safety(r) => r.validate(self),
+        }?;
+        if !self.motion.is_empty() && !self.analysis.takes_motion() {
+            return invalid(format!(
+                "{} takes no support motion ({}, {}, {}, {}): the analysis of a settled structure is capacity",
+                self.analysis.name(),
+                n.name("move"),
+                n.name("fixed"),
+                n.name("profile"),
+                n.name("split")
+            ));
         }
+        Ok(())
     }
 }
 
@@ -399,6 +427,41 @@ pub enum Output<D: Spatial> {
     Limit(LimitResult<D>),
     Settlement(SettlementResult<D>),
     Capacity(CapacityResult<D>),
+    Tilt(TiltResult<D>),
+    Safety(SafetyResult),
+}
+
+impl<D: Spatial> Output<D> {
+    pub fn limit(&self) -> Option<&LimitResult<D>> {
+        match self {
+            Output::Limit(r) => Some(r),
+            _ => None,
+        }
+    }
+    pub fn settlement(&self) -> Option<&SettlementResult<D>> {
+        match self {
+            Output::Settlement(r) => Some(r),
+            _ => None,
+        }
+    }
+    pub fn capacity(&self) -> Option<&CapacityResult<D>> {
+        match self {
+            Output::Capacity(r) => Some(r),
+            _ => None,
+        }
+    }
+    pub fn tilt(&self) -> Option<&TiltResult<D>> {
+        match self {
+            Output::Tilt(r) => Some(r),
+            _ => None,
+        }
+    }
+    pub fn safety(&self) -> Option<&SafetyResult> {
+        match self {
+            Output::Safety(r) => Some(r),
+            _ => None,
+        }
+    }
 }
 
 /// An analysis run: its setup, its result, and the solver options it ran with.
@@ -425,6 +488,8 @@ impl AnyResult {
                 Output::Limit(x) => serde_json::to_value(x),
                 Output::Settlement(x) => serde_json::to_value(x),
                 Output::Capacity(x) => serde_json::to_value(x),
+                Output::Tilt(x) => serde_json::to_value(x),
+                Output::Safety(x) => serde_json::to_value(x),
             };
             let mut v = v.unwrap_or(serde_json::Value::Null);
             if !r.setup.splits.is_empty() {
@@ -450,12 +515,12 @@ fn check_dimension(req: &Request, dims: usize) -> Result<()> {
         Analysis::Limit(r) => r.check_dimension(req, dims),
         Analysis::Settle(r) => r.check_dimension(req, dims),
         Analysis::Capacity(r) => r.check_dimension(req, dims),
+        Analysis::Tilt(_) | Analysis::Safety(_) => Ok(()),
     }
 }
 
-/// Apply the request's material overrides and support motion to a model, build its structure
-/// and check what needs the structure (a compressive strength for the crushing options, a
-/// support motion where one is needed).
+/// Validate the request, check it against the model's dimension, apply its material
+/// overrides and support motion to a model and build the structure.
 pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
     req.validate()?;
     let n = req.names;
@@ -479,17 +544,12 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
                 },
             )?;
             let warnings = model.warnings();
-            let setup = Setup {
+            Ok(Prepared::Planar(Setup {
                 model,
                 structure,
                 splits,
                 warnings,
-            };
-            if let Some(laws) = joint_laws(&req.analysis) {
-                laws.check_strength(&setup.structure, n)?;
-            }
-            check_motion(req, 2, moves(&setup.model.supports))?;
-            Ok(Prepared::Planar(setup))
+            }))
         }
         AnyModel::Spatial(m) => {
             check_dimension(req, 3)?;
@@ -506,11 +566,6 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
                 structure.friction_facets = k;
             }
             let warnings = model.warnings();
-            let moving = model
-                .supports
-                .iter()
-                .any(|s| s.motion.iter().any(|x| *x != 0.0));
-            check_motion(req, 3, moving)?;
             Ok(Prepared::Spatial(Setup {
                 model,
                 structure,
@@ -521,8 +576,8 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
     }
 }
 
-fn moves(supports: &[crate::model::Support]) -> bool {
-    supports.iter().any(|s| s.motion.iter().any(|x| *x != 0.0))
+fn moving<const N: usize>(motions: impl Iterator<Item = [f64; N]>) -> bool {
+    motions.into_iter().any(|m| m.iter().any(|x| *x != 0.0))
 }
 
 /// Refuse an analysis that needs a support motion on a model whose supports do not move.
@@ -546,14 +601,32 @@ fn joint_laws(a: &Analysis) -> Option<JointLaws> {
         Analysis::Limit(r) => Some(r.laws()),
         Analysis::Settle(r) => Some(r.laws()),
         Analysis::Capacity(r) => Some(r.laws()),
+        Analysis::Tilt(_) | Analysis::Safety(_) => None,
     }
 }
 
-/// Run the prepared analysis.
+/// Check what needs the structure (a compressive strength for the crushing options, a support
+/// motion where one is needed), choose the analysis's variant and run it.
 pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
     match prepared {
         Prepared::Planar(setup) => {
-            let (output, solver) = solve_any(&setup.structure, req, 2)?;
+            if let Some(laws) = joint_laws(&req.analysis) {
+                laws.check_strength(&setup.structure, req.names)?;
+            }
+            check_motion(
+                req,
+                2,
+                moving(setup.model.supports.iter().map(|s| s.motion)),
+            )?;
+            let (output, solver) = match &req.analysis {
+                Analysis::Tilt(t) => {
+                    let solver = req.solver.options(2);
+                    let dir = t.sign_2d(req)?;
+                    let r = crate::analysis::tilt::tilt(&setup.structure, dir, &solver)?;
+                    (Output::Tilt(r), solver)
+                }
+                _ => solve_any(&setup.structure, req, 2)?,
+            };
             Ok(AnyResult::Planar(Run {
                 setup,
                 output,
@@ -561,7 +634,24 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
             }))
         }
         Prepared::Spatial(setup) => {
-            let (output, solver) = solve_any(&setup.structure, req, 3)?;
+            check_motion(
+                req,
+                3,
+                moving(setup.model.supports.iter().map(|s| s.motion)),
+            )?;
+            let (output, solver) = match &req.analysis {
+                Analysis::Tilt(t) => {
+                    let solver = req.solver.options(3);
+                    let az = t.normalised();
+                    let r = if req.model.exact_cone() {
+                        crate::analysis::tilt::tilt_azimuth_exact(&setup.structure, az, &solver)?
+                    } else {
+                        crate::analysis::tilt::tilt_azimuth(&setup.structure, az, &solver)?
+                    };
+                    (Output::Tilt(r), solver)
+                }
+                _ => solve_any(&setup.structure, req, 3)?,
+            };
             Ok(AnyResult::Spatial(Run {
                 setup,
                 output,
@@ -580,6 +670,13 @@ fn solve_any<S: Assembly>(
         Analysis::Limit(r) => r.solve(st, req, dims),
         Analysis::Settle(r) => r.solve(st, req, dims),
         Analysis::Capacity(r) => r.solve(st, req, dims),
+        Analysis::Safety(r) => {
+            let solver = req.solver.options(dims);
+            let out = crate::analysis::safety::safety(st, &r.options(solver))?;
+            Ok((Output::Safety(out), solver))
+        }
+        // Tilt is dispatched by dimension in `solve` (a 2D sign, a 3D azimuth).
+        Analysis::Tilt(_) => unreachable!("tilt is solved in `solve`"),
     }
 }
 

@@ -432,7 +432,9 @@ pub struct Input {
     /// `--existing-cracks`: the survey drawing and how to read it.
     pub existing_cracks: Option<(PathBuf, voussoir_io::survey::SurveyOptions)>,
     pub solver: SolverOptions,
-    /// The solver for a 3D model (interior point unless --method says otherwise).
+    /// The solver for a 3D model (interior point unless --method says otherwise), for the
+    /// commands not on the request layer yet (whose requests choose it themselves).
+    #[allow(dead_code)]
     pub solver3d: SolverOptions,
     /// 3D: facets of the friction pyramid (None: the default), exact cone asked for.
     pub friction_facets: Option<usize>,
@@ -522,12 +524,13 @@ impl ModelArgs {
                 .clone()
                 .map(|p| (p, self.survey.options(self.dxf.units))),
             solver: self.solver(),
+            // The library's default method of a 3D model unless --method says otherwise.
             solver3d: SolverOptions {
-                method: if self.solver.method.is_none() {
-                    Method::Ipm
-                } else {
-                    self.solver().method
-                },
+                method: self
+                    .solver
+                    .method
+                    .map(method)
+                    .unwrap_or(voussoir::request::default_method(3)),
                 ..self.solver()
             },
         })
@@ -625,6 +628,8 @@ fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
     Ok(())
 }
 
+// `load_any`, `structure3d*`: for the commands not on the request layer yet.
+#[allow(dead_code)]
 impl Input {
     /// Read a model of either dimension and apply the material overrides.
     pub fn load_any(&self) -> Result<AnyModel, Fail> {

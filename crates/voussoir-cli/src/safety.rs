@@ -8,9 +8,7 @@ use clap::{Args, Subcommand};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use voussoir::analysis::safety::{
-    least_thickness, LeastThickness, SafetyResult,
-};
+use voussoir::analysis::safety::{least_thickness, LeastThickness, SafetyResult};
 use voussoir::generate::RadiusAt;
 use voussoir::lp::Method;
 use voussoir::request::{Analysis, AnyResult, SafetyRequest, SupportMotion};

@@ -221,3 +221,32 @@ fn issue31_item1_moves_with_units() {
     );
     assert!(e.contains("value 3 is an angle in degrees"), "{e}");
 }
+
+/// The tilting table through the same request in 2D and 3D: a block b × d × h tips over its
+/// edge when tan α = (width along the tilt) / h.
+#[test]
+fn issue31_item1_tilt_through_one_request() {
+    let tilt = |m: &AnyModel, az: f64| -> f64 {
+        let req = Request::from_json(&format!(
+            r#"{{"analysis": {{"type": "tilt", "azimuth": {az}}}}}"#
+        ))
+        .unwrap();
+        match request::run(m, &req).unwrap() {
+            AnyResult::Planar(r) => r.output.tilt().unwrap().tilt_angle.unwrap(),
+            AnyResult::Spatial(r) => r.output.tilt().unwrap().tilt_angle.unwrap(),
+        }
+    };
+    let planar = AnyModel::Planar(block_2d(0.4, 1.0));
+    let spatial =
+        AnyModel::Spatial(voussoir::generate3d::block([0.4, 0.6, 1.0], 0.0, 18.0).unwrap());
+    let deg = |x: f64| x.atan().to_degrees();
+    assert!((tilt(&planar, 180.0) - deg(0.4)).abs() < 1e-6);
+    assert!((tilt(&spatial, 0.0) - deg(0.4)).abs() < 1e-6);
+    assert!((tilt(&spatial, 90.0) - deg(0.6)).abs() < 1e-6);
+    // A 2D model tilts along x only: the azimuth is named.
+    let e = err(r#"{"analysis": {"type": "tilt", "azimuth": 90}}"#, &planar);
+    assert!(
+        e.starts_with("direction=90: a 2D model tilts along x"),
+        "{e}"
+    );
+}

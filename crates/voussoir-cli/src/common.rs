@@ -321,10 +321,11 @@ pub struct SettleArgs {
     /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
     pub fixed: Vec<String>,
-    /// Vertical settlement profile along x (m): uniform:X0,X1,V | linear:X0,V0,X1,V1 |
-    /// table:X,V;X,V;…  (all in m; v up, so a settlement is < 0). A support that spans a
-    /// breakpoint (X0, X1, a table's X) is first cut there into parts NAME@0, NAME@1, … from
-    /// the left (reported); each support or part then moves by the profile at its centroid.
+    /// Vertical settlement profile along x: uniform:X0,X1,V | linear:X0,V0,X1,V1 |
+    /// table:X,V;X,V;…  (in m, or each with a unit: `uniform:1,3,-5mm`; v up, so a settlement
+    /// is < 0). A support that spans a breakpoint (X0, X1, a table's X) is first cut there into
+    /// parts NAME@0, NAME@1, … from the left (reported); each support or part then moves by the
+    /// profile at its centroid.
     #[arg(long, value_name = "KIND:NUMBERS")]
     pub profile: Option<String>,
     #[command(flatten)]

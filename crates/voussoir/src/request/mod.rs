@@ -676,7 +676,9 @@ fn solve_any<S: Assembly>(
             Ok((Output::Safety(out), solver))
         }
         // Tilt is dispatched by dimension in `solve` (a 2D sign, a 3D azimuth).
-        Analysis::Tilt(_) => unreachable!("tilt is solved in `solve`"),
+        Analysis::Tilt(_) => Err(Error::Request(
+            "the tilting table is solved per dimension".into(),
+        )),
     }
 }
 

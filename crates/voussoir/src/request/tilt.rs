@@ -46,13 +46,16 @@ impl TiltRequest {
 
     /// 2D: +1 (+x) or −1 (−x).
     pub(super) fn sign_2d(&self, req: &Request) -> Result<f64> {
-        match self.normalised() {
-            a if a == 0.0 => Ok(1.0),
-            a if a == 180.0 => Ok(-1.0),
-            _ => invalid(format!(
+        let a = self.normalised();
+        if a == 0.0 {
+            Ok(1.0)
+        } else if a == 180.0 {
+            Ok(-1.0)
+        } else {
+            invalid(format!(
                 "{}: a 2D model tilts along x: +x or -x (azimuth 0 or 180)",
                 req.names.given("direction", self.label())
-            )),
+            ))
         }
     }
 }

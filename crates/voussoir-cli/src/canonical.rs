@@ -3,7 +3,7 @@
 
 use clap::Args;
 use std::fmt::Write as _;
-use voussoir::analysis::canonical::{Canonical, CanonicalOptions, Selection};
+use voussoir::analysis::canonical::{Canonical, Selection};
 use voussoir::result::Spatial;
 
 #[derive(Args, Clone, Debug)]
@@ -24,21 +24,6 @@ pub struct CanonicalArgs {
     pub ranges: bool,
 }
 
-impl CanonicalArgs {
-    /// The library's options, `None` for `--raw`.
-    pub fn options(&self) -> Option<CanonicalOptions> {
-        (!self.raw).then(|| CanonicalOptions {
-            reaction_ranges: !self.no_ranges,
-            ranges_max_blocks: if self.ranges {
-                usize::MAX
-            } else {
-                CanonicalOptions::default().ranges_max_blocks
-            },
-            ..CanonicalOptions::default()
-        })
-    }
-}
-
 /// `limit`'s flags: the canonical selection is opt-in there (docs/canonical.md: on a symmetric
 /// arch the generic tie-break picks one of two mirror mechanisms).
 #[derive(Args, Clone, Debug)]
@@ -52,15 +37,6 @@ pub struct LimitCanonicalArgs {
     /// With --canonical: skip the ranges of the support reactions.
     #[arg(long)]
     pub no_ranges: bool,
-}
-
-impl LimitCanonicalArgs {
-    pub fn options(&self) -> Option<CanonicalOptions> {
-        self.canonical.then(|| CanonicalOptions {
-            reaction_ranges: !self.no_ranges,
-            ..CanonicalOptions::default()
-        })
-    }
 }
 
 /// The summary lines of a canonical selection.

@@ -4,9 +4,10 @@
 use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
 use clap::Args;
 use std::fmt::Write as _;
-use voussoir::analysis::capacity::{capacity, CapacityOptions, CapacityResult, SettlementUnit};
+use voussoir::analysis::capacity::{CapacityResult, SettlementUnit};
 use voussoir::analysis::limit::Crushing;
 use voussoir::model3d::AnyModel;
+use voussoir::request::{Analysis, AnyResult, CapacityRequest};
 use voussoir::Assembly;
 use voussoir_io::draw::capacity::LinearFitText;
 use voussoir_io::lengths::Length;
@@ -44,122 +45,82 @@ pub struct CapacityArgs {
 }
 
 pub fn run(a: CapacityArgs) -> Result<(), Fail> {
-    if a.settle.moves.is_empty() && a.settle.profile.is_none() {
-        return Err(Fail(
-            "capacity needs a settlement: give --move NAME=u,v (or --profile)".into(),
-        ));
-    }
-    if a.steps == 0 {
-        return Err(Fail(
-            "--steps 0: the curve needs at least one interval".into(),
-        ));
-    }
     a.draw.check()?;
     let input = a.model.resolve()?;
-    let motion = a.settle.resolve()?;
-    let nonassociative = a.crushing.non_associative_settlement();
-    let solver = if nonassociative.is_some() {
-        crate::common::iteration_solver(&a.model, &input.solver)
-    } else {
-        input.solver
-    };
-    let (crushing, facets) = a.crushing.resolve()?;
-    let opts = CapacityOptions {
-        crushing,
-        facets,
-        nonassociative,
+    let cap = CapacityRequest {
         steps: a.steps,
-        hot_start: !a.cold,
-        mechanisms: !a.no_mechanisms,
-        release_fixed: !a.keep_fixed,
-        solver,
-        ..CapacityOptions::default()
+        keep_fixed: a.keep_fixed,
+        no_mechanisms: a.no_mechanisms,
+        cold: a.cold,
+        crushing: a.crushing.crushing(),
+        facets: a.crushing.facets,
+        non_associative: a.crushing.non_associative,
     };
-    match input.load_any()? {
-        AnyModel::Planar(model) => {
-            a.draw.check_2d()?;
-            let facts = crate::report_inputs::facts_2d(&model);
-            let st = input.structure_of(model, Some(&motion))?;
-            let r = capacity(&st, &opts)?;
+    let req = a
+        .model
+        .request(Analysis::Capacity(cap), a.settle.motion()?)?;
+    let model = input.read_any()?;
+    match &model {
+        AnyModel::Planar(_) => a.draw.check_2d()?,
+        AnyModel::Spatial(_) => a.draw.refuse_3d_curve()?,
+    }
+    let internal = || Fail("internal: not a capacity result".into());
+    let settings = vec![("steps".to_string(), a.steps.to_string())];
+    match input.run(&model, &req)? {
+        AnyResult::Planar(run) => {
+            let st = &run.setup.structure;
+            let r = run.output.capacity().ok_or_else(internal)?;
             a.draw
                 .clone()
                 .with_inputs(|| {
                     crate::report_inputs::report_inputs(
                         "capacity",
-                        facts,
-                        &st,
+                        crate::report_inputs::facts_2d(&run.setup.model),
+                        st,
                         &input,
-                        &opts.solver,
+                        &run.solver,
                         crate::report_inputs::Laws {
                             cone: None,
-                            crushing: Some(match crushing {
+                            crushing: Some(match cap.crushing {
                                 Crushing::Linear => {
-                                    voussoir_io::report_parts::CrushingModel::Linear(facets)
+                                    voussoir_io::report_parts::CrushingModel::Linear(
+                                        cap.laws().facets(),
+                                    )
                                 }
                                 Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
                             }),
-                            non_associative: a.crushing.non_associative,
+                            non_associative: cap.non_associative,
                         },
-                        vec![("steps".into(), a.steps.to_string())],
+                        settings,
                     )
                 })
-                .emit_capacity(&r, &input.path)?;
-            a.out.emit_split(&r, &input.splits(), || summary(&st, &r))
+                .emit_capacity(r, &input.path)?;
+            a.out.emit_split(r, &run.setup.splits, || summary(st, r))
         }
-        AnyModel::Spatial(model) => {
-            a.draw.refuse_3d_curve()?;
-            if a.crushing.given() {
-                return Err(Fail(
-                    "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),
-                ));
-            }
+        AnyResult::Spatial(run) => {
+            let st = &run.setup.structure;
+            let r = run.output.capacity().ok_or_else(internal)?;
             let exact = input.exact_friction_cone;
-            if exact && nonassociative.is_some() {
-                return Err(Fail(
-                    "--non-associative goes with the friction pyramid, not --friction-cone exact"
-                        .into(),
-                ));
-            }
-            let facts = crate::report_inputs::facts_3d(&model);
-            let st = input.structure3d_any_cone(model, Some(&motion))?;
-            // In 3D the conic joint law of a limit analysis is the exact Coulomb cone (as
-            // `limit --friction-cone exact`): every limit analysis of the curve is a
-            // second-order cone program. The settlement that deforms the geometry is solved by
-            // the library's conic settlement program (`solve_settlement_conic`).
-            let opts = CapacityOptions {
-                crushing: if exact {
-                    Crushing::Conic
-                } else {
-                    Crushing::Linear
-                },
-                solver: if nonassociative.is_some() {
-                    crate::common::iteration_solver(&a.model, &input.solver3d)
-                } else {
-                    input.solver3d
-                },
-                ..opts
-            };
-            let r = capacity(&st, &opts)?;
             a.draw
                 .clone()
                 .with_inputs(|| {
                     crate::report_inputs::report_inputs(
                         "capacity",
-                        facts,
-                        &st,
+                        crate::report_inputs::facts_3d(&run.setup.model),
+                        st,
                         &input,
-                        &opts.solver,
+                        &run.solver,
                         crate::report_inputs::Laws {
-                            cone: Some(crate::settle::friction_cone(&input, &st)),
+                            cone: Some(crate::settle::friction_cone(&input, st)),
                             crushing: None,
-                            non_associative: a.crushing.non_associative,
+                            non_associative: cap.non_associative,
                         },
-                        vec![("steps".into(), a.steps.to_string())],
+                        settings,
                     )
                 })
-                .emit_capacity(&r, &input.path)?;
-            a.out.emit_split(&r, &input.splits(), || {
-                let mut s = summary(&st, &r);
+                .emit_capacity(r, &input.path)?;
+            a.out.emit_split(r, &run.setup.splits, || {
+                let mut s = summary(st, r);
                 if exact {
                     s.push_str(
                         "friction: the exact Coulomb cone in every limit analysis (second-order cone programs)\n",

@@ -4,7 +4,7 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use voussoir::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
+use voussoir::analysis::limit::Crushing;
 use voussoir::analysis::{LimitResult, SettlementResult};
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::model3d::{AnyModel, Model3d};
@@ -225,69 +225,12 @@ pub struct CrushingArgs {
 }
 
 impl CrushingArgs {
-    /// The crushing model and the facet count, checked.
-    pub fn resolve(&self) -> Result<(Crushing, usize), Fail> {
-        let crushing = match self.crushing {
+    /// The request's crushing model.
+    pub fn crushing(&self) -> Crushing {
+        match self.crushing {
             CrushingArg::Linear => Crushing::Linear,
             CrushingArg::Conic => Crushing::Conic,
-        };
-        let facets = match (self.crushing, self.facets) {
-            (CrushingArg::Conic, Some(_)) => {
-                return Err(Fail(
-                    "--facets applies to --crushing linear (the conic model is the exact cone)"
-                        .into(),
-                ))
-            }
-            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => {
-                return Err(Fail(format!(
-                    "--facets {n}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets"
-                )))
-            }
-            (_, Some(n)) => n,
-            (_, None) => DEFAULT_FACETS,
-        };
-        Ok((crushing, facets))
-    }
-
-    /// The non-associative iteration's settings, when asked for.
-    pub fn non_associative(
-        &self,
-    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
-        self.non_associative.then(Default::default)
-    }
-
-    /// The same for a settlement or capacity analysis.
-    pub fn non_associative_settlement(
-        &self,
-    ) -> Option<voussoir::analysis::nonassociative::NonAssociativeOptions> {
-        self.non_associative
-            .then(voussoir::analysis::nonassociative::NonAssociativeOptions::settlement)
-    }
-
-    /// Whether a finite-strength flag was given (refused in 3D).
-    pub fn given(&self) -> bool {
-        self.crushing == CrushingArg::Conic || self.facets.is_some()
-    }
-
-    /// Refuse `--crushing conic` and `--facets` on a structure none of whose blocks has a
-    /// compressive strength (neither `--compressive-strength` nor the model's materials): its
-    /// joints cannot crush, so the crushing model would play no part.
-    pub fn check_strength(&self, st: &Structure) -> Result<(), Fail> {
-        if st
-            .blocks
-            .iter()
-            .any(|b| b.material.compressive_strength.is_some())
-        {
-            return Ok(());
         }
-        let flag = match (self.crushing, self.facets) {
-            (CrushingArg::Conic, _) => "--crushing conic".to_string(),
-            (_, Some(n)) => format!("--facets {n}"),
-            _ => return Ok(()),
-        };
-        Err(Fail(format!(
-            "{flag} needs a compressive strength: give --compressive-strength KPA or compressive_strength in the model's materials (without one no joint can crush)"
-        )))
     }
 }
 
@@ -378,10 +321,11 @@ pub struct SettleArgs {
     /// Declare a support `fixed` (bilateral: the blocks on it follow it). Repeatable.
     #[arg(long = "fixed", value_name = "NAME")]
     pub fixed: Vec<String>,
-    /// Vertical settlement profile along x (m): uniform:X0,X1,V | linear:X0,V0,X1,V1 |
-    /// table:X,V;X,V;…  (all in m; v up, so a settlement is < 0). A support that spans a
-    /// breakpoint (X0, X1, a table's X) is first cut there into parts NAME@0, NAME@1, … from
-    /// the left (reported); each support or part then moves by the profile at its centroid.
+    /// Vertical settlement profile along x: uniform:X0,X1,V | linear:X0,V0,X1,V1 |
+    /// table:X,V;X,V;…  (in m, or each with a unit: `uniform:1,3,-5mm`; v up, so a settlement
+    /// is < 0). A support that spans a breakpoint (X0, X1, a table's X) is first cut there into
+    /// parts NAME@0, NAME@1, … from the left (reported); each support or part then moves by the
+    /// profile at its centroid.
     #[arg(long, value_name = "KIND:NUMBERS")]
     pub profile: Option<String>,
     #[command(flatten)]
@@ -410,6 +354,18 @@ impl SettleArgs {
             &self.fixed,
             self.profile.as_deref(),
             &self.split.splits,
+        )?)
+    }
+
+    /// The request's support motion: every `--split`, `--move` and `--profile` parsed by the
+    /// library (before any work).
+    pub fn motion(&self) -> Result<voussoir::request::SupportMotion, Fail> {
+        Ok(voussoir::request::SupportMotion::parse(
+            &self.moves,
+            &self.fixed,
+            self.profile.as_deref(),
+            &self.split.splits,
+            voussoir::request::Names::Flags,
         )?)
     }
 
@@ -466,14 +422,6 @@ pub fn split_summary(splits: &[SupportSplit]) -> String {
     s
 }
 
-/// Whether any support of a model moves.
-pub fn has_support_motion(model: &Model) -> bool {
-    model
-        .supports
-        .iter()
-        .any(|s| s.motion.iter().any(|x| *x != 0.0))
-}
-
 /// The model input resolved from the flags: every value checked, before any work.
 #[derive(Clone, Debug)]
 pub struct Input {
@@ -485,7 +433,9 @@ pub struct Input {
     /// `--existing-cracks`: the survey drawing and how to read it.
     pub existing_cracks: Option<(PathBuf, voussoir_io::survey::SurveyOptions)>,
     pub solver: SolverOptions,
-    /// The solver for a 3D model (interior point unless --method says otherwise).
+    /// The solver for a 3D model (interior point unless --method says otherwise), for the
+    /// commands not on the request layer yet (whose requests choose it themselves).
+    #[allow(dead_code)]
     pub solver3d: SolverOptions,
     /// 3D: facets of the friction pyramid (None: the default), exact cone asked for.
     pub friction_facets: Option<usize>,
@@ -575,12 +525,13 @@ impl ModelArgs {
                 .clone()
                 .map(|p| (p, self.survey.options(self.dxf.units))),
             solver: self.solver(),
+            // The library's default method of a 3D model unless --method says otherwise.
             solver3d: SolverOptions {
-                method: if self.solver.method.is_none() {
-                    Method::Ipm
-                } else {
-                    self.solver().method
-                },
+                method: self
+                    .solver
+                    .method
+                    .map(method)
+                    .unwrap_or(voussoir::request::default_method(3)),
                 ..self.solver()
             },
         })
@@ -588,6 +539,37 @@ impl ModelArgs {
 
     pub fn solver(&self) -> SolverOptions {
         self.solver.options()
+    }
+
+    /// A request for `analysis` with `motion`, the model options and the solver of these
+    /// flags; its messages name the flags. Validated.
+    pub fn request(
+        &self,
+        analysis: voussoir::request::Analysis,
+        motion: voussoir::request::SupportMotion,
+    ) -> Result<voussoir::request::Request, Fail> {
+        use voussoir::request::{FrictionCone, ModelOptions, Names, Request, SolverRequest};
+        let r = Request {
+            model: ModelOptions {
+                tolerance: self.tolerance,
+                friction: self.friction,
+                compressive_strength: self.compressive_strength,
+                friction_facets: self.friction_facets,
+                friction_cone: match self.friction_cone {
+                    Some(FrictionConeArg::Exact) => FrictionCone::Exact,
+                    _ => FrictionCone::Pyramid,
+                },
+            },
+            solver: SolverRequest {
+                method: self.solver.method.map(method),
+                log: solver_log(),
+            },
+            motion,
+            analysis,
+            names: Names::Flags,
+        };
+        r.validate()?;
+        Ok(r)
     }
 
     /// Apply `--friction` and `--compressive-strength` to every material (the implicit
@@ -599,22 +581,31 @@ impl ModelArgs {
     }
 }
 
+/// The library's method of `--method`.
+pub fn method(m: MethodArg) -> Method {
+    match m {
+        MethodArg::DualSimplex => Method::DualSimplex,
+        MethodArg::PrimalSimplex => Method::PrimalSimplex,
+        MethodArg::Ipm => Method::Ipm,
+        MethodArg::Choose => Method::Choose,
+        MethodArg::IpmNoCrossover => Method::IpmNoCrossover,
+        MethodArg::Pdlp => Method::Pdlp,
+        MethodArg::Clarabel => Method::Clarabel,
+    }
+}
+
+/// Diagnostics: VOUSSOIR_HIGHS_LOG=1 prints the solver's own log on stdout (read here, in the
+/// binary; the library takes it as a setting).
+fn solver_log() -> bool {
+    std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1")
+}
+
 impl SolverArgs {
     /// The solver options of these flags (dual simplex unless --method says otherwise).
     pub fn options(&self) -> SolverOptions {
         SolverOptions {
-            method: match self.method.unwrap_or(MethodArg::DualSimplex) {
-                MethodArg::DualSimplex => Method::DualSimplex,
-                MethodArg::PrimalSimplex => Method::PrimalSimplex,
-                MethodArg::Ipm => Method::Ipm,
-                MethodArg::Choose => Method::Choose,
-                MethodArg::IpmNoCrossover => Method::IpmNoCrossover,
-                MethodArg::Pdlp => Method::Pdlp,
-                MethodArg::Clarabel => Method::Clarabel,
-            },
-            // Diagnostics: VOUSSOIR_HIGHS_LOG=1 prints the solver's own log on stdout (read here,
-            // in the binary; the library takes it as a setting).
-            log: std::env::var_os("VOUSSOIR_HIGHS_LOG").is_some_and(|v| v == "1"),
+            method: method(self.method.unwrap_or(MethodArg::DualSimplex)),
+            log: solver_log(),
             ..SolverOptions::default()
         }
     }
@@ -638,6 +629,8 @@ fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
     Ok(())
 }
 
+// `load_any`, `structure3d*`: for the commands not on the request layer yet.
+#[allow(dead_code)]
 impl Input {
     /// Read a model of either dimension and apply the material overrides.
     pub fn load_any(&self) -> Result<AnyModel, Fail> {
@@ -657,6 +650,49 @@ impl Input {
             AnyModel::Spatial(s) => s.override_joint_laws(self.friction, self.compressive_strength),
         }
         Ok(m)
+    }
+
+    /// Read a model of either dimension (with `--existing-cracks`), as given: the request
+    /// layer applies the material overrides.
+    pub fn read_any(&self) -> Result<AnyModel, Fail> {
+        let mut m = self.dxf.read_any(&self.path)?.0;
+        match &mut m {
+            AnyModel::Planar(p) => self.add_existing_cracks(p)?,
+            AnyModel::Spatial(_) if self.existing_cracks.is_some() => {
+                return Err(Fail(format!(
+                    "--existing-cracks applies to 2D models, and {} is a 3D model",
+                    self.path.display()
+                )))
+            }
+            AnyModel::Spatial(_) => {}
+        }
+        Ok(m)
+    }
+
+    /// Run a request on a model through the library's one entry (`voussoir::request`): the
+    /// model's warnings printed once its structure is built, errors naming the drawing entity
+    /// of a crack or a mesh face.
+    pub fn run(
+        &self,
+        model: &AnyModel,
+        req: &voussoir::request::Request,
+    ) -> Result<voussoir::request::AnyResult, Fail> {
+        let annotate = |e: voussoir::Error| {
+            let m = e.to_string();
+            Fail(match model {
+                AnyModel::Planar(_) => annotate_cracks(&m),
+                AnyModel::Spatial(_) => crate::import::annotate_mesh(&m),
+            })
+        };
+        let prepared = voussoir::request::prepare(model, req).map_err(annotate)?;
+        let warnings = match &prepared {
+            voussoir::request::Prepared::Planar(s) => &s.warnings,
+            voussoir::request::Prepared::Spatial(s) => &s.warnings,
+        };
+        for w in warnings {
+            eprintln!("warning: {w}");
+        }
+        Ok(voussoir::request::solve(prepared, req)?)
     }
 
     /// Load a 3D model, apply a support motion, validate and find its joints, for a command
@@ -1014,20 +1050,4 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
     s
-}
-
-/// The solver of a non-associative settlement iteration: Clarabel's interior point unless
-/// --method says otherwise. Its solutions are the centres of the optimal faces, so the normal
-/// forces move smoothly from one iterate to the next, where a simplex jumps between vertices
-/// and the iteration wanders (measured on a 20 × 10 wall: docs/joint-laws.md). The tolerance is
-/// tightened so that every iterate is certified.
-pub fn iteration_solver(m: &ModelArgs, solver: &SolverOptions) -> SolverOptions {
-    if m.solver.method.is_some() {
-        return *solver;
-    }
-    SolverOptions {
-        method: voussoir::lp::Method::Clarabel,
-        feasibility_tolerance: solver.feasibility_tolerance.min(1e-10),
-        ..*solver
-    }
 }

@@ -1,11 +1,12 @@
-//! `voussoir limit`: classic limit analysis, with a choice of crushing model.
+//! `voussoir limit`: classic limit analysis, with a choice of crushing model. The flags become
+//! a `voussoir::request::LimitRequest`; the library chooses the variant and the dimension.
 
 use crate::common::{CrushingArgs, Fail, Input, ModelArgs, OutArgs};
 use crate::draw_args::DrawArgs;
 use clap::Args;
-use voussoir::analysis::canonical::limit_canonical;
-use voussoir::analysis::limit::{limit_with, Crushing, DEFAULT_FACETS};
+use voussoir::analysis::limit::Crushing;
 use voussoir::model3d::AnyModel;
+use voussoir::request::{Analysis, AnyResult, LimitRequest, Request, SupportMotion};
 
 #[derive(Args)]
 pub struct LimitArgs {
@@ -26,130 +27,103 @@ pub struct LimitArgs {
 /// `limit`'s flags, resolved.
 pub struct LimitConfig {
     pub input: Input,
-    pub crushing: Crushing,
-    pub facets: usize,
+    pub request: Request,
+    pub limit: LimitRequest,
 }
 
 impl LimitArgs {
     pub fn resolve(&self) -> Result<LimitConfig, Fail> {
-        let (crushing, facets) = self.crushing.resolve()?;
         self.draw.check()?;
+        let input = self.model.resolve()?;
+        let limit = LimitRequest {
+            crushing: self.crushing.crushing(),
+            facets: self.crushing.facets,
+            non_associative: self.crushing.non_associative,
+            canonical: self.canonical.canonical,
+            ranges: self.canonical.no_ranges.then_some(false),
+        };
+        let request = self
+            .model
+            .request(Analysis::Limit(limit), SupportMotion::default())?;
         Ok(LimitConfig {
-            input: self.model.resolve()?,
-            crushing,
-            facets,
+            input,
+            request,
+            limit,
         })
     }
 }
 
 pub fn run(a: LimitArgs) -> Result<(), Fail> {
     let c = a.resolve()?;
-    match c.input.load_any()? {
-        AnyModel::Planar(model) => {
-            a.draw.check_2d()?;
-            let facts = crate::report_inputs::facts_2d(&model);
-            let st = c.input.structure_of(model, None)?;
-            a.crushing.check_strength(&st)?;
-            let r = match (
-                a.crushing.non_associative(),
-                a.canonical.options(),
-                c.crushing,
-            ) {
-                (Some(_), _, Crushing::Conic) => {
-                    return Err(Fail(
-                        "--non-associative goes with --crushing linear (each iterate is an LP)"
-                            .into(),
-                    ))
-                }
-                (Some(o), _, _) => voussoir::analysis::nonassociative::limit_nonassociative_result(
-                    &st,
-                    &c.input.solver,
-                    &o,
-                )?,
-                // The canonical selection is among LP optima (the conic model's optimum is an
-                // interior point of a cone program: reported as solved).
-                (None, Some(o), Crushing::Linear) => {
-                    limit_canonical(&st, &c.input.solver, c.facets, &o)?
-                }
-                _ => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
-            };
+    let model = c.input.read_any()?;
+    if let AnyModel::Planar(_) = model {
+        a.draw.check_2d()?;
+    }
+    let lr = c.limit;
+    match c.input.run(&model, &c.request)? {
+        AnyResult::Planar(run) => {
+            let st = &run.setup.structure;
+            let r = run
+                .output
+                .limit()
+                .ok_or_else(|| Fail("internal: not a limit result".into()))?;
+            let facts = crate::report_inputs::facts_2d(&run.setup.model);
             a.draw
                 .with(&a.forces)
                 .with_inputs(|| {
                     crate::report_inputs::report_inputs(
                         "limit",
                         facts,
-                        &st,
+                        st,
                         &c.input,
-                        &c.input.solver,
+                        &run.solver,
                         crate::report_inputs::Laws {
                             cone: None,
-                            crushing: Some(match c.crushing {
+                            crushing: Some(match lr.crushing {
                                 Crushing::Linear => {
-                                    voussoir_io::report_parts::CrushingModel::Linear(c.facets)
+                                    voussoir_io::report_parts::CrushingModel::Linear(
+                                        lr.laws().facets(),
+                                    )
                                 }
                                 Crushing::Conic => voussoir_io::report_parts::CrushingModel::Conic,
                             }),
-                            non_associative: a.crushing.non_associative,
+                            non_associative: lr.non_associative,
                         },
                         Vec::new(),
                     )
                 })
-                .emit_limit(&r, &c.input.path)?;
-            a.out.emit(&r, || {
-                crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+                .emit_limit(r, &c.input.path)?;
+            a.out.emit(r, || {
+                crate::common::limit_summary(st, r) + &crate::canonical::summary(&r.canonical)
             })
         }
-        AnyModel::Spatial(model) => {
-            if a.crushing.given() {
-                return Err(Fail(
-                    "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),
-                ));
-            }
-            let facts = crate::report_inputs::facts_3d(&model);
-            let st = c.input.structure3d_any_cone(model, None)?;
-            let cone = if c.input.exact_friction_cone {
-                Crushing::Conic
-            } else {
-                Crushing::Linear
-            };
-            let r = match (a.crushing.non_associative(), a.canonical.options(), cone) {
-                (Some(o), _, Crushing::Linear) => {
-                    voussoir::analysis::nonassociative::limit_nonassociative_result(
-                        &st,
-                        &c.input.solver3d,
-                        &o,
-                    )?
-                }
-                (Some(_), _, _) => return Err(Fail(
-                    "--non-associative goes with the friction pyramid, not --friction-cone exact"
-                        .into(),
-                )),
-                (None, Some(o), Crushing::Linear) => {
-                    limit_canonical(&st, &c.input.solver3d, DEFAULT_FACETS, &o)?
-                }
-                _ => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
-            };
+        AnyResult::Spatial(run) => {
+            let st = &run.setup.structure;
+            let r = run
+                .output
+                .limit()
+                .ok_or_else(|| Fail("internal: not a limit result".into()))?;
+            let facts = crate::report_inputs::facts_3d(&run.setup.model);
             a.draw
                 .with(&a.forces)
                 .with_inputs(|| {
                     crate::report_inputs::report_inputs(
                         "limit",
                         facts,
-                        &st,
+                        st,
                         &c.input,
-                        &c.input.solver3d,
+                        &run.solver,
                         crate::report_inputs::Laws {
-                            cone: Some(crate::settle::friction_cone(&c.input, &st)),
+                            cone: Some(crate::settle::friction_cone(&c.input, st)),
                             crushing: None,
-                            non_associative: a.crushing.non_associative,
+                            non_associative: lr.non_associative,
                         },
                         Vec::new(),
                     )
                 })
-                .emit_3d(&r, &c.input.path)?;
-            a.out.emit(&r, || {
-                crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
+                .emit_3d(r, &c.input.path)?;
+            a.out.emit(r, || {
+                crate::common::limit_summary(st, r) + &crate::canonical::summary(&r.canonical)
             })
         }
     }

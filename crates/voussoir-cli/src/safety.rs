@@ -2,18 +2,16 @@
 //! and the range of its support reactions; `voussoir least-thickness arch|dome`: the least
 //! thickness of a generated arch or dome (bisection, regenerating the model).
 
-use crate::common::{Fail, FrictionConeArg, ModelArgs, OutArgs, SolverArgs};
+use crate::common::{Fail, ModelArgs, OutArgs, SolverArgs};
 use crate::gen::{ArchArgs, DomeArgs};
 use clap::{Args, Subcommand};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use voussoir::analysis::safety::{
-    least_thickness, safety, LeastThickness, SafetyOptions, SafetyResult,
-};
+use voussoir::analysis::safety::{least_thickness, LeastThickness, SafetyResult};
 use voussoir::generate::RadiusAt;
 use voussoir::lp::Method;
-use voussoir::model3d::AnyModel;
+use voussoir::request::{Analysis, AnyResult, SafetyRequest, SupportMotion};
 use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
 
 #[derive(Args)]
@@ -119,67 +117,56 @@ fn centreline(radius: f64, at: RadiusAt, t: f64) -> f64 {
 }
 
 pub fn run(a: SafetyArgs) -> Result<(), Fail> {
-    let model = &a.model;
-    let tol = a.bisection_tolerance;
-    if !(tol.is_finite() && tol > 0.0 && tol < 1.0) {
-        return Err(Fail(format!(
-            "--bisection-tolerance {tol}: must be a number between 0 and 1"
-        )));
-    }
-    if model.friction_cone == Some(FrictionConeArg::Exact) {
-        return Err(Fail(
-            "--friction-cone exact does not apply to `safety` (its programs are LPs: the inscribed pyramid)".into(),
-        ));
-    }
-    let input = model.resolve()?;
-    let opts = |solver| SafetyOptions {
-        tolerance: tol,
-        reactions: !a.no_ranges,
-        solver,
-    };
+    let input = a.model.resolve()?;
+    let req = a.model.request(
+        Analysis::Safety(SafetyRequest {
+            bisection_tolerance: a.bisection_tolerance,
+            no_ranges: a.no_ranges,
+        }),
+        SupportMotion::default(),
+    )?;
     use crate::report_inputs::{facts_2d, facts_3d, report_inputs, Laws};
     use voussoir_io::report_parts::ModelEcho;
-    match input.load_any()? {
-        AnyModel::Planar(m) => {
-            let facts = facts_2d(&m);
-            let st = input.structure_of(m, None)?;
-            let r = safety(&st, &opts(input.solver))?;
+    let internal = || Fail("internal: not a safety result".into());
+    match input.run(&input.read_any()?, &req)? {
+        AnyResult::Planar(run) => {
+            let st = &run.setup.structure;
+            let r = run.output.safety().ok_or_else(internal)?;
             if a.report.is_some() {
                 let mut i = report_inputs(
                     "safety",
-                    facts,
-                    &st,
+                    facts_2d(&run.setup.model),
+                    st,
                     &input,
-                    &input.solver,
+                    &run.solver,
                     Laws::default(),
                     settings(&a),
                 );
                 i.model = Some(ModelEcho::of_2d(&st.shapes(), st.contact_joints().len()));
-                write_report(&a, &r, i, &input.path)?;
+                write_report(&a, r, i, &input.path)?;
             }
-            a.out.emit(&r, || summary(&st, &r))
+            a.out.emit(r, || summary(st, r))
         }
-        AnyModel::Spatial(m) => {
-            let facts = facts_3d(&m);
-            let st = input.structure3d(m, None)?;
-            let r = safety(&st, &opts(input.solver3d))?;
+        AnyResult::Spatial(run) => {
+            let st = &run.setup.structure;
+            let r = run.output.safety().ok_or_else(internal)?;
             if a.report.is_some() {
                 let mut i = report_inputs(
                     "safety",
-                    facts,
-                    &st,
+                    facts_3d(&run.setup.model),
+                    st,
                     &input,
-                    &input.solver3d,
+                    &run.solver,
                     Laws {
-                        cone: Some(crate::settle::friction_cone(&input, &st)),
+                        cone: Some(crate::settle::friction_cone(&input, st)),
                         ..Laws::default()
                     },
                     settings(&a),
                 );
                 i.model = Some(ModelEcho::of_3d(&st.shapes(), st.contact_joints().len()));
-                write_report(&a, &r, i, &input.path)?;
+                write_report(&a, r, i, &input.path)?;
             }
-            a.out.emit(&r, || summary(&st, &r))
+            a.out.emit(r, || summary(st, r))
         }
     }
 }

@@ -18,10 +18,7 @@ use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use std::path::PathBuf;
-use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
-use voussoir::analysis::capacity::{capacity as capacity_analysis, CapacityOptions};
 use voussoir::analysis::incremental::{incremental_with, settled, Control, IncrementalOptions};
-use voussoir::analysis::settlement::{settle_with, SettlementForm};
 use voussoir::generate::{
     self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec,
 };
@@ -50,11 +47,42 @@ create_exception!(
     "The LP/SOCP solver failed for a reason other than infeasibility or unboundedness."
 );
 
+/// `voussoir.OptionError`: an option (a keyword) out of range or in conflict with another or
+/// with the model; both a `ModelError` and a `ValueError`, as Python's own checks of keywords
+/// raise `ValueError`.
+static OPTION_ERROR: pyo3::sync::PyOnceLock<Py<pyo3::types::PyType>> =
+    pyo3::sync::PyOnceLock::new();
+
+fn option_error(py: Python<'_>) -> PyResult<&Bound<'_, pyo3::types::PyType>> {
+    OPTION_ERROR
+        .get_or_try_init(py, || {
+            let bases = (
+                py.get_type::<ModelError>(),
+                py.get_type::<pyo3::exceptions::PyValueError>(),
+            );
+            let ns = pyo3::types::PyDict::new(py);
+            ns.set_item("__module__", "voussoir")?;
+            ns.set_item(
+                "__doc__",
+                "An option (keyword) out of range or in conflict with another or with the model: a ModelError and a ValueError.",
+            )?;
+            let t = py
+                .get_type::<pyo3::types::PyType>()
+                .call1(("OptionError", bases, ns))?;
+            Ok::<_, PyErr>(t.cast_into::<pyo3::types::PyType>()?.unbind())
+        })
+        .map(|t| t.bind(py))
+}
+
 impl From<Fail> for PyErr {
     fn from(f: Fail) -> PyErr {
         match f {
             Fail::Model(m) => ModelError::new_err(m),
             Fail::Solver(m) => SolverError::new_err(m),
+            Fail::Option(m) => Python::attach(|py| match option_error(py) {
+                Ok(t) => PyErr::from_type(t.clone(), m),
+                Err(e) => e,
+            }),
         }
     }
 }
@@ -396,94 +424,98 @@ fn gen_facade(
 // ---------------------------------------------------------------------------------------------
 // Analyses (each as the CLI command of the same name does it)
 
+/// Parse a support motion as Python's keywords give it: `moves` each the text `NAME=u,v[,θ]`
+/// (lengths in m or with a unit) or the JSON of a `Move` (`{"support", "values"}`), `profile`
+/// the text `uniform:X0,X1,V` (…) or the JSON of a `Profile`. Returns the library's
+/// `SupportMotion` JSON (every value in m and degrees): the one parser of the CLI and Python.
 #[pyfunction]
-fn limit(py: Python<'_>, model: String, common: Common) -> PyResult<String> {
-    detached(py, || {
-        let (st, opts) = common.structure(&model, None)?;
-        json(&common.limit(&st, &opts)?)
-    })
-}
-
-#[pyfunction]
-fn settle(
+#[pyo3(signature = (moves, fixed, profile=None, splits=Vec::new()))]
+fn motion(
     py: Python<'_>,
-    model: String,
-    common: Common,
-    settle: Settle,
-    raw: bool,
-    ranges: Option<bool>,
+    moves: Vec<String>,
+    fixed: Vec<String>,
+    profile: Option<String>,
+    splits: Vec<String>,
 ) -> PyResult<String> {
+    use voussoir::request::{parse_profile, Move, Names, Split, SupportMotion};
     detached(py, || {
-        let (m, splits) = common.model_split(&model, Some(&settle))?;
-        // Validated first, so that a bad model is named before a missing motion (as the CLI).
-        let st = Structure::new(
-            &m,
-            BuildOptions {
-                tolerance: common.tolerance,
-            },
-        )?;
-        let opts = common.solver()?;
-        if m.supports
+        let n = Names::Keywords;
+        let moves = moves
             .iter()
-            .all(|s| s.motion.iter().all(|x| *x == 0.0))
-        {
-            return Err(Fail::Model(
-                "settle needs a support motion: give move={NAME: (u, v)} or profile=... (the model's supports do not move)".into(),
-            ));
-        }
-        // As the CLI: the canonical selection unless `raw` (docs/canonical.md); `ranges`
-        // None = the reaction ranges on models of at most 500 blocks, True/False = always/never.
-        let form = common.settlement_form()?;
-        let r = if raw {
-            match form {
-                SettlementForm::Both => voussoir::analysis::settle(&st, &opts)?,
-                form => settle_with(&st, &opts, form)?,
-            }
-        } else {
-            let d = CanonicalOptions::default();
-            let copts = CanonicalOptions {
-                reaction_ranges: ranges != Some(false),
-                ranges_max_blocks: if ranges == Some(true) {
-                    usize::MAX
+            .map(|m| {
+                if m.trim_start().starts_with('{') {
+                    #[derive(serde::Deserialize)]
+                    struct Parts {
+                        support: String,
+                        values: Vec<f64>,
+                    }
+                    let p: Parts = serde_json::from_str(m)
+                        .map_err(|e| Fail::Model(format!("move {m}: {e}")))?;
+                    let m = Move {
+                        support: p.support,
+                        values: p.values,
+                        third_with_unit: false,
+                    };
+                    m.check(n)?;
+                    Ok(m)
                 } else {
-                    d.ranges_max_blocks
-                },
-                ..d
-            };
-            settle_canonical(&st, &opts, form, &copts)?
+                    Ok(Move::parse(m, n)?)
+                }
+            })
+            .collect::<Result<Vec<_>, Fail>>()?;
+        let profile = match profile {
+            None => None,
+            Some(p) if p.trim_start().starts_with('{') => {
+                let p: voussoir::settlement_input::Profile = serde_json::from_str(&p)
+                    .map_err(|e| Fail::Model(format!("invalid settlement profile: {e}")))?;
+                p.validate()?;
+                Some(p)
+            }
+            Some(p) => Some(parse_profile(&p)?),
         };
-        json_split(&r, &splits)
+        let splits = splits
+            .iter()
+            .map(|s| Split::parse(s, n))
+            .collect::<Result<Vec<_>, _>>()?;
+        let m = SupportMotion {
+            moves,
+            fixed,
+            profile,
+            splits,
+        };
+        m.validate(n)?;
+        json(&m)
     })
 }
 
+/// Run a request (the JSON of `voussoir::request::Request`, as `python/voussoir/_options.py`
+/// builds it from the keywords) on a model (JSON, 2D or 3D): the library's one entry, the
+/// result as the CLI's JSON. Messages name Python's keywords.
 #[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn capacity(
-    py: Python<'_>,
-    model: String,
-    common: Common,
-    settle: Settle,
-    steps: usize,
-    keep_fixed: bool,
-    no_mechanisms: bool,
-    cold: bool,
-) -> PyResult<String> {
+fn run(py: Python<'_>, model: String, request: String) -> PyResult<String> {
     detached(py, || {
-        if settle.moves.is_empty() && settle.profile.is_none() {
-            return Err(Fail::Model(
-                "capacity needs a settlement: give move={NAME: (u, v)} (or profile=...)".into(),
-            ));
+        voussoir_io::files::unique_keys(&model)
+            .map_err(|e| Fail::Model(format!("invalid model JSON: {e}")))?;
+        let model = voussoir::model3d::AnyModel::from_json(&model)
+            .map_err(|e| Fail::Model(format!("invalid model JSON: {e}")))?;
+        let mut req = voussoir::request::Request::from_json(&request)?;
+        req.names = voussoir::request::Names::Keywords;
+        let r = voussoir::request::run(&model, &req)?;
+        fn out<M, S: voussoir::Assembly>(r: &voussoir::request::Run<M, S>) -> Result<String, Fail> {
+            use voussoir::request::Output;
+            let s = &r.setup.splits;
+            match &r.output {
+                Output::Limit(x) => json_split(x, s),
+                Output::Settlement(x) => json_split(x, s),
+                Output::Capacity(x) => json_split(x, s),
+                Output::Tilt(x) => json_split(x, s),
+                Output::Safety(x) => json_split(x, s),
+            }
         }
-        let (st, solver, splits) = common.structure_split(&model, Some(&settle))?;
-        let opts = CapacityOptions {
-            steps,
-            hot_start: !cold,
-            mechanisms: !no_mechanisms,
-            release_fixed: !keep_fixed,
-            solver,
-            ..CapacityOptions::default()
-        };
-        json_split(&capacity_analysis(&st, &opts)?, &splits)
+        match &r {
+            voussoir::request::AnyResult::Planar(r) => out(r),
+            voussoir::request::AnyResult::Spatial(r) => out(r),
+        }
     })
 }
 
@@ -530,19 +562,6 @@ fn incremental(
             ..IncrementalOptions::default()
         };
         json(&incremental_with(&start, &control, &opts, &mut |_| {})?)
-    })
-}
-
-#[pyfunction]
-fn tilt(py: Python<'_>, model: String, common: Common, direction: &str) -> PyResult<String> {
-    let dir = match direction {
-        "+x" => 1.0,
-        "-x" => -1.0,
-        d => return Err(Fail::Model(format!("direction={d}: expected +x or -x")).into()),
-    };
-    detached(py, || {
-        let (st, opts) = common.structure(&model, None)?;
-        json(&voussoir::analysis::tilt::tilt(&st, dir, &opts)?)
     })
 }
 
@@ -621,6 +640,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("VoussoirError", m.py().get_type::<VoussoirError>())?;
     m.add("ModelError", m.py().get_type::<ModelError>())?;
     m.add("SolverError", m.py().get_type::<SolverError>())?;
+    m.add("OptionError", option_error(m.py())?)?;
     m.add_function(wrap_pyfunction!(model_from_text, m)?)?;
     m.add_function(wrap_pyfunction!(model_from_path, m)?)?;
     m.add_function(wrap_pyfunction!(model_from_dxf, m)?)?;
@@ -629,11 +649,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(gen_lintel, m)?)?;
     m.add_function(wrap_pyfunction!(gen_wall, m)?)?;
     m.add_function(wrap_pyfunction!(gen_facade, m)?)?;
-    m.add_function(wrap_pyfunction!(limit, m)?)?;
-    m.add_function(wrap_pyfunction!(settle, m)?)?;
-    m.add_function(wrap_pyfunction!(capacity, m)?)?;
+    m.add_function(wrap_pyfunction!(motion, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(incremental, m)?)?;
-    m.add_function(wrap_pyfunction!(tilt, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_base, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_task, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_run, m)?)?;

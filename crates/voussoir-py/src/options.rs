@@ -6,25 +6,27 @@
 //! with messages naming the Python keyword instead of the flag.
 
 use pyo3::prelude::*;
-use voussoir::analysis::limit::Crushing;
 use voussoir::analysis::settlement::SettlementForm;
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{
-    apply_profile_as_drawn, fix_support, move_support, refresh_motions, Profile, SupportSplit,
-};
+use voussoir::request::{Move, Names, SupportMotion};
+use voussoir::settlement_input::{Profile, SupportSplit};
 use voussoir::{BuildOptions, Model, Structure};
 
-/// A failure: one line; `Solver` for the solver's own failures, `Model` for everything else.
+/// A failure: one line; `Solver` for the solver's own failures, `Option` for an option of a
+/// request out of range or in conflict (`voussoir.OptionError`, a `ModelError` and a
+/// `ValueError`), `Model` for everything else.
 #[derive(Debug)]
 pub enum Fail {
     Model(String),
     Solver(String),
+    Option(String),
 }
 
 impl From<voussoir::Error> for Fail {
     fn from(e: voussoir::Error) -> Self {
         match e {
             voussoir::Error::Solver(_) => Fail::Solver(e.to_string()),
+            voussoir::Error::Invalid(_) => Fail::Option(e.to_string()),
             _ => Fail::Model(e.to_string()),
         }
     }
@@ -43,50 +45,53 @@ pub struct Common {
     pub method: String,
     pub friction: Option<f64>,
     pub compressive_strength: Option<f64>,
-    pub crushing: String,
-    pub facets: usize,
     pub settlement_form: String,
 }
 
-/// `SettleArgs` of the CLI: moves (θ in degrees), fixed supports, a profile (as `Profile` JSON).
+/// `SettleArgs` of the CLI: moves (as parsed by the library: name, values with θ in degrees,
+/// whether a third value carried a length unit), fixed supports, a profile (as `Profile` JSON).
 #[derive(FromPyObject, Clone, Debug, Default)]
 #[pyo3(from_item_all)]
 pub struct Settle {
-    pub moves: Vec<(String, Vec<f64>)>,
+    pub moves: Vec<(String, Vec<f64>, bool)>,
     pub fixed: Vec<String>,
     pub profile: Option<String>,
 }
 
 impl Settle {
     /// Apply the fixed supports, moves and profile (as drawn: a support spanning one of its
-    /// breakpoints is cut there first, as by the CLI); the supports cut.
+    /// breakpoints is cut there first), by the library's request layer, as the CLI does; the
+    /// supports cut.
     pub fn apply(&self, model: &mut Model) -> Result<Vec<SupportSplit>, Fail> {
-        let mut splits = Vec::new();
-        for f in &self.fixed {
-            fix_support(model, f)?;
-        }
-        for (name, nums) in &self.moves {
-            let motion = match nums.as_slice() {
-                [u, v] => [*u, *v, 0.0],
-                [u, v, t] => [*u, *v, t.to_radians()],
-                _ => {
-                    return Err(Fail::Model(format!(
-                        "move {name}: expected (u, v) or (u, v, θ in degrees)"
-                    )))
-                }
-            };
-            move_support(model, name, &motion)?;
-        }
-        if let Some(p) = &self.profile {
-            // The profile arrives as the JSON of `Profile` (python/voussoir/_options.py parses
-            // the CLI's string form, as the CLI does in its front end).
-            let profile: Profile = serde_json::from_str(p)
-                .map_err(|e| Fail::Model(format!("invalid settlement profile: {e}")))?;
-            profile.validate()?;
-            splits = apply_profile_as_drawn(model, &profile)?;
-        }
-        refresh_motions(model, &mut splits);
-        Ok(splits)
+        Ok(self.motion()?.apply(model, Names::Keywords)?)
+    }
+
+    /// The request's support motion.
+    pub fn motion(&self) -> Result<SupportMotion, Fail> {
+        let profile = match &self.profile {
+            // The profile arrives as the JSON of `Profile` (`_native.motion` parsed the text).
+            Some(p) => {
+                let profile: Profile = serde_json::from_str(p)
+                    .map_err(|e| Fail::Model(format!("invalid settlement profile: {e}")))?;
+                profile.validate()?;
+                Some(profile)
+            }
+            None => None,
+        };
+        Ok(SupportMotion {
+            moves: self
+                .moves
+                .iter()
+                .map(|(support, values, third_with_unit)| Move {
+                    support: support.clone(),
+                    values: values.clone(),
+                    third_with_unit: *third_with_unit,
+                })
+                .collect(),
+            fixed: self.fixed.clone(),
+            profile,
+            splits: Vec::new(),
+        })
     }
 }
 
@@ -187,28 +192,5 @@ impl Common {
             },
         )?;
         Ok((st, self.solver()?, splits))
-    }
-
-    /// Limit analysis with the chosen crushing model.
-    pub fn limit(
-        &self,
-        st: &Structure,
-        opts: &SolverOptions,
-    ) -> Result<voussoir::analysis::LimitResult, Fail> {
-        let crushing = match self.crushing.as_str() {
-            "linear" => Crushing::Linear,
-            "conic" => Crushing::Conic,
-            c => {
-                return Err(Fail::Model(format!(
-                    "crushing={c}: expected linear or conic"
-                )))
-            }
-        };
-        Ok(voussoir::analysis::limit::limit_with(
-            st,
-            opts,
-            crushing,
-            self.facets,
-        )?)
     }
 }

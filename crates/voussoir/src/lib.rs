@@ -49,6 +49,7 @@ pub mod model3d;
 pub mod programs;
 pub mod programs_identify;
 pub mod reporting;
+pub mod request;
 pub mod result;
 pub mod scale;
 pub mod settlement_input;

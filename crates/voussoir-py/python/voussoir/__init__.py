@@ -20,7 +20,7 @@ from . import _native
 from . import compas, generate
 from ._analysis import capacity, identify, incremental, limit, settle, sweep, tilt
 from ._model import Model, Support
-from ._native import ModelError, SolverError, VoussoirError
+from ._native import ModelError, OptionError, SolverError, VoussoirError
 from ._results import (
     CapacityResult,
     IdentifyResult,
@@ -56,6 +56,7 @@ __all__ = [
     "SweepResult",
     "VoussoirError",
     "ModelError",
+    "OptionError",
     "SolverError",
     "__version__",
 ]

@@ -37,9 +37,14 @@ def _model(model: ModelLike) -> Model:
 
 # Executed in the caller's process, or in an executor's worker (module-level, so it pickles).
 def _run(kind: str, model_json: str, args: tuple) -> Any:
-    fn = getattr(_native, kind)
+    # limit, settle, capacity and tilt: one request through the library's one entry
+    # (`voussoir::request::run`), which makes every choice; the others: their native function.
+    fn = _native.run if kind in _REQUESTS else getattr(_native, kind)
     text = fn(model_json, *args)
     return _WRAP[kind](text)
+
+
+_REQUESTS = ("limit", "settle", "capacity", "tilt")
 
 
 _WRAP = {
@@ -63,11 +68,14 @@ def limit(
     model: ModelLike,
     *,
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     crushing: str = "linear",
-    facets: int = 16,
+    facets: Optional[int] = None,
+    non_associative: bool = False,
+    canonical: bool = False,
+    ranges: Optional[bool] = None,
     executor=None,
 ) -> LimitResult:
     """Classic limit analysis (``voussoir limit``): the collapse load multiplier λ of the live
@@ -75,18 +83,30 @@ def limit(
 
     ``model``: a :class:`Model` or a JSON path. ``tolerance``: joint detection, relative to the
     model's size (default 1e-7). ``method``: LP method (``"dual-simplex"``, ``"primal-simplex"``,
-    ``"ipm"``, ``"choose"``, ``"ipm-no-crossover"``, ``"pdlp"``, ``"clarabel"``). ``friction``:
-    Coulomb μ for every joint (default: no sliding). ``compressive_strength``: f_c in kPa
-    (default: infinite). ``crushing``: ``"linear"`` (inscribed polygon of ``facets`` sides) or
-    ``"conic"`` (exact, SOCP). ``executor``: return a future computed there.
+    ``"ipm"``, ``"choose"``, ``"ipm-no-crossover"``, ``"pdlp"``, ``"clarabel"``; default: the
+    library's for the model's dimension, dual simplex in 2D). ``friction``: Coulomb μ for every
+    joint (default: no sliding). ``compressive_strength``: f_c in kPa (default: infinite).
+    ``crushing``: ``"linear"`` (inscribed polygon of ``facets`` sides, default 16) or
+    ``"conic"`` (exact, SOCP); both need a compressive strength. ``non_associative``: friction
+    without dilatancy (``--non-associative``). ``canonical``: the canonical mechanism and forces
+    (``--canonical``), ``ranges=False`` without the reaction ranges. ``executor``: return a
+    future computed there.
 
     >>> import voussoir as v
     >>> r = v.limit(v.generate.arch(live="full"))
     >>> round(r.load_multiplier, 4)
     0.4346
     """
-    c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
-    return _dispatch("limit", model, (c,), executor)
+    a = {"type": "limit", **o.laws(crushing, facets, non_associative)}
+    if canonical:
+        a["canonical"] = True
+    if ranges is not None:
+        a["ranges"] = bool(ranges)
+    r = o.request(
+        a, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength,
+    )
+    return _dispatch("limit", model, (r,), executor)
 
 
 def settle(
@@ -96,10 +116,13 @@ def settle(
     fixed: Union[str, Iterable[str], None] = None,
     profile: Optional[str] = None,
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     settlement_form: str = "both",
+    crushing: str = "linear",
+    facets: Optional[int] = None,
+    non_associative: bool = False,
     raw: bool = False,
     ranges: Optional[bool] = None,
     executor=None,
@@ -114,7 +137,8 @@ def settle(
     ``"uniform:X0,X1,V"``, ``"linear:X0,V0,X1,V1"`` or ``"table:X,V;X,V;…"``; a support that
     spans one of its breakpoints is first cut there into parts ``NAME@0``, ``NAME@1``, … (listed
     in the JSON's ``split_supports``; docs/import.md).
-    ``settlement_form``: ``"both"`` (default) or ``"force-only"``.
+    ``settlement_form``: ``"both"`` (default) or ``"force-only"``. ``crushing``, ``facets``,
+    ``non_associative``: the joint laws, as for :func:`limit` (with ``settlement_form="both"``).
 
     As the CLI, the result is the canonical one (docs/canonical.md): the least-crack mechanism
     among the optimal ones and the physical forces of least complementary energy, with the
@@ -123,10 +147,20 @@ def settle(
     ``ranges=True``/``False`` computes the reaction ranges always/never (``--ranges`` /
     ``--no-ranges``). Other keywords as :func:`limit`.
     """
-    c = o.common(tolerance, method, friction, compressive_strength, "linear", 16, settlement_form)
-    s = o.settle(move, fixed, profile)
-    r = None if ranges is None else bool(ranges)
-    return _dispatch("settle", model, (c, s, bool(raw), r), executor)
+    a = {
+        "type": "settle",
+        "settlement_form": o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS),
+        **o.laws(crushing, facets, non_associative),
+    }
+    if raw:
+        a["raw"] = True
+    if ranges is not None:
+        a["ranges"] = bool(ranges)
+    r = o.request(
+        a, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile),
+    )
+    return _dispatch("settle", model, (r,), executor)
 
 
 def capacity(
@@ -140,11 +174,12 @@ def capacity(
     no_mechanisms: bool = False,
     cold: bool = False,
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     crushing: str = "linear",
-    facets: int = 16,
+    facets: Optional[int] = None,
+    non_associative: bool = False,
     executor=None,
 ) -> CapacityResult:
     """Load capacity after a settlement (``voussoir capacity``): λ against the settlement (limit
@@ -155,11 +190,19 @@ def capacity(
     ``no_mechanisms``: leave each step's mechanism out of the JSON. ``cold``: no HiGHS hot start.
     Other keywords as :func:`settle` and :func:`limit`.
     """
-    c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
-    s = o.settle(move, fixed, profile)
-    return _dispatch(
-        "capacity", model, (c, s, int(steps), bool(keep_fixed), bool(no_mechanisms), bool(cold)), executor
+    a = {
+        "type": "capacity",
+        "steps": int(steps),
+        "keep_fixed": bool(keep_fixed),
+        "no_mechanisms": bool(no_mechanisms),
+        "cold": bool(cold),
+        **o.laws(crushing, facets, non_associative),
+    }
+    r = o.request(
+        a, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile),
     )
+    return _dispatch("capacity", model, (r,), executor)
 
 
 def incremental(
@@ -213,21 +256,26 @@ def tilt(
     *,
     direction: Union[str, float, Sequence[float]] = "+x",
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
-    crushing: str = "linear",
-    facets: int = 16,
     executor=None,
 ) -> TiltResult:
     """Tilting-table analysis (``voussoir tilt``): the critical tilt angle (degrees) towards
-    ``direction``, as the CLI's ``--direction`` on a 2D model: along x, ``"+x"`` or ``"-x"``
-    (or 0, 180, (dx, 0))."""
+    ``direction``, as the CLI's ``--direction``: ``"+x"``, ``"-x"``, ``"+y"``, ``"-y"``, an
+    azimuth in degrees from +x towards +y or a vector (dx, dy); a 2D model tilts along x
+    (``"+x"``, ``"-x"``, 0, 180, (dx, 0)), else :class:`OptionError` (a ``ValueError``)."""
+    import math
+
     dx, dy = o.direction("direction", direction)
-    if dy != 0.0:
-        raise ValueError(f"direction={direction!r}: a 2D model tilts along x: '+x' or '-x'")
-    c = o.common(tolerance, method, friction, compressive_strength, crushing, facets)
-    return _dispatch("tilt", model, (c, "+x" if dx > 0 else "-x"), executor)
+    exact = {(1.0, 0.0): 0.0, (0.0, 1.0): 90.0, (-1.0, 0.0): 180.0, (0.0, -1.0): 270.0}
+    u = (dx / math.hypot(dx, dy), dy / math.hypot(dx, dy))
+    azimuth = exact.get(u, math.degrees(math.atan2(dy, dx)) % 360.0)
+    r = o.request(
+        {"type": "tilt", "azimuth": azimuth}, tolerance=tolerance, method=method,
+        friction=friction, compressive_strength=compressive_strength,
+    )
+    return _dispatch("tilt", model, (r,), executor)
 
 
 def _sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, seed: int) -> str:

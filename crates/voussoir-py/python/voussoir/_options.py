@@ -62,33 +62,56 @@ def common(
     }
 
 
-def _motion(name: str, m) -> list:
+def _move_item(name: str, m) -> str:
+    """One move of a dict ``{NAME: (u, v[, θ])}`` as the JSON of the library's ``Move``."""
     try:
         vals = [float(x) for x in m]
     except (TypeError, ValueError):
         raise ValueError(
             f"move {name}: expected (u, v) or (u, v, θ in degrees), got {m!r}"
         ) from None
-    if len(vals) not in (2, 3) or not all(math.isfinite(x) for x in vals):
-        raise ValueError(f"move {name}: expected two or three finite numbers (u, v[, θ])")
-    return vals
+    return json.dumps({"support": name, "values": vals})
 
 
-def moves(move: Moves) -> list:
-    """``{"right": (0.01, 0)}`` or CLI strings ``"right=0.01,0"`` → [(name, [u, v(, θ)])]."""
+def _move_items(move: Moves) -> list:
     if move is None:
         return []
     if isinstance(move, str):
         move = [move]
     if isinstance(move, Mapping):
-        return [(str(k), _motion(str(k), v)) for k, v in move.items()]
+        return [_move_item(str(k), v) for k, v in move.items()]
     out = []
     for m in move:
         if not isinstance(m, str) or "=" not in m:
             raise ValueError(f"move {m!r}: expected NAME=u,v[,θ] or a dict {{NAME: (u, v)}}")
-        name, vals = m.split("=", 1)
-        out.append((name, _motion(name, vals.split(","))))
+        out.append(m)
     return out
+
+
+def motion(move: Moves = None, fixed=None, profile=None) -> dict:
+    """The support motion of a request, parsed by the library (the one parser of the CLI and
+    Python: lengths in m or with a unit, ``"right=0,-5mm"``; θ in degrees): the JSON of
+    ``voussoir::request::SupportMotion`` as a dict (keys ``move``, ``fixed``, ``profile``,
+    present when given)."""
+    from . import _native
+
+    if profile is None:
+        p = None
+    elif isinstance(profile, str):
+        p = profile
+    elif isinstance(profile, Mapping):
+        p = json.dumps(dict(profile))
+    else:
+        raise TypeError(
+            "profile must be a string (uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…) or a dict"
+        )
+    return json.loads(_native.motion(_move_items(move), fixed_list(fixed), p))
+
+
+def moves(move: Moves) -> list:
+    """``{"right": (0.01, 0)}`` or strings ``"right=0.01,0"`` / ``"right=1cm,0"`` → the
+    library's moves ``[{"support": "right", "values": [0.01, 0.0]}]`` (m and degrees)."""
+    return motion(move).get("move", [])
 
 
 def fixed_list(fixed: Union[str, Iterable[str], None]) -> list:
@@ -99,64 +122,66 @@ def fixed_list(fixed: Union[str, Iterable[str], None]) -> list:
     return [str(f) for f in fixed]
 
 
-def parse_profile(s: str) -> dict:
-    """The CLI's profile syntax (``uniform:X0,X1,V``, ``linear:X0,V0,X1,V1``,
-    ``table:X,V;X,V;…``, metres) as the library's ``Profile`` (its JSON form), with the CLI's
-    message when it cannot be read (crates/voussoir-cli/src/common.rs, ``parse_profile``)."""
-    from ._native import ModelError
-
-    def bad():
-        return ModelError(
-            f"cannot read settlement profile '{s}': expected uniform:X0,X1,V or "
-            "linear:X0,V0,X1,V1 or table:X,V;X,V;…"
-        )
-
-    kind, sep, rest = s.partition(":")
-    if not sep:
-        raise bad()
-
-    def nums(t):
-        try:
-            return [float(x.strip()) for x in t.split(",")]
-        except ValueError:
-            raise bad() from None
-
-    if kind == "uniform":
-        v = nums(rest)
-        if len(v) != 3:
-            raise bad()
-        return {"type": "uniform", "x0": v[0], "x1": v[1], "v": v[2]}
-    if kind == "linear":
-        v = nums(rest)
-        if len(v) != 4:
-            raise bad()
-        return {"type": "linear", "x0": v[0], "v0": v[1], "x1": v[2], "v1": v[3]}
-    if kind == "table":
-        points = []
-        for pair in (t for t in rest.split(";") if t.strip()):
-            v = nums(pair)
-            if len(v) != 2:
-                raise bad()
-            points.append(v)
-        return {"type": "table", "points": points}
-    raise bad()
-
-
 def settle(move: Moves = None, fixed=None, profile=None) -> dict:
-    """``profile``: the CLI's string form, or a dict of the library's ``Profile``
-    (``{"type": "uniform", "x0", "x1", "v"}``, ``{"type": "linear", "x0", "v0", "x1", "v1"}``,
-    ``{"type": "table", "points": [[x, v], …]}``)."""
-    if profile is None:
-        p = None
-    elif isinstance(profile, str):
-        p = json.dumps(parse_profile(profile))
-    elif isinstance(profile, Mapping):
-        p = json.dumps(dict(profile))
-    else:
-        raise TypeError(
-            "profile must be a string (uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…) or a dict"
-        )
-    return {"moves": moves(move), "fixed": fixed_list(fixed), "profile": p}
+    """The support motion for the native analyses not yet on the request layer (sweep,
+    incremental, identify): parsed by the library (:func:`motion`). ``profile``: the CLI's
+    string form, or a dict of the library's ``Profile``."""
+    m = motion(move, fixed, profile)
+    return {
+        "moves": [
+            (x["support"], x["values"], bool(x.get("third_with_unit", False)))
+            for x in m.get("move", [])
+        ],
+        "fixed": m.get("fixed", []),
+        "profile": json.dumps(m["profile"]) if "profile" in m else None,
+    }
+
+
+def _number(name: str, x) -> float:
+    from ._native import OptionError
+
+    v = float(x)
+    if not math.isfinite(v):
+        raise OptionError(f"{name}={x!r}: must be a finite number")
+    return v
+
+
+def request(
+    analysis: dict,
+    *,
+    tolerance: Optional[float] = None,
+    method: Optional[str] = None,
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    motion: Optional[dict] = None,
+) -> str:
+    """The JSON of a ``voussoir::request::Request``: the keywords as the library's options,
+    absent where not given (the library's defaults: docs/python.md)."""
+    model = {}
+    for k, x in (
+        ("tolerance", tolerance),
+        ("friction", friction),
+        ("compressive_strength", compressive_strength),
+    ):
+        if x is not None:
+            model[k] = _number(k, x)
+    solver = {} if method is None else {"method": choice("method", method, METHODS)}
+    req = {"model": model, "solver": solver, "analysis": analysis}
+    if motion:
+        req["motion"] = motion
+    return json.dumps(req)
+
+
+def laws(crushing: str = "linear", facets: Optional[int] = None, non_associative: bool = False) -> dict:
+    """The joint-law options of limit, settle and capacity requests."""
+    out = {"crushing": choice("crushing", crushing, CRUSHING)}
+    if facets is not None:
+        if int(facets) != facets or facets < 0:
+            raise ValueError(f"facets={facets!r}: expected a non-negative integer")
+        out["facets"] = int(facets)
+    if non_associative:
+        out["non_associative"] = True
+    return out
 
 
 _AXES = {

@@ -8,6 +8,7 @@
 //! The GIL is released for everything that solves (`Python::detach`), and panics are caught and
 //! turned into `voussoir.VoussoirError`, so a failure never takes the interpreter down.
 
+mod analysis3d;
 mod identify;
 mod model3d;
 mod options;
@@ -608,5 +609,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(report_html, m)?)?;
     m.add_function(wrap_pyfunction!(svg_to_png, m)?)?;
     model3d::register(m)?;
+    analysis3d::register(m)?;
     Ok(())
 }

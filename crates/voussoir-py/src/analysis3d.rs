@@ -1,0 +1,501 @@
+//! Analyses of 3D models for Python, and `safety` / `least_thickness` of either dimension: the
+//! same library calls as the CLI's commands (crates/voussoir-cli/src/{limit,settle,capacity,
+//! tilt,safety}.rs, their `AnyModel::Spatial` branches), results serialised by the CLI's
+//! serialiser so that `to_json()` is byte-identical to `--json`.
+//!
+//! Support motions arrive in the CLI's own syntax (`NAME=u,v,w[,θx,θy,θz]`, lengths with or
+//! without a unit, angles in degrees; profiles `uniform:…`) and are read by the CLI's parser
+//! (`voussoir_io::motion::Motion`), so Python and the CLI accept the same motions.
+
+use crate::detached;
+use crate::options::Fail;
+use pyo3::prelude::*;
+use serde::Serialize;
+use voussoir::analysis::capacity::{capacity, CapacityOptions};
+use voussoir::analysis::limit::{limit_with, Crushing, DEFAULT_FACETS};
+use voussoir::analysis::safety::{least_thickness, safety, LeastThickness, SafetyOptions};
+use voussoir::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
+use voussoir::generate::RadiusAt;
+use voussoir::lp::{Method, SolverOptions};
+use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::settlement_input::SupportSplit;
+use voussoir::{BuildOptions, Structure, Structure3d};
+use voussoir_io::motion::Motion;
+
+/// The options of a 3D analysis (the CLI's `ModelArgs` for a 3D model), from a Python dict.
+#[derive(FromPyObject, Clone, Debug)]
+#[pyo3(from_item_all)]
+pub struct Common3d {
+    pub tolerance: Option<f64>,
+    /// None: the 3D default (interior point with crossover), as the CLI.
+    pub method: Option<String>,
+    pub friction: Option<f64>,
+    pub compressive_strength: Option<f64>,
+    pub friction_facets: Option<usize>,
+    /// "pyramid" or "exact".
+    pub friction_cone: String,
+    /// The support motion in the CLI's syntax.
+    pub moves: Vec<String>,
+    pub fixed: Vec<String>,
+    pub profile: Option<String>,
+    pub splits: Vec<String>,
+}
+
+fn method_of(m: &str) -> Result<Method, Fail> {
+    Ok(match m {
+        "dual-simplex" => Method::DualSimplex,
+        "primal-simplex" => Method::PrimalSimplex,
+        "ipm" => Method::Ipm,
+        "choose" => Method::Choose,
+        "ipm-no-crossover" => Method::IpmNoCrossover,
+        "pdlp" => Method::Pdlp,
+        "clarabel" => Method::Clarabel,
+        m => {
+            return Err(Fail::Model(format!(
+                "method={m}: expected dual-simplex, primal-simplex, ipm, choose, ipm-no-crossover, pdlp or clarabel"
+            )))
+        }
+    })
+}
+
+/// The solver of a model of `dims` dimensions: `method`, else dual simplex in 2D and interior
+/// point in 3D (the CLI's defaults).
+fn solver_of(method: Option<&str>, dims: usize) -> Result<SolverOptions, Fail> {
+    let method = match method {
+        Some(m) => method_of(m)?,
+        None if dims == 3 => Method::Ipm,
+        None => Method::DualSimplex,
+    };
+    Ok(SolverOptions {
+        method,
+        ..SolverOptions::default()
+    })
+}
+
+impl Common3d {
+    fn exact(&self) -> Result<bool, Fail> {
+        match self.friction_cone.as_str() {
+            "pyramid" => Ok(false),
+            "exact" | "cone" | "socp" => Ok(true),
+            c => Err(Fail::Model(format!(
+                "friction_cone={c}: expected pyramid or exact"
+            ))),
+        }
+    }
+
+    fn check(&self) -> Result<(), Fail> {
+        if let Some(t) = self.tolerance {
+            if !(t.is_finite() && t > 0.0) {
+                return Err(Fail::Model(format!(
+                    "tolerance={t}: must be a finite number > 0"
+                )));
+            }
+        }
+        if let Some(mu) = self.friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return Err(Fail::Model(format!(
+                    "friction={mu}: must be a finite number ≥ 0"
+                )));
+            }
+        }
+        if let Some(f) = self.compressive_strength {
+            if !(f.is_finite() && f > 0.0) {
+                return Err(Fail::Model(format!(
+                    "compressive_strength={f}: must be a finite number > 0 (kPa)"
+                )));
+            }
+        }
+        if let Some(k) = self.friction_facets {
+            if !(3..=1024).contains(&k) {
+                return Err(Fail::Model(format!(
+                    "friction_facets={k}: the friction pyramid needs between 3 and 1024 facets"
+                )));
+            }
+            if self.exact()? {
+                return Err(Fail::Model(
+                    "friction_facets applies to the pyramid, not to friction_cone=exact".into(),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn solver(&self) -> Result<SolverOptions, Fail> {
+        solver_of(self.method.as_deref(), 3)
+    }
+
+    fn motion(&self) -> Result<Motion, Fail> {
+        Ok(Motion::parse_with_splits(
+            &self.moves,
+            &self.fixed,
+            self.profile.as_deref(),
+            &self.splits,
+        )?)
+    }
+
+    fn has_motion(&self) -> bool {
+        !(self.moves.is_empty()
+            && self.fixed.is_empty()
+            && self.profile.is_none()
+            && self.splits.is_empty())
+    }
+
+    /// The 3D model with materials overridden and the motion applied, and its structure.
+    fn structure(&self, model: &str) -> Result<(Model3d, Structure3d, Vec<SupportSplit>), Fail> {
+        self.check()?;
+        let motion = self.motion()?;
+        let mut m = match crate::model3d::parse_any(model)? {
+            AnyModel::Spatial(m) => m,
+            AnyModel::Planar(_) => {
+                return Err(Fail::Model(
+                    "internal: a 2D model reached the 3D analyses".into(),
+                ))
+            }
+        };
+        m.override_joint_laws(self.friction, self.compressive_strength);
+        let splits = motion.apply(&mut m)?;
+        let mut st = Structure3d::new(
+            &m,
+            BuildOptions {
+                tolerance: self.tolerance,
+            },
+        )?;
+        if let Some(k) = self.friction_facets {
+            st.friction_facets = k;
+        }
+        Ok((m, st, splits))
+    }
+}
+
+fn json<T: Serialize>(v: &T) -> Result<String, Fail> {
+    Ok(voussoir_io::files::to_json(v)?)
+}
+
+fn json_split<T: Serialize>(v: &T, splits: &[SupportSplit]) -> Result<String, Fail> {
+    if splits.is_empty() {
+        return json(v);
+    }
+    json(&voussoir_io::motion::WithSplits {
+        result: v,
+        split_supports: splits,
+    })
+}
+
+fn refuse_motion(c: &Common3d, what: &str) -> Result<(), Fail> {
+    if c.has_motion() {
+        return Err(Fail::Model(format!(
+            "{what} takes no support motion (move, fixed, profile)"
+        )));
+    }
+    Ok(())
+}
+
+/// `voussoir limit` of a 3D model: the friction pyramid, or the exact cone.
+#[pyfunction]
+pub fn limit3d(py: Python<'_>, model: String, common: Common3d) -> PyResult<String> {
+    detached(py, || {
+        refuse_motion(&common, "limit")?;
+        let (_, st, _) = common.structure(&model)?;
+        let cone = if common.exact()? {
+            Crushing::Conic
+        } else {
+            Crushing::Linear
+        };
+        json(&limit_with(&st, &common.solver()?, cone, DEFAULT_FACETS)?)
+    })
+}
+
+/// `voussoir settle` of a 3D model: the solver's own solution (no canonical selection in 3D).
+#[pyfunction]
+pub fn settle3d(
+    py: Python<'_>,
+    model: String,
+    common: Common3d,
+    settlement_form: String,
+) -> PyResult<String> {
+    detached(py, || {
+        let form = match settlement_form.as_str() {
+            "both" => SettlementForm::Both,
+            "force-only" => SettlementForm::ForceOnly,
+            f => {
+                return Err(Fail::Model(format!(
+                    "settlement_form={f}: expected both or force-only"
+                )))
+            }
+        };
+        let exact = common.exact()?;
+        if exact && form != SettlementForm::Both {
+            return Err(Fail::Model(
+                "friction_cone=exact goes with settlement_form=both (the default): the cone program is solved whole".into(),
+            ));
+        }
+        let (m, st, splits) = common.structure(&model)?;
+        if !m
+            .supports
+            .iter()
+            .any(|s| s.motion.iter().any(|x| *x != 0.0))
+        {
+            return Err(Fail::Model(
+                "settle needs a support motion: give move={NAME: (u, v, w)} (θx, θy, θz in degrees after them) or profile=... (the model's supports do not move)".into(),
+            ));
+        }
+        let solver = common.solver()?;
+        let r = match form {
+            SettlementForm::Both if exact => {
+                settle_crushing(&st, &solver, Crushing::Conic, DEFAULT_FACETS)?
+            }
+            SettlementForm::Both => settle(&st, &solver)?,
+            form => settle_with(&st, &solver, form)?,
+        };
+        json_split(&r, &splits)
+    })
+}
+
+/// `voussoir capacity` of a 3D model.
+#[pyfunction]
+pub fn capacity3d(
+    py: Python<'_>,
+    model: String,
+    common: Common3d,
+    steps: usize,
+    keep_fixed: bool,
+    no_mechanisms: bool,
+    cold: bool,
+) -> PyResult<String> {
+    detached(py, || {
+        if common.moves.is_empty() && common.profile.is_none() {
+            return Err(Fail::Model(
+                "capacity needs a settlement: give move={NAME: (u, v, w)} (or profile=...)"
+                    .into(),
+            ));
+        }
+        let (_, st, splits) = common.structure(&model)?;
+        let opts = CapacityOptions {
+            crushing: if common.exact()? {
+                Crushing::Conic
+            } else {
+                Crushing::Linear
+            },
+            steps,
+            hot_start: !cold,
+            mechanisms: !no_mechanisms,
+            release_fixed: !keep_fixed,
+            solver: common.solver()?,
+            ..CapacityOptions::default()
+        };
+        json_split(&capacity(&st, &opts)?, &splits)
+    })
+}
+
+/// `voussoir tilt` of a 3D model towards `azimuth` (degrees from +x towards +y).
+#[pyfunction]
+pub fn tilt3d(py: Python<'_>, model: String, common: Common3d, azimuth: f64) -> PyResult<String> {
+    detached(py, || {
+        refuse_motion(&common, "tilt")?;
+        if !azimuth.is_finite() {
+            return Err(Fail::Model(format!(
+                "direction={azimuth}: must be a finite number of degrees"
+            )));
+        }
+        // As the CLI: the azimuth taken into [0, 360).
+        let r = azimuth.rem_euclid(360.0);
+        let az = if r >= 360.0 || r == 0.0 { 0.0 } else { r };
+        let (_, st, _) = common.structure(&model)?;
+        let solver = common.solver()?;
+        let r = if common.exact()? {
+            voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &solver)?
+        } else {
+            voussoir::analysis::tilt::tilt_azimuth(&st, az, &solver)?
+        };
+        json(&r)
+    })
+}
+
+/// `voussoir safety` of a model of either dimension: whether it stands under its dead loads,
+/// its geometric safety factor and the ranges of its support reactions.
+#[pyfunction]
+pub fn safety_any(
+    py: Python<'_>,
+    model: String,
+    common: Common3d,
+    bisection_tolerance: f64,
+    ranges: bool,
+) -> PyResult<String> {
+    detached(py, || {
+        let tol = bisection_tolerance;
+        if !(tol.is_finite() && tol > 0.0 && tol < 1.0) {
+            return Err(Fail::Model(format!(
+                "bisection_tolerance={tol}: must be a number between 0 and 1"
+            )));
+        }
+        refuse_motion(&common, "safety")?;
+        if common.exact()? {
+            return Err(Fail::Model(
+                "friction_cone=exact does not apply to safety (its programs are LPs: the inscribed pyramid)".into(),
+            ));
+        }
+        let opts = |solver| SafetyOptions {
+            tolerance: tol,
+            reactions: ranges,
+            solver,
+        };
+        match crate::model3d::parse_any(&model)? {
+            AnyModel::Planar(mut m) => {
+                common.check()?;
+                if common.friction_facets.is_some() {
+                    return Err(Fail::Model(
+                        "friction_facets and friction_cone apply to 3D models (a 2D joint's friction is exact)".into(),
+                    ));
+                }
+                m.override_joint_laws(common.friction, common.compressive_strength);
+                let st = Structure::new(
+                    &m,
+                    BuildOptions {
+                        tolerance: common.tolerance,
+                    },
+                )?;
+                json(&safety(
+                    &st,
+                    &opts(solver_of(common.method.as_deref(), 2)?),
+                )?)
+            }
+            AnyModel::Spatial(_) => {
+                let (_, st, _) = common.structure(&model)?;
+                json(&safety(&st, &opts(common.solver()?))?)
+            }
+        }
+    })
+}
+
+/// What `voussoir least-thickness --json` reports (crates/voussoir-cli/src/safety.rs, same
+/// fields in the same order).
+#[derive(Serialize)]
+struct LeastThicknessResult {
+    generator: &'static str,
+    #[serde(flatten)]
+    found: LeastThickness,
+    centreline_radius: f64,
+    thickness_over_radius: f64,
+    solver: voussoir::lp::SolverInfo,
+}
+
+fn centreline(radius: f64, at: RadiusAt, t: f64) -> f64 {
+    match at {
+        RadiusAt::Intrados => radius + t / 2.0,
+        RadiusAt::Centreline => radius,
+        RadiusAt::Extrados => radius - t / 2.0,
+    }
+}
+
+/// `voussoir least-thickness arch|dome`: the least thickness at which the generated arch
+/// (`arch`: the arguments of `gen_arch` as JSON-able tuple) or dome stands under its own
+/// weight. Returns (result JSON, model JSON at the least thickness).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (generator, arch, dome, lower, upper, bisection_tolerance, method))]
+pub fn least_thickness_any(
+    py: Python<'_>,
+    generator: String,
+    arch: Option<(String, f64, String, f64, usize, f64, f64, String, f64, f64, f64)>,
+    dome: Option<(f64, String, f64, usize, usize, f64, Option<f64>, f64, f64)>,
+    lower: Option<f64>,
+    upper: Option<f64>,
+    bisection_tolerance: f64,
+    method: Option<String>,
+) -> PyResult<(String, String)> {
+    detached(py, || {
+        let rel = bisection_tolerance;
+        let build = BuildOptions::default();
+        let (radius, at_text) = match (&arch, &dome) {
+            (Some(a), _) => (a.1, a.2.clone()),
+            (_, Some(d)) => (d.0, d.1.clone()),
+            _ => return Err(Fail::Model("least_thickness: no generator".into())),
+        };
+        if !(radius.is_finite() && radius > 0.0) {
+            return Err(Fail::Model(format!("radius={radius}: must be a number > 0")));
+        }
+        if !(rel.is_finite() && rel > 0.0 && rel < 1.0) {
+            return Err(Fail::Model(format!(
+                "bisection_tolerance={rel}: must be a number between 0 and 1"
+            )));
+        }
+        let lo = lower.unwrap_or(radius / 1000.0);
+        let hi = upper.unwrap_or(radius / 2.0);
+        let at = match at_text.as_str() {
+            "intrados" => RadiusAt::Intrados,
+            "centreline" | "centerline" => RadiusAt::Centreline,
+            "extrados" => RadiusAt::Extrados,
+            s => {
+                return Err(Fail::Model(format!(
+                    "radius_at={s}: expected intrados, centreline or extrados"
+                )))
+            }
+        };
+        let (generator, found, model, solver) = match (generator.as_str(), arch, dome) {
+            ("arch", Some(a), _) => {
+                let solver = solver_of(method.as_deref(), 2)?;
+                let spec = crate::model3d::arch_spec(
+                    &a.0, a.1, &a.2, a.3, a.4, a.5, a.6, &a.7, a.8, a.9, a.10,
+                )?;
+                let make = |t: f64| {
+                    voussoir::generate::arch(&voussoir::generate::ArchSpec {
+                        thickness: t,
+                        ..spec.clone()
+                    })
+                };
+                let found = least_thickness(
+                    |t| Structure::new(&make(t)?, build),
+                    lo,
+                    hi,
+                    rel * radius,
+                    &solver,
+                )?;
+                let m = json(&make(found.thickness)?)?;
+                ("arch", found, m, solver)
+            }
+            ("dome", _, Some(d)) => {
+                let solver = solver_of(method.as_deref(), 3)?;
+                let spec = crate::model3d::dome_spec(d.0, &d.1, d.2, d.3, d.4, d.5, d.6, d.7, d.8)?;
+                let make = |t: f64| {
+                    voussoir::generate3d::dome(&voussoir::generate3d::DomeSpec {
+                        thickness: t,
+                        ..spec.clone()
+                    })
+                };
+                let found = least_thickness(
+                    |t| Structure3d::new(&make(t)?, build),
+                    lo,
+                    hi,
+                    rel * radius,
+                    &solver,
+                )?;
+                let m = json(&make(found.thickness)?)?;
+                ("dome", found, m, solver)
+            }
+            (g, _, _) => {
+                return Err(Fail::Model(format!(
+                    "least_thickness {g}: expected arch or dome"
+                )))
+            }
+        };
+        let rc = centreline(radius, at, found.thickness);
+        let r = LeastThicknessResult {
+            generator,
+            centreline_radius: rc,
+            thickness_over_radius: found.thickness / rc,
+            found,
+            solver: solver.info(),
+        };
+        Ok((json(&r)?, model))
+    })
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(limit3d, m)?)?;
+    m.add_function(wrap_pyfunction!(settle3d, m)?)?;
+    m.add_function(wrap_pyfunction!(capacity3d, m)?)?;
+    m.add_function(wrap_pyfunction!(tilt3d, m)?)?;
+    m.add_function(wrap_pyfunction!(safety_any, m)?)?;
+    m.add_function(wrap_pyfunction!(least_thickness_any, m)?)?;
+    Ok(())
+}

@@ -11,6 +11,11 @@ pub enum Error {
     /// A request that does not fit the model (unknown support name, bad option value, …).
     #[error("invalid request: {}", one_line(.0))]
     Request(String),
+    /// An option of a request out of range or in conflict with another (or with the model),
+    /// in the words of the front end that made it (its flag or keyword: `request::Names`):
+    /// shown as is.
+    #[error("{}", one_line(.0))]
+    Invalid(String),
     /// The LP solver failed for a reason other than infeasibility or unboundedness.
     #[error("solver failure: {}", one_line(.0))]
     Solver(String),

@@ -48,6 +48,7 @@ pub mod model;
 pub mod model3d;
 pub mod programs;
 pub mod programs_identify;
+pub mod request;
 pub mod result;
 pub mod scale;
 pub mod settlement_input;

@@ -1,0 +1,142 @@
+//! Load capacity after a settlement: λ against the settlement, limit analysis on the deformed
+//! geometry.
+
+use super::{invalid, JointLaws, Names, Output, Request};
+use crate::analysis::capacity::{capacity, CapacityOptions};
+use crate::analysis::limit::Crushing;
+use crate::analysis::nonassociative::NonAssociativeOptions;
+use crate::error::Result;
+use crate::lp::SolverOptions;
+use crate::structure::Assembly;
+use serde::{Deserialize, Serialize};
+
+/// Options of a capacity analysis. Defaults: 40 intervals, `fixed` supports released after
+/// the settlement, every step's mechanism kept, hot starts, the joint laws of
+/// [`super::LimitRequest`].
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CapacityRequest {
+    /// Intervals of the curve (it has `steps + 1` points from 0 to the largest settlement).
+    pub steps: usize,
+    /// Keep `fixed` supports tied to their blocks after the settlement.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub keep_fixed: bool,
+    /// Leave each step's collapse mechanism out of the result.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub no_mechanisms: bool,
+    /// Solve every step from scratch (no hot start).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub cold: bool,
+    /// The crushing model (2D; default linear).
+    pub crushing: Crushing,
+    /// Facets of the inscribed crushing polygon of `crushing: linear` (default 16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub facets: Option<usize>,
+    /// Non-associative Coulomb friction in the settlement and every limit analysis.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub non_associative: bool,
+}
+
+impl Default for CapacityRequest {
+    fn default() -> Self {
+        CapacityRequest {
+            steps: 40,
+            keep_fixed: false,
+            no_mechanisms: false,
+            cold: false,
+            crushing: Crushing::Linear,
+            facets: None,
+            non_associative: false,
+        }
+    }
+}
+
+impl CapacityRequest {
+    /// The joint-law options.
+    pub fn laws(&self) -> JointLaws {
+        JointLaws {
+            crushing: self.crushing,
+            facets: self.facets,
+            non_associative: self.non_associative,
+        }
+    }
+
+    pub(super) fn validate(&self, req: &Request) -> Result<()> {
+        let n = req.names;
+        if req.motion.moves.is_empty() && req.motion.profile.is_none() {
+            let hint = match n {
+                Names::Flags => "give --move NAME=u,v (or --profile)",
+                _ => "give move={NAME: (u, v)} (or profile=...)",
+            };
+            return invalid(format!("capacity needs a settlement: {hint}"));
+        }
+        if self.steps == 0 {
+            return invalid(format!(
+                "{}: the curve needs at least one interval",
+                n.given("steps", 0)
+            ));
+        }
+        self.laws().validate(n)
+    }
+
+    pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
+        let n = req.names;
+        if dims == 3 {
+            if self.laws().strength_given() {
+                return invalid(format!(
+                    "{} and {} describe finite compressive strength, which is modelled in 2D only",
+                    n.name("crushing"),
+                    n.name("facets"),
+                ));
+            }
+            if req.model.exact_cone() && self.non_associative {
+                return invalid(format!(
+                    "{} goes with the friction pyramid, not {}",
+                    n.name("non_associative"),
+                    n.given("friction_cone", "exact")
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The analysis's options: in 3D the conic joint law of every limit analysis is the exact
+    /// Coulomb cone when asked for (and the settlement that deforms the geometry the conic
+    /// settlement program); the iteration's solver for non-associative friction.
+    pub fn options(&self, req: &Request, dims: usize) -> CapacityOptions {
+        let nonassociative = self.non_associative.then(NonAssociativeOptions::settlement);
+        CapacityOptions {
+            crushing: if dims == 3 {
+                if req.model.exact_cone() {
+                    Crushing::Conic
+                } else {
+                    Crushing::Linear
+                }
+            } else {
+                self.crushing
+            },
+            facets: self.laws().facets(),
+            nonassociative,
+            steps: self.steps,
+            hot_start: !self.cold,
+            mechanisms: !self.no_mechanisms,
+            release_fixed: !self.keep_fixed,
+            solver: if self.non_associative {
+                req.solver.iteration(dims)
+            } else {
+                req.solver.options(dims)
+            },
+            ..CapacityOptions::default()
+        }
+    }
+
+    pub(super) fn solve<S: Assembly>(
+        &self,
+        st: &S,
+        req: &Request,
+        dims: usize,
+    ) -> Result<(Output<S::D>, SolverOptions)> {
+        let opts = self.options(req, dims);
+        Ok((Output::Capacity(capacity(st, &opts)?), opts.solver))
+    }
+}

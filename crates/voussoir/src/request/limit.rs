@@ -1,0 +1,120 @@
+//! Limit analysis: the collapse multiplier of the live loads and the collapse mechanism.
+
+use super::{canonical_options, invalid, JointLaws, Output, Request};
+use crate::analysis::canonical::limit_canonical;
+use crate::analysis::limit::{limit_with, Crushing};
+use crate::analysis::nonassociative::{limit_nonassociative_result, NonAssociativeOptions};
+use crate::error::Result;
+use crate::lp::SolverOptions;
+use crate::structure::Assembly;
+use serde::{Deserialize, Serialize};
+
+/// Options of a limit analysis. Defaults: the inscribed crushing polygon of 16 facets,
+/// associative friction, the solver's own optimum (no canonical selection).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct LimitRequest {
+    /// The crushing model (2D; matters only where a compressive strength is given; default
+    /// linear, the inscribed polygon).
+    pub crushing: Crushing,
+    /// Facets of the inscribed crushing polygon of `crushing: linear` (default 16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub facets: Option<usize>,
+    /// Non-associative Coulomb friction (the fixed-point iteration; docs/joint-laws.md).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub non_associative: bool,
+    /// Report the canonical collapse mechanism and forces (docs/canonical.md) instead of the
+    /// solver's own optimum.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub canonical: bool,
+    /// With `canonical`: the ranges of the support reactions — absent: on models of at most
+    /// 500 blocks; true: always; false: never.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ranges: Option<bool>,
+}
+
+impl LimitRequest {
+    /// The joint-law options.
+    pub fn laws(&self) -> JointLaws {
+        JointLaws {
+            crushing: self.crushing,
+            facets: self.facets,
+            non_associative: self.non_associative,
+        }
+    }
+
+    pub(super) fn validate(&self, req: &Request) -> Result<()> {
+        self.laws().validate(req.names)?;
+        if !req.motion.is_empty() {
+            return invalid(format!(
+                "limit takes no support motion ({}, {}, {}, {}): the limit analysis of a settled structure is capacity",
+                req.names.name("move"),
+                req.names.name("fixed"),
+                req.names.name("profile"),
+                req.names.name("split")
+            ));
+        }
+        Ok(())
+    }
+
+    pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
+        let n = req.names;
+        if dims == 3 && self.laws().strength_given() {
+            return invalid(format!(
+                "{} and {} describe finite compressive strength, which is modelled in 2D only (3D: {} for the exact friction cone)",
+                n.name("crushing"),
+                n.name("facets"),
+                n.given("friction_cone", "exact")
+            ));
+        }
+        Ok(())
+    }
+
+    /// The variant: non-associative friction (an LP per iterate: the inscribed crushing
+    /// polygon, the friction pyramid), else the canonical selection among LP optima when asked
+    /// (not for a cone program, whose optimum is an interior point), else the plain analysis
+    /// with the crushing model (2D) or the friction cone (3D).
+    pub(super) fn solve<S: Assembly>(
+        &self,
+        st: &S,
+        req: &Request,
+        dims: usize,
+    ) -> Result<(Output<S::D>, SolverOptions)> {
+        let n = req.names;
+        let solver = req.solver.options(dims);
+        // The conic program of the dimension: exact crushing (2D), the exact friction cone (3D).
+        let (crushing, facets) = if dims == 3 {
+            let cone = if req.model.exact_cone() {
+                Crushing::Conic
+            } else {
+                Crushing::Linear
+            };
+            (cone, crate::analysis::limit::DEFAULT_FACETS)
+        } else {
+            (self.laws().crushing, self.laws().facets())
+        };
+        let r = if self.laws().non_associative {
+            if crushing == Crushing::Conic {
+                return invalid(if dims == 3 {
+                    format!(
+                        "{} goes with the friction pyramid, not {}",
+                        n.name("non_associative"),
+                        n.given("friction_cone", "exact")
+                    )
+                } else {
+                    format!(
+                        "{} goes with {} (each iterate is an LP)",
+                        n.name("non_associative"),
+                        n.given("crushing", "linear")
+                    )
+                });
+            }
+            limit_nonassociative_result(st, &solver, &NonAssociativeOptions::default())?
+        } else if self.canonical && crushing == Crushing::Linear {
+            limit_canonical(st, &solver, facets, &canonical_options(self.ranges))?
+        } else {
+            limit_with(st, &solver, crushing, facets)?
+        };
+        Ok((Output::Limit(r), solver))
+    }
+}

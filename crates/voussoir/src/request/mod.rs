@@ -1,0 +1,589 @@
+//! The request layer: one front door to every analysis, for a model of either dimension.
+//!
+//! A [`Request`] says what to run and how: the model options ([`ModelOptions`]: joint
+//! detection, material overrides, the 3D friction cone), the solver ([`SolverRequest`]), the
+//! support motion ([`SupportMotion`], parsed with units in [`motion`]) and the analysis with its
+//! own options ([`Analysis`]: [`LimitRequest`], [`SettleRequest`], …). Every field has a
+//! documented default, so `{"analysis": {"type": "limit"}}` is a complete request. The request
+//! is checked once ([`Request::validate`]: each error one line naming the field), then [`run`]
+//! makes every choice a front end used to make: which variant of the analysis runs
+//! (associative or not, canonical or the solver's own optimum, crushing model, exact friction
+//! cone), the default solver of each dimension, whether a support motion is needed, and the
+//! 2D/3D dispatch — written once here. The CLI turns its flags into a request, Python its
+//! keywords; neither decides anything else.
+//!
+//! Messages name the option in the words of the front end that made the request
+//! ([`Names`]: `--crushing conic` on the command line, `crushing=conic` in Python and in a
+//! request's JSON).
+//!
+//! [`run`] is [`prepare`] (model options and support motion applied, structure built; its
+//! warnings) then [`solve`], for front ends that print the model's warnings before solving.
+
+pub mod motion;
+
+mod capacity;
+mod limit;
+mod settle;
+
+pub use capacity::CapacityRequest;
+pub use limit::LimitRequest;
+pub use motion::{parse_profile, signed_length, Move, Split, SupportMotion};
+pub use settle::SettleRequest;
+
+use crate::analysis::canonical::CanonicalOptions;
+use crate::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
+use crate::analysis::{CapacityResult, LimitResult, SettlementResult};
+use crate::error::{Error, Result};
+use crate::lp::{Method, SolverOptions};
+use crate::model3d::{AnyModel, Model3d};
+use crate::result::Spatial;
+use crate::settlement_input::SupportSplit;
+use crate::structure::{Assembly, BuildOptions, Structure, Structure3d};
+use crate::Model;
+use serde::{Deserialize, Serialize};
+
+/// How messages name a request's options: after the front end that made the request.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Names {
+    /// The request's own field names: `crushing=conic` (a request read from JSON).
+    #[default]
+    Fields,
+    /// The command line's flags: `--crushing conic`, `--compressive-strength KPA`.
+    Flags,
+    /// Python's keywords: `crushing=conic`, `compressive_strength=KPA`.
+    Keywords,
+}
+
+impl Names {
+    /// The option's name: `--friction-cone` or `friction_cone`.
+    pub fn name(self, field: &str) -> String {
+        match self {
+            Names::Flags => format!("--{}", field.replace('_', "-")),
+            Names::Fields | Names::Keywords => field.to_string(),
+        }
+    }
+
+    /// The option with a value: `--facets 32` or `facets=32`.
+    pub fn given(self, field: &str, value: impl std::fmt::Display) -> String {
+        match self {
+            Names::Flags => format!("{} {value}", self.name(field)),
+            Names::Fields | Names::Keywords => format!("{field}={value}"),
+        }
+    }
+
+    /// The option with a placeholder for its value: `--compressive-strength KPA` or
+    /// `compressive_strength=KPA`.
+    pub fn ask(self, field: &str, what: &str) -> String {
+        self.given(field, what)
+    }
+
+    /// How to give a support motion, for "needs a support motion" messages.
+    fn motion_hint(self, dims: usize) -> String {
+        match (self, dims) {
+            (Names::Flags, 2) => "give --move NAME=u,v[,θ] or --profile".into(),
+            (Names::Flags, _) => "give --move NAME=u,v,w[,θx,θy,θz] or --profile".into(),
+            (_, 2) => "give move={NAME: (u, v)} or profile=...".into(),
+            _ => "give move={NAME: (u, v, w)} or profile=...".into(),
+        }
+    }
+}
+
+fn invalid<T>(msg: String) -> Result<T> {
+    Err(Error::Invalid(msg))
+}
+
+/// The 3D friction cone.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FrictionCone {
+    /// The pyramid of `friction_facets` facets inscribed in the cone (an LP). The default.
+    #[default]
+    Pyramid,
+    /// The exact cone (a second-order cone program, Clarabel).
+    Exact,
+}
+
+/// Fewest and most facets of the 3D friction pyramid.
+pub const FRICTION_FACETS: std::ops::RangeInclusive<usize> = 3..=1024;
+
+/// How the model is read into a structure. Defaults: every field absent.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ModelOptions {
+    /// Geometric tolerance for joint detection, relative to the model's size (default 1e-7).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Coulomb μ for every joint, overriding the model's materials (default: the model's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
+    /// Compressive strength f_c in kPa for every joint, overriding the model's materials
+    /// (default: the model's, else infinite).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub compressive_strength: Option<f64>,
+    /// 3D: facets of the friction pyramid (default 8). Refused for a 2D model.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction_facets: Option<usize>,
+    /// 3D: the friction cone (default the pyramid). `exact` is refused for a 2D model.
+    pub friction_cone: FrictionCone,
+}
+
+impl ModelOptions {
+    pub fn validate(&self, names: Names) -> Result<()> {
+        if let Some(t) = self.tolerance {
+            if !(t.is_finite() && t > 0.0) {
+                return invalid(format!(
+                    "{}: must be a finite number > 0",
+                    names.given("tolerance", t)
+                ));
+            }
+        }
+        if let Some(mu) = self.friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return invalid(format!(
+                    "{}: must be a finite number ≥ 0",
+                    names.given("friction", mu)
+                ));
+            }
+        }
+        if let Some(f) = self.compressive_strength {
+            if !(f.is_finite() && f > 0.0) {
+                return invalid(format!(
+                    "{}: must be a finite number > 0 (kPa)",
+                    names.given("compressive_strength", f)
+                ));
+            }
+        }
+        if let Some(k) = self.friction_facets {
+            if !FRICTION_FACETS.contains(&k) {
+                return invalid(format!(
+                    "{}: the friction pyramid needs between {} and {} facets",
+                    names.given("friction_facets", k),
+                    FRICTION_FACETS.start(),
+                    FRICTION_FACETS.end()
+                ));
+            }
+            if self.friction_cone == FrictionCone::Exact {
+                return invalid(format!(
+                    "{} applies to the pyramid, not to {}",
+                    names.name("friction_facets"),
+                    names.given("friction_cone", "exact")
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn exact_cone(&self) -> bool {
+        self.friction_cone == FrictionCone::Exact
+    }
+}
+
+/// The solver. Default: the method of the model's dimension ([`default_method`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SolverRequest {
+    /// The LP method; absent: [`default_method`] of the model's dimension.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub method: Option<Method>,
+    /// Print the solver's own log on stdout (diagnostics).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub log: bool,
+}
+
+/// The LP method when none is asked for: the dual simplex in 2D (an exact vertex: crisp
+/// mechanisms and hinges), the interior point with crossover in 3D (HiGHS's dual simplex stalls
+/// in phase 1 on the 3D force programs of domes: > 120 s against 3 s at 12 courses × 24
+/// segments; with crossover the answer is still a vertex).
+pub fn default_method(dims: usize) -> Method {
+    if dims == 3 {
+        Method::Ipm
+    } else {
+        Method::DualSimplex
+    }
+}
+
+impl SolverRequest {
+    /// The solver options for a model of `dims` dimensions.
+    pub fn options(&self, dims: usize) -> SolverOptions {
+        SolverOptions {
+            method: self.method.unwrap_or_else(|| default_method(dims)),
+            log: self.log,
+            ..SolverOptions::default()
+        }
+    }
+
+    /// The solver of a non-associative iteration: Clarabel's interior point unless a method is
+    /// asked for. Its solutions are the centres of the optimal faces, so the normal forces move
+    /// smoothly from one iterate to the next, where a simplex jumps between vertices and the
+    /// iteration wanders (measured on a 20 × 10 wall: docs/joint-laws.md). The tolerance is
+    /// tightened so that every iterate is certified.
+    pub fn iteration(&self, dims: usize) -> SolverOptions {
+        let solver = self.options(dims);
+        if self.method.is_some() {
+            return solver;
+        }
+        SolverOptions {
+            method: Method::Clarabel,
+            feasibility_tolerance: solver.feasibility_tolerance.min(1e-10),
+            ..solver
+        }
+    }
+}
+
+/// Finite compressive strength and non-associative friction: the joint-law options of limit,
+/// settle and capacity. Defaults: the inscribed polygon of 16 facets, associative friction.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointLaws {
+    pub crushing: Crushing,
+    pub facets: Option<usize>,
+    pub non_associative: bool,
+}
+
+impl JointLaws {
+    pub fn validate(&self, names: Names) -> Result<()> {
+        match (self.crushing, self.facets) {
+            (Crushing::Conic, Some(_)) => invalid(format!(
+                "{} applies to {} (the conic model is the exact cone)",
+                names.name("facets"),
+                names.given("crushing", "linear")
+            )),
+            (_, Some(n)) if !(MIN_FACETS..=MAX_FACETS).contains(&n) => invalid(format!(
+                "{}: the crushing polygon needs between {MIN_FACETS} and {MAX_FACETS} facets",
+                names.given("facets", n)
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// The facet count (default 16).
+    pub fn facets(&self) -> usize {
+        self.facets.unwrap_or(DEFAULT_FACETS)
+    }
+
+    /// Whether a finite-strength option was given (they are refused in 3D).
+    pub fn strength_given(&self) -> bool {
+        self.crushing == Crushing::Conic || self.facets.is_some()
+    }
+
+    /// Refuse `crushing: conic` and `facets` on a structure none of whose blocks has a
+    /// compressive strength: its joints cannot crush, so the crushing model would play no part.
+    fn check_strength(&self, st: &Structure, names: Names) -> Result<()> {
+        if st
+            .blocks
+            .iter()
+            .any(|b| b.material.compressive_strength.is_some())
+        {
+            return Ok(());
+        }
+        let flag = match (self.crushing, self.facets) {
+            (Crushing::Conic, _) => names.given("crushing", "conic"),
+            (_, Some(n)) => names.given("facets", n),
+            _ => return Ok(()),
+        };
+        invalid(format!(
+            "{flag} needs a compressive strength: give {} or compressive_strength in the model's materials (without one no joint can crush)",
+            names.ask("compressive_strength", "KPA")
+        ))
+    }
+}
+
+/// The reaction ranges of a canonical selection: `None` on models of at most 500 blocks,
+/// `Some(true)` always, `Some(false)` never.
+fn canonical_options(ranges: Option<bool>) -> CanonicalOptions {
+    let d = CanonicalOptions::default();
+    CanonicalOptions {
+        reaction_ranges: ranges != Some(false),
+        ranges_max_blocks: if ranges == Some(true) {
+            usize::MAX
+        } else {
+            d.ranges_max_blocks
+        },
+        ..d
+    }
+}
+
+/// The analysis to run, with its options.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "kebab-case")]
+pub enum Analysis {
+    Limit(LimitRequest),
+    Settle(SettleRequest),
+    Capacity(CapacityRequest),
+}
+
+impl Analysis {
+    /// The command's name (`limit`, `settle`, …).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Analysis::Limit(_) => "limit",
+            Analysis::Settle(_) => "settle",
+            Analysis::Capacity(_) => "capacity",
+        }
+    }
+}
+
+/// One analysis of one model: everything a front end decides, as data.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Request {
+    #[serde(default)]
+    pub model: ModelOptions,
+    #[serde(default)]
+    pub solver: SolverRequest,
+    /// The support motion (settle and capacity need one; the others refuse one).
+    #[serde(default, skip_serializing_if = "SupportMotion::is_empty")]
+    pub motion: SupportMotion,
+    pub analysis: Analysis,
+    /// How messages name the options (not part of the request's JSON).
+    #[serde(skip)]
+    pub names: Names,
+}
+
+impl Request {
+    /// A request for `analysis` with every other option at its default.
+    pub fn new(analysis: Analysis) -> Request {
+        Request {
+            model: ModelOptions::default(),
+            solver: SolverRequest::default(),
+            motion: SupportMotion::default(),
+            analysis,
+            names: Names::default(),
+        }
+    }
+
+    /// Read a request from JSON (unknown fields refused; each error one line).
+    pub fn from_json(text: &str) -> Result<Request> {
+        serde_json::from_str(text).map_err(|e| {
+            Error::Invalid(format!(
+                "request: {}",
+                crate::error::one_line(&e.to_string())
+            ))
+        })
+    }
+
+    /// Check every option that does not need the model, once, before any work: numbers in
+    /// range, options that exclude each other. Each error is one line naming the option.
+    pub fn validate(&self) -> Result<()> {
+        let n = self.names;
+        self.model.validate(n)?;
+        self.motion.validate(n)?;
+        match &self.analysis {
+            Analysis::Limit(r) => r.validate(self),
+            Analysis::Settle(r) => r.validate(self),
+            Analysis::Capacity(r) => r.validate(self),
+        }
+    }
+}
+
+/// What [`prepare`] made of a model: the model with the request's material overrides and
+/// support motion applied, its structure, the supports cut by the motion, and the model's
+/// warnings (for the front end to show).
+#[derive(Clone, Debug)]
+pub struct Setup<M, S> {
+    pub model: M,
+    pub structure: S,
+    pub splits: Vec<SupportSplit>,
+    pub warnings: Vec<String>,
+}
+
+/// A prepared model of either dimension.
+#[derive(Clone, Debug)]
+pub enum Prepared {
+    Planar(Setup<Model, Structure>),
+    Spatial(Setup<Model3d, Structure3d>),
+}
+
+/// The result of an analysis, of a dimension.
+#[derive(Clone, Debug)]
+pub enum Output<D: Spatial> {
+    Limit(LimitResult<D>),
+    Settlement(SettlementResult<D>),
+    Capacity(CapacityResult<D>),
+}
+
+/// An analysis run: its setup, its result, and the solver options it ran with.
+#[derive(Clone, Debug)]
+pub struct Run<M, S: Assembly> {
+    pub setup: Setup<M, S>,
+    pub output: Output<S::D>,
+    pub solver: SolverOptions,
+}
+
+/// The result of [`run`] for a model of either dimension.
+#[derive(Clone, Debug)]
+pub enum AnyResult {
+    Planar(Run<Model, Structure>),
+    Spatial(Run<Model3d, Structure3d>),
+}
+
+impl AnyResult {
+    /// The result's JSON value, as the front ends write it (with `split_supports` when the
+    /// motion cut supports).
+    pub fn to_value(&self) -> serde_json::Value {
+        fn of<M, S: Assembly>(r: &Run<M, S>) -> serde_json::Value {
+            let v = match &r.output {
+                Output::Limit(x) => serde_json::to_value(x),
+                Output::Settlement(x) => serde_json::to_value(x),
+                Output::Capacity(x) => serde_json::to_value(x),
+            };
+            let mut v = v.unwrap_or(serde_json::Value::Null);
+            if !r.setup.splits.is_empty() {
+                if let Some(o) = v.as_object_mut() {
+                    o.insert(
+                        "split_supports".into(),
+                        serde_json::to_value(&r.setup.splits).unwrap_or_default(),
+                    );
+                }
+            }
+            v
+        }
+        match self {
+            AnyResult::Planar(r) => of(r),
+            AnyResult::Spatial(r) => of(r),
+        }
+    }
+}
+
+/// Checks of the request against the model's dimension, before the model is touched.
+fn check_dimension(req: &Request, dims: usize) -> Result<()> {
+    match &req.analysis {
+        Analysis::Limit(r) => r.check_dimension(req, dims),
+        Analysis::Settle(r) => r.check_dimension(req, dims),
+        Analysis::Capacity(r) => r.check_dimension(req, dims),
+    }
+}
+
+/// Apply the request's material overrides and support motion to a model, build its structure
+/// and check what needs the structure (a compressive strength for the crushing options, a
+/// support motion where one is needed).
+pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
+    req.validate()?;
+    let n = req.names;
+    match model {
+        AnyModel::Planar(m) => {
+            check_dimension(req, 2)?;
+            let mut model = m.clone();
+            model.override_joint_laws(req.model.friction, req.model.compressive_strength);
+            let splits = req.motion.apply(&mut model, n)?;
+            if req.model.friction_facets.is_some() || req.model.exact_cone() {
+                return invalid(format!(
+                    "{} and {} apply to 3D models (a 2D joint's friction is exact)",
+                    n.name("friction_facets"),
+                    n.name("friction_cone")
+                ));
+            }
+            let structure = Structure::new(
+                &model,
+                BuildOptions {
+                    tolerance: req.model.tolerance,
+                },
+            )?;
+            let warnings = model.warnings();
+            let setup = Setup {
+                model,
+                structure,
+                splits,
+                warnings,
+            };
+            if let Some(laws) = joint_laws(&req.analysis) {
+                laws.check_strength(&setup.structure, n)?;
+            }
+            check_motion(req, 2, moves(&setup.model.supports))?;
+            Ok(Prepared::Planar(setup))
+        }
+        AnyModel::Spatial(m) => {
+            check_dimension(req, 3)?;
+            let mut model = m.clone();
+            model.override_joint_laws(req.model.friction, req.model.compressive_strength);
+            let splits = req.motion.apply(&mut model, n)?;
+            let mut structure = Structure3d::new(
+                &model,
+                BuildOptions {
+                    tolerance: req.model.tolerance,
+                },
+            )?;
+            if let Some(k) = req.model.friction_facets {
+                structure.friction_facets = k;
+            }
+            let warnings = model.warnings();
+            let moving = model
+                .supports
+                .iter()
+                .any(|s| s.motion.iter().any(|x| *x != 0.0));
+            check_motion(req, 3, moving)?;
+            Ok(Prepared::Spatial(Setup {
+                model,
+                structure,
+                splits,
+                warnings,
+            }))
+        }
+    }
+}
+
+fn moves(supports: &[crate::model::Support]) -> bool {
+    supports.iter().any(|s| s.motion.iter().any(|x| *x != 0.0))
+}
+
+/// Refuse an analysis that needs a support motion on a model whose supports do not move.
+fn check_motion(req: &Request, dims: usize, moving: bool) -> Result<()> {
+    let n = req.names;
+    let needs_motion = match &req.analysis {
+        Analysis::Settle(_) => Some("settle"),
+        _ => None,
+    };
+    if let (Some(what), false) = (needs_motion, moving) {
+        return invalid(format!(
+            "{what} needs a support motion: {} (the model's supports do not move)",
+            n.motion_hint(dims)
+        ));
+    }
+    Ok(())
+}
+
+fn joint_laws(a: &Analysis) -> Option<JointLaws> {
+    match a {
+        Analysis::Limit(r) => Some(r.laws()),
+        Analysis::Settle(r) => Some(r.laws()),
+        Analysis::Capacity(r) => Some(r.laws()),
+    }
+}
+
+/// Run the prepared analysis.
+pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
+    match prepared {
+        Prepared::Planar(setup) => {
+            let (output, solver) = solve_any(&setup.structure, req, 2)?;
+            Ok(AnyResult::Planar(Run {
+                setup,
+                output,
+                solver,
+            }))
+        }
+        Prepared::Spatial(setup) => {
+            let (output, solver) = solve_any(&setup.structure, req, 3)?;
+            Ok(AnyResult::Spatial(Run {
+                setup,
+                output,
+                solver,
+            }))
+        }
+    }
+}
+
+fn solve_any<S: Assembly>(
+    st: &S,
+    req: &Request,
+    dims: usize,
+) -> Result<(Output<S::D>, SolverOptions)> {
+    match &req.analysis {
+        Analysis::Limit(r) => r.solve(st, req, dims),
+        Analysis::Settle(r) => r.solve(st, req, dims),
+        Analysis::Capacity(r) => r.solve(st, req, dims),
+    }
+}
+
+/// The one entry: run `req` on a model of either dimension.
+pub fn run(model: &AnyModel, req: &Request) -> Result<AnyResult> {
+    solve(prepare(model, req)?, req)
+}

@@ -1,0 +1,157 @@
+//! Settlement analysis: the mechanism and contact forces for prescribed support motions.
+
+use super::{canonical_options, invalid, JointLaws, Output, Request};
+use crate::analysis::canonical::settle_canonical;
+use crate::analysis::limit::{Crushing, DEFAULT_FACETS};
+use crate::analysis::nonassociative::{settle_nonassociative, NonAssociativeOptions};
+use crate::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
+use crate::error::Result;
+use crate::lp::SolverOptions;
+use crate::structure::Assembly;
+use serde::{Deserialize, Serialize};
+
+/// Options of a settlement analysis. Defaults: both LPs, the inscribed crushing polygon of 16
+/// facets, associative friction, the canonical selection in 2D (docs/canonical.md) with the
+/// reaction ranges on models of at most 500 blocks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SettleRequest {
+    /// Which programs are solved (default both).
+    pub settlement_form: SettlementForm,
+    /// The crushing model (2D; matters only where a compressive strength is given).
+    pub crushing: Crushing,
+    /// Facets of the inscribed crushing polygon of `crushing: linear` (default 16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub facets: Option<usize>,
+    /// Non-associative Coulomb friction (the fixed-point iteration; docs/joint-laws.md).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub non_associative: bool,
+    /// Report the solver's own optimum instead of the canonical selection.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub raw: bool,
+    /// The ranges of the support reactions of the canonical selection — absent: on models of
+    /// at most 500 blocks; true: always; false: never.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ranges: Option<bool>,
+}
+
+impl SettleRequest {
+    /// The joint-law options.
+    pub fn laws(&self) -> JointLaws {
+        JointLaws {
+            crushing: self.crushing,
+            facets: self.facets,
+            non_associative: self.non_associative,
+        }
+    }
+
+    pub(super) fn validate(&self, req: &Request) -> Result<()> {
+        let n = req.names;
+        self.laws().validate(n)?;
+        if (self.laws().strength_given() || self.non_associative)
+            && self.settlement_form != SettlementForm::Both
+        {
+            return invalid(format!(
+                "{}, {} and {} go with {} (the default)",
+                n.name("crushing"),
+                n.name("facets"),
+                n.name("non_associative"),
+                n.given("settlement_form", "both")
+            ));
+        }
+        if req.model.exact_cone() {
+            if self.non_associative {
+                return invalid(format!(
+                    "{} goes with the friction pyramid, not {}",
+                    n.name("non_associative"),
+                    n.given("friction_cone", "exact")
+                ));
+            }
+            if self.settlement_form != SettlementForm::Both {
+                return invalid(format!(
+                    "{} goes with {} (the default): the cone program is solved whole",
+                    n.given("friction_cone", "exact"),
+                    n.given("settlement_form", "both")
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
+        let n = req.names;
+        if dims == 3 && self.laws().strength_given() {
+            return invalid(format!(
+                "{} and {} describe finite compressive strength, which is modelled in 2D only",
+                n.name("crushing"),
+                n.name("facets"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Whether the canonical selection runs: in 2D, unless `raw`, with the default joint laws
+    /// (joint laws beyond the defaults — non-associative iteration, exact crushing, other facet
+    /// counts — are solved as such). In 3D the solver's own solution (the canonical selection
+    /// is not yet fast enough on 3D models; docs/canonical.md).
+    pub fn canonical(&self, dims: usize) -> bool {
+        dims == 2
+            && !self.raw
+            && !self.non_associative
+            && self.crushing == Crushing::Linear
+            && self.facets() == DEFAULT_FACETS
+    }
+
+    fn facets(&self) -> usize {
+        self.laws().facets()
+    }
+
+    /// The variant: the non-associative iteration (both programs only), else the canonical
+    /// selection ([`SettleRequest::canonical`]), else both programs with the crushing model
+    /// (2D) or the exact friction cone (3D), else the programs of the form asked for.
+    pub(super) fn solve<S: Assembly>(
+        &self,
+        st: &S,
+        req: &Request,
+        dims: usize,
+    ) -> Result<(Output<S::D>, SolverOptions)> {
+        let solver = req.solver.options(dims);
+        let both = self.settlement_form == SettlementForm::Both;
+        let (crushing, facets) = if dims == 3 {
+            let cone = if req.model.exact_cone() {
+                Crushing::Conic
+            } else {
+                Crushing::Linear
+            };
+            (cone, DEFAULT_FACETS)
+        } else {
+            (self.crushing, self.facets())
+        };
+        if self.non_associative && both {
+            let solver = req.solver.iteration(dims);
+            let r = settle_nonassociative(
+                st,
+                &solver,
+                crushing,
+                facets,
+                &NonAssociativeOptions::settlement(),
+            )?;
+            return Ok((Output::Settlement(r), solver));
+        }
+        let r = if self.canonical(dims) {
+            settle_canonical(
+                st,
+                &solver,
+                self.settlement_form,
+                &canonical_options(self.ranges),
+            )?
+        } else if both && (dims == 2 || crushing == Crushing::Conic) {
+            settle_crushing(st, &solver, crushing, facets)?
+        } else if both {
+            settle(st, &solver)?
+        } else {
+            settle_with(st, &solver, self.settlement_form)?
+        };
+        Ok((Output::Settlement(r), solver))
+    }
+}

@@ -1,7 +1,8 @@
-//! Analyses of 3D models for Python, and `safety` / `least_thickness` of either dimension: the
-//! same library calls as the CLI's commands (crates/voussoir-cli/src/{limit,settle,capacity,
-//! tilt,safety}.rs, their `AnyModel::Spatial` branches), results serialised by the CLI's
-//! serialiser so that `to_json()` is byte-identical to `--json`.
+//! Analyses of 3D models for Python, and `safety` / `least_thickness` of either dimension.
+//! Limit, settle and capacity go through the library's request layer ([`run_request`]); tilt,
+//! safety and least thickness (not yet in the request layer) make the same library calls as the
+//! CLI's commands (crates/voussoir-cli/src/{tilt,safety}.rs). Results are serialised by the
+//! CLI's serialiser, so that `to_json()` is byte-identical to `--json`.
 //!
 //! Support motions arrive in the CLI's own syntax (`NAME=u,v,w[,θx,θy,θz]`, lengths with or
 //! without a unit, angles in degrees; profiles `uniform:…`) and are read by the CLI's parser
@@ -11,13 +12,11 @@ use crate::detached;
 use crate::options::Fail;
 use pyo3::prelude::*;
 use serde::Serialize;
-use voussoir::analysis::capacity::{capacity, CapacityOptions};
-use voussoir::analysis::limit::{limit_with, Crushing, DEFAULT_FACETS};
 use voussoir::analysis::safety::{least_thickness, safety, LeastThickness, SafetyOptions};
-use voussoir::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
 use voussoir::generate::RadiusAt;
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::request::{AnyResult, Names, Output, Request};
 use voussoir::settlement_input::SupportSplit;
 use voussoir::{BuildOptions, Structure, Structure3d};
 use voussoir_io::motion::Motion;
@@ -190,101 +189,33 @@ fn refuse_motion(c: &Common3d, what: &str) -> Result<(), Fail> {
     Ok(())
 }
 
-/// `voussoir limit` of a 3D model: the friction pyramid, or the exact cone.
+/// Run a request of the library's request layer ([`voussoir::request`]: limit, settle,
+/// capacity; the options as the request's JSON, built by python/voussoir/_analysis3d.py from
+/// the keywords) on a model of either dimension. Every choice — the variant of the analysis,
+/// the default solver of the dimension, the support motion's meaning and whether one is
+/// needed — is the request layer's; this only serialises the result as the CLI does.
 #[pyfunction]
-pub fn limit3d(py: Python<'_>, model: String, common: Common3d) -> PyResult<String> {
+pub fn run_request(py: Python<'_>, model: String, request: String) -> PyResult<String> {
     detached(py, || {
-        refuse_motion(&common, "limit")?;
-        let (_, st, _) = common.structure(&model)?;
-        let cone = if common.exact()? {
-            Crushing::Conic
-        } else {
-            Crushing::Linear
-        };
-        json(&limit_with(&st, &common.solver()?, cone, DEFAULT_FACETS)?)
+        let mut req = Request::from_json(&request)?;
+        req.names = Names::Keywords;
+        let any = crate::model3d::parse_any(&model)?;
+        match voussoir::request::run(&any, &req)? {
+            AnyResult::Planar(r) => output_json(&r.output, &r.setup.splits),
+            AnyResult::Spatial(r) => output_json(&r.output, &r.setup.splits),
+        }
     })
 }
 
-/// `voussoir settle` of a 3D model: the solver's own solution (no canonical selection in 3D).
-#[pyfunction]
-pub fn settle3d(
-    py: Python<'_>,
-    model: String,
-    common: Common3d,
-    settlement_form: String,
-) -> PyResult<String> {
-    detached(py, || {
-        let form = match settlement_form.as_str() {
-            "both" => SettlementForm::Both,
-            "force-only" => SettlementForm::ForceOnly,
-            f => {
-                return Err(Fail::Model(format!(
-                    "settlement_form={f}: expected both or force-only"
-                )))
-            }
-        };
-        let exact = common.exact()?;
-        if exact && form != SettlementForm::Both {
-            return Err(Fail::Model(
-                "friction_cone=exact goes with settlement_form=both (the default): the cone program is solved whole".into(),
-            ));
-        }
-        let (m, st, splits) = common.structure(&model)?;
-        if !m
-            .supports
-            .iter()
-            .any(|s| s.motion.iter().any(|x| *x != 0.0))
-        {
-            return Err(Fail::Model(
-                "settle needs a support motion: give move={NAME: (u, v, w)} (θx, θy, θz in degrees after them) or profile=... (the model's supports do not move)".into(),
-            ));
-        }
-        let solver = common.solver()?;
-        let r = match form {
-            SettlementForm::Both if exact => {
-                settle_crushing(&st, &solver, Crushing::Conic, DEFAULT_FACETS)?
-            }
-            SettlementForm::Both => settle(&st, &solver)?,
-            form => settle_with(&st, &solver, form)?,
-        };
-        json_split(&r, &splits)
-    })
-}
-
-/// `voussoir capacity` of a 3D model.
-#[pyfunction]
-pub fn capacity3d(
-    py: Python<'_>,
-    model: String,
-    common: Common3d,
-    steps: usize,
-    keep_fixed: bool,
-    no_mechanisms: bool,
-    cold: bool,
-) -> PyResult<String> {
-    detached(py, || {
-        if common.moves.is_empty() && common.profile.is_none() {
-            return Err(Fail::Model(
-                "capacity needs a settlement: give move={NAME: (u, v, w)} (or profile=...)"
-                    .into(),
-            ));
-        }
-        let (_, st, splits) = common.structure(&model)?;
-        let opts = CapacityOptions {
-            crushing: if common.exact()? {
-                Crushing::Conic
-            } else {
-                Crushing::Linear
-            },
-            steps,
-            hot_start: !cold,
-            mechanisms: !no_mechanisms,
-            release_fixed: !keep_fixed,
-            solver: common.solver()?,
-            ..CapacityOptions::default()
-        };
-        json_split(&capacity(&st, &opts)?, &splits)
-    })
+fn output_json<D: voussoir::result::Spatial>(
+    o: &Output<D>,
+    splits: &[SupportSplit],
+) -> Result<String, Fail> {
+    match o {
+        Output::Limit(r) => json_split(r, splits),
+        Output::Settlement(r) => json_split(r, splits),
+        Output::Capacity(r) => json_split(r, splits),
+    }
 }
 
 /// `voussoir tilt` of a 3D model towards `azimuth` (degrees from +x towards +y).
@@ -491,9 +422,7 @@ pub fn least_thickness_any(
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(limit3d, m)?)?;
-    m.add_function(wrap_pyfunction!(settle3d, m)?)?;
-    m.add_function(wrap_pyfunction!(capacity3d, m)?)?;
+    m.add_function(wrap_pyfunction!(run_request, m)?)?;
     m.add_function(wrap_pyfunction!(tilt3d, m)?)?;
     m.add_function(wrap_pyfunction!(safety_any, m)?)?;
     m.add_function(wrap_pyfunction!(least_thickness_any, m)?)?;

@@ -111,9 +111,8 @@ def limit(
     """
     m = _model(model)
     if m.dim == 3:
-        a3.refuse_2d_only(crushing=crushing, facets=facets)
         c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
-        return a3.dispatch("limit3d", m._json, (c3,), executor)
+        return a3.run("limit", m._json, c3, {"crushing": crushing, "facets": facets}, executor)
     if friction_facets is not None or friction_cone is not None:
         _planar(m, "limit", friction_facets, friction_cone)
     c = o.common(tolerance, method or "dual-simplex", friction, compressive_strength, crushing, 16 if facets is None else facets)
@@ -165,16 +164,13 @@ def settle(
     """
     m = _model(model)
     if m.dim == 3:
-        if raw or ranges:
-            raise ValueError(
-                "raw and ranges select among optimal solutions in 2D; a 3D settlement reports the solver's own solution (docs/canonical.md)"
-            )
         c3 = a3.common3d(
             tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
             move, fixed, profile, split,
         )
         form = o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS)
-        return a3.dispatch("settle3d", m._json, (c3, form), executor)
+        analysis = {"settlement_form": form, "raw": bool(raw), "ranges": ranges}
+        return a3.run("settle", m._json, c3, analysis, executor)
     if split is not None:
         raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
     if friction_facets is not None or friction_cone is not None:
@@ -216,13 +212,19 @@ def capacity(
     """
     m = _model(model)
     if m.dim == 3:
-        a3.refuse_2d_only(crushing=crushing, facets=facets)
         c3 = a3.common3d(
             tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
             move, fixed, profile, split,
         )
-        args3 = (c3, int(steps), bool(keep_fixed), bool(no_mechanisms), bool(cold))
-        return a3.dispatch("capacity3d", m._json, args3, executor)
+        analysis = {
+            "steps": int(steps),
+            "keep_fixed": bool(keep_fixed),
+            "no_mechanisms": bool(no_mechanisms),
+            "cold": bool(cold),
+            "crushing": crushing,
+            "facets": facets,
+        }
+        return a3.run("capacity", m._json, c3, analysis, executor)
     if split is not None:
         raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
     if friction_facets is not None or friction_cone is not None:
@@ -302,7 +304,10 @@ def tilt(
     if m.dim == 3:
         from ._generate3d import azimuth
 
-        a3.refuse_2d_only(crushing=crushing, facets=facets)
+        if crushing != "linear" or facets is not None:
+            raise ValueError(
+                "crushing and facets describe finite compressive strength, which is modelled in 2D only (3D: friction_cone='exact' for the exact friction cone)"
+            )
         c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
         return a3.dispatch("tilt3d", m._json, (c3, azimuth("direction", direction)), executor)
     if friction_facets is not None or friction_cone is not None:

@@ -103,16 +103,25 @@ def common3d(
     }
 
 
-def refuse_2d_only(**given) -> None:
-    """Refuse the keywords that describe finite compressive strength (2D only), as the CLI."""
-    for name, value, default in (
-        ("crushing", given.get("crushing"), "linear"),
-        ("facets", given.get("facets"), None),
-    ):
-        if value is not None and value != default:
-            raise ValueError(
-                "crushing and facets describe finite compressive strength, which is modelled in 2D only (3D: friction_cone='exact' for the exact friction cone)"
-            )
+def request(c3: dict, analysis: dict) -> str:
+    """The JSON of a request of the library's request layer (``voussoir::request``): model
+    options, solver, support motion and the analysis with its options, as given (absent
+    options take the request's documented defaults)."""
+    model = {k: c3[k] for k in ("tolerance", "friction", "compressive_strength", "friction_facets") if c3[k] is not None}
+    model["friction_cone"] = c3["friction_cone"]
+    motion = {}
+    for key, field in (("moves", "move"), ("fixed", "fixed"), ("splits", "split")):
+        if c3[key]:
+            motion[field] = c3[key]
+    if c3["profile"] is not None:
+        motion["profile"] = c3["profile"]
+    req = {
+        "model": model,
+        "solver": {} if c3["method"] is None else {"method": c3["method"]},
+        "motion": motion,
+        "analysis": {k: v for k, v in analysis.items() if v is not None},
+    }
+    return json.dumps(req)
 
 
 # Executed in the caller's process, or in an executor's worker (module-level, so it pickles).
@@ -121,12 +130,25 @@ def _run(kind: str, model_json: str, args: tuple) -> Any:
     return _WRAP[kind](text)
 
 
+def _run_request(wrap: str, model_json: str, req: str) -> Any:
+    return _WRAP[wrap](_native.run_request(model_json, req))
+
+
 _WRAP = {
-    "limit3d": LimitResult,
-    "settle3d": SettlementResult,
-    "capacity3d": CapacityResult,
+    "limit": LimitResult,
+    "settle": SettlementResult,
+    "capacity": CapacityResult,
     "tilt3d": TiltResult,
 }
+
+
+def run(kind: str, model_json: str, c3: dict, analysis: dict, executor):
+    """Run ``analysis`` (``{"type": "limit" | "settle" | "capacity", …}``) through the request
+    layer; with an executor, a future of the result."""
+    req = request(c3, dict(analysis, type=kind))
+    if executor is None:
+        return _run_request(kind, model_json, req)
+    return executor.submit(_run_request, kind, model_json, req)
 
 
 def dispatch(kind: str, model_json: str, args: tuple, executor):

@@ -222,12 +222,36 @@ def test_issue31_item3_compas_refuses_what_it_cannot_read():
         vc.write_results3d(assembly(), two_d)
 
 
-def test_issue31_item3_compas_optional_roundtrip_with_compas(tmp_path):
-    """If the ``compas`` package is installed, it reads the written assembly's interfaces."""
+def test_issue31_item3_compas_optional_written_by_compas_itself():
+    """Optional (when the ``compas`` package is installed): the graph and meshes serialised by
+    COMPAS's own ``json_dumps`` read as the same model, and every written frame loads back as a
+    ``compas.geometry.Frame`` whose zaxis is the frame's x × y."""
     compas = pytest.importorskip("compas")
-    m, r = settle(assembly())
-    data = vc.write_results3d(assembly(), r)
-    path = tmp_path / "a.json"
-    path.write_text(json.dumps(data["data"]["graph"]))
-    g = compas.json_load(str(path))
-    assert g.number_of_nodes() == 5
+    from compas.datastructures import Graph, Mesh
+
+    graph = Graph()
+    for k, (lo, hi, sup) in BOXES.items():
+        mine = box_mesh(lo, hi)["data"]
+        verts = [[mine["vertex"][str(i)][c] for c in "xyz"] for i in range(8)]
+        mesh = Mesh.from_vertices_and_faces(verts, [mine["face"][str(i)] for i in range(6)])
+        graph.add_node(int(k), block=mesh, is_support=sup)
+    data = {
+        "dtype": "compas_assembly.datastructures/Assembly",
+        "data": {"attributes": {}, "graph": json.loads(compas.json_dumps(graph))},
+    }
+    m = vc.read_assembly3d(data, unit_weight=GAMMA)
+    assert m == vc.read_assembly3d(assembly(), unit_weight=GAMMA)
+    r = v.settle(m, move={"support1": (0, 0, -0.01)})
+    out = vc.write_results3d(data, r)
+    g = out["data"]["graph"]["data"]
+    frames = [
+        i["data"]["frame"]
+        for nbrs in g["edge"].values()
+        for attrs in nbrs.values()
+        for i in (attrs or {}).get("interfaces") or []
+    ]
+    assert len(frames) == len(r.joint_states)
+    for f in frames:
+        frame = compas.json_loads(json.dumps(f))
+        x, y, z = frame_axes(f)
+        np.testing.assert_allclose(list(frame.zaxis), z, atol=1e-12)

@@ -318,6 +318,25 @@ fn centreline(radius: f64, at: RadiusAt, t: f64) -> f64 {
     }
 }
 
+/// The arguments of `gen_arch` (shape, radius, radius_at, thickness, voussoirs, unit_weight,
+/// width, live, live_load, half_angle, offset).
+type ArchArgs = (
+    String,
+    f64,
+    String,
+    f64,
+    usize,
+    f64,
+    f64,
+    String,
+    f64,
+    f64,
+    f64,
+);
+/// The arguments of `gen_dome` (radius, radius_at, thickness, courses, segments, half_angle,
+/// oculus, unit_weight, crown_load).
+type DomeArgs = (f64, String, f64, usize, usize, f64, Option<f64>, f64, f64);
+
 /// `voussoir least-thickness arch|dome`: the least thickness at which the generated arch
 /// (`arch`: the arguments of `gen_arch` as JSON-able tuple) or dome stands under its own
 /// weight. Returns (result JSON, model JSON at the least thickness).
@@ -327,8 +346,8 @@ fn centreline(radius: f64, at: RadiusAt, t: f64) -> f64 {
 pub fn least_thickness_any(
     py: Python<'_>,
     generator: String,
-    arch: Option<(String, f64, String, f64, usize, f64, f64, String, f64, f64, f64)>,
-    dome: Option<(f64, String, f64, usize, usize, f64, Option<f64>, f64, f64)>,
+    arch: Option<ArchArgs>,
+    dome: Option<DomeArgs>,
     lower: Option<f64>,
     upper: Option<f64>,
     bisection_tolerance: f64,
@@ -343,7 +362,9 @@ pub fn least_thickness_any(
             _ => return Err(Fail::Model("least_thickness: no generator".into())),
         };
         if !(radius.is_finite() && radius > 0.0) {
-            return Err(Fail::Model(format!("radius={radius}: must be a number > 0")));
+            return Err(Fail::Model(format!(
+                "radius={radius}: must be a number > 0"
+            )));
         }
         if !(rel.is_finite() && rel > 0.0 && rel < 1.0) {
             return Err(Fail::Model(format!(

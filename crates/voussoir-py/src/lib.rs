@@ -24,9 +24,7 @@ use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
 use voussoir::analysis::capacity::{capacity as capacity_analysis, CapacityOptions};
 use voussoir::analysis::incremental::{incremental_with, settled, Control, IncrementalOptions};
 use voussoir::analysis::settlement::{settle_with, SettlementForm};
-use voussoir::generate::{
-    self, FirstCourse, LintelSpec, WallSpec,
-};
+use voussoir::generate::{self, FirstCourse, LintelSpec, WallSpec};
 use voussoir::generate_facade::{self, bondeno, FacadeMesh, Opening};
 use voussoir::{BuildOptions, Structure};
 use voussoir_io::draw::{self, DrawOptions, ReportOptions};
@@ -181,7 +179,6 @@ fn model_check(
 
 // ---------------------------------------------------------------------------------------------
 // Generators (the same specs `voussoir gen` builds; see crates/voussoir-cli/src/gen.rs)
-
 
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]

@@ -17,8 +17,9 @@ use voussoir_io::mesh::{read_mesh, MeshOptions};
 
 /// Parse model JSON text of either dimension (unknown fields and duplicate keys refused).
 pub fn parse_any(text: &str) -> Result<AnyModel, Fail> {
-    unique_keys(text)
-        .map_err(|e| Fail::Model(voussoir::error::one_line(&format!("invalid model JSON: {e}")).into()))?;
+    unique_keys(text).map_err(|e| {
+        Fail::Model(voussoir::error::one_line(&format!("invalid model JSON: {e}")).into())
+    })?;
     AnyModel::from_json(text).map_err(|e| Fail::Model(format!("invalid model JSON: {e}")))
 }
 
@@ -70,7 +71,11 @@ pub fn model_from_mesh(
         let live = match live.as_str() {
             "none" => ImportLive::None,
             "horizontal" => ImportLive::Horizontal,
-            l => return Err(Fail::Model(format!("live={l}: expected none or horizontal"))),
+            l => {
+                return Err(Fail::Model(format!(
+                    "live={l}: expected none or horizontal"
+                )))
+            }
         };
         if let Some(w) = weld {
             if !(w.is_finite() && w >= 0.0) {
@@ -285,7 +290,14 @@ pub fn gen_dome(
     crown_load: f64,
 ) -> PyResult<String> {
     let s = dome_spec(
-        radius, radius_at, thickness, courses, segments, half_angle, oculus, unit_weight,
+        radius,
+        radius_at,
+        thickness,
+        courses,
+        segments,
+        half_angle,
+        oculus,
+        unit_weight,
         crown_load,
     )?;
     let m = generate3d::dome(&s).map_err(Fail::from)?;
@@ -296,8 +308,8 @@ pub fn gen_dome(
 /// (degrees from +x towards +y).
 #[pyfunction]
 pub fn gen_block(size: (f64, f64, f64), azimuth: f64, unit_weight: f64) -> PyResult<String> {
-    let m = generate3d::block([size.0, size.1, size.2], azimuth, unit_weight)
-        .map_err(Fail::from)?;
+    let m =
+        generate3d::block([size.0, size.1, size.2], azimuth, unit_weight).map_err(Fail::from)?;
     Ok(to_json(&m).map_err(Fail::from)?)
 }
 

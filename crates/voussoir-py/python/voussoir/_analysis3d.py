@@ -160,7 +160,8 @@ def dispatch(kind: str, model_json: str, args: tuple, executor):
 class SafetyResult(Result):
     """``voussoir safety``: whether the structure stands under its dead loads, its geometric
     safety factor (1 / the least fraction of every joint that still carries them) and the
-    ranges of its support reactions over the admissible force fields."""
+    ranges of its support reactions over the admissible force fields. Its drawing (``svg``,
+    ``save_png``, ``report``) is the chart of the reaction ranges, as ``voussoir plot``'s."""
 
     __slots__ = ()
 
@@ -189,8 +190,6 @@ class SafetyResult(Result):
     def status(self) -> str:
         return "stands" if self.stands else "does not stand"
 
-    def svg(self, *a, **kw) -> str:  # pragma: no cover - no drawing of its own
-        raise ValueError("a safety result has no drawing (its report: voussoir safety --report)")
 
 
 def _run_safety(model_json: str, c: dict, tol: float, ranges: bool) -> SafetyResult:

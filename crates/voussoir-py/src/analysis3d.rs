@@ -4,9 +4,10 @@
 //! CLI's commands (crates/voussoir-cli/src/{tilt,safety}.rs). Results are serialised by the
 //! CLI's serialiser, so that `to_json()` is byte-identical to `--json`.
 //!
-//! Support motions arrive in the CLI's own syntax (`NAME=u,v,w[,θx,θy,θz]`, lengths with or
-//! without a unit, angles in degrees; profiles `uniform:…`) and are read by the CLI's parser
-//! (`voussoir_io::motion::Motion`), so Python and the CLI accept the same motions.
+//! Support motions arrive in the request's JSON in the CLI's own syntax
+//! (`NAME=u,v,w[,θx,θy,θz]`, lengths with or without a unit, angles in degrees; profiles
+//! `uniform:…`) and are read by the request layer's parser, so Python and the CLI accept the
+//! same motions. The model options are validated by the request layer too.
 
 use crate::detached;
 use crate::options::Fail;
@@ -15,11 +16,10 @@ use serde::Serialize;
 use voussoir::analysis::safety::{least_thickness, safety, LeastThickness, SafetyOptions};
 use voussoir::generate::RadiusAt;
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::model3d::{AnyModel, Model3d};
-use voussoir::request::{AnyResult, Names, Output, Request};
+use voussoir::model3d::AnyModel;
+use voussoir::request::{AnyResult, FrictionCone, ModelOptions, Names, Output, Request};
 use voussoir::settlement_input::SupportSplit;
 use voussoir::{BuildOptions, Structure, Structure3d};
-use voussoir_io::motion::Motion;
 
 /// The options of a 3D analysis (the CLI's `ModelArgs` for a 3D model), from a Python dict.
 #[derive(FromPyObject, Clone, Debug)]
@@ -57,13 +57,13 @@ fn method_of(m: &str) -> Result<Method, Fail> {
     })
 }
 
-/// The solver of a model of `dims` dimensions: `method`, else dual simplex in 2D and interior
-/// point in 3D (the CLI's defaults).
+/// The solver of a model of `dims` dimensions: `method`, else the request layer's default of
+/// the dimension ([`voussoir::request::default_method`]: dual simplex in 2D, interior point in
+/// 3D, as the CLI).
 fn solver_of(method: Option<&str>, dims: usize) -> Result<SolverOptions, Fail> {
     let method = match method {
         Some(m) => method_of(m)?,
-        None if dims == 3 => Method::Ipm,
-        None => Method::DualSimplex,
+        None => voussoir::request::default_method(dims),
     };
     Ok(SolverOptions {
         method,
@@ -82,54 +82,24 @@ impl Common3d {
         }
     }
 
+    /// The model options, validated by the request layer (messages name the keywords).
     fn check(&self) -> Result<(), Fail> {
-        if let Some(t) = self.tolerance {
-            if !(t.is_finite() && t > 0.0) {
-                return Err(Fail::Model(format!(
-                    "tolerance={t}: must be a finite number > 0"
-                )));
-            }
-        }
-        if let Some(mu) = self.friction {
-            if !(mu.is_finite() && mu >= 0.0) {
-                return Err(Fail::Model(format!(
-                    "friction={mu}: must be a finite number ≥ 0"
-                )));
-            }
-        }
-        if let Some(f) = self.compressive_strength {
-            if !(f.is_finite() && f > 0.0) {
-                return Err(Fail::Model(format!(
-                    "compressive_strength={f}: must be a finite number > 0 (kPa)"
-                )));
-            }
-        }
-        if let Some(k) = self.friction_facets {
-            if !(3..=1024).contains(&k) {
-                return Err(Fail::Model(format!(
-                    "friction_facets={k}: the friction pyramid needs between 3 and 1024 facets"
-                )));
-            }
-            if self.exact()? {
-                return Err(Fail::Model(
-                    "friction_facets applies to the pyramid, not to friction_cone=exact".into(),
-                ));
-            }
-        }
-        Ok(())
+        let options = ModelOptions {
+            tolerance: self.tolerance,
+            friction: self.friction,
+            compressive_strength: self.compressive_strength,
+            friction_facets: self.friction_facets,
+            friction_cone: if self.exact()? {
+                FrictionCone::Exact
+            } else {
+                FrictionCone::Pyramid
+            },
+        };
+        Ok(options.validate(Names::Keywords)?)
     }
 
     fn solver(&self) -> Result<SolverOptions, Fail> {
         solver_of(self.method.as_deref(), 3)
-    }
-
-    fn motion(&self) -> Result<Motion, Fail> {
-        Ok(Motion::parse_with_splits(
-            &self.moves,
-            &self.fixed,
-            self.profile.as_deref(),
-            &self.splits,
-        )?)
     }
 
     fn has_motion(&self) -> bool {
@@ -139,10 +109,10 @@ impl Common3d {
             && self.splits.is_empty())
     }
 
-    /// The 3D model with materials overridden and the motion applied, and its structure.
-    fn structure(&self, model: &str) -> Result<(Model3d, Structure3d, Vec<SupportSplit>), Fail> {
+    /// The 3D model with materials overridden, and its structure (tilt and safety take no
+    /// support motion: [`refuse_motion`] first).
+    fn structure(&self, model: &str) -> Result<Structure3d, Fail> {
         self.check()?;
-        let motion = self.motion()?;
         let mut m = match crate::model3d::parse_any(model)? {
             AnyModel::Spatial(m) => m,
             AnyModel::Planar(_) => {
@@ -152,7 +122,6 @@ impl Common3d {
             }
         };
         m.override_joint_laws(self.friction, self.compressive_strength);
-        let splits = motion.apply(&mut m)?;
         let mut st = Structure3d::new(
             &m,
             BuildOptions {
@@ -162,7 +131,7 @@ impl Common3d {
         if let Some(k) = self.friction_facets {
             st.friction_facets = k;
         }
-        Ok((m, st, splits))
+        Ok(st)
     }
 }
 
@@ -231,7 +200,7 @@ pub fn tilt3d(py: Python<'_>, model: String, common: Common3d, azimuth: f64) -> 
         // As the CLI: the azimuth taken into [0, 360).
         let r = azimuth.rem_euclid(360.0);
         let az = if r >= 360.0 || r == 0.0 { 0.0 } else { r };
-        let (_, st, _) = common.structure(&model)?;
+        let st = common.structure(&model)?;
         let solver = common.solver()?;
         let r = if common.exact()? {
             voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &solver)?
@@ -291,7 +260,7 @@ pub fn safety_any(
                 )?)
             }
             AnyModel::Spatial(_) => {
-                let (_, st, _) = common.structure(&model)?;
+                let st = common.structure(&model)?;
                 json(&safety(&st, &opts(common.solver()?))?)
             }
         }

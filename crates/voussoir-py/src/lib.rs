@@ -8,7 +8,9 @@
 //! The GIL is released for everything that solves (`Python::detach`), and panics are caught and
 //! turned into `voussoir.VoussoirError`, so a failure never takes the interpreter down.
 
+mod analysis3d;
 mod identify;
+mod model3d;
 mod options;
 mod sweep;
 
@@ -19,9 +21,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use std::path::PathBuf;
 use voussoir::analysis::incremental::{incremental_with, settled, Control, IncrementalOptions};
-use voussoir::generate::{
-    self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec,
-};
+use voussoir::generate::{self, FirstCourse, LintelSpec, WallSpec};
 use voussoir::generate_facade::{self, bondeno, FacadeMesh, Opening};
 use voussoir::{BuildOptions, Structure};
 use voussoir_io::draw::{self, DrawOptions, ReportOptions};
@@ -208,21 +208,6 @@ fn model_check(
 // ---------------------------------------------------------------------------------------------
 // Generators (the same specs `voussoir gen` builds; see crates/voussoir-cli/src/gen.rs)
 
-fn live_of(l: &str) -> Result<LiveLoad, Fail> {
-    Ok(match l {
-        "none" => LiveLoad::None,
-        "full" => LiveLoad::Full,
-        "left" => LiveLoad::Left,
-        "right" => LiveLoad::Right,
-        "horizontal" => LiveLoad::Horizontal,
-        _ => {
-            return Err(Fail::Model(format!(
-                "live={l}: expected none, full, left, right or horizontal"
-            )))
-        }
-    })
-}
-
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
 fn gen_arch(
@@ -238,31 +223,7 @@ fn gen_arch(
     half_angle: f64,
     offset: f64,
 ) -> PyResult<String> {
-    let shape = match shape {
-        "semicircular" => ArchShape::Semicircular,
-        "segmental" => ArchShape::Segmental {
-            half_angle: half_angle.to_radians(),
-        },
-        "pointed" => ArchShape::Pointed { offset },
-        s => {
-            return Err(Fail::Model(format!(
-                "shape={s}: expected semicircular, segmental or pointed"
-            ))
-            .into())
-        }
-    };
-    let radius_at = match radius_at {
-        "intrados" => RadiusAt::Intrados,
-        "centreline" | "centerline" => RadiusAt::Centreline,
-        "extrados" => RadiusAt::Extrados,
-        s => {
-            return Err(Fail::Model(format!(
-                "radius_at={s}: expected intrados, centreline or extrados"
-            ))
-            .into())
-        }
-    };
-    let m = generate::arch(&ArchSpec {
+    let spec = model3d::arch_spec(
         shape,
         radius,
         radius_at,
@@ -270,10 +231,12 @@ fn gen_arch(
         voussoirs,
         unit_weight,
         width,
-        live: live_of(live)?,
+        live,
         live_load,
-    })
-    .map_err(Fail::from)?;
+        half_angle,
+        offset,
+    )?;
+    let m = generate::arch(&spec).map_err(Fail::from)?;
     Ok(json(&m)?)
 }
 
@@ -325,7 +288,7 @@ fn gen_wall(
         first_course,
         unit_weight,
         width,
-        live: live_of(live)?,
+        live: model3d::live_of(live)?,
     })
     .map_err(Fail::from)?;
     Ok(json(&m)?)
@@ -402,7 +365,7 @@ fn gen_facade(
         "running-bond" => FacadeMesh::RunningBond,
         s => return Err(Fail::Model(format!("mesh={s}: expected grid or running-bond")).into()),
     };
-    let live = live_of(live)?;
+    let live = model3d::live_of(live)?;
     detached(py, || {
         let element = [element.0, element.1.unwrap_or(element.0 / 2.0)];
         let mut s = bondeno(element[0], mesh);
@@ -660,5 +623,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(draw_svg, m)?)?;
     m.add_function(wrap_pyfunction!(report_html, m)?)?;
     m.add_function(wrap_pyfunction!(svg_to_png, m)?)?;
+    model3d::register(m)?;
+    analysis3d::register(m)?;
     Ok(())
 }

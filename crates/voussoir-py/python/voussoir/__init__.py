@@ -1,7 +1,7 @@
 """voussoir: masonry as rigid no-tension blocks in unilateral contact (Heyman's hypotheses).
 
-Settlement analysis, limit analysis, load capacity after a settlement, incremental analysis and
-tilting-table tests of 2D block structures, by the linear programs of Tralli, Chiozzi,
+Settlement analysis, limit analysis, load capacity after a settlement, incremental analysis,
+tilting-table tests and safety assessment of 2D and 3D block structures, by the linear programs of Tralli, Chiozzi,
 Grillanda & Milani (2020), solved by HiGHS (and Clarabel) compiled into this package — nothing
 else to install. The same library as the ``voussoir`` command line; results are byte-identical.
 
@@ -18,7 +18,19 @@ rotations in results in radians.
 
 from . import _native
 from . import compas, generate
-from ._analysis import capacity, identify, incremental, limit, settle, sweep, tilt
+from ._analysis import (
+    capacity,
+    identify,
+    incremental,
+    least_thickness,
+    limit,
+    safety,
+    settle,
+    sweep,
+    tilt,
+)
+from ._analysis3d import LeastThicknessResult, SafetyResult
+from ._model3d import Support3d
 from ._model import Model, Support
 from ._native import ModelError, OptionError, SolverError, VoussoirError
 from ._results import (
@@ -37,6 +49,7 @@ __version__ = _native.__version__
 __all__ = [
     "Model",
     "Support",
+    "Support3d",
     "generate",
     "compas",
     "limit",
@@ -46,6 +59,10 @@ __all__ = [
     "tilt",
     "sweep",
     "identify",
+    "safety",
+    "least_thickness",
+    "SafetyResult",
+    "LeastThicknessResult",
     "IdentifyResult",
     "Result",
     "LimitResult",

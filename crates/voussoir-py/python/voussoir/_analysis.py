@@ -13,6 +13,7 @@ from __future__ import annotations
 import os
 from typing import Any, Iterable, List, Optional, Sequence, Tuple, Union
 
+from . import _analysis3d as a3
 from . import _native
 from . import _options as o
 from ._model import Model
@@ -57,8 +58,24 @@ _WRAP = {
 }
 
 
+def _planar(m: Model, what: str, friction_facets=None, friction_cone=None) -> None:
+    """Refuse the 3D-only keywords on a 2D model, and analyses not yet written for 3D."""
+    if m.dim == 3:
+        raise ValueError(
+            f"{what} analyses 2D models only (as the CLI's `voussoir {what}`); this model is 3D"
+        )
+    if friction_facets is not None or friction_cone is not None:
+        raise ValueError(
+            "friction_facets and friction_cone apply to 3D models (a 2D joint's friction is exact)"
+        )
+
+
 def _dispatch(kind: str, model: ModelLike, args: tuple, executor):
     m = _model(model)
+    if m.dim == 3:
+        raise ValueError(
+            f"{kind} analyses 2D models only (as the CLI's `voussoir {kind}`); this model is 3D"
+        )
     if executor is None:
         return _run(kind, m._json, args)
     return executor.submit(_run, kind, m._json, args)
@@ -76,6 +93,8 @@ def limit(
     non_associative: bool = False,
     canonical: bool = False,
     ranges: Optional[bool] = None,
+    friction_facets: Optional[int] = None,
+    friction_cone: Optional[str] = None,
     executor=None,
 ) -> LimitResult:
     """Classic limit analysis (``voussoir limit``): the collapse load multiplier λ of the live
@@ -92,11 +111,22 @@ def limit(
     (``--canonical``), ``ranges=False`` without the reaction ranges. ``executor``: return a
     future computed there.
 
+    A 3D model (JSON with ``vertices``, OBJ, PLY, :func:`voussoir.generate.vault` …) is analysed
+    as by the CLI: ``method`` defaults to ``"ipm"``; ``friction_facets`` (default 8) is the
+    number of facets of the friction pyramid, ``friction_cone="exact"`` the exact cone (SOCP);
+    ``crushing`` and ``facets`` are 2D only.
+
     >>> import voussoir as v
     >>> r = v.limit(v.generate.arch(live="full"))
     >>> round(r.load_multiplier, 4)
     0.4346
     """
+    m = _model(model)
+    if m.dim == 3:
+        c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
+        return a3.run("limit", m._json, c3, {"crushing": crushing, "facets": facets}, executor)
+    if friction_facets is not None or friction_cone is not None:
+        _planar(m, "limit", friction_facets, friction_cone)
     a = {"type": "limit", **o.laws(crushing, facets, non_associative)}
     if canonical:
         a["canonical"] = True
@@ -106,7 +136,7 @@ def limit(
         a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength,
     )
-    return _dispatch("limit", model, (r,), executor)
+    return _dispatch("limit", m, (r,), executor)
 
 
 def settle(
@@ -125,6 +155,9 @@ def settle(
     non_associative: bool = False,
     raw: bool = False,
     ranges: Optional[bool] = None,
+    split: Union[str, Iterable[str], None] = None,
+    friction_facets: Optional[int] = None,
+    friction_cone: Optional[str] = None,
     executor=None,
 ) -> SettlementResult:
     """Settlement analysis (``voussoir settle``): the mechanism and contact forces for
@@ -146,7 +179,26 @@ def settle(
     blocks. ``raw=True`` reports the solver's own optimal solution instead (``--raw``);
     ``ranges=True``/``False`` computes the reaction ranges always/never (``--ranges`` /
     ``--no-ranges``). Other keywords as :func:`limit`.
+
+    3D models: ``move={"left": (u, v, w)}`` or ``(u, v, w, θx, θy, θz)`` (w up; rotations in
+    degrees, right-handed about the support's centroid), or the CLI's ``"left=0,0,-5mm"``;
+    ``profile`` in the CLI's syntax; ``split``: the CLI's ``--split NAME@X[,X…]``. The result is
+    the solver's own optimal solution (as the CLI's in 3D); ``friction_facets`` and
+    ``friction_cone`` as for :func:`limit`.
     """
+    m = _model(model)
+    if m.dim == 3:
+        c3 = a3.common3d(
+            tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
+            move, fixed, profile, split,
+        )
+        form = o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS)
+        analysis = {"settlement_form": form, "raw": bool(raw), "ranges": ranges}
+        return a3.run("settle", m._json, c3, analysis, executor)
+    if split is not None:
+        raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
+    if friction_facets is not None or friction_cone is not None:
+        _planar(m, "settle", friction_facets, friction_cone)
     a = {
         "type": "settle",
         "settlement_form": o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS),
@@ -160,7 +212,7 @@ def settle(
         a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile),
     )
-    return _dispatch("settle", model, (r,), executor)
+    return _dispatch("settle", m, (r,), executor)
 
 
 def capacity(
@@ -180,6 +232,9 @@ def capacity(
     crushing: str = "linear",
     facets: Optional[int] = None,
     non_associative: bool = False,
+    split: Union[str, Iterable[str], None] = None,
+    friction_facets: Optional[int] = None,
+    friction_cone: Optional[str] = None,
     executor=None,
 ) -> CapacityResult:
     """Load capacity after a settlement (``voussoir capacity``): λ against the settlement (limit
@@ -190,6 +245,25 @@ def capacity(
     ``no_mechanisms``: leave each step's mechanism out of the JSON. ``cold``: no HiGHS hot start.
     Other keywords as :func:`settle` and :func:`limit`.
     """
+    m = _model(model)
+    if m.dim == 3:
+        c3 = a3.common3d(
+            tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
+            move, fixed, profile, split,
+        )
+        analysis = {
+            "steps": int(steps),
+            "keep_fixed": bool(keep_fixed),
+            "no_mechanisms": bool(no_mechanisms),
+            "cold": bool(cold),
+            "crushing": crushing,
+            "facets": facets,
+        }
+        return a3.run("capacity", m._json, c3, analysis, executor)
+    if split is not None:
+        raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
+    if friction_facets is not None or friction_cone is not None:
+        _planar(m, "capacity", friction_facets, friction_cone)
     a = {
         "type": "capacity",
         "steps": int(steps),
@@ -219,7 +293,7 @@ def incremental(
     snapshot_every: int = 0,
     no_stop: bool = False,
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     executor=None,
@@ -235,7 +309,7 @@ def incremental(
     keyword ``settle=`` is still accepted); ``fixed``/``keep_fixed`` as for :func:`capacity`.
     ``snapshot_every``: keep the mechanism every N steps. ``no_stop``: go on after λ reaches 0.
     """
-    c = o.common(tolerance, method, friction, compressive_strength)
+    c = o.common(tolerance, method or "dual-simplex", friction, compressive_strength)
     s = o.settle(o.renamed("move", move, "settle", settle), fixed, None)
     args = (
         c,
@@ -259,12 +333,22 @@ def tilt(
     method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
+    friction_facets: Optional[int] = None,
+    friction_cone: Optional[str] = None,
     executor=None,
 ) -> TiltResult:
     """Tilting-table analysis (``voussoir tilt``): the critical tilt angle (degrees) towards
-    ``direction``, as the CLI's ``--direction``: ``"+x"``, ``"-x"``, ``"+y"``, ``"-y"``, an
-    azimuth in degrees from +x towards +y or a vector (dx, dy); a 2D model tilts along x
-    (``"+x"``, ``"-x"``, 0, 180, (dx, 0)), else :class:`OptionError` (a ``ValueError``)."""
+    ``direction``, as the CLI's ``--direction`` on a 2D model: along x, ``"+x"`` or ``"-x"``
+    (or 0, 180, (dx, 0)). A 3D model tilts towards any horizontal direction: ``"+y"``, an
+    azimuth in degrees from +x towards +y, (dx, dy)."""
+    m = _model(model)
+    if m.dim == 3:
+        from ._generate3d import azimuth
+
+        c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
+        return a3.dispatch("tilt3d", m._json, (c3, azimuth("direction", direction)), executor)
+    if friction_facets is not None or friction_cone is not None:
+        _planar(m, "tilt", friction_facets, friction_cone)
     import math
 
     dx, dy = o.direction("direction", direction)
@@ -275,7 +359,7 @@ def tilt(
         {"type": "tilt", "azimuth": azimuth}, tolerance=tolerance, method=method,
         friction=friction, compressive_strength=compressive_strength,
     )
-    return _dispatch("tilt", model, (r,), executor)
+    return _dispatch("tilt", m, (r,), executor)
 
 
 def _sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, seed: int) -> str:
@@ -315,7 +399,7 @@ def sweep(
     threads: Optional[int] = None,
     executor=None,
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     settlement_form: str = "both",
@@ -349,9 +433,10 @@ def sweep(
     seed = int(seed)
     if not 0 <= seed < 2**64:
         raise ValueError(f"seed={seed}: expected an integer in [0, 2⁶⁴)")
-    c = o.common(tolerance, method, friction, compressive_strength, "linear", 16, settlement_form)
-    s = o.settle(move, fixed, profile)
     m = _model(model)
+    _planar(m, "sweep")
+    c = o.common(tolerance, method or "dual-simplex", friction, compressive_strength, "linear", 16, settlement_form)
+    s = o.settle(move, fixed, profile)
     base = _native.sweep_base(m._json, c, s, kind, n, float(cov), seed)
     i, shards = _shard(shard)
     tasks = [k for k in range(n) if k % shards == i]
@@ -377,7 +462,7 @@ def identify(
     profile: Optional[str] = None,
     ranges: bool = True,
     tolerance: Optional[float] = None,
-    method: str = "dual-simplex",
+    method: Optional[str] = None,
     friction: Optional[float] = None,
     settlement_form: str = "both",
     executor=None,
@@ -411,8 +496,96 @@ def identify(
         specs = [{"supports": [k], "component": c} for k, c in unknowns.items()]
     else:
         specs = [dict(u) for u in unknowns]
-    c = o.common(tolerance, method, friction, None, "linear", 16, settlement_form)
+    c = o.common(tolerance, method or "dual-simplex", friction, None, "linear", 16, settlement_form)
     s = o.settle(move, fixed, profile)
     return _dispatch(
         "identify", model, (c, s, cracks_json, json.dumps(specs), bool(ranges)), executor
     )
+
+
+def safety(
+    model: ModelLike,
+    *,
+    bisection_tolerance: float = 1e-6,
+    ranges: bool = True,
+    tolerance: Optional[float] = None,
+    method: Optional[str] = None,
+    friction: Optional[float] = None,
+    compressive_strength: Optional[float] = None,
+    friction_facets: Optional[int] = None,
+    executor=None,
+) -> "a3.SafetyResult":
+    """Safety assessment (``voussoir safety``) of a 2D or 3D model: whether it stands under its
+    dead loads, its geometric safety factor (1 / the least fraction of every joint, about its
+    middle, that still carries them; bisection to ``bisection_tolerance``) and, with
+    ``ranges`` (the default; ``--no-ranges`` on the CLI), the range of each support reaction
+    over the admissible force fields. Other keywords as :func:`limit` (method: dual simplex in
+    2D, interior point in 3D)."""
+    m = _model(model)
+    if m.dim != 3 and friction_facets is not None:
+        _planar(m, "safety", friction_facets)
+    c = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, None)
+    args = (m._json, c, float(bisection_tolerance), bool(ranges))
+    if executor is None:
+        return a3._run_safety(*args)
+    return executor.submit(a3._run_safety, *args)
+
+
+def least_thickness(
+    generator: str = "arch",
+    *,
+    lower: Optional[float] = None,
+    upper: Optional[float] = None,
+    bisection_tolerance: float = 1e-6,
+    method: Optional[str] = None,
+    **spec,
+) -> "a3.LeastThicknessResult":
+    """The least thickness at which a generated ``"arch"`` or ``"dome"`` stands under its own
+    weight (``voussoir least-thickness arch|dome``): bisection between ``lower`` (default
+    radius/1000, must not stand) and ``upper`` (default radius/2, must stand) to
+    ``bisection_tolerance`` × radius, regenerating the model each step. ``spec``: the keywords
+    of :func:`voussoir.generate.arch` or :func:`voussoir.generate.dome` (their defaults; the
+    thickness is what is sought). Milankovitch's t/R = 0.1075 for a semicircular arch,
+    Heyman's 0.042 for a hemispherical dome.
+
+    >>> import voussoir as v
+    >>> round(v.least_thickness("arch", voussoirs=64).thickness_over_radius, 3)  # doctest: +SKIP
+    0.107
+    """
+    import inspect
+
+    from . import _generate3d, generate
+
+    g = str(generator).lower()
+    if g not in ("arch", "dome"):
+        raise ValueError(f"generator={generator!r}: expected 'arch' or 'dome'")
+    fn = generate.arch if g == "arch" else _generate3d.dome
+    params = inspect.signature(fn).parameters
+    for k in spec:
+        if k not in params or k == "thickness":
+            raise TypeError(f"least_thickness({g!r}): unexpected keyword {k!r}")
+    d = {k: p.default for k, p in params.items()}
+    d.update(spec)
+    m = None if method is None else o.choice("method", method, o.METHODS)
+    lo = None if lower is None else float(lower)
+    hi = None if upper is None else float(upper)
+    if g == "arch":
+        if d["live_load"] is not None and str(d["live"]).lower() in ("none", "horizontal"):
+            raise ValueError(
+                f"live_load={d['live_load']}: applies to a vertical live load (live='full', 'left' or 'right')"
+            )
+        arch = (
+            d["shape"], float(d["radius"]), d["radius_at"], 0.0, int(d["voussoirs"]),
+            float(d["unit_weight"]), float(d["width"]), d["live"],
+            float(1.0 if d["live_load"] is None else d["live_load"]),
+            float(d["half_angle"]), float(d["offset"]),
+        )
+        text, model_json = _native.least_thickness_any("arch", arch, None, lo, hi, float(bisection_tolerance), m)
+    else:
+        dome = (
+            float(d["radius"]), d["radius_at"], 0.0, int(d["courses"]), int(d["segments"]),
+            float(d["half_angle"]), None if d["oculus"] is None else float(d["oculus"]),
+            float(d["unit_weight"]), float(d["crown_load"]),
+        )
+        text, model_json = _native.least_thickness_any("dome", None, dome, lo, hi, float(bisection_tolerance), m)
+    return a3.LeastThicknessResult(text, model_json)

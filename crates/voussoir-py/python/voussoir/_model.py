@@ -8,7 +8,7 @@ from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _native, _options
+from . import _model3d, _native, _options
 from ._io import write_atomic
 
 PathOrStr = Union[str, "os.PathLike[str]"]
@@ -25,7 +25,8 @@ class Support(NamedTuple):
 
 
 class Model:
-    """A 2D masonry model, as the CLI reads it (README, "Model format").
+    """A 2D or 3D masonry model, as the CLI reads it (README, "Model format"; a 3D model's
+    blocks are polyhedra with ``vertices`` and ``faces``, z up: docs/3d.md).
 
     Build one with :meth:`from_json`, :meth:`from_dxf`, :meth:`from_dict` or a generator in
     :mod:`voussoir.generate`. A model is immutable; :meth:`to_dict` gives an editable copy and
@@ -52,13 +53,27 @@ class Model:
         if isinstance(path_or_str, bytes):
             path_or_str = path_or_str.decode("utf-8")
         if isinstance(path_or_str, str) and path_or_str.lstrip().startswith("{"):
-            return cls(_native.model_from_text(path_or_str))
-        return cls(_native.model_from_path(os.fspath(path_or_str)))
+            return cls(_native.model_any_from_text(path_or_str)[1])
+        path = os.fspath(path_or_str)
+        if _model3d.is_mesh(path):
+            return cls.from_mesh(path)
+        return cls(_native.model_any_from_path(path)[1])
+
+    @classmethod
+    def from_mesh(cls, path: PathOrStr, **kw) -> "Model":
+        """A 3D model from an OBJ or PLY mesh, as ``voussoir import model.obj`` (docs/import3d.md):
+        each OBJ object or group, each closed PLY part, is a block. Keywords are the CLI's mesh
+        import flags: ``units`` (``"mm"``, ``"cm"``, ``"m"``; default m), ``unit_weight``
+        (kN/m³, default 18), ``supports`` (body names that are supports; default: the bodies on
+        the ground plane), ``support_prefix``, ``weld`` (m), ``live`` (``"horizontal"``, the
+        default, or ``"none"``). The import summary is in :attr:`import_summary`."""
+        text, summary, notes = _model3d.read_mesh(path, **kw)
+        return cls(text, (summary, list(notes)))
 
     @classmethod
     def from_dict(cls, data: Dict[str, Any]) -> "Model":
         """A model from a dict with the JSON model's structure."""
-        return cls(_native.model_from_text(json.dumps(data)))
+        return cls(_native.model_any_from_text(json.dumps(data))[1])
 
     @classmethod
     def from_dxf(
@@ -120,13 +135,31 @@ class Model:
         return self._d().get("description", "")
 
     @property
+    def dim(self) -> int:
+        """2 for a planar model (polygons), 3 for a spatial one (polyhedra)."""
+        return _model3d.dim_of(self._d())
+
+    @property
     def blocks(self) -> List[np.ndarray]:
-        """The block polygons: one (n_i × 2) array of vertices (m) per block."""
-        return [np.array(b["polygon"], dtype=float) for b in self._d()["blocks"]]
+        """The block polygons: one (n_i × 2) array of vertices (m) per block; in 3D one
+        (n_i × 3) array of each block's vertices (its faces: :attr:`block_faces`)."""
+        key = "vertices" if self.dim == 3 else "polygon"
+        return [np.array(b[key], dtype=float) for b in self._d()["blocks"]]
+
+    @property
+    def block_faces(self) -> List[List[List[int]]]:
+        """3D: each block's faces as lists of vertex indices (counter-clockwise seen from
+        outside); 2D: raises ``ValueError``."""
+        if self.dim != 3:
+            raise ValueError("block_faces: the model is 2D (its blocks are polygons)")
+        return [[list(f) for f in b["faces"]] for b in self._d()["blocks"]]
 
     @property
     def supports(self) -> List[Support]:
-        """The supports, with their polygons and prescribed motions."""
+        """The supports, with their polygons and prescribed motions. In 3D each is a
+        :class:`voussoir.Support3d` (vertices, faces, motion u, v, w, θx, θy, θz)."""
+        if self.dim == 3:
+            return _model3d.supports3d(self._d())
         out = []
         for s in self._d()["supports"]:
             out.append(
@@ -155,7 +188,16 @@ class Model:
     def check(self, tolerance: Optional[float] = None) -> Tuple[int, int, int]:
         """Validate the model (as every analysis does) and return (blocks, joints, supports).
         Raises :class:`voussoir.ModelError` naming the bad block."""
-        return _native.model_check(self._json, tolerance)
+        return _native.model_any_check(self._json, tolerance)
+
+    def to_obj(self, path: Optional[PathOrStr] = None) -> str:
+        """3D: the model as OBJ text (``voussoir export``: each block the object ``block_i``,
+        each support ``support_NAME``; :meth:`from_mesh` reads it back); written atomically to
+        ``path`` if given."""
+        text = _native.model_to_obj(self._json)
+        if path is not None:
+            write_atomic(path, text.encode("utf-8"))
+        return text
 
     def svg(self, title: Optional[str] = None) -> str:
         """An SVG drawing of the model and its loads (``voussoir plot model.json``)."""
@@ -173,7 +215,8 @@ class Model:
 
     def __repr__(self) -> str:
         d = self._d()
-        return f"<voussoir.Model: {len(d['blocks'])} blocks, {len(d['supports'])} supports>"
+        kind = " 3D" if self.dim == 3 else ""
+        return f"<voussoir.Model{kind}: {len(d['blocks'])} blocks, {len(d['supports'])} supports>"
 
     def __len__(self) -> int:
         return len(self._d()["blocks"])

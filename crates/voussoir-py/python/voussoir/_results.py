@@ -131,22 +131,57 @@ class Result:
 
 
 class _Mechanism(Result):
-    """Results with blocks, joints, hinges, thrust line and reactions (limit, settlement)."""
+    """Results with blocks, joints, hinges, thrust line and reactions (limit, settlement).
+
+    Of a 3D model (:attr:`dim` 3) the arrays have the 3D columns: 6-DOF block motions, points
+    (x, y, z), two shear components along the joint's tangents (:attr:`joint_frames`)."""
 
     __slots__ = ()
+
+    @property
+    def dim(self) -> int:
+        """2 or 3: the dimension of the analysed model."""
+        j = self._d().get("joints") or []
+        if j:
+            return len(j[0]["normal"])
+        b = self._d().get("blocks") or []
+        return 3 if b and "w" in b[0] else 2
+
+    @property
+    def joint_normals(self) -> np.ndarray:
+        """Unit normal of each joint (from body ``a`` into body ``b``), (n_joints × dim)."""
+        j = self._d()["joints"]
+        return np.array([x["normal"] for x in j], dtype=float).reshape(-1, self.dim)
+
+    @property
+    def joint_frames(self) -> np.ndarray:
+        """3D: each joint's frame, (n_joints × 3 × 3), rows t₁, t₂, n — the tangents along
+        which the shear components are given (t₁ × t₂ = n; the library's rule: t₁ is the
+        projection of the coordinate axis least aligned with n). 2D: rows t, n."""
+        from ._results3d import frames
+
+        return frames(self.joint_normals)
 
     @property
     def block_motions(self) -> np.ndarray:
         """Block motions at the centroids, (n_blocks × 3): u, v (m; per unit of the
         normalisation for a limit mechanism) and θ (rad, counter-clockwise)."""
         b = self._d()["blocks"]
+        if self.dim == 3:
+            keys = ("u", "v", "w", "theta_x", "theta_y", "theta_z")
+            return np.array([[x[k] for k in keys] for x in b], dtype=float).reshape(-1, 6)
         return np.array([[x["u"], x["v"], x["theta"]] for x in b], dtype=float).reshape(-1, 3)
 
     @property
     def joint_forces(self) -> np.ndarray:
         """Resultant contact force of each joint, (n_joints × 2): normal (kN, compression > 0)
-        and shear (kN, along the joint tangent t = (−n_y, n_x))."""
+        and shear (kN, along the joint tangent t = (−n_y, n_x)). 3D: (n_joints × 3), normal
+        and the shear along t₁, t₂ (:attr:`joint_frames`)."""
         j = self._d()["joints"]
+        if self.dim == 3:
+            return np.array(
+                [[x["normal_force"], *x["shear_force"]] for x in j], dtype=float
+            ).reshape(-1, 3)
         return np.array([[x["normal_force"], x["shear_force"]] for x in j], dtype=float).reshape(
             -1, 2
         )
@@ -154,7 +189,12 @@ class _Mechanism(Result):
     @property
     def point_results(self) -> np.ndarray:
         """Every collocation point, (n_points × 7): joint id, x, y (m), opening (≥ 0), sliding,
-        normal force (kN), shear force (kN)."""
+        normal force (kN), shear force (kN). 3D: (n_points × 10): joint id, x, y, z, opening,
+        sliding along t₁, t₂, normal force, shear along t₁, t₂."""
+        if self.dim == 3:
+            from ._results3d import point_rows
+
+            return point_rows(self._d())
         rows = [
             [j["id"], p["x"], p["y"], p["opening"], p["sliding"], p["normal_force"], p["shear_force"]]
             for j in self._d()["joints"]
@@ -165,7 +205,7 @@ class _Mechanism(Result):
     @property
     def point_openings(self) -> np.ndarray:
         """The opening of every collocation point (m, ≥ 0), in the order of :attr:`point_results`."""
-        return self.point_results[:, 3]
+        return self.point_results[:, 4 if self.dim == 3 else 3]
 
     @property
     def joint_states(self) -> List[str]:
@@ -174,8 +214,10 @@ class _Mechanism(Result):
 
     @property
     def hinges(self) -> np.ndarray:
-        """Hinges, (n × 3): joint id, x, y (m)."""
+        """Hinges, (n × 3): joint id, x, y (m); 3D (n × 4): joint id, x, y, z."""
         h = self._d()["hinges"]
+        if self.dim == 3:
+            return np.array([[x["joint"], x["x"], x["y"], x["z"]] for x in h], dtype=float).reshape(-1, 4)
         return np.array([[x["joint"], x["x"], x["y"]] for x in h], dtype=float).reshape(-1, 3)
 
     @property
@@ -185,13 +227,23 @@ class _Mechanism(Result):
 
     @property
     def thrust_line(self) -> np.ndarray:
-        """Thrust-line points (centres of pressure), (n × 3): joint id, x, y (m)."""
+        """Thrust-line points (centres of pressure), (n × 3): joint id, x, y (m); 3D (n × 4):
+        joint id, x, y, z."""
         t = self._d()["thrust_line"]
+        if self.dim == 3:
+            return np.array([[x["joint"], x["x"], x["y"], x["z"]] for x in t], dtype=float).reshape(-1, 4)
         return np.array([[x["joint"], x["x"], x["y"]] for x in t], dtype=float).reshape(-1, 3)
 
     @property
     def reactions(self) -> Dict[str, np.ndarray]:
-        """Support reactions: name → [fx, fy (kN), m (kN·m about (cx, cy)), cx, cy (m)]."""
+        """Support reactions: name → [fx, fy (kN), m (kN·m about (cx, cy)), cx, cy (m)]; 3D:
+        [fx, fy, fz (kN), mx, my, mz (kN·m about (cx, cy, cz)), cx, cy, cz (m)]."""
+        if self.dim == 3:
+            keys = ("fx", "fy", "fz", "mx", "my", "mz", "cx", "cy", "cz")
+            return {
+                r["support"]: np.array([r[k] for k in keys], dtype=float)
+                for r in self._d()["reactions"]
+            }
         return {
             r["support"]: np.array([r["fx"], r["fy"], r["m"], r["cx"], r["cy"]], dtype=float)
             for r in self._d()["reactions"]
@@ -202,6 +254,10 @@ class _Mechanism(Result):
         ``"hinges"`` or ``"reactions"``. Needs pandas."""
         pd = _pandas()
         d = self._d()
+        if self.dim == 3:
+            from ._results3d import dataframe
+
+            return dataframe(pd, self, table)
         if table == "points":
             return pd.DataFrame(
                 self.point_results,

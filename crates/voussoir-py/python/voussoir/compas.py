@@ -1,7 +1,9 @@
 """COMPAS interoperability: COMPAS block assemblies (``compas_assembly`` / ``compas_cra``) saved
 as JSON, read as voussoir models, and results written back for COMPAS viewers.
 
-What is supported (voussoir is 2D for now; 3D assemblies are a later issue):
+3D assemblies of block meshes (compas_assembly, compas_dem) are read by
+:func:`read_assembly3d` and results written back by :func:`write_results3d` (module
+``voussoir._compas3d``). For 2D analyses of prisms:
 
 * **Input**: the JSON that ``compas.json_dump(assembly)`` writes for a
   ``compas_assembly.datastructures.Assembly`` (COMPAS 1.x/2.x: ``{"dtype":
@@ -39,10 +41,18 @@ import math
 import os
 from typing import Any, Dict, List, Optional, Tuple, Union
 
+from ._compas3d import assembly_model3d, read_assembly3d, write_results3d
 from ._model import Model
 from ._native import ModelError
 
-__all__ = ["read_assembly", "assembly_model", "write_results"]
+__all__ = [
+    "read_assembly",
+    "assembly_model",
+    "write_results",
+    "read_assembly3d",
+    "assembly_model3d",
+    "write_results3d",
+]
 
 _AXES = {"y": (0, 2, 1), "z": (0, 1, 2)}  # (section x, section y, extrusion) coordinate indices
 

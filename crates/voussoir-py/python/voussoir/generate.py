@@ -14,7 +14,7 @@ from typing import Optional, Sequence, Tuple, Union
 from . import _native
 from ._model import Model
 
-__all__ = ["arch", "lintel", "wall", "facade"]
+__all__ = ["arch", "lintel", "wall", "facade", "vault", "dome", "block", "walls"]
 
 
 def arch(
@@ -157,3 +157,7 @@ def facade(
             live,
         )
     )
+
+
+# The 3D generators (``voussoir gen vault|dome|block|walls``).
+from ._generate3d import block, dome, vault, walls  # noqa: E402

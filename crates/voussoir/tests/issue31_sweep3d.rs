@@ -230,7 +230,7 @@ fn issue31_item2_3d_records_carry_six_components_in_json_and_csv() {
         &st,
         &spec(SweepKind::Scale(2), ipm()),
         0,
-        &[vec![0.01, 0.0, 0.0]; 2],
+        &vec![vec![0.01, 0.0, 0.0]; 2],
     );
     assert!(err.unwrap_err().to_string().contains("expected 6"));
 }

@@ -63,10 +63,15 @@ def test_issue31_item2_3d_angle_sweep_rotates_in_the_xz_plane_and_equals_the_cli
     cli("sweep", path, "--move", "right=0.01,0,-0.005", "--move", "left=0,0,-0.003",
         "--angles", "4", "--jsonl", out)
     assert out.read_text() == r.to_jsonl()
+    try:
+        import pandas  # noqa: F401  (optional dependency of to_dataframe)
+    except ImportError:
+        return
     df = r.to_dataframe()
+    assert list(df["motion.right.w"]) == [rec["motions"]["right"][2] for rec in r.records]
     assert "motion.right.theta_z" in df.columns
 
 
 def test_issue31_item2_3d_sweep_refuses_the_exact_cone(vault):
-    with pytest.raises(ValueError, match="friction_cone"):
+    with pytest.raises(v.ModelError, match="friction_cone"):
         v.sweep(vault, move=MOVES, magnitudes=2, friction_cone="exact")

@@ -9,8 +9,9 @@ use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use voussoir::analysis::capacity::CapacityOptions;
+use voussoir::model3d::AnyModel;
 use voussoir::sweep::{self, csv, jsonl, SweepKind, SweepRecord, SweepSpec};
-use voussoir::BuildOptions;
+use voussoir::{Assembly, BuildOptions};
 
 #[derive(Args)]
 pub struct SweepArgs {
@@ -22,7 +23,8 @@ pub struct SweepArgs {
     #[arg(long, alias = "steps", value_name = "N")]
     pub magnitudes: Option<usize>,
     /// Direction sweep: N analyses, the `--move` vectors (u, v) rotated through the N angles
-    /// 360°·k/N. (`--directions` is another name of this flag.)
+    /// 360°·k/N; in 3D (u, w) and (θx, θz) in the vertical x–z plane. (`--directions` is
+    /// another name of this flag.)
     #[arg(long, alias = "directions", value_name = "N")]
     pub angles: Option<usize>,
     /// Monte Carlo: N analyses, random settlement fields around the base motions.
@@ -152,14 +154,6 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         _ => unreachable!("exactly one mode"),
     };
     let n = kind.count();
-    let (mut model, _) = input.dxf.read(&a.model.model)?;
-    input.add_existing_cracks(&mut model)?;
-    // Sweeps are 2D: the 3D friction flags are refused as for any 2D model.
-    input.refuse_3d_friction()?;
-    a.model.override_materials(&mut model)?;
-    let splits = a.settle.apply(&mut model)?;
-    // The sweep's records carry no model: the supports cut are told on stderr.
-    eprint!("{}", crate::common::split_summary(&splits));
     let spec = SweepSpec {
         kind,
         build: BuildOptions {
@@ -178,6 +172,88 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         None => (0, 1),
     };
     sweep::check_size(n, shards)?;
+    match input.load_any()? {
+        AnyModel::Planar(mut model) => {
+            // The 3D friction flags are refused as for any 2D model.
+            input.refuse_3d_friction()?;
+            a.model.override_materials(&mut model)?;
+            let splits = a.settle.apply(&mut model)?;
+            // The sweep's records carry no model: the supports cut are told on stderr.
+            eprint!("{}", crate::common::split_summary(&splits));
+            let base: Vec<Vec<f64>> = model.supports.iter().map(|s| s.motion.to_vec()).collect();
+            sweep::check(&spec, &[], &base)?;
+            let st = voussoir::Structure::new(&model, spec.build)?;
+            // The report's inputs: the model with the base settlement, as every analysis
+            // builds it.
+            let inputs = (a.report.is_some() && a.capacity).then(|| {
+                let mut i = crate::report_inputs::report_inputs_tol(
+                    "sweep",
+                    crate::report_inputs::facts_2d(&model),
+                    &st,
+                    a.model.tolerance,
+                    &spec.solver,
+                    crate::report_inputs::Laws::default(),
+                    settings(&a, n),
+                );
+                i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                    &Assembly::shapes(&st),
+                    Assembly::contact_joints(&st).len(),
+                ));
+                i
+            });
+            sweep_on(&a, &st, &spec, shard, shards, inputs)
+        }
+        AnyModel::Spatial(mut model) => {
+            // 3D: the records' motions have six components (u, v, w, θx, θy, θz); the friction
+            // pyramid of --friction-facets; the 3D default solver (interior point).
+            let splits = a.settle.apply(&mut model)?;
+            eprint!("{}", crate::common::split_summary(&splits));
+            let base: Vec<Vec<f64>> = model.supports.iter().map(|s| s.motion.to_vec()).collect();
+            let spec = SweepSpec {
+                solver: input.solver3d,
+                ..spec
+            };
+            sweep::check(&spec, &[], &base)?;
+            let st = input.structure3d(model.clone(), None)?;
+            let inputs = (a.report.is_some() && a.capacity).then(|| {
+                let mut i = crate::report_inputs::report_inputs_tol(
+                    "sweep",
+                    crate::report_inputs::facts_3d(&model),
+                    &st,
+                    a.model.tolerance,
+                    &spec.solver,
+                    crate::report_inputs::Laws {
+                        cone: Some(crate::settle::friction_cone(&input, &st)),
+                        crushing: None,
+                        non_associative: false,
+                    },
+                    settings(&a, n),
+                );
+                i.model = Some(voussoir_io::report_parts::ModelEcho::of_3d(
+                    &Assembly::shapes(&st),
+                    Assembly::contact_joints(&st).len(),
+                ));
+                i
+            });
+            sweep_on(&a, &st, &spec, shard, shards, inputs)
+        }
+    }
+}
+
+/// Run shard `shard` of `shards` of the sweep on the structure `st` (either dimension; its
+/// supports carry the base settlement) and write the records and the distribution.
+fn sweep_on<S: Assembly>(
+    a: &SweepArgs,
+    st: &S,
+    spec: &SweepSpec,
+    shard: usize,
+    shards: usize,
+    inputs: Option<voussoir_io::report_parts::ReportInputs>,
+) -> Result<(), Fail>
+where
+    <S::D as voussoir::result::Spatial>::Motion: sweep::MotionSize,
+{
+    let n = spec.kind.count();
     let tasks = sweep::shard_tasks(n, shard, shards);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(a.threads.unwrap_or(0))
@@ -199,28 +275,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
             b.inc(1);
         }
     };
-    // The report's inputs: the model with the base settlement, as every analysis builds it.
-    let inputs = match &a.report {
-        Some(_) if a.capacity => {
-            let st = voussoir::Structure::new(&model, spec.build)?;
-            let mut i = crate::report_inputs::report_inputs_tol(
-                "sweep",
-                crate::report_inputs::facts_2d(&model),
-                &st,
-                a.model.tolerance,
-                &spec.solver,
-                crate::report_inputs::Laws::default(),
-                settings(&a, n),
-            );
-            i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
-                &voussoir::Assembly::shapes(&st),
-                voussoir::Assembly::contact_joints(&st).len(),
-            ));
-            Some(i)
-        }
-        _ => None,
-    };
-    let records = pool.install(|| sweep::run(&model, &spec, &tasks, &progress));
+    let records = pool.install(|| sweep::run_assembly(st, spec, &tasks, &progress));
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
@@ -235,7 +290,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         pool.current_num_threads()
     );
     if a.capacity {
-        write_distribution(&a, &records, inputs)?;
+        write_distribution(a, &records, inputs)?;
     }
     Ok(())
 }

@@ -98,7 +98,7 @@ impl Common3d {
         Ok(options.validate(Names::Keywords)?)
     }
 
-    fn solver(&self) -> Result<SolverOptions, Fail> {
+    pub(crate) fn solver(&self) -> Result<SolverOptions, Fail> {
         solver_of(self.method.as_deref(), 3)
     }
 
@@ -111,7 +111,7 @@ impl Common3d {
 
     /// The 3D model with materials overridden, and its structure (tilt and safety take no
     /// support motion: [`refuse_motion`] first).
-    fn structure(&self, model: &str) -> Result<Structure3d, Fail> {
+    pub(crate) fn structure(&self, model: &str) -> Result<Structure3d, Fail> {
         self.check()?;
         let mut m = match crate::model3d::parse_any(model)? {
             AnyModel::Spatial(m) => m,

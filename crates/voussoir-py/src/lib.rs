@@ -619,6 +619,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_task, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep3d_base, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep3d_task, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep3d_run, m)?)?;
     m.add_function(wrap_pyfunction!(identify::identify, m)?)?;
     m.add_function(wrap_pyfunction!(draw_svg, m)?)?;
     m.add_function(wrap_pyfunction!(report_html, m)?)?;

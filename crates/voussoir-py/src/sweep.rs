@@ -4,14 +4,18 @@
 //! [`voussoir::sweep`], the one behind `voussoir sweep`, so a Python sweep's JSON lines are
 //! byte-identical to the CLI's `--jsonl`.
 
+use crate::analysis3d::Common3d;
 use crate::detached;
 use crate::options::{Common, Fail, Settle};
 use pyo3::prelude::*;
+use voussoir::analysis::settlement::SettlementForm;
+use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::request::{Names, SupportMotion};
 use voussoir::sweep::{self, SweepKind, SweepRecord, SweepSpec};
-use voussoir::{BuildOptions, Model};
+use voussoir::{BuildOptions, Model, Structure};
 
-fn spec(common: &Common, kind: &str, n: usize, cov: f64, seed: u64) -> Result<SweepSpec, Fail> {
-    let kind = match kind {
+fn spec_kind(kind: &str, n: usize, cov: f64, seed: u64) -> Result<SweepKind, Fail> {
+    Ok(match kind {
         "steps" => SweepKind::Scale(n),
         "directions" => SweepKind::Direction(n),
         "samples" => SweepKind::Sample {
@@ -24,9 +28,12 @@ fn spec(common: &Common, kind: &str, n: usize, cov: f64, seed: u64) -> Result<Sw
                 "sweep kind {k}: expected steps, directions or samples"
             )))
         }
-    };
+    })
+}
+
+fn spec(common: &Common, kind: &str, n: usize, cov: f64, seed: u64) -> Result<SweepSpec, Fail> {
     Ok(SweepSpec {
-        kind,
+        kind: spec_kind(kind, n, cov, seed)?,
         build: BuildOptions {
             tolerance: common.tolerance,
         },
@@ -88,8 +95,8 @@ pub fn sweep_task(
                 "task {k} is beyond the sweep's {n} analyses"
             )));
         }
-        let motions: Vec<[f64; 3]> = m.supports.iter().map(|s| s.motion).collect();
-        let r = sweep::analyse(&m, &spec, k, &motions)?;
+        let st = Structure::new(&m, spec.build)?;
+        let r = sweep::analyse(&st, &spec, k, &sweep::base_motions(&st))?;
         Ok(lines(std::slice::from_ref(&r))?.remove(0))
     })
 }
@@ -130,4 +137,139 @@ pub fn sweep_csv(lines: Vec<String>) -> PyResult<String> {
         })
         .collect::<Result<Vec<SweepRecord>, Fail>>()?;
     Ok(sweep::csv(&records))
+}
+
+// 3D sweeps: the same engine ([`sweep::run_assembly`], [`sweep::analyse`]) on a 3D structure.
+// The options are a 3D analysis's ([`Common3d`]: materials, the friction pyramid, the 3D
+// default solver); the support motion is read by the request layer's parser, as for `settle`.
+
+fn form_of(form: &str) -> Result<SettlementForm, Fail> {
+    match form {
+        "both" => Ok(SettlementForm::Both),
+        "force-only" => Ok(SettlementForm::ForceOnly),
+        f => Err(Fail::Model(format!(
+            "settlement_form={f}: expected both or force-only"
+        ))),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn spec3d(
+    c: &Common3d,
+    form: &str,
+    kind: &str,
+    n: usize,
+    cov: f64,
+    seed: u64,
+) -> Result<SweepSpec, Fail> {
+    if c.friction_cone != "pyramid" {
+        return Err(Fail::Model(format!(
+            "friction_cone={}: a sweep solves the friction pyramid (friction_facets); the exact cone is solved by settle",
+            c.friction_cone
+        )));
+    }
+    Ok(SweepSpec {
+        kind: spec_kind(kind, n, cov, seed)?,
+        build: BuildOptions {
+            tolerance: c.tolerance,
+        },
+        solver: c.solver()?,
+        form: form_of(form)?,
+        capacity: None,
+    })
+}
+
+/// A 3D sweep's base model: the model with materials overridden and the base motions applied
+/// (split supports included), validated with the sweep (the library's checks, on no task), as
+/// JSON.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep3d_base(
+    py: Python<'_>,
+    model: String,
+    common: Common3d,
+    form: String,
+    kind: String,
+    n: usize,
+    cov: f64,
+    seed: u64,
+) -> PyResult<String> {
+    detached(py, || {
+        let spec = spec3d(&common, &form, &kind, n, cov, seed)?;
+        let mut m: Model3d = match crate::model3d::parse_any(&model)? {
+            AnyModel::Spatial(m) => m,
+            AnyModel::Planar(_) => {
+                return Err(Fail::Model(
+                    "internal: a 2D model reached the 3D sweep".into(),
+                ))
+            }
+        };
+        let motion = SupportMotion::parse(
+            &common.moves,
+            &common.fixed,
+            common.profile.as_deref(),
+            &common.splits,
+            Names::Keywords,
+        )?;
+        motion.apply(&mut m, Names::Keywords)?;
+        let text = voussoir_io::files::to_json(&m)?;
+        let st = common.structure(&text)?;
+        sweep::run_assembly(&st, &spec, &[], &|| {})?;
+        // The materials as overridden by the options (the tasks override them again: the same).
+        Ok(voussoir_io::files::to_json(&m)?)
+    })
+}
+
+/// One task of a 3D sweep on its base model: its record as one JSON line (no newline).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep3d_task(
+    py: Python<'_>,
+    base: String,
+    common: Common3d,
+    form: String,
+    kind: String,
+    n: usize,
+    k: usize,
+    cov: f64,
+    seed: u64,
+) -> PyResult<String> {
+    detached(py, || {
+        let spec = spec3d(&common, &form, &kind, n, cov, seed)?;
+        if k >= n {
+            return Err(Fail::Model(format!(
+                "task {k} is beyond the sweep's {n} analyses"
+            )));
+        }
+        let st = common.structure(&base)?;
+        let r = sweep::analyse(&st, &spec, k, &sweep::base_motions(&st))?;
+        Ok(lines(std::slice::from_ref(&r))?.remove(0))
+    })
+}
+
+/// Tasks `tasks` of a 3D sweep on `threads` rayon threads (0: one per core), in task order.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep3d_run(
+    py: Python<'_>,
+    base: String,
+    common: Common3d,
+    form: String,
+    kind: String,
+    n: usize,
+    tasks: Vec<usize>,
+    cov: f64,
+    seed: u64,
+    threads: usize,
+) -> PyResult<Vec<String>> {
+    detached(py, || {
+        let spec = spec3d(&common, &form, &kind, n, cov, seed)?;
+        let st = common.structure(&base)?;
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| Fail::Model(format!("cannot start worker threads: {e}")))?;
+        let records = pool.install(|| sweep::run_assembly(&st, &spec, &tasks, &|| {}))?;
+        lines(&records)
+    })
 }

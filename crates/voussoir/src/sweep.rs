@@ -3,7 +3,10 @@
 //!
 //! A sweep varies the prescribed support motions of one model:
 //! * magnitudes: the base motions scaled by k/steps, k = 1 … steps;
-//! * directions: the base motion vectors (u, v) rotated through equally spaced angles;
+//! * directions: the base motion vectors rotated through equally spaced angles: in 2D (u, v)
+//!   in the plane (θ unchanged); in 3D the vertical x–z plane's components, (u, w) and
+//!   (θx, θz), with v and θy unchanged — the 2D rotation of a model extruded along y
+//!   ([`crate::generate3d`] maps 2D `[u, v, θ]` to 3D `[u, 0, v, 0, −θ, 0]`);
 //! * Monte Carlo: random settlement fields: each support's motion times (1 + cov·ξ), ξ standard
 //!   normal, independent per support, from a seed (one stream per sample, so a sample's numbers
 //!   do not depend on sharding or threads).
@@ -16,12 +19,18 @@
 //! Each analysis is a rayon task with its own structure and solver, run on the caller's thread
 //! pool; records come back ordered by task index whatever the order of completion. Front ends
 //! (the command line, Python) parse their flags, pick the tasks (shards) and write the records.
+//!
+//! The engine is written once over [`Assembly`]: a 2D [`Structure`] or a 3D
+//! [`crate::Structure3d`]; a support motion has `D::DOFS` components (`[u, v, θ]` in 2D,
+//! `[u, v, w, θx, θy, θz]` in 3D), and so do the records' `motions`.
 
 use crate::analysis::capacity::{capacity, CapacityOptions, CapacityStatus};
 use crate::analysis::settlement::{settle_with, SettlementForm};
 use crate::error::{Error, Result};
 use crate::lp::SolverOptions;
-use crate::result::JointState;
+use crate::result::spatial::SpatialMotion;
+use crate::result::{JointState, PlanarMotion, Spatial};
+use crate::structure::Assembly;
 use crate::{BuildOptions, Model, Structure};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -32,7 +41,8 @@ use std::collections::BTreeMap;
 pub enum SweepKind {
     /// The base motions scaled by k/count, k = 1 … count.
     Scale(usize),
-    /// The base motion vectors rotated through `count` angles 360°·k/count.
+    /// The base motion vectors rotated through `count` angles 360°·k/count (in 3D in the
+    /// vertical x–z plane, about the y axis).
     Direction(usize),
     /// `count` random fields with coefficient of variation `cov` from `seed`.
     Sample { count: usize, cov: f64, seed: u64 },
@@ -86,8 +96,9 @@ pub struct SweepRecord {
     /// Largest block translation (m) and rotation (rad).
     pub max_displacement: f64,
     pub max_rotation: f64,
-    /// The prescribed motion of every moving support, `[u, v, θ]`.
-    pub motions: BTreeMap<String, [f64; 3]>,
+    /// The prescribed motion of every moving support: `[u, v, θ]` in 2D, `[u, v, w, θx, θy,
+    /// θz]` in 3D (m, rad).
+    pub motions: BTreeMap<String, Vec<f64>>,
     /// The solver and method that produced the analysis.
     pub solver: crate::lp::SolverInfo,
     /// The capacity after this settlement (sweeps with [`SweepSpec::capacity`] only).
@@ -158,15 +169,32 @@ impl SplitMix {
     }
 }
 
-/// The motions of task `k` from the base motions.
-pub fn motions_of(kind: &SweepKind, k: usize, base: &[[f64; 3]]) -> (f64, Vec<[f64; 3]>) {
+/// A motion `[u, v, θ]` (2D) or `[u, v, w, θx, θy, θz]` (3D) rotated by the angle of sine `sn`
+/// and cosine `cs`: in 2D (u, v) in the plane; in 3D (u, w) and (θx, θz) in the vertical x–z
+/// plane (the rotation about −y, which is the 2D plane's of a model extruded along y).
+fn rotated(m: &[f64], sn: f64, cs: f64) -> Vec<f64> {
+    let mut r = m.to_vec();
+    let pairs: &[(usize, usize)] = if m.len() == 6 {
+        &[(0, 2), (3, 5)]
+    } else {
+        &[(0, 1)]
+    };
+    for &(a, b) in pairs {
+        r[a] = cs * m[a] - sn * m[b];
+        r[b] = sn * m[a] + cs * m[b];
+    }
+    r
+}
+
+/// The motions of task `k` from the base motions (one per support, `D::DOFS` values each).
+pub fn motions_of(kind: &SweepKind, k: usize, base: &[Vec<f64>]) -> (f64, Vec<Vec<f64>>) {
     match *kind {
         SweepKind::Scale(n) => {
             let s = (k + 1) as f64 / n as f64;
             (
                 s,
                 base.iter()
-                    .map(|m| [m[0] * s, m[1] * s, m[2] * s])
+                    .map(|m| m.iter().map(|x| x * s).collect())
                     .collect(),
             )
         }
@@ -175,9 +203,7 @@ pub fn motions_of(kind: &SweepKind, k: usize, base: &[[f64; 3]]) -> (f64, Vec<[f
             let (sn, cs) = a.sin_cos();
             (
                 a.to_degrees(),
-                base.iter()
-                    .map(|m| [cs * m[0] - sn * m[1], sn * m[0] + cs * m[1], m[2]])
-                    .collect(),
+                base.iter().map(|m| rotated(m, sn, cs)).collect(),
             )
         }
         SweepKind::Sample { cov, seed, .. } => {
@@ -187,7 +213,7 @@ pub fn motions_of(kind: &SweepKind, k: usize, base: &[[f64; 3]]) -> (f64, Vec<[f
                 .iter()
                 .map(|m| {
                     let f = 1.0 + cov * rng.normal();
-                    [m[0] * f, m[1] * f, m[2] * f]
+                    m.iter().map(|x| x * f).collect()
                 })
                 .collect();
             (k as f64, m)
@@ -195,21 +221,77 @@ pub fn motions_of(kind: &SweepKind, k: usize, base: &[[f64; 3]]) -> (f64, Vec<[f
     }
 }
 
-/// Analysis `k` of the sweep: the model with the motions of task `k` (from the base motions
-/// `base`, one per support).
-pub fn analyse(
-    model: &Model,
+/// The sizes of a block motion a sweep record reports: its translation (m) and its rotation
+/// (rad), each the Euclidean norm of its components.
+pub trait MotionSize {
+    fn translation(&self) -> f64;
+    fn rotation(&self) -> f64;
+}
+
+impl MotionSize for PlanarMotion {
+    fn translation(&self) -> f64 {
+        self.u.hypot(self.v)
+    }
+    fn rotation(&self) -> f64 {
+        self.theta.abs()
+    }
+}
+
+impl MotionSize for SpatialMotion {
+    fn translation(&self) -> f64 {
+        (self.u * self.u + self.v * self.v + self.w * self.w).sqrt()
+    }
+    fn rotation(&self) -> f64 {
+        (self.theta_x * self.theta_x + self.theta_y * self.theta_y + self.theta_z * self.theta_z)
+            .sqrt()
+    }
+}
+
+/// The base motions of a structure's supports (one per support, `D::DOFS` values each).
+pub fn base_motions<S: Assembly>(st: &S) -> Vec<Vec<f64>> {
+    (0..st.num_supports())
+        .map(|s| st.support_motion(s).to_vec())
+        .collect()
+}
+
+/// Analysis `k` of the sweep: the structure `st` with the motions of task `k` (from the base
+/// motions `base`, one per support, [`base_motions`]).
+pub fn analyse<S: Assembly>(
+    st: &S,
     spec: &SweepSpec,
     k: usize,
-    base: &[[f64; 3]],
-) -> Result<SweepRecord> {
+    base: &[Vec<f64>],
+) -> Result<SweepRecord>
+where
+    <S::D as Spatial>::Motion: MotionSize,
+{
     let kind = &spec.kind;
     let (parameter, motions) = motions_of(kind, k, base);
-    let mut m = model.clone();
-    for (s, mo) in m.supports.iter_mut().zip(&motions) {
-        s.motion = *mo;
+    if motions.len() != st.num_supports() {
+        return Err(Error::Request(format!(
+            "{} base motions for {} supports",
+            motions.len(),
+            st.num_supports()
+        )));
     }
-    let st = Structure::new(&m, spec.build)?;
+    let mut st = st.clone();
+    for (s, mo) in motions.iter().enumerate() {
+        if mo.len() != <S::D as crate::dim::Dim>::DOFS {
+            return Err(Error::Request(format!(
+                "support '{}': a motion of {} values, expected {}",
+                st.support_name(s),
+                mo.len(),
+                <S::D as crate::dim::Dim>::DOFS
+            )));
+        }
+        if !mo.iter().all(|x| x.is_finite()) {
+            return Err(Error::Request(format!(
+                "support '{}': motion has a value that is not a finite number",
+                st.support_name(s)
+            )));
+        }
+        st.set_support_motion(s, mo);
+    }
     let r = settle_with(&st, &spec.solver, spec.form)?;
     // A capacity analysis that fails (a solver failure on one deformed geometry) is recorded
     // as such, so that one sample does not stop a Monte Carlo of hundreds.
@@ -220,8 +302,14 @@ pub fn analyse(
         };
         capacity_record(&st, &o).unwrap_or_else(|e| CapacityRecord::failed(&e))
     });
-    let max_displacement = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.u.hypot(b.v)));
-    let max_rotation = r.blocks.iter().fold(0.0f64, |x, b| x.max(b.theta.abs()));
+    let max_displacement = r
+        .blocks
+        .iter()
+        .fold(0.0f64, |x, b| x.max(b.motion.translation()));
+    let max_rotation = r
+        .blocks
+        .iter()
+        .fold(0.0f64, |x, b| x.max(b.motion.rotation()));
     Ok(SweepRecord {
         index: k,
         kind: kind.name().into(),
@@ -243,11 +331,11 @@ pub fn analyse(
             .count(),
         max_displacement,
         max_rotation,
-        motions: m
-            .supports
+        motions: motions
             .iter()
-            .filter(|s| s.motion.iter().any(|x| *x != 0.0))
-            .map(|s| (s.name.clone(), s.motion))
+            .enumerate()
+            .filter(|(_, m)| m.iter().any(|x| *x != 0.0))
+            .map(|(s, m)| (st.support_name(s).to_string(), m.clone()))
             .collect(),
         solver: r.solver.clone(),
         capacity,
@@ -255,7 +343,7 @@ pub fn analyse(
 }
 
 /// The capacity analysis of `st` (its supports carrying the settlement) as a sweep record.
-pub fn capacity_record(st: &Structure, opts: &CapacityOptions) -> Result<CapacityRecord> {
+pub fn capacity_record<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityRecord> {
     let c = capacity(st, opts)?;
     let invalid_steps = c.curve.iter().filter(|p| !p.valid).count();
     Ok(CapacityRecord {
@@ -307,15 +395,9 @@ pub fn check_size(count: usize, shards: usize) -> Result<()> {
     Ok(())
 }
 
-/// Run the tasks `tasks` (indices below `spec.kind.count()`) in parallel on the current rayon
-/// pool, calling `progress` after each; the records come back sorted by index. The model is
-/// validated once first, so that a bad model fails with one message.
-pub fn run(
-    model: &Model,
-    spec: &SweepSpec,
-    tasks: &[usize],
-    progress: &(dyn Fn() + Sync),
-) -> Result<Vec<SweepRecord>> {
+/// Check a sweep before any work: its size, its numbers, its tasks (indices below
+/// `spec.kind.count()`) and that its base motions (one per support) move something.
+pub fn check(spec: &SweepSpec, tasks: &[usize], base: &[Vec<f64>]) -> Result<()> {
     let n = spec.kind.count();
     check_size(n, n.div_ceil(tasks.len().max(1)))?;
     if let SweepKind::Sample { cov, .. } = spec.kind {
@@ -330,13 +412,42 @@ pub fn run(
             "task {k} is beyond the sweep's {n} analyses"
         )));
     }
-    let base: Vec<[f64; 3]> = model.supports.iter().map(|s| s.motion).collect();
     if base.iter().all(|m| m.iter().all(|x| *x == 0.0)) {
         return Err(Error::Request(
             "the sweep needs a base settlement: no support has a prescribed motion".into(),
         ));
     }
+    Ok(())
+}
+
+/// Run the tasks `tasks` (indices below `spec.kind.count()`) of a 2D model's sweep in parallel
+/// on the current rayon pool, calling `progress` after each; the records come back sorted by
+/// index. The model is validated once first, so that a bad model fails with one message.
+pub fn run(
+    model: &Model,
+    spec: &SweepSpec,
+    tasks: &[usize],
+    progress: &(dyn Fn() + Sync),
+) -> Result<Vec<SweepRecord>> {
+    let base: Vec<Vec<f64>> = model.supports.iter().map(|s| s.motion.to_vec()).collect();
+    check(spec, tasks, &base)?;
     let st = Structure::new(model, spec.build)?;
+    run_assembly(&st, spec, tasks, progress)
+}
+
+/// [`run`] on a structure of either dimension whose supports carry the base motions (a 3D
+/// structure with its friction pyramid as the caller wants it).
+pub fn run_assembly<S: Assembly>(
+    st: &S,
+    spec: &SweepSpec,
+    tasks: &[usize],
+    progress: &(dyn Fn() + Sync),
+) -> Result<Vec<SweepRecord>>
+where
+    <S::D as Spatial>::Motion: MotionSize,
+{
+    let base = base_motions(st);
+    check(spec, tasks, &base)?;
     if spec.capacity.is_some() && !st.has_live_loads() {
         return Err(Error::Request(
             "a capacity sweep needs live loads (the model has none): λ is their multiplier".into(),
@@ -345,7 +456,7 @@ pub fn run(
     let results: Vec<Result<SweepRecord>> = tasks
         .par_iter()
         .map(|&k| {
-            let r = analyse(model, spec, k, &base);
+            let r = analyse(st, spec, k, &base);
             progress();
             r
         })

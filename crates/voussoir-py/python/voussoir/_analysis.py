@@ -367,6 +367,13 @@ def _sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, 
     return _native.sweep_task(base, common, kind, n, k, cov, seed)
 
 
+def _sweep3d_task(
+    base: str, c3: dict, form: str, kind: str, n: int, k: int, cov: float, seed: int
+) -> str:
+    # One scenario of a 3D sweep; module-level so that executors can pickle it.
+    return _native.sweep3d_task(base, c3, form, kind, n, k, cov, seed)
+
+
 def _shard(shard) -> Tuple[int, int]:
     if shard is None:
         return (0, 1)
@@ -403,6 +410,9 @@ def sweep(
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     settlement_form: str = "both",
+    split: Union[str, Iterable[str], None] = None,
+    friction_facets: Optional[int] = None,
+    friction_cone: Optional[str] = None,
 ) -> SweepResult:
     """Many settlement analyses (``voussoir sweep``): give exactly one of
 
@@ -416,6 +426,13 @@ def sweep(
     ``client.get_executor()``), and the records come back in task order. ``shard=(i, n)`` runs
     only the tasks with index ≡ i (mod n). The records equal the CLI's, field for field.
     (``steps=`` and ``directions=`` are the old names of ``magnitudes=`` and ``angles=``.)
+
+    3D models: ``move`` as for :func:`settle` in 3D (``{NAME: (u, v, w[, θx, θy, θz])}``), the
+    records' ``motions`` have six components ``[u, v, w, θx, θy, θz]`` (m, rad); ``angles=N``
+    rotates (u, w) and (θx, θz) in the vertical x–z plane (v and θy unchanged: the 2D rotation
+    of a model extruded along y); ``split`` and ``friction_facets`` as for :func:`settle`; the
+    default method is the interior point (as the CLI's in 3D); ``friction_cone="exact"`` is
+    refused (a sweep solves the friction pyramid).
     """
     magnitudes = o.renamed("magnitudes", magnitudes, "steps", steps)
     angles = o.renamed("angles", angles, "directions", directions)
@@ -434,12 +451,34 @@ def sweep(
     if not 0 <= seed < 2**64:
         raise ValueError(f"seed={seed}: expected an integer in [0, 2⁶⁴)")
     m = _model(model)
-    _planar(m, "sweep")
+    i, shards = _shard(shard)
+    tasks = [k for k in range(n) if k % shards == i]
+    if m.dim == 3:
+        c3 = a3.common3d(
+            tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
+            move, fixed, profile, split,
+        )
+        form = o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS)
+        base = _native.sweep3d_base(m._json, c3, form, kind, n, float(cov), seed)
+        if executor is None:
+            if threads is not None and int(threads) < 1:
+                raise ValueError(f"threads={threads}: expected at least 1")
+            lines = _native.sweep3d_run(
+                base, c3, form, kind, n, tasks, float(cov), seed, int(threads or 0)
+            )
+        else:
+            futures = [
+                executor.submit(_sweep3d_task, base, c3, form, kind, n, k, float(cov), seed)
+                for k in tasks
+            ]
+            lines = [f.result() for f in futures]
+        return SweepResult(lines)
+    if split is not None:
+        raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
+    _planar(m, "sweep", friction_facets, friction_cone)
     c = o.common(tolerance, method or "dual-simplex", friction, compressive_strength, "linear", 16, settlement_form)
     s = o.settle(move, fixed, profile)
     base = _native.sweep_base(m._json, c, s, kind, n, float(cov), seed)
-    i, shards = _shard(shard)
-    tasks = [k for k in range(n) if k % shards == i]
     if executor is None:
         if threads is not None and int(threads) < 1:
             raise ValueError(f"threads={threads}: expected at least 1")

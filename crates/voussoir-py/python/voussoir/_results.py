@@ -537,10 +537,14 @@ class TiltResult(Result):
         return json.dumps(self._d()["limit"])
 
 
+_MOTION_KEYS_3D = ("u", "v", "w", "theta_x", "theta_y", "theta_z")
+
+
 class SweepResult:
     """A sweep of settlement analyses: one record per scenario, in task order, with the fields
     of ``voussoir sweep`` (index, kind, parameter, status, works, duality_gap, certified, hinges,
-    hinge_joints, open_joints, max_displacement, max_rotation, motions, solver)."""
+    hinge_joints, open_joints, max_displacement, max_rotation, motions, solver); a 3D sweep's
+    ``motions`` have six components ``[u, v, w, θx, θy, θz]`` (m, rad)."""
 
     __slots__ = ("_lines",)
 
@@ -594,14 +598,15 @@ class SweepResult:
         return text
 
     def to_dataframe(self):
-        """The records as a DataFrame (motions flattened to ``motion.NAME.u/v/theta``, the
-        solver to ``solver.KEY``)."""
+        """The records as a DataFrame (motions flattened to ``motion.NAME.u/v/theta`` in 2D,
+        ``motion.NAME.u/v/w/theta_x/theta_y/theta_z`` in 3D, the solver to ``solver.KEY``)."""
         pd = _pandas()
         rows = []
         for r in self.records:
             row = {k: v for k, v in r.items() if k not in ("motions", "solver")}
             for name, m in r["motions"].items():
-                for key, x in zip(("u", "v", "theta"), m):
+                keys = _MOTION_KEYS_3D if len(m) == 6 else ("u", "v", "theta")
+                for key, x in zip(keys, m):
                     row[f"motion.{name}.{key}"] = x
             for key, x in (r.get("solver") or {}).items():
                 row[f"solver.{key}"] = x

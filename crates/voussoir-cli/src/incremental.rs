@@ -271,7 +271,9 @@ fn run3d(
         split: a.split.clone(),
     }
     .resolve()?;
-    let solver = input.solver3d;
+    // The default method of 2D (a simplex warm-started from step to step, docs/incremental.md),
+    // not the interior point that other 3D commands start with.
+    let solver = input.solver;
     let st = input.structure3d(model, Some(&motion))?;
     let start = if a.moves.is_empty() {
         st.clone()

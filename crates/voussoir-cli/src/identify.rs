@@ -261,8 +261,15 @@ fn run3d(
             form: a.form.settlement_form.form(),
         },
     )?;
-    if a.draw.svg.is_some() || a.draw.png.is_some() || a.draw.vtk.is_some() || a.draw.view.is_some() {
-        a.draw.emit_3d(&r.forward, &input.path)?;
+    if a.draw.svg.is_some() || a.draw.png.is_some() || a.draw.vtk.is_some() || a.draw.view.is_some()
+    {
+        let draw = DrawArgs {
+            title: Some(a.draw.title.clone().unwrap_or_else(|| {
+                "Forward settlement of the identified support motion".to_string()
+            })),
+            ..a.draw.clone()
+        };
+        draw.emit_3d(&r.forward, &input.path)?;
     }
     let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
     a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
@@ -348,9 +355,9 @@ where
         .iter()
         .filter(|o| o.observed > 0.0 || o.misfit.abs() > o.tolerance)
     {
-        let z = o
-            .z
-            .map_or(String::new(), |z| format!(", {}", Length::Position.number(z)));
+        let z = o.z.map_or(String::new(), |z| {
+            format!(", {}", Length::Position.number(z))
+        });
         let _ = writeln!(
             s,
             "  crack {:>3} joint {:>5} point {} at ({}, {}{z}) m: observed {}, predicted {}, misfit {}{}",

@@ -86,7 +86,11 @@ fn numbers(flag: &str, s: &str) -> Result<Vec<f64>, Fail> {
     s.split(',')
         .map(|x| x.trim().parse::<f64>())
         .collect::<Result<_, _>>()
-        .map_err(|_| Fail(format!("--{flag} {s}: expected two numbers X,Y (2D) or three X,Y,Z (3D)")))
+        .map_err(|_| {
+            Fail(format!(
+                "--{flag} {s}: expected two numbers X,Y (2D) or three X,Y,Z (3D)"
+            ))
+        })
 }
 
 fn pair(flag: &str, s: &str, v: &[f64]) -> Result<[f64; 2], Fail> {
@@ -122,12 +126,10 @@ fn spatial(d: &crate::direction::Direction) -> Result<[f64; 3], Fail> {
             [x, y, 0.0]
         }
         Direction::Vector(v) if v.len() == 3 => [v[0], v[1], v[2]],
-        Direction::Vector(_) => {
-            return Err(Fail(format!(
-                "--direction {}: a 3D model's direction vector has three components DX,DY,DZ (z up)",
-                d.text()
-            )))
-        }
+        Direction::Vector(_) => return Err(Fail(format!(
+            "--direction {}: a 3D model's direction vector has three components DX,DY,DZ (z up)",
+            d.text()
+        ))),
     })
 }
 
@@ -399,9 +401,9 @@ where
             EventKind::Opened => "opened",
             EventKind::Closed => "closed",
         };
-        let z = e
-            .z
-            .map_or(String::new(), |z| format!(", {}", Length::Position.number(z)));
+        let z = e.z.map_or(String::new(), |z| {
+            format!(", {}", Length::Position.number(z))
+        });
         let _ = writeln!(
             s,
             "  step {:>5}  {:>9}  joint {:>4} point {} {kind} at ({}, {}{z}) m",

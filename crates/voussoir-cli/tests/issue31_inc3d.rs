@@ -15,7 +15,15 @@ fn arch_and_vault(dir: &Path, live: &str, depth: &str, rings: &str) {
     run(
         dir,
         &[
-            "gen", "vault", "--live", live, "--depth", depth, "--rings", rings, "-o",
+            "gen",
+            "vault",
+            "--live",
+            live,
+            "--depth",
+            depth,
+            "--rings",
+            rings,
+            "-o",
             "vault.json",
         ],
     );
@@ -64,16 +72,32 @@ fn issue31_item4_incremental_on_the_half_loaded_vault_equals_the_2d_arch_curve()
         let r2 = json(&run(
             &dir,
             &[
-                "incremental", "arch.json", "--control", "0,3.19", "--step", "0.2mm", "--max",
-                "20mm", "--json",
+                "incremental",
+                "arch.json",
+                "--control",
+                "0,3.19",
+                "--step",
+                "0.2mm",
+                "--max",
+                "20mm",
+                "--json",
             ],
         ));
         let control3 = format!("0,{mid},3.19");
         let r3 = json(&run(
             &dir,
             &[
-                "incremental", "vault.json", "--control", &control3, "--direction", "+x",
-                "--step", "0.2mm", "--max", "20mm", "--json",
+                "incremental",
+                "vault.json",
+                "--control",
+                &control3,
+                "--direction",
+                "+x",
+                "--step",
+                "0.2mm",
+                "--max",
+                "20mm",
+                "--json",
             ],
         ));
         assert_same_curve(&r2, &r3, &format!("depth {depth}, {rings} rings"));
@@ -120,16 +144,39 @@ fn issue31_item4_incremental_after_a_settlement_in_3d_equals_2d() {
     let r2 = json(&run(
         &dir,
         &[
-            "incremental", "arch.json", "--control", "0,3.19", "--step", "0.5mm", "--max",
-            "20mm", "--move", "right=0,-2.5mm", "--fixed", "right", "--json",
+            "incremental",
+            "arch.json",
+            "--control",
+            "0,3.19",
+            "--step",
+            "0.5mm",
+            "--max",
+            "20mm",
+            "--move",
+            "right=0,-2.5mm",
+            "--fixed",
+            "right",
+            "--json",
         ],
     ));
     let r3 = json(&run(
         &dir,
         &[
-            "incremental", "vault.json", "--control", "0,0.5,3.19", "--direction", "1,0,0",
-            "--step", "0.5mm", "--max", "20mm", "--move", "right=0,0,-2.5mm", "--fixed",
-            "right", "--json",
+            "incremental",
+            "vault.json",
+            "--control",
+            "0,0.5,3.19",
+            "--direction",
+            "1,0,0",
+            "--step",
+            "0.5mm",
+            "--max",
+            "20mm",
+            "--move",
+            "right=0,0,-2.5mm",
+            "--fixed",
+            "right",
+            "--json",
         ],
     ));
     assert_same_curve(&r2, &r3, "settled");
@@ -143,7 +190,12 @@ fn issue31_item4_incremental_after_a_settlement_in_3d_equals_2d() {
 /// (`by_point`: each open point by its coordinates `at: [x, y, z]`, as a surveyor would; else
 /// each cracked joint with its widths per point), identified with `--unknown right=u,w`.
 fn identify_round_trip(dir: &Path, u: f64, w: f64, by_point: bool) -> Value {
-    run(dir, &["gen", "vault", "--depth", "1", "--rings", "1", "-o", "v.json"]);
+    run(
+        dir,
+        &[
+            "gen", "vault", "--depth", "1", "--rings", "1", "-o", "v.json",
+        ],
+    );
     let mv = format!("right={u},0,{w}");
     let f = json(&run(dir, &["settle", "v.json", "--move", &mv, "--json"]));
     assert_eq!(f["status"], "mechanism");
@@ -171,7 +223,13 @@ fn identify_round_trip(dir: &Path, u: f64, w: f64, by_point: bool) -> Value {
     json(&run(
         dir,
         &[
-            "identify", "v.json", "--cracks", "obs.json", "--unknown", "right=u,w", "--json",
+            "identify",
+            "v.json",
+            "--cracks",
+            "obs.json",
+            "--unknown",
+            "right=u,w",
+            "--json",
         ],
     ))
 }
@@ -209,9 +267,18 @@ fn issue31_item4_3d_flags_are_honoured_or_refused_in_one_line() {
         a.extend_from_slice(extra);
         refused(&dir, &a, needle);
     };
-    inc(&["--control", "0,3.19"], "--control 0,3.19: expected three finite numbers X,Y,Z");
-    inc(&["--control", "0,0.5,3.19", "--direction", "1,0"], "three components DX,DY,DZ");
-    inc(&["--control", "0,0.5,3.19", "--report", "r.html"], "--report applies to 2D");
+    inc(
+        &["--control", "0,3.19"],
+        "--control 0,3.19: expected three finite numbers X,Y,Z",
+    );
+    inc(
+        &["--control", "0,0.5,3.19", "--direction", "1,0"],
+        "three components DX,DY,DZ",
+    );
+    inc(
+        &["--control", "0,0.5,3.19", "--report", "r.html"],
+        "--report applies to 2D",
+    );
     inc(&["--control", "0,0.5,30"], "from the nearest block");
     refused(
         &dir,
@@ -223,8 +290,17 @@ fn issue31_item4_3d_flags_are_honoured_or_refused_in_one_line() {
     let r = json(&run(
         &dir,
         &[
-            "incremental", "vault.json", "--control", "0,0.5,3.19", "--direction", "90",
-            "--step", "1mm", "--max", "5mm", "--json",
+            "incremental",
+            "vault.json",
+            "--control",
+            "0,0.5,3.19",
+            "--direction",
+            "90",
+            "--step",
+            "1mm",
+            "--max",
+            "5mm",
+            "--json",
         ],
     ));
     assert_eq!(r["status"], "control_still");
@@ -237,7 +313,14 @@ fn issue31_item4_3d_flags_are_honoured_or_refused_in_one_line() {
     let id = |unknown: &str, needle: &str| {
         refused(
             &dir,
-            &["identify", "vault.json", "--cracks", "obs.json", "--unknown", unknown],
+            &[
+                "identify",
+                "vault.json",
+                "--cracks",
+                "obs.json",
+                "--unknown",
+                unknown,
+            ],
             needle,
         );
     };
@@ -250,17 +333,38 @@ fn issue31_item4_3d_flags_are_honoured_or_refused_in_one_line() {
     .unwrap();
     refused(
         &dir,
-        &["identify", "vault.json", "--cracks", "line.json", "--unknown", "right=u"],
+        &[
+            "identify",
+            "vault.json",
+            "--cracks",
+            "line.json",
+            "--unknown",
+            "right=u",
+        ],
         "\"polyline\" and \"snap\" (a crack line as drawn) apply to 2D models",
     );
     refused(
         &dir,
-        &["identify", "arch.json", "--cracks", "obs.json", "--unknown", "right=u"],
+        &[
+            "identify",
+            "arch.json",
+            "--cracks",
+            "obs.json",
+            "--unknown",
+            "right=u",
+        ],
         "\"at\" must be two finite coordinates [x, y] (the model is 2D)",
     );
     refused(
         &dir,
-        &["identify", "arch.json", "--cracks", "obs.json", "--unknown", "right=w"],
+        &[
+            "identify",
+            "arch.json",
+            "--cracks",
+            "obs.json",
+            "--unknown",
+            "right=w",
+        ],
         "component 'w' is not u, v or theta",
     );
 }

@@ -36,6 +36,7 @@ use crate::analysis::settlement::{
     settlement_result, settlement_result_checked, solve_settlement_with, SettlementForm,
     SettlementResult, SettlementSolution, SettlementStatus,
 };
+use crate::dim::Dim;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LinearProgram, LpSolution, LpStatus, SolverOptions};
@@ -45,9 +46,8 @@ use crate::programs::{
 use crate::programs_identify::{
     decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole,
 };
-use crate::settlement_input::Profile;
-use crate::dim::Dim;
 use crate::result::Spatial;
+use crate::settlement_input::Profile;
 use crate::structure::{Assembly, Structure, Structure3d};
 use serde::{Deserialize, Serialize};
 
@@ -441,7 +441,10 @@ impl IdentifyGeometry for Structure3d {
         Ok(match (c.at.as_deref(), c.joint, &c.opening) {
             (Some(p), None, Width::One(w)) => {
                 if p.len() != 3 || !p.iter().all(|x| x.is_finite()) {
-                    return bad("\"at\" must be three finite coordinates [x, y, z] (the model is 3D)".into());
+                    return bad(
+                        "\"at\" must be three finite coordinates [x, y, z] (the model is 3D)"
+                            .into(),
+                    );
                 }
                 let p = [p[0] * fc, p[1] * fc, p[2] * fc];
                 let mut best: Option<(f64, usize, usize)> = None;
@@ -823,8 +826,8 @@ impl<'a, S: IdentifyGeometry> Setup<'a, S> {
                 )
             })
             .collect();
-        let homogeneous = (0..st0.num_supports())
-            .all(|k| st0.support_motion(k).iter().all(|x| *x == 0.0));
+        let homogeneous =
+            (0..st0.num_supports()).all(|k| st0.support_motion(k).iter().all(|x| *x == 0.0));
         let positions = point_positions(&st0);
         Ok(Setup {
             st,
@@ -1436,11 +1439,7 @@ enum Relation {
     Separate,
 }
 
-fn relation<S: IdentifyGeometry>(
-    s: &Setup<S>,
-    a: &Eval<S::D>,
-    b: &Eval<S::D>,
-) -> Result<Relation> {
+fn relation<S: IdentifyGeometry>(s: &Setup<S>, a: &Eval<S::D>, b: &Eval<S::D>) -> Result<Relation> {
     let scales = s.scales();
     let dist =
         a.a.iter()
@@ -2046,8 +2045,14 @@ impl Unknown {
     pub fn length(&self) -> crate::lengths::Length {
         // The translations are the first half of a 3D motion, the first two of a 2D one.
         let split = |m: &Vec<f64>| if m.len() == 6 { 3 } else { 2 };
-        let rotation = self.unit.iter().all(|m| m[..split(m)].iter().all(|x| *x == 0.0))
-            && self.unit.iter().any(|m| m[split(m)..].iter().any(|x| *x != 0.0));
+        let rotation = self
+            .unit
+            .iter()
+            .all(|m| m[..split(m)].iter().all(|x| *x == 0.0))
+            && self
+                .unit
+                .iter()
+                .any(|m| m[split(m)..].iter().any(|x| *x != 0.0));
         if rotation {
             crate::lengths::Length::Rotation
         } else {

@@ -144,7 +144,9 @@ impl IncrementalGeometry for Structure3d {
         s.faces
             .iter()
             .flat_map(|f| (1..f.len().saturating_sub(1)).map(move |k| (f[0], f[k], f[k + 1])))
-            .map(|(a, b, c)| point_triangle_distance(x, s.vertices[a], s.vertices[b], s.vertices[c]))
+            .map(|(a, b, c)| {
+                point_triangle_distance(x, s.vertices[a], s.vertices[b], s.vertices[c])
+            })
             .fold(f64::INFINITY, f64::min)
     }
     fn extent(&self) -> (f64, f64) {
@@ -218,9 +220,8 @@ impl IncrementalGeometry for Structure3d {
 /// 5.1.5: the closest point by Voronoi regions).
 fn point_triangle_distance(p: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
     let (sub, dot) = (Three::sub, Three::dot);
-    let at = |u: f64, v: f64, w: f64| -> [f64; 3] {
-        [0, 1, 2].map(|i| u * a[i] + v * b[i] + w * c[i])
-    };
+    let at =
+        |u: f64, v: f64, w: f64| -> [f64; 3] { [0, 1, 2].map(|i| u * a[i] + v * b[i] + w * c[i]) };
     let dist = |q: [f64; 3]| {
         let d = sub(p, q);
         dot(d, d).sqrt()

@@ -156,4 +156,3 @@ pub struct Minimum {
     /// The misfit is equally low over a range of motions around it (not unique).
     pub flat: bool,
 }
-

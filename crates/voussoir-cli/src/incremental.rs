@@ -17,7 +17,9 @@ use voussoir_io::lengths::Length;
 #[derive(Args)]
 pub struct IncrementalArgs {
     /// Control point x,y (m) of a 2D model, x,y,z of a 3D one: the block containing it, or the
-    /// nearest one, carries it.
+    /// nearest one, carries it. A 3D model (JSON, OBJ, PLY) is analysed the same way
+    /// (docs/capacity.md): its figure is the λ curve (--svg, --png; --report, --vtk, --view
+    /// refused), its LP method the 2D default (a simplex warm-started from step to step).
     #[arg(long, value_name = "X,Y[,Z]", allow_hyphen_values = true)]
     pub control: String,
     /// Direction along which the control displacement is measured: +x, -x, +y, -y, an angle

@@ -8,9 +8,13 @@ use clap::Args;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use voussoir::analysis::identify::{
-    identify, Component, IdentifyOptions, IdentifyResult, Observations, Unknown,
+    identify, Component, IdentifyGeometry, IdentifyOptions, Observations, Unknown,
 };
-use voussoir::structure::Structure;
+use voussoir::dim::Dim;
+use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::result::identify::IdentifyResult;
+use voussoir::result::Spatial;
+use voussoir::Assembly;
 use voussoir_io::draw::{self, ReportOptions};
 use voussoir_io::lengths::Length;
 use voussoir_io::survey::read_survey;
@@ -22,7 +26,9 @@ pub struct IdentifyArgs {
     /// The observed cracks (JSON, see docs/identify.md): `{"units": "mm", "tolerance": 0.1,
     /// "cracks": [{"at": [x, y], "opening": w} | {"joint": j, "opening": [w0, w1]} |
     /// {"polyline": [[x, y], …], "opening": w}], "unobserved": [{"joint": j} | {"region": [x0,
-    /// y0, x1, y1]}]}`; every other joint point is observed closed.
+    /// y0, x1, y1]}]}`; every other joint point is observed closed. 3D models: `"at": [x, y,
+    /// z]`, `"joint"` (a width per point of the joint's polygon, or one), regions `[x0, y0, z0,
+    /// x1, y1, z1]`; no polylines.
     #[arg(long, value_name = "OBS.json")]
     pub cracks: Option<PathBuf>,
     /// A crack survey drawing (DXF): the lines (LWPOLYLINE, POLYLINE, LINE) of the survey
@@ -33,7 +39,8 @@ pub struct IdentifyArgs {
     pub survey: Option<PathBuf>,
     /// An unknown support motion: NAME=u,v,theta | A..B=v (segments sharing one value) |
     /// a profile with one value '?' (uniform:X0,X1,? | linear:X0,V0,X1,?). Bounds: u[LO:HI].
-    /// Metres and radians. Repeatable.
+    /// Metres and radians. Repeatable. 3D models (z up): any of the six components
+    /// NAME=u,v,w,theta_x,theta_y,theta_z (each one unknown), e.g. right=u,w; no profiles.
     #[arg(long = "unknown", value_name = "SPEC", required = true)]
     pub unknowns: Vec<String>,
     /// Known motions and fixed supports (added to the unknowns).
@@ -114,7 +121,6 @@ fn annotate(msg: &str, names: &[(usize, String)]) -> String {
 
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.draw.check()?;
-    a.draw.check_2d()?;
     a.model.survey.check(a.survey.is_some(), "--survey")?;
     if a.cracks.is_none() && a.survey.is_none() {
         return Err(Fail(
@@ -131,7 +137,11 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     }
     let input = model.resolve_with(Some(a.survey.is_some()))?;
     let motion = a.settle.resolve()?;
-    let mut model = input.load()?;
+    let mut model = match input.load_any()? {
+        AnyModel::Planar(m) => m,
+        AnyModel::Spatial(m) => return run3d(&a, input, motion, m),
+    };
+    a.draw.check_2d()?;
     let mut splits = motion.apply(&mut model)?;
     // Unknown profiles act on the foundations as drawn, as `--profile` does: a support that
     // spans one of their breakpoints is cut there first.
@@ -203,6 +213,68 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
 }
 
+/// A 3D model: the same analysis on the [`voussoir::Structure3d`]. The observations are
+/// points (`at: [x, y, z]`) or joints; `--svg`, `--png`, `--vtk` and `--view` draw the forward
+/// settlement of the identified motion (a 3D structure drawing), `--report` and `--survey`
+/// (2D) are refused.
+fn run3d(
+    a: &IdentifyArgs,
+    input: crate::common::Input,
+    motion: crate::common::Motion,
+    mut model: Model3d,
+) -> Result<(), Fail> {
+    if a.survey.is_some() {
+        return Err(Fail(
+            "--survey reads a 2D crack survey drawing; on a 3D model give the observed cracks as --cracks OBS.json (\"at\": [x, y, z] or \"joint\", docs/identify.md)".into(),
+        ));
+    }
+    if a.draw.report.is_some() {
+        return Err(Fail(
+            "--report applies to 2D identifications; on a 3D model --svg, --png, --vtk and --view draw the forward settlement of the identified motion".into(),
+        ));
+    }
+    for spec in &a.unknowns {
+        if matches!(
+            spec.trim().split_once(':'),
+            Some(("uniform" | "linear" | "table", _))
+        ) {
+            return Err(Fail(format!(
+                "--unknown {spec}: a settlement profile as unknown applies to 2D models; on a 3D model give the supports' components (NAME=u,v,w,theta_x,theta_y,theta_z)"
+            )));
+        }
+    }
+    let splits = motion.apply(&mut model)?;
+    let st = input.structure3d(model, None)?;
+    let solver = input.solver3d;
+    let (obs, _) = observations(a, None)?;
+    let mut unknowns = Vec::new();
+    for spec in &a.unknowns {
+        unknowns.extend(parse_unknown(spec, &st)?);
+    }
+    let r = identify(
+        &st,
+        &obs,
+        &unknowns,
+        &IdentifyOptions {
+            solver,
+            ranges: !a.no_ranges,
+            form: a.form.settlement_form.form(),
+        },
+    )?;
+    if a.draw.svg.is_some() || a.draw.png.is_some() || a.draw.vtk.is_some() || a.draw.view.is_some()
+    {
+        let draw = DrawArgs {
+            title: Some(a.draw.title.clone().unwrap_or_else(|| {
+                "Forward settlement of the identified support motion".to_string()
+            })),
+            ..a.draw.clone()
+        };
+        draw.emit_3d(&r.forward, &input.path)?;
+    }
+    let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
+    a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
+}
+
 /// The settings of the identification as given, for the report.
 fn settings(a: &IdentifyArgs, obs: &Observations) -> Vec<(String, String)> {
     let mut kv = vec![(
@@ -239,7 +311,10 @@ fn settings(a: &IdentifyArgs, obs: &Observations) -> Vec<(String, String)> {
 
 /// The summary; lengths by the README's rule ([`voussoir_io::lengths`]): support motions in
 /// cm, rotations in mrad, crack widths and misfits in mm, positions in m.
-fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
+fn summary<S: Assembly>(st: &S, r: &IdentifyResult<S::D>, kinds: &[Length]) -> String
+where
+    S::D: Spatial,
+{
     let kind = |i: usize| kinds.get(i).copied().unwrap_or(Length::Motion);
     let mut s = String::new();
     let _ = writeln!(s, "{}", crate::common::structure_line(st));
@@ -265,14 +340,7 @@ fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
     if !r.support_motions.is_empty() {
         let _ = writeln!(s, "support motions:");
         for m in &r.support_motions {
-            let _ = writeln!(
-                s,
-                "  {:>8}: u {:>12}  v {:>12}  θ {:>14}",
-                m.support,
-                Length::Motion.show(m.u),
-                Length::Motion.show(m.v),
-                Length::Rotation.show(m.theta)
-            );
+            let _ = writeln!(s, "  {:>8}: {}", m.support, motion_text(&m.motion));
         }
     }
     let _ = writeln!(
@@ -287,9 +355,12 @@ fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
         .iter()
         .filter(|o| o.observed > 0.0 || o.misfit.abs() > o.tolerance)
     {
+        let z = o.z.map_or(String::new(), |z| {
+            format!(", {}", Length::Position.number(z))
+        });
         let _ = writeln!(
             s,
-            "  crack {:>3} joint {:>5} point {} at ({}, {}) m: observed {}, predicted {}, misfit {}{}",
+            "  crack {:>3} joint {:>5} point {} at ({}, {}{z}) m: observed {}, predicted {}, misfit {}{}",
             o.crack,
             o.joint,
             o.point,
@@ -378,6 +449,31 @@ fn summary(st: &Structure, r: &IdentifyResult, kinds: &[Length]) -> String {
     s
 }
 
+/// A support motion's components as the summary shows them (`u … v … θ …` in 2D, `u v w θx θy
+/// θz` in 3D): translations in cm, rotations in mrad.
+fn motion_text<M: serde::Serialize>(m: &M) -> String {
+    let v = serde_json::to_value(m).unwrap_or_default();
+    let mut parts = Vec::new();
+    for (key, label, rotation) in [
+        ("u", "u", false),
+        ("v", "v", false),
+        ("w", "w", false),
+        ("theta", "θ", true),
+        ("theta_x", "θx", true),
+        ("theta_y", "θy", true),
+        ("theta_z", "θz", true),
+    ] {
+        if let Some(x) = v.get(key).and_then(|x| x.as_f64()) {
+            parts.push(if rotation {
+                format!("{label} {:>14}", Length::Rotation.show(x))
+            } else {
+                format!("{label} {:>12}", Length::Motion.show(x))
+            });
+        }
+    }
+    parts.join("  ")
+}
+
 /// Split `[LO:HI]` bounds (either side may be empty).
 fn parse_bounds(s: &str, spec: &str) -> Result<(Option<f64>, Option<f64>), Fail> {
     let bad = || {
@@ -413,7 +509,7 @@ fn split_number(name: &str) -> Option<(&str, u64)> {
 /// `NAME=COMP[,COMP…]`, `A..B=COMP` (supports A to B sharing one value), or a profile with one
 /// value written `?` (`uniform:X0,X1,?`, `linear:X0,V0,X1,?`, `table:X,V;X,?;…`); each component
 /// or `?` may carry bounds `[LO:HI]`.
-pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
+pub fn parse_unknown<S: IdentifyGeometry>(spec: &str, st: &S) -> Result<Vec<Unknown>, Fail> {
     let spec = spec.trim();
     if let Some((kind, _)) = spec.split_once(':') {
         if matches!(kind, "uniform" | "linear" | "table") {
@@ -448,13 +544,19 @@ pub fn parse_unknown(spec: &str, st: &Structure) -> Result<Vec<Unknown>, Fail> {
             }
             None => (c, None, None),
         };
-        let comp = match c.trim() {
-            "u" => Component::U,
-            "v" => Component::V,
-            "theta" | "θ" => Component::Theta,
-            other => {
+        let dofs = <S::D as Dim>::DOFS;
+        let comp = match Component::parse(c.trim()) {
+            Some(comp) if comp.index_in(dofs).is_some() => comp,
+            _ if dofs == 3 => {
                 return Err(Fail(format!(
-                    "--unknown {spec}: component '{other}' is not u, v or theta"
+                    "--unknown {spec}: component '{}' is not u, v or theta",
+                    c.trim()
+                )));
+            }
+            _ => {
+                return Err(Fail(format!(
+                    "--unknown {spec}: component '{}' is not u, v, w, theta_x, theta_y or theta_z (a 3D model)",
+                    c.trim()
                 )));
             }
         };
@@ -486,7 +588,7 @@ fn profile_unknown_breakpoints(spec: &str) -> Vec<f64> {
         .unwrap_or_default()
 }
 
-fn parse_profile_unknown(spec: &str, st: &Structure) -> Result<Unknown, Fail> {
+fn parse_profile_unknown<S: IdentifyGeometry>(spec: &str, st: &S) -> Result<Unknown, Fail> {
     let bad = |m: &str| Fail(format!("--unknown {spec}: {m}"));
     let q = spec
         .find('?')

@@ -6,17 +6,25 @@ use clap::Args;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use voussoir::analysis::incremental::{
-    incremental_with, settled, Control, EventKind, IncrementalOptions, IncrementalResult,
+    incremental_with, settled, Control, EventKind, IncrementalGeometry, IncrementalOptions,
+    IncrementalResult,
 };
+use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::result::Spatial;
+use voussoir::Assembly;
 use voussoir_io::lengths::Length;
 
 #[derive(Args)]
 pub struct IncrementalArgs {
-    /// Control point x,y (m): the block containing it, or the nearest one, carries it.
-    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    /// Control point x,y (m) of a 2D model, x,y,z of a 3D one: the block containing it, or the
+    /// nearest one, carries it. A 3D model (JSON, OBJ, PLY) is analysed the same way
+    /// (docs/capacity.md): its figure is the λ curve (--svg, --png; --report, --vtk, --view
+    /// refused), its LP method the 2D default (a simplex warm-started from step to step).
+    #[arg(long, value_name = "X,Y[,Z]", allow_hyphen_values = true)]
     pub control: String,
     /// Direction along which the control displacement is measured: +x, -x, +y, -y, an angle
-    /// in degrees from +x towards +y, or a vector DX,DY (any length).
+    /// in degrees from +x towards +y, or a vector DX,DY (any length). 3D models (z up): also
+    /// +z, -z and DX,DY,DZ; an angle is horizontal (from +x towards +y); DX,DY is refused.
     #[arg(
         long,
         value_name = "DIR",
@@ -33,9 +41,9 @@ pub struct IncrementalArgs {
     #[arg(long, value_name = "LENGTH", default_value = "0.5mm", value_parser = length)]
     pub step: f64,
     /// Settle first by this support motion: NAME=u,v[,θ] (u, v in m or with a unit,
-    /// `right=0,-2.5mm`; θ in degrees), repeatable, as `--move` of `settle`; the analysis starts
-    /// from the settled geometry with the settlement's cracks open. (`--settle` is another name
-    /// of this flag.)
+    /// `right=0,-2.5mm`; θ in degrees), in 3D NAME=u,v,w[,θx,θy,θz], repeatable, as `--move` of
+    /// `settle`; the analysis starts from the settled geometry with the settlement's cracks
+    /// open. (`--settle` is another name of this flag.)
     #[arg(
         long = "move",
         alias = "settle",
@@ -75,23 +83,89 @@ pub fn length(s: &str) -> Result<f64, String> {
     }
 }
 
-fn pair(flag: &str, s: &str) -> Result<[f64; 2], Fail> {
-    let v: Vec<f64> = s
-        .split(',')
+/// The numbers of `--control` (checked against the model's dimension by [`pair`], [`triple`]).
+fn numbers(flag: &str, s: &str) -> Result<Vec<f64>, Fail> {
+    s.split(',')
         .map(|x| x.trim().parse::<f64>())
         .collect::<Result<_, _>>()
-        .map_err(|_| Fail(format!("--{flag} {s}: expected two numbers X,Y")))?;
-    match v.as_slice() {
+        .map_err(|_| {
+            Fail(format!(
+                "--{flag} {s}: expected two numbers X,Y (2D) or three X,Y,Z (3D)"
+            ))
+        })
+}
+
+fn pair(flag: &str, s: &str, v: &[f64]) -> Result<[f64; 2], Fail> {
+    match v {
         [x, y] if x.is_finite() && y.is_finite() => Ok([*x, *y]),
         _ => Err(Fail(format!(
-            "--{flag} {s}: expected two finite numbers X,Y"
+            "--{flag} {s}: expected two finite numbers X,Y (the model is 2D)"
         ))),
     }
 }
 
+fn triple(flag: &str, s: &str, v: &[f64]) -> Result<[f64; 3], Fail> {
+    match v {
+        [x, y, z] if x.is_finite() && y.is_finite() && z.is_finite() => Ok([*x, *y, *z]),
+        _ => Err(Fail(format!(
+            "--{flag} {s}: expected three finite numbers X,Y,Z (the model is 3D)"
+        ))),
+    }
+}
+
+/// `--direction` in space (z up): an axis, a horizontal angle from +x towards +y, or
+/// DX,DY,DZ; a two-component vector is refused (it would be read in the plane of a 2D model).
+fn spatial(d: &crate::direction::Direction) -> Result<[f64; 3], Fail> {
+    use crate::direction::Direction;
+    Ok(match d {
+        Direction::Axis { axis, sign } => {
+            let mut v = [0.0; 3];
+            v[*axis] = *sign;
+            v
+        }
+        Direction::Angle(_) => {
+            let [x, y] = d.planar("--direction").map_err(Fail)?;
+            [x, y, 0.0]
+        }
+        Direction::Vector(v) if v.len() == 3 => [v[0], v[1], v[2]],
+        Direction::Vector(_) => return Err(Fail(format!(
+            "--direction {}: a 3D model's direction vector has three components DX,DY,DZ (z up)",
+            d.text()
+        ))),
+    })
+}
+
+/// The analysis, with a progress bar on a terminal.
+fn analyse<S: IncrementalGeometry>(
+    start: &S,
+    control: &Control<S::D>,
+    opts: &IncrementalOptions,
+    max: f64,
+) -> Result<IncrementalResult<S::D>, Fail> {
+    Ok(if std::io::stderr().is_terminal() {
+        let scale = 1e6; // µm
+        let bar = indicatif::ProgressBar::new((max * scale).ceil().max(1.0) as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let r = incremental_with(start, control, opts, &mut |p| {
+            bar.set_position((p.displacement.abs() * scale) as u64);
+            bar.set_message(format!(
+                "{}  λ = {:.5}",
+                Length::Motion.show(p.displacement),
+                p.load_multiplier
+            ));
+        });
+        bar.finish_and_clear();
+        r?
+    } else {
+        incremental_with(start, control, opts, &mut |_| {})?
+    })
+}
+
 pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
-    let x = pair("control", &a.control)?;
-    let dir = a.direction.planar("--direction").map_err(Fail)?;
+    let xs = numbers("control", &a.control)?;
     if a.moves.is_empty() && !a.fixed.is_empty() {
         return Err(Fail("--fixed only applies with --move".into()));
     }
@@ -106,8 +180,14 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         )));
     }
     a.draw.check()?;
-    a.draw.check_2d()?;
     let input = a.model.resolve()?;
+    let model = match input.load_any()? {
+        AnyModel::Planar(m) => m,
+        AnyModel::Spatial(m) => return run3d(&a, &xs, input, m),
+    };
+    let x = pair("control", &a.control, &xs)?;
+    let dir = a.direction.planar("--direction").map_err(Fail)?;
+    a.draw.check_2d()?;
     let motion = SettleArgs {
         moves: a.moves.clone(),
         fixed: a.fixed.clone(),
@@ -118,10 +198,10 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
     let solver = input.solver;
     // The model's materials for the report (read again only when one is asked for).
     let facts = match a.draw.report {
-        Some(_) => crate::report_inputs::facts_2d(&input.load()?),
+        Some(_) => crate::report_inputs::facts_2d(&model),
         None => Default::default(),
     };
-    let st = input.structure(Some(&motion))?;
+    let st = input.structure_of(model, Some(&motion))?;
     let start = if a.moves.is_empty() {
         st.clone()
     } else {
@@ -139,26 +219,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         solver,
         ..IncrementalOptions::default()
     };
-    let r = if std::io::stderr().is_terminal() {
-        let scale = 1e6; // µm
-        let bar = indicatif::ProgressBar::new((a.max * scale).ceil().max(1.0) as u64);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {msg}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        let r = incremental_with(&start, &control, &opts, &mut |p| {
-            bar.set_position((p.displacement.abs() * scale) as u64);
-            bar.set_message(format!(
-                "{}  λ = {:.5}",
-                Length::Motion.show(p.displacement),
-                p.load_multiplier
-            ));
-        });
-        bar.finish_and_clear();
-        r?
-    } else {
-        incremental_with(&start, &control, &opts, &mut |_| {})?
-    };
+    let r = analyse(&start, &control, &opts, a.max)?;
     a.draw
         .clone()
         .with_inputs(|| {
@@ -179,6 +240,71 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
             i
         })
         .emit_incremental(&r, &input.path)?;
+    a.out
+        .emit_split(&r, &input.splits(), || summary(&start, &r))
+}
+
+/// A 3D model: the same analysis on the [`voussoir::Structure3d`] (control point X,Y,Z, a
+/// direction in space). The figure is the λ curve (--svg, --png); the report, --vtk and --view
+/// draw 2D incremental results or 3D structures and are refused.
+fn run3d(
+    a: &IncrementalArgs,
+    xs: &[f64],
+    input: crate::common::Input,
+    model: Model3d,
+) -> Result<(), Fail> {
+    let x = triple("control", &a.control, xs)?;
+    let dir = spatial(&a.direction)?;
+    for (given, flag) in [
+        (a.draw.report.is_some(), "--report"),
+        (a.draw.vtk.is_some(), "--vtk"),
+        (a.draw.view.is_some(), "--view"),
+        (a.draw.scale.is_some(), "--scale"),
+        (a.draw.pressure_points.is_some(), "--pressure-points"),
+    ] {
+        if given {
+            return Err(Fail(format!(
+                "{flag} applies to 2D incremental results; a 3D incremental result draws its λ curve (--svg, --png) and is written whole by -o/--json"
+            )));
+        }
+    }
+    let motion = SettleArgs {
+        moves: a.moves.clone(),
+        fixed: a.fixed.clone(),
+        profile: None,
+        split: a.split.clone(),
+    }
+    .resolve()?;
+    // The default method of 2D (a simplex warm-started from step to step, docs/incremental.md),
+    // not the interior point that other 3D commands start with.
+    let solver = input.solver;
+    let st = input.structure3d(model, Some(&motion))?;
+    let start = if a.moves.is_empty() {
+        st.clone()
+    } else {
+        settled(&st, &solver, !a.keep_fixed)?
+    };
+    // Chosen on the undeformed structure, as in 2D.
+    let block = Control::nearest(&st, x, dir)?.block;
+    let control = Control::new(&start, block, x, dir)?;
+    let opts = IncrementalOptions {
+        step: a.step,
+        max_displacement: a.max,
+        stop_after_peak: !a.no_stop,
+        snapshot_every: a.snapshot_every,
+        solver,
+        ..IncrementalOptions::default()
+    };
+    let r = analyse(&start, &control, &opts, a.max)?;
+    if a.draw.svg.is_some() || a.draw.png.is_some() {
+        let title = a
+            .draw
+            .title
+            .as_deref()
+            .unwrap_or(voussoir_io::draw::INCREMENTAL_TITLE);
+        let svg = voussoir_io::draw::incremental_plot(&[("λ(dx)", &r)], title).svg;
+        crate::draw_args::write_drawing(&svg, a.draw.svg.as_deref(), a.draw.png.as_deref())?;
+    }
     a.out
         .emit_split(&r, &input.splits(), || summary(&start, &r))
 }
@@ -234,17 +360,32 @@ fn settings(a: &IncrementalArgs, r: &IncrementalResult) -> Vec<(String, String)>
     kv
 }
 
-fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
+fn summary<S: Assembly>(st: &S, r: &IncrementalResult<S::D>) -> String
+where
+    S::D: Spatial,
+{
     let mut s = String::new();
     let _ = writeln!(s, "{}", crate::common::structure_line(st));
+    let point: Vec<String> = r
+        .control
+        .point
+        .as_ref()
+        .iter()
+        .map(|c| Length::Position.number(*c))
+        .collect();
+    let direction: Vec<String> = r
+        .control
+        .direction
+        .as_ref()
+        .iter()
+        .map(|c| format!("{c:.3}"))
+        .collect();
     let _ = writeln!(
         s,
-        "control: block {} at ({}, {}) m, direction ({:.3}, {:.3})",
+        "control: block {} at ({}) m, direction ({})",
         r.control.block,
-        Length::Position.number(r.control.point[0]),
-        Length::Position.number(r.control.point[1]),
-        r.control.direction[0],
-        r.control.direction[1]
+        point.join(", "),
+        direction.join(", ")
     );
     if !r.initial_open_joints.is_empty() {
         let _ = writeln!(s, "joints open at the start: {:?}", r.initial_open_joints);
@@ -262,9 +403,12 @@ fn summary(st: &voussoir::Structure, r: &IncrementalResult) -> String {
             EventKind::Opened => "opened",
             EventKind::Closed => "closed",
         };
+        let z = e.z.map_or(String::new(), |z| {
+            format!(", {}", Length::Position.number(z))
+        });
         let _ = writeln!(
             s,
-            "  step {:>5}  {:>9}  joint {:>4} point {} {kind} at ({}, {}) m",
+            "  step {:>5}  {:>9}  joint {:>4} point {} {kind} at ({}, {}{z}) m",
             e.step,
             Length::Motion.show(e.displacement),
             e.joint,

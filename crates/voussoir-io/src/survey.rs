@@ -523,7 +523,8 @@ pub fn drawing_to_survey(
 /// widths, in metres).
 pub fn existing_crack(c: Crack) -> ExistingCrack {
     ExistingCrack {
-        at: c.at,
+        // A survey line has no `at` (it is a polyline); a 2D point is kept as such.
+        at: c.at.as_deref().and_then(|p| <[f64; 2]>::try_from(p).ok()),
         joint: c.joint,
         polyline: c.polyline,
         snap: c.snap,

@@ -93,7 +93,7 @@ fn pattern(
             for (p, w) in j.points.iter().zip(&ws) {
                 if *w > 0.0 {
                     cracks.push(Crack {
-                        at: Some([p.x, p.y]),
+                        at: Some(vec![p.x, p.y]),
                         joint: None,
                         opening: Width::One(*w),
                         tolerance: tol.map(|t| t(*w)),
@@ -415,7 +415,7 @@ fn a_pattern_no_spreading_can_open_is_inconsistent() {
     let obs = Observations {
         tolerance: None,
         cracks: vec![Crack {
-            at: Some([p.x, p.y]),
+            at: Some(vec![p.x, p.y]),
             joint: None,
             opening: Width::One(p.opening),
             tolerance: None,

@@ -32,7 +32,7 @@ fn structure(m: &Model) -> Structure {
 
 fn at(x: f64, y: f64, w: f64) -> Crack {
     Crack {
-        at: Some([x, y]),
+        at: Some(vec![x, y]),
         joint: None,
         opening: Width::One(w),
         tolerance: None,

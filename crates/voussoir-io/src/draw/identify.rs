@@ -11,7 +11,7 @@ use super::scene::{centroid, draw, DrawOptions, Drawing, Scene};
 use super::svg::{esc, fmt_fixed, human, num, text_width};
 use crate::lengths::Length;
 use std::fmt::Write as _;
-use voussoir::analysis::identify::{IdentifyResult, IdentifyStatus};
+use voussoir::result::identify::{IdentifyResult, IdentifyStatus};
 use voussoir::result::BodyName;
 
 /// Colour of observed cracks (distinct from the red of predicted cracks and the blue thrust).

@@ -6,12 +6,16 @@ use super::report::{Report, ReportOptions};
 use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
 use crate::lengths::Length;
-use voussoir::analysis::incremental::{EventKind, IncrementalResult};
+use voussoir::result::incremental::{EventKind, IncrementalResult};
 
 /// The curve of one result: control displacement in cm (the summaries' unit of displacements,
 /// [`crate::lengths`]) against λ = max(λ, 0). Two points at
 /// the same displacement (just before and just after a closure) draw the jump.
-pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> Series {
+pub fn incremental_series<D: voussoir::result::Spatial>(
+    r: &IncrementalResult<D>,
+    label: &str,
+    colour: &str,
+) -> Series {
     Series {
         label: label.to_string(),
         points: r
@@ -33,7 +37,11 @@ pub fn incremental_series(r: &IncrementalResult, label: &str, colour: &str) -> S
 
 /// λ–displacement curves of one or more incremental results on one plot (the paper's Fig 17),
 /// each peak marked.
-pub fn incremental_plot(curves: &[(&str, &IncrementalResult)], title: &str) -> Plot {
+/// (2D or 3D: only the curves are drawn.)
+pub fn incremental_plot<D: voussoir::result::Spatial>(
+    curves: &[(&str, &IncrementalResult<D>)],
+    title: &str,
+) -> Plot {
     let mut series = Vec::new();
     let mut marks = Vec::new();
     for (i, (label, r)) in curves.iter().enumerate() {

@@ -35,7 +35,7 @@ pub use scene::{draw, DrawOptions, Drawing, Frame, MotionUnits, PressurePoints, 
 use crate::draw3d::{draw3d, Draw3dOptions, View};
 use crate::result3d::{Figure3d, Result3d};
 use crate::IoError;
-use voussoir::analysis::identify::IdentifyResult;
+use voussoir::result::identify::IdentifyResult;
 use voussoir::analysis::safety::SafetyResult;
 use voussoir::analysis::tilt::TiltResult;
 use voussoir::analysis::{CapacityResult, IncrementalResult, LimitResult, SettlementResult};

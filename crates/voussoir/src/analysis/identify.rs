@@ -36,6 +36,7 @@ use crate::analysis::settlement::{
     settlement_result, settlement_result_checked, solve_settlement_with, SettlementForm,
     SettlementResult, SettlementSolution, SettlementStatus,
 };
+use crate::dim::Dim;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
 use crate::lp::{self, Direction, LinearProgram, LpSolution, LpStatus, SolverOptions};
@@ -45,8 +46,9 @@ use crate::programs::{
 use crate::programs_identify::{
     decided, Activity, ClosestProgram, IdentifyProgram, MisfitMode, PointRole,
 };
+use crate::result::Spatial;
 use crate::settlement_input::Profile;
-use crate::structure::{Assembly, Structure};
+use crate::structure::{Assembly, Structure, Structure3d};
 use serde::{Deserialize, Serialize};
 
 /// Default measurement tolerance of a crack width (m): 0.1 mm, a crack gauge's resolution.
@@ -57,7 +59,7 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-4;
 pub use crate::model::Width;
 
 /// One observed crack. Exactly one of `at` (the nearest collocation point of any joint: the
-/// surveyor's coordinates), `joint` (a joint id: widths at its points in order, start then
+/// surveyor's coordinates, `[x, y]` in 2D, `[x, y, z]` in 3D), `joint` (a joint id: widths at its points in order, start then
 /// end, or one width for all of them) and `polyline` (a crack line as drawn: every joint point
 /// within `snap` of it, default a quarter of that point's joint length; one width, or two at
 /// its start and end, interpolated along it). A width of 0 says "observed closed here".
@@ -65,10 +67,10 @@ pub use crate::model::Width;
 #[serde(deny_unknown_fields)]
 pub struct Crack {
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub at: Option<[f64; 2]>,
+    pub at: Option<Vec<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<usize>,
-    /// A crack line `[[x, y], …]`, in the file's `coordinate_units`.
+    /// A crack line `[[x, y], …]`, in the file's `coordinate_units` (2D models).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub polyline: Option<Vec<[f64; 2]>>,
     /// Catch distance of a `polyline`, in the file's `coordinate_units`.
@@ -85,14 +87,14 @@ pub struct Crack {
 }
 
 /// Where nothing was observed (plaster, not surveyed): a joint, or every joint point inside an
-/// axis-aligned box `[x0, y0, x1, y1]`.
+/// axis-aligned box `[x0, y0, x1, y1]` (3D: `[x0, y0, z0, x1, y1, z1]`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Unobserved {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<usize>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub region: Option<[f64; 4]>,
+    pub region: Option<Vec<f64>>,
 }
 
 /// The survey: cracks, unobserved parts, tolerance. Every joint point that is neither cracked
@@ -131,9 +133,9 @@ fn finite_nonneg(x: f64) -> bool {
 
 impl Observations {
     /// Resolve to one role per collocation point, and the list of observed points.
-    fn resolve(
+    fn resolve<S: IdentifyGeometry>(
         &self,
-        st: &Structure,
+        st: &S,
         map: &KinematicMap,
     ) -> Result<(Vec<PointRole>, Vec<PointObs>)> {
         let bad = |m: String| Err(Error::Request(m));
@@ -159,7 +161,7 @@ impl Observations {
             None => DEFAULT_TOLERANCE,
         };
         let npts = map.num_points();
-        let xy = |k: usize| st.joints[map.points[k].joint].points[map.points[k].index].x;
+        let positions = point_positions(st);
         let mut roles = vec![PointRole::Closed; npts];
         for (k, r) in roles.iter_mut().enumerate() {
             if map.gap[k] > 0.0 {
@@ -167,23 +169,32 @@ impl Observations {
             }
         }
         for (i, u) in self.unobserved.iter().enumerate() {
-            match (u.joint, u.region) {
+            match (u.joint, u.region.as_deref()) {
                 (Some(j), None) => {
-                    if j >= st.joints.len() {
-                        return bad(format!("unobserved[{i}]: joint {j} does not exist (the structure has {} joints)", st.joints.len()));
+                    if j >= st.num_joints() {
+                        return bad(format!("unobserved[{i}]: joint {j} does not exist (the structure has {} joints)", st.num_joints()));
                     }
                     for r in &mut roles[map.joint_start[j]..map.joint_start[j + 1]] {
                         *r = PointRole::Unobserved;
                     }
                 }
-                (None, Some([x0, y0, x1, y1])) => {
-                    if ![x0, y0, x1, y1].iter().all(|v| v.is_finite()) || x1 < x0 || y1 < y0 {
-                        return bad(format!("unobserved[{i}]: region must be finite [x0, y0, x1, y1] with x0 ≤ x1, y0 ≤ y1"));
+                (None, Some(region)) => {
+                    // [lo…, hi…]: two corners of the dimension's box.
+                    let n = <S::D as Dim>::N;
+                    let ok = region.len() == 2 * n
+                        && region.iter().all(|v| v.is_finite())
+                        && (0..n).all(|c| region[n + c] >= region[c]);
+                    if !ok {
+                        return bad(if n == 2 {
+                            format!("unobserved[{i}]: region must be finite [x0, y0, x1, y1] with x0 ≤ x1, y0 ≤ y1")
+                        } else {
+                            format!("unobserved[{i}]: region must be finite [x0, y0, z0, x1, y1, z1] with x0 ≤ x1, y0 ≤ y1, z0 ≤ z1 (the model is 3D)")
+                        });
                     }
-                    let [x0, y0, x1, y1] = [x0 * fc, y0 * fc, x1 * fc, y1 * fc];
+                    let region: Vec<f64> = region.iter().map(|v| v * fc).collect();
                     for (k, r) in roles.iter_mut().enumerate() {
-                        let p = xy(k);
-                        if p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1 {
+                        let p = &positions[k];
+                        if (0..n).all(|c| p[c] >= region[c] && p[c] <= region[n + c]) {
                             *r = PointRole::Unobserved;
                         }
                     }
@@ -214,18 +225,8 @@ impl Observations {
                 }
                 None => tol,
             };
-            let site = crate::structure::CrackSite {
-                at: c.at,
-                joint: c.joint,
-                polyline: c.polyline.as_deref(),
-                snap: c.snap,
-                opening: &c.opening,
-                width_scale: cw,
-                width_unit: cunit,
-                coordinate_scale: fc,
-            };
             let points: Vec<(usize, f64)> = st
-                .crack_site_points(&what, &site)?
+                .observed_points(&what, c, cw, cunit, fc)?
                 .into_iter()
                 .map(|(j, k, w)| (map.joint_start[j] + k, w))
                 .collect();
@@ -270,82 +271,285 @@ impl Observations {
 
 // --- Unknowns -----------------------------------------------------------------------------
 
-/// One unknown amplitude `a`: the support motions are `base + a · unit` (per support
-/// `(u, v, θ)`, m and rad), with optional bounds.
+/// One unknown amplitude `a`: the support motions are `base + a · unit` (per support its
+/// `Dim::DOFS` components: `(u, v, θ)` in 2D, `(u, v, w, θx, θy, θz)` in 3D, m and rad), with
+/// optional bounds.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Unknown {
     pub name: String,
     /// Motion of every support per unit amplitude.
-    pub unit: Vec<[f64; 3]>,
+    pub unit: Vec<Vec<f64>>,
     /// Motion added whatever the amplitude (a profile's fixed part; usually zero).
-    pub base: Vec<[f64; 3]>,
+    pub base: Vec<Vec<f64>>,
     pub lower: Option<f64>,
     pub upper: Option<f64>,
 }
 
-/// A support-motion component.
+/// A support-motion component: `u`, `v`, `theta` of a 2D model; `u`, `v`, `w`, `theta_x`,
+/// `theta_y`, `theta_z` of a 3D one (z up).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Component {
-    /// Horizontal translation (m).
+    /// Translation along x (m).
     U,
-    /// Vertical translation (m, up positive).
+    /// Translation along y (m; in 2D vertical, up positive).
     V,
-    /// Rotation about the support's centroid (rad, counter-clockwise).
+    /// 2D: rotation about the support's centroid (rad, counter-clockwise).
     Theta,
+    /// 3D: translation along z (m, up positive).
+    W,
+    /// 3D: rotation about x through the support's centroid (rad, right-handed).
+    #[serde(rename = "theta_x")]
+    ThetaX,
+    /// 3D: rotation about y (rad).
+    #[serde(rename = "theta_y")]
+    ThetaY,
+    /// 3D: rotation about z (rad).
+    #[serde(rename = "theta_z")]
+    ThetaZ,
 }
 
 impl Component {
-    fn index(self) -> usize {
-        match self {
-            Component::U => 0,
-            Component::V => 1,
-            Component::Theta => 2,
+    /// Index of the component in a support motion of `dofs` values (3: 2D, 6: 3D), or None
+    /// when it is not a component of that dimension.
+    pub fn index_in(self, dofs: usize) -> Option<usize> {
+        match (self, dofs) {
+            (Component::U, _) => Some(0),
+            (Component::V, _) => Some(1),
+            (Component::Theta, 3) => Some(2),
+            (Component::W, 6) => Some(2),
+            (Component::ThetaX, 6) => Some(3),
+            (Component::ThetaY, 6) => Some(4),
+            (Component::ThetaZ, 6) => Some(5),
+            _ => None,
         }
     }
     pub fn name(self) -> &'static str {
-        ["u", "v", "theta"][self.index()]
+        match self {
+            Component::U => "u",
+            Component::V => "v",
+            Component::Theta => "theta",
+            Component::W => "w",
+            Component::ThetaX => "theta_x",
+            Component::ThetaY => "theta_y",
+            Component::ThetaZ => "theta_z",
+        }
     }
+    /// The component named `name` (`θ` for theta, `θx`… for the 3D rotations), any dimension.
+    pub fn parse(name: &str) -> Option<Component> {
+        Some(match name {
+            "u" => Component::U,
+            "v" => Component::V,
+            "theta" | "θ" => Component::Theta,
+            "w" => Component::W,
+            "theta_x" | "θx" => Component::ThetaX,
+            "theta_y" | "θy" => Component::ThetaY,
+            "theta_z" | "θz" => Component::ThetaZ,
+            _ => return None,
+        })
+    }
+}
+
+/// What the inverse analysis needs of a structure beyond [`Assembly`]: the collocation points
+/// an observed crack names, and the support motions of a settlement profile. Implemented for
+/// the 2D [`Structure`] and the 3D [`Structure3d`]; the analysis itself is written once over
+/// it.
+pub trait IdentifyGeometry: Assembly {
+    /// The points crack `c` names, as `(joint, point index, width in m)` (see [`Crack`]):
+    /// widths scaled by `width_scale` (unit `width_unit`), coordinates by `coordinate_scale`.
+    fn observed_points(
+        &self,
+        what: &str,
+        c: &Crack,
+        width_scale: f64,
+        width_unit: &str,
+        coordinate_scale: f64,
+    ) -> Result<Vec<(usize, usize, f64)>>;
+    /// Each support's motion under profile `p` (its value and slope at the support's centroid).
+    fn profile_motions(&self, name: &str, p: &Profile) -> Result<Vec<Vec<f64>>>;
+}
+
+impl IdentifyGeometry for Structure {
+    fn observed_points(
+        &self,
+        what: &str,
+        c: &Crack,
+        width_scale: f64,
+        width_unit: &str,
+        coordinate_scale: f64,
+    ) -> Result<Vec<(usize, usize, f64)>> {
+        let at = match c.at.as_deref() {
+            None => None,
+            Some(&[x, y]) => Some([x, y]),
+            Some(_) => {
+                return Err(Error::Request(format!(
+                    "{what}: \"at\" must be two finite coordinates [x, y] (the model is 2D)"
+                )))
+            }
+        };
+        self.crack_site_points(
+            what,
+            &crate::structure::CrackSite {
+                at,
+                joint: c.joint,
+                polyline: c.polyline.as_deref(),
+                snap: c.snap,
+                opening: &c.opening,
+                width_scale,
+                width_unit,
+                coordinate_scale,
+            },
+        )
+    }
+    fn profile_motions(&self, _name: &str, p: &Profile) -> Result<Vec<Vec<f64>>> {
+        Ok(self
+            .supports
+            .iter()
+            .map(|s| {
+                let (v, slope) = p.eval(s.centroid[0]);
+                vec![0.0, v, slope]
+            })
+            .collect())
+    }
+}
+
+impl IdentifyGeometry for Structure3d {
+    /// By `at` (`[x, y, z]`, the nearest point of any joint, ties to the lowest joint and
+    /// point) or by `joint` (widths per point in the joint's order, or one for all); a crack
+    /// line (`polyline`) is a 2D survey's and is refused.
+    fn observed_points(
+        &self,
+        what: &str,
+        c: &Crack,
+        ws: f64,
+        unit: &str,
+        fc: f64,
+    ) -> Result<Vec<(usize, usize, f64)>> {
+        use crate::model::Width;
+        let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
+        for &w in match &c.opening {
+            Width::One(w) => std::slice::from_ref(w),
+            Width::PerPoint(v) => v.as_slice(),
+        } {
+            if !(w.is_finite() && w >= 0.0) {
+                return bad(format!("width {w} must be a finite number ≥ 0 ({unit})"));
+            }
+        }
+        if c.polyline.is_some() || c.snap.is_some() {
+            return bad("\"polyline\" and \"snap\" (a crack line as drawn) apply to 2D models; on a 3D model give \"at\": [x, y, z] or \"joint\"".into());
+        }
+        Ok(match (c.at.as_deref(), c.joint, &c.opening) {
+            (Some(p), None, Width::One(w)) => {
+                if p.len() != 3 || !p.iter().all(|x| x.is_finite()) {
+                    return bad(
+                        "\"at\" must be three finite coordinates [x, y, z] (the model is 3D)"
+                            .into(),
+                    );
+                }
+                let p = [p[0] * fc, p[1] * fc, p[2] * fc];
+                let mut best: Option<(f64, usize, usize)> = None;
+                for (j, jt) in self.joints.iter().enumerate() {
+                    for (k, q) in jt.points.iter().enumerate() {
+                        let d = crate::dim::Three::sub(q.x, p);
+                        let dd = crate::dim::Three::dot(d, d).sqrt();
+                        if best.is_none_or(|(b, _, _)| dd < b) {
+                            best = Some((dd, j, k));
+                        }
+                    }
+                }
+                match best {
+                    Some((_, j, k)) => vec![(j, k, *w * ws)],
+                    None => return bad("the structure has no joints".into()),
+                }
+            }
+            (Some(_), None, Width::PerPoint(_)) => {
+                return bad("a crack located by \"at\" takes one width".into())
+            }
+            (None, Some(j), w) => {
+                let Some(jt) = self.joints.get(j) else {
+                    return bad(format!(
+                        "joint {j} does not exist (the structure has {} joints)",
+                        self.joints.len()
+                    ));
+                };
+                let n = jt.points.len();
+                match w {
+                    Width::One(w) => (0..n).map(|k| (j, k, *w * ws)).collect(),
+                    Width::PerPoint(v) => {
+                        if v.len() != n {
+                            return bad(format!(
+                                "joint {j} has {n} points, {} widths given",
+                                v.len()
+                            ));
+                        }
+                        v.iter().enumerate().map(|(k, &w)| (j, k, w * ws)).collect()
+                    }
+                }
+            }
+            _ => return bad("give exactly one of \"at\" and \"joint\"".into()),
+        })
+    }
+    fn profile_motions(&self, name: &str, _p: &Profile) -> Result<Vec<Vec<f64>>> {
+        Err(Error::Request(format!(
+            "unknown '{name}': a settlement profile as unknown applies to 2D models; on a 3D model give the supports' components (NAME=u,v,w,…)"
+        )))
+    }
+}
+
+/// The position of every collocation point, in the kinematic map's order.
+fn point_positions<S: Assembly>(st: &S) -> Vec<Vec<f64>> {
+    st.contact_joints()
+        .iter()
+        .flat_map(|j| j.points.iter().map(|(x, _)| x.as_ref().to_vec()))
+        .collect()
 }
 
 impl Unknown {
     /// One component shared by the supports `names` (one support, or a set of foundation
     /// segments settling together), named `label.component`.
-    pub fn supports(
-        st: &Structure,
+    pub fn supports<S: Assembly>(
+        st: &S,
         label: &str,
         names: &[String],
         component: Component,
         lower: Option<f64>,
         upper: Option<f64>,
     ) -> Result<Unknown> {
-        let ns = st.supports.len();
-        let mut unit = vec![[0.0; 3]; ns];
+        let ns = st.num_supports();
+        let dofs = <S::D as Dim>::DOFS;
+        let Some(index) = component.index_in(dofs) else {
+            return Err(Error::Request(format!(
+                "unknown '{label}': '{}' is not a component of a {} support motion ({})",
+                component.name(),
+                if dofs == 3 { "2D" } else { "3D" },
+                if dofs == 3 {
+                    "u, v, theta"
+                } else {
+                    "u, v, w, theta_x, theta_y, theta_z"
+                }
+            )));
+        };
+        let mut unit = vec![vec![0.0; dofs]; ns];
         if names.is_empty() {
             return Err(Error::Request(format!(
                 "unknown '{label}': no support given"
             )));
         }
         for n in names {
-            let Some(s) = st.supports.iter().position(|s| &s.name == n) else {
-                let known: Vec<&str> = st
-                    .supports
-                    .iter()
-                    .map(|s| s.name.as_str())
-                    .take(12)
-                    .collect();
+            let Some(s) = (0..ns).position(|s| st.support_name(s) == n) else {
+                let known: Vec<&str> = (0..ns).map(|s| st.support_name(s)).take(12).collect();
                 return Err(Error::Request(format!(
                     "unknown '{label}': no support named '{n}' (the model has: {}{})",
                     known.join(", "),
                     if ns > 12 { ", …" } else { "" }
                 )));
             };
-            unit[s][component.index()] = 1.0;
+            unit[s][index] = 1.0;
         }
         Unknown::new(
             format!("{label}.{}", component.name()),
             unit,
-            vec![[0.0; 3]; ns],
+            vec![vec![0.0; dofs]; ns],
             lower,
             upper,
         )
@@ -355,8 +559,9 @@ impl Unknown {
     /// to 1; the motions are `at0`'s plus the unknown times the difference (profiles are linear
     /// in their values, so this is exact when only values differ). Each support takes the
     /// profile's value and slope at its centroid (as [`crate::settlement_input::apply_profile`]).
-    pub fn profile(
-        st: &Structure,
+    /// 2D models only.
+    pub fn profile<S: IdentifyGeometry>(
+        st: &S,
         name: &str,
         at0: &Profile,
         at1: &Profile,
@@ -366,20 +571,11 @@ impl Unknown {
         let (p0, p1) = (at0, at1);
         p0.validate()?;
         p1.validate()?;
-        let motion = |p: &Profile| -> Vec<[f64; 3]> {
-            st.supports
-                .iter()
-                .map(|s| {
-                    let (v, slope) = p.eval(s.centroid[0]);
-                    [0.0, v, slope]
-                })
-                .collect()
-        };
-        let (m0, m1) = (motion(p0), motion(p1));
-        let unit: Vec<[f64; 3]> = m0
+        let (m0, m1) = (st.profile_motions(name, p0)?, st.profile_motions(name, p1)?);
+        let unit: Vec<Vec<f64>> = m0
             .iter()
             .zip(&m1)
-            .map(|(a, b)| [b[0] - a[0], b[1] - a[1], b[2] - a[2]])
+            .map(|(a, b)| a.iter().zip(b).map(|(x, y)| y - x).collect())
             .collect();
         if unit.iter().all(|u| u.iter().all(|x| *x == 0.0)) {
             return Err(Error::Request(format!(
@@ -391,8 +587,8 @@ impl Unknown {
 
     fn new(
         name: String,
-        unit: Vec<[f64; 3]>,
-        base: Vec<[f64; 3]>,
+        unit: Vec<Vec<f64>>,
+        base: Vec<Vec<f64>>,
         lower: Option<f64>,
         upper: Option<f64>,
     ) -> Result<Unknown> {
@@ -422,140 +618,9 @@ impl Unknown {
 
 // --- Result -------------------------------------------------------------------------------
 
-/// Whether a motion reproducing the pattern exists.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum IdentifyStatus {
-    /// A motion whose settlement mechanism opens exactly the observed pattern was found.
-    Identified,
-    /// No motion within the bounds makes the observed pattern a settlement mechanism; the
-    /// closest motion is reported.
-    Inconsistent,
-}
-
-/// One unknown's identified value and identifiability.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct UnknownResult {
-    pub name: String,
-    pub value: f64,
-    pub lower_bound: Option<f64>,
-    pub upper_bound: Option<f64>,
-    /// Smallest and largest value over every motion reproducing the pattern with each width
-    /// within its tolerance (None: the range LPs were not run, or no motion is within
-    /// tolerance). Unbounded ends are `null` in `range_min`/`range_max`.
-    pub range_min: Option<f64>,
-    pub range_max: Option<f64>,
-    pub range_computed: bool,
-    pub identifiable: bool,
-    /// One sentence on identifiability.
-    pub note: String,
-}
-
-/// A support's identified motion (base plus unknowns).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SupportMotion {
-    pub support: String,
-    pub u: f64,
-    pub v: f64,
-    pub theta: f64,
-}
-
-/// One observed point against the prediction.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ObservationResult {
-    /// Index in `cracks`.
-    pub crack: usize,
-    pub joint: usize,
-    /// Point of the joint (0: start, 1: end).
-    pub point: usize,
-    pub x: f64,
-    pub y: f64,
-    pub observed: f64,
-    pub predicted: f64,
-    /// predicted − observed (m).
-    pub misfit: f64,
-    pub tolerance: f64,
-    pub within_tolerance: bool,
-}
-
-/// A predicted crack (a point that opens).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct PredictedCrack {
-    pub joint: usize,
-    pub point: usize,
-    pub x: f64,
-    pub y: f64,
-    pub opening: f64,
-    /// `open`, `closed` (observed closed: a contradiction) or `unobserved`.
-    pub observed: String,
-}
-
-/// The check that the forward settlement analysis of the identified motion reproduces the
-/// prediction.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Reproduction {
-    /// Forward analysis certified (status mechanism, duality gap within tolerance).
-    pub forward_certified: bool,
-    /// Work of the dead loads: forward optimum and on the predicted mechanism (kN·m).
-    pub forward_work: Option<f64>,
-    pub predicted_work: f64,
-    /// |forward − predicted| / max(|forward|, floor).
-    pub work_relative_difference: Option<f64>,
-    /// Largest |forward opening − predicted opening| over all points (m).
-    pub max_opening_difference: Option<f64>,
-    /// Whether the forward analysis opens exactly the predicted points.
-    pub same_open_points: bool,
-    /// Forward certified, same work, same open points and openings within 1e-6 of the largest.
-    pub reproduces: bool,
-    pub message: String,
-}
-
-/// Result of an inverse settlement analysis.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct IdentifyResult {
-    pub status: IdentifyStatus,
-    pub message: String,
-    pub unknowns: Vec<UnknownResult>,
-    /// Support motions (m, rad) of the identified (or closest) motion; moving supports only.
-    pub support_motions: Vec<SupportMotion>,
-    pub observations: Vec<ObservationResult>,
-    /// Σ |misfit| / tolerance over the observations.
-    pub total_misfit: f64,
-    /// The same over every observed point, the implicitly closed ones included (equal to
-    /// `total_misfit` when identified: closed points are closed by construction).
-    pub misfit_all_points: f64,
-    pub max_misfit: f64,
-    pub predicted_cracks: Vec<PredictedCrack>,
-    /// Whether the active set at unobserved points or Coulomb rows had to be fixed after a
-    /// first solve.
-    pub active_set_fixed: bool,
-    pub certificate: Option<Reproduction>,
-    /// The local minima of the misfit found (the reported motion first, then separate minima,
-    /// least misfit first; at most five).
-    #[serde(default)]
-    pub minima: Vec<Minimum>,
-    /// Whether the misfit landscape was explored beyond the LP candidates (a scan of
-    /// directions and a compass search on forward analyses; not on very large models).
-    #[serde(default)]
-    pub landscape_explored: bool,
-    /// The forward settlement analysis of the identified (or closest) motion.
-    pub forward: SettlementResult,
-}
-
-/// A local minimum of the misfit (Σ |forward opening − observed| / tolerance over every
-/// observed point).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Minimum {
-    /// The unknowns' values, in the order of `unknowns`.
-    pub values: Vec<f64>,
-    pub misfit: f64,
-    /// Its forward settlement opens exactly the observed crack pattern.
-    pub opens_pattern: bool,
-    /// Every observed point within its tolerance.
-    pub within_tolerance: bool,
-    /// The misfit is equally low over a range of motions around it (not unique).
-    pub flat: bool,
-}
+// The result types live in `crate::result::identify` (results are read by views, which import
+// no algorithm module); re-exported here for compatibility.
+pub use crate::result::identify::*;
 
 /// Options of [`identify`].
 #[derive(Clone, Copy, Debug)]
@@ -579,11 +644,13 @@ impl Default for IdentifyOptions {
 
 // --- The analysis -------------------------------------------------------------------------
 
-fn motions_of(st: &Structure, unknowns: &[Unknown], a: &[f64]) -> Vec<[f64; 3]> {
-    let mut m: Vec<[f64; 3]> = st.supports.iter().map(|s| s.motion).collect();
+fn motions_of<S: Assembly>(st: &S, unknowns: &[Unknown], a: &[f64]) -> Vec<Vec<f64>> {
+    let mut m: Vec<Vec<f64>> = (0..st.num_supports())
+        .map(|s| st.support_motion(s).to_vec())
+        .collect();
     for (q, u) in unknowns.iter().enumerate() {
         for (s, mm) in m.iter_mut().enumerate() {
-            for c in 0..3 {
+            for c in 0..mm.len() {
                 mm[c] += u.base[s][c] + a[q] * u.unit[s][c];
             }
         }
@@ -619,12 +686,14 @@ fn same_misfit(a: f64, b: f64) -> bool {
 
 /// Everything the misfit of a motion depends on: the structure with its known motions, the
 /// unknowns and the observations resolved to points.
-struct Setup<'a> {
-    st: &'a Structure,
+struct Setup<'a, S: IdentifyGeometry> {
+    st: &'a S,
     unknowns: &'a [Unknown],
     opts: &'a IdentifyOptions,
     /// The structure with the base motions (the unknowns at zero).
-    st0: Structure,
+    st0: S,
+    /// Position of every collocation point of `st0`, in the map's order.
+    positions: Vec<Vec<f64>>,
     /// Its kinematic map (point numbering is the same for every motion).
     map: KinematicMap,
     roles: Vec<PointRole>,
@@ -642,14 +711,14 @@ struct Setup<'a> {
     homogeneous: bool,
     /// Full evaluations done (candidates often coincide to round-off: one evaluation serves
     /// motions within 1e-8 of each other, relative).
-    cache: std::cell::RefCell<Vec<Eval>>,
+    cache: std::cell::RefCell<Vec<Eval<S::D>>>,
 }
 
 /// The forward settlement analysis of one motion, judged against the observations.
 #[derive(Clone)]
-struct Eval {
+struct Eval<D: Spatial> {
     a: Vec<f64>,
-    forward: SettlementResult,
+    forward: SettlementResult<D>,
     open: Vec<f64>,
     /// Σ |opening − w| / τ over every observed point (∞ when the forward analysis finds no
     /// mechanism).
@@ -662,7 +731,7 @@ struct Eval {
     extra: Vec<usize>,
 }
 
-impl Eval {
+impl<D: Spatial> Eval<D> {
     /// The forward analysis opens exactly the observed crack pattern.
     fn opens_pattern(&self) -> bool {
         self.misfit.is_finite() && self.shut.is_empty() && self.extra.is_empty()
@@ -675,27 +744,31 @@ struct Prediction {
     work: f64,
 }
 
-struct Candidate {
-    eval: Eval,
+struct Candidate<D: Spatial> {
+    eval: Eval<D>,
     prediction: Option<Prediction>,
 }
 
-impl<'a> Setup<'a> {
+impl<'a, S: IdentifyGeometry> Setup<'a, S> {
     fn new(
-        st: &'a Structure,
+        st: &'a S,
         obs: &Observations,
         unknowns: &'a [Unknown],
         opts: &'a IdentifyOptions,
-    ) -> Result<Setup<'a>> {
+    ) -> Result<Setup<'a, S>> {
         if unknowns.is_empty() {
             return Err(Error::Request(
                 "identify: give at least one unknown support motion".into(),
             ));
         }
         for u in unknowns {
-            if u.unit.len() != st.supports.len() || u.base.len() != st.supports.len() {
+            let dofs = <S::D as Dim>::DOFS;
+            if u.unit.len() != st.num_supports()
+                || u.base.len() != st.num_supports()
+                || u.unit.iter().chain(&u.base).any(|m| m.len() != dofs)
+            {
                 return Err(Error::Request(format!(
-                    "unknown '{}': one motion per support expected",
+                    "unknown '{}': one motion of {dofs} components per support expected",
                     u.name
                 )));
             }
@@ -753,12 +826,15 @@ impl<'a> Setup<'a> {
                 )
             })
             .collect();
-        let homogeneous = st0.supports.iter().all(|s| s.motion == [0.0; 3]);
+        let homogeneous =
+            (0..st0.num_supports()).all(|k| st0.support_motion(k).iter().all(|x| *x == 0.0));
+        let positions = point_positions(&st0);
         Ok(Setup {
             st,
             unknowns,
             opts,
             st0,
+            positions,
             map,
             roles,
             pobs,
@@ -785,9 +861,9 @@ impl<'a> Setup<'a> {
     /// [`crate::analysis::settlement::settle_with`] for the force-only form, as `voussoir settle
     /// --raw` reports it) or, when that is not unique, among the equally optimal ones the one
     /// closest to the observations.
-    fn evaluate(&self, a: &[f64]) -> Result<Eval> {
+    fn evaluate(&self, a: &[f64]) -> Result<Eval<S::D>> {
         let scales = self.scales();
-        let same = |e: &Eval| {
+        let same = |e: &Eval<S::D>| {
             e.a.iter()
                 .zip(a)
                 .zip(&scales)
@@ -806,7 +882,7 @@ impl<'a> Setup<'a> {
     /// face of the motion LP is searched for the optimal mechanism of least misfit (the
     /// settlement mechanism is not always unique: any optimal one is the structure's
     /// settlement; the solver's vertex is an arbitrary choice among them).
-    fn evaluate_with(&self, a: &[f64], closest: bool) -> Result<Eval> {
+    fn evaluate_with(&self, a: &[f64], closest: bool) -> Result<Eval<S::D>> {
         let a: Vec<f64> = a.iter().map(|v| v + 0.0).collect();
         let st_a = self
             .st
@@ -863,14 +939,14 @@ impl<'a> Setup<'a> {
 
     /// Evaluate, counting a failed forward analysis (a solver failure at an extreme motion) as
     /// no candidate: the exploration only looks for better motions.
-    fn try_evaluate(&self, a: &[f64]) -> Option<Eval> {
+    fn try_evaluate(&self, a: &[f64]) -> Option<Eval<S::D>> {
         self.evaluate(a).ok().filter(|e| e.misfit.is_finite())
     }
 
     /// [`Setup::try_evaluate`] on the solver's own mechanism (no search of the optimal face):
     /// the exploration's steps, an upper bound of the misfit; the minima it finds are
     /// evaluated in full.
-    fn try_quick(&self, a: &[f64]) -> Option<Eval> {
+    fn try_quick(&self, a: &[f64]) -> Option<Eval<S::D>> {
         self.evaluate_with(a, false)
             .ok()
             .filter(|e| e.misfit.is_finite())
@@ -881,7 +957,7 @@ impl<'a> Setup<'a> {
     /// points. `None` when the solver's own mechanism fits exactly or is no worse.
     fn closest_optimal_mechanism(
         &self,
-        st_a: &Structure,
+        st_a: &S,
         map_a: &KinematicMap,
         sol: &SettlementSolution,
     ) -> Result<Option<Vec<f64>>> {
@@ -955,8 +1031,8 @@ impl<'a> Setup<'a> {
 /// the unknowns' `values` make, against the observations — `Σ |opening − w| / τ` over every
 /// observed point, the implicitly closed ones at `w = 0` with the global tolerance, unobserved
 /// points left out. `f64::INFINITY` when the forward analysis finds no mechanism.
-pub fn misfit(
-    st: &Structure,
+pub fn misfit<S: IdentifyGeometry>(
+    st: &S,
     obs: &Observations,
     unknowns: &[Unknown],
     values: &[f64],
@@ -975,14 +1051,14 @@ pub fn misfit(
 
 /// The LPs on the observed pattern (the optimality conditions of the forward analysis with
 /// the observed complementarity).
-struct PatternLps<'s, 'a> {
-    s: &'s Setup<'a>,
+struct PatternLps<'s, 'a, S: IdentifyGeometry> {
+    s: &'s Setup<'a, S>,
     fp: ForceProgram,
     dead: Vec<f64>,
     activity: Activity,
 }
 
-impl PatternLps<'_, '_> {
+impl<S: IdentifyGeometry> PatternLps<'_, '_, S> {
     fn program(&self, mode: MisfitMode) -> IdentifyProgram {
         IdentifyProgram::new(
             &self.s.map,
@@ -1003,7 +1079,7 @@ impl PatternLps<'_, '_> {
 
     /// The LP's motion, evaluated by the forward analysis, with the LP's own mechanism as the
     /// prediction to compare.
-    fn candidate(&self, ip: &IdentifyProgram, sol: &LpSolution) -> Result<Candidate> {
+    fn candidate(&self, ip: &IdentifyProgram, sol: &LpSolution) -> Result<Candidate<S::D>> {
         let a = ip.amplitudes(&sol.x);
         let d = ip.motion(&sol.x);
         let st_id = self
@@ -1021,19 +1097,19 @@ impl PatternLps<'_, '_> {
 }
 
 /// One local minimum of the misfit found by the exploration.
-struct Found {
-    eval: Eval,
+struct Found<D: Spatial> {
+    eval: Eval<D>,
     /// The misfit is equally low over a range of motions around it (a plateau).
     flat: bool,
 }
 
 /// Identify the unknown support motions from the observed crack pattern.
-pub fn identify(
-    st: &Structure,
+pub fn identify<S: IdentifyGeometry>(
+    st: &S,
     obs: &Observations,
     unknowns: &[Unknown],
     opts: &IdentifyOptions,
-) -> Result<IdentifyResult> {
+) -> Result<IdentifyResult<S::D>> {
     let s = Setup::new(st, obs, unknowns, opts)?;
     let dead = s.st0.load_vector(false);
     let fp = settlement_force_program(&s.map, &dead);
@@ -1062,7 +1138,7 @@ pub fn identify(
     }
     let pattern_feasible = first.is_some();
     // Candidates in order of preference between equal misfits.
-    let mut cands: Vec<Candidate> = Vec::new();
+    let mut cands: Vec<Candidate<S::D>> = Vec::new();
     if let Some((ip, sol)) = &first {
         // Equally good least-absolute fits are common (a flat valley of the misfit): of those,
         // the most balanced one (least largest misfit of one crack).
@@ -1101,7 +1177,7 @@ pub fn identify(
         .fold(f64::INFINITY, f64::min);
     // 2. Unless a candidate fits exactly: the closest admissible motion of the relaxed
     // pattern, and an exploration of the misfit landscape on forward analyses.
-    let mut found: Vec<Found> = Vec::new();
+    let mut found: Vec<Found<S::D>> = Vec::new();
     let mut explored = false;
     if lp_best > EXACT_MISFIT {
         let cp = ClosestProgram::new(&s.map, &s.unit, &s.bounds, &s.targets);
@@ -1136,14 +1212,14 @@ pub fn identify(
         .chain(found.iter().map(|f| &f.eval))
         .map(|e| e.misfit)
         .fold(f64::INFINITY, f64::min);
-    let listed = |e: &Eval| -> f64 {
+    let listed = |e: &Eval<S::D>| -> f64 {
         s.pobs
             .iter()
             .map(|o| (e.open[o.point] - o.width).abs() / o.tolerance)
             .sum()
     };
-    let better = |x: &Eval, y: &Eval| -> std::cmp::Ordering {
-        let key = |e: &Eval| {
+    let better = |x: &Eval<S::D>, y: &Eval<S::D>| -> std::cmp::Ordering {
+        let key = |e: &Eval<S::D>| {
             (
                 !same_misfit(e.misfit, least),
                 !e.within,
@@ -1160,7 +1236,7 @@ pub fn identify(
             }
         })
     };
-    let pick = |evals: Vec<&Eval>| -> Option<usize> {
+    let pick = |evals: Vec<&Eval<S::D>>| -> Option<usize> {
         (0..evals.len()).reduce(|i, j| {
             if better(evals[j], evals[i]).is_lt() {
                 j
@@ -1204,7 +1280,7 @@ pub fn identify(
     minima.truncate(5);
     // The least-misfit motions (other than the best) that fit every width within its
     // tolerance, and that open the observed pattern.
-    let witness = |f: &dyn Fn(&Eval) -> bool| {
+    let witness = |f: &dyn Fn(&Eval<S::D>) -> bool| {
         cands
             .iter()
             .map(|c| &c.eval)
@@ -1213,8 +1289,8 @@ pub fn identify(
             .min_by(|a, b| a.misfit.total_cmp(&b.misfit))
     };
     let witnesses = Witnesses {
-        within: witness(&|e: &Eval| e.within),
-        pattern: witness(&|e: &Eval| e.opens_pattern()),
+        within: witness(&|e: &Eval<S::D>| e.within),
+        pattern: witness(&|e: &Eval<S::D>| e.opens_pattern()),
         // Whether some motion with the observed pattern fits every width (the LP's answer).
         within_lp: pattern_feasible.then_some(ranges[0].feasible),
     };
@@ -1232,9 +1308,9 @@ pub fn identify(
 }
 
 /// Other motions worth naming in the message.
-struct Witnesses<'e> {
-    within: Option<&'e Eval>,
-    pattern: Option<&'e Eval>,
+struct Witnesses<'e, D: Spatial> {
+    within: Option<&'e Eval<D>>,
+    pattern: Option<&'e Eval<D>>,
     within_lp: Option<bool>,
 }
 
@@ -1298,7 +1374,10 @@ struct Range {
 
 /// The ranges (every unknown when `all`, else the first one only, not reported: to find one
 /// motion within tolerance) and the mean motion of the LPs that reached an optimum.
-fn within_ranges(lps: &PatternLps, all: bool) -> Result<(Vec<Range>, Option<Vec<f64>>)> {
+fn within_ranges<S: IdentifyGeometry>(
+    lps: &PatternLps<S>,
+    all: bool,
+) -> Result<(Vec<Range>, Option<Vec<f64>>)> {
     let n = lps.s.unknowns.len();
     let mut ranges = vec![Range::default(); n];
     let mut sum = vec![0.0; n];
@@ -1338,7 +1417,7 @@ fn within_ranges(lps: &PatternLps, all: bool) -> Result<(Vec<Range>, Option<Vec<
     Ok((ranges, mean))
 }
 
-fn minimum(e: &Eval, flat: bool) -> Minimum {
+fn minimum<D: Spatial>(e: &Eval<D>, flat: bool) -> Minimum {
     Minimum {
         values: e.a.clone(),
         misfit: e.misfit,
@@ -1360,7 +1439,7 @@ enum Relation {
     Separate,
 }
 
-fn relation(s: &Setup, a: &Eval, b: &Eval) -> Result<Relation> {
+fn relation<S: IdentifyGeometry>(s: &Setup<S>, a: &Eval<S::D>, b: &Eval<S::D>) -> Result<Relation> {
     let scales = s.scales();
     let dist =
         a.a.iter()
@@ -1393,10 +1472,13 @@ fn relation(s: &Setup, a: &Eval, b: &Eval) -> Result<Relation> {
 /// openings scale with the amplitude); then a compass search from the scan's local minima and
 /// from the best candidate. Returns the local minima found, least misfit first, separate ones
 /// only.
-fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
+fn explore<S: IdentifyGeometry>(
+    s: &Setup<S>,
+    cands: &[Candidate<S::D>],
+) -> Result<Vec<Found<S::D>>> {
     let n = s.unknowns.len();
     let scales = s.scales();
-    let mut found: Vec<Found> = Vec::new();
+    let mut found: Vec<Found<S::D>> = Vec::new();
     if s.homogeneous && n <= 3 {
         let rays = ray_scan(s, &scales)?;
         for (i, flat) in ray_minima(&rays, n) {
@@ -1443,7 +1525,7 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
     }
     found.sort_by(|a, b| a.eval.misfit.total_cmp(&b.eval.misfit));
     // Keep separate minima only; an equally low one in the same basin makes it flat.
-    let mut kept: Vec<Found> = Vec::new();
+    let mut kept: Vec<Found<S::D>> = Vec::new();
     for f in found {
         let mut distinct = true;
         for k in kept.iter_mut() {
@@ -1464,7 +1546,7 @@ fn explore(s: &Setup, cands: &[Candidate]) -> Result<Vec<Found>> {
 
 /// Golden-section search on the angle of a two-unknown direction, between the scan's
 /// neighbours of `ray` (±5°), each angle at its exact best amplitude.
-fn refine_angle(s: &Setup, scales: &[f64], ray: &Ray) -> Vec<f64> {
+fn refine_angle<S: IdentifyGeometry>(s: &Setup<S>, scales: &[f64], ray: &Ray) -> Vec<f64> {
     let phi0 = ray.dir[1].atan2(ray.dir[0]);
     let step = std::f64::consts::TAU / 72.0;
     let at = |phi: f64| -> Option<Ray> { ray_at(s, scales, vec![phi.cos(), phi.sin()]) };
@@ -1546,7 +1628,7 @@ fn directions(n: usize) -> Vec<Vec<f64>> {
 }
 
 /// Each direction's best amplitude within the bounds: one forward analysis per direction.
-fn ray_scan(s: &Setup, scales: &[f64]) -> Result<Vec<Ray>> {
+fn ray_scan<S: IdentifyGeometry>(s: &Setup<S>, scales: &[f64]) -> Result<Vec<Ray>> {
     Ok(directions(s.unknowns.len())
         .into_iter()
         .filter_map(|dir| ray_at(s, scales, dir))
@@ -1555,7 +1637,7 @@ fn ray_scan(s: &Setup, scales: &[f64]) -> Result<Vec<Ray>> {
 
 /// The best amplitude along one direction (None: no amplitude within the bounds, or the
 /// forward analysis failed).
-fn ray_at(s: &Setup, scales: &[f64], dir: Vec<f64>) -> Option<Ray> {
+fn ray_at<S: IdentifyGeometry>(s: &Setup<S>, scales: &[f64], dir: Vec<f64>) -> Option<Ray> {
     let a1: Vec<f64> = dir.iter().zip(scales).map(|(d, sc)| d * sc).collect();
     // The amplitudes t·a1 within the bounds.
     let (mut lo, mut hi) = (0.0f64, f64::INFINITY);
@@ -1708,7 +1790,7 @@ fn ray_minima(rays: &[Ray], n: usize) -> Vec<(usize, bool)> {
 
 /// A compass search on forward analyses from `start`: steps along each unknown and (up to
 /// three unknowns) the diagonals, in characteristic units, halved when no step improves.
-fn compass(s: &Setup, start: Eval, scales: &[f64]) -> Eval {
+fn compass<S: IdentifyGeometry>(s: &Setup<S>, start: Eval<S::D>, scales: &[f64]) -> Eval<S::D> {
     let n = s.unknowns.len();
     let mut dirs: Vec<Vec<f64>> = Vec::new();
     for q in 0..n {
@@ -1772,18 +1854,18 @@ fn compass(s: &Setup, start: Eval, scales: &[f64]) -> Eval {
 
 /// Build the result for the chosen motion.
 #[allow(clippy::too_many_arguments)]
-fn result(
-    s: &Setup,
+fn result<S: IdentifyGeometry>(
+    s: &Setup<S>,
     ranges: &[Range],
-    best: Eval,
+    best: Eval<S::D>,
     prediction: Option<Prediction>,
     minima: Vec<Minimum>,
     explored: bool,
     pattern_feasible: bool,
     active_set_fixed: bool,
-    witnesses: Witnesses,
-) -> Result<IdentifyResult> {
-    let (st0, map) = (&s.st0, &s.map);
+    witnesses: Witnesses<S::D>,
+) -> Result<IdentifyResult<S::D>> {
+    let (st0, map) = (&s.positions, &s.map);
     let st_best =
         s.st.with_support_motions(&motions_of(s.st, s.unknowns, &best.a));
     let (observations, total, maxm) = compare(st0, map, &s.pobs, &best.open);
@@ -1961,8 +2043,16 @@ impl Unknown {
     /// The kind of length of this unknown's value, for the summaries ([`crate::lengths`]): a
     /// rotation (only the supports' θ move with it), else a translation.
     pub fn length(&self) -> crate::lengths::Length {
-        let rotation = self.unit.iter().all(|m| m[0] == 0.0 && m[1] == 0.0)
-            && self.unit.iter().any(|m| m[2] != 0.0);
+        // The translations are the first half of a 3D motion, the first two of a 2D one.
+        let split = |m: &Vec<f64>| if m.len() == 6 { 3 } else { 2 };
+        let rotation = self
+            .unit
+            .iter()
+            .all(|m| m[..split(m)].iter().all(|x| *x == 0.0))
+            && self
+                .unit
+                .iter()
+                .any(|m| m[split(m)..].iter().any(|x| *x != 0.0));
         if rotation {
             crate::lengths::Length::Rotation
         } else {
@@ -1973,7 +2063,7 @@ impl Unknown {
 
 /// `name = value` for each unknown, in the summaries' units ([`crate::lengths`]): cm for
 /// translations, mrad for rotations.
-fn values_text(s: &Setup, a: &[f64]) -> String {
+fn values_text<S: IdentifyGeometry>(s: &Setup<S>, a: &[f64]) -> String {
     let parts: Vec<String> = s
         .unknowns
         .iter()
@@ -2041,7 +2131,7 @@ fn open_complementarity(
 }
 
 fn compare(
-    st: &Structure,
+    st: &[Vec<f64>],
     map: &KinematicMap,
     pobs: &[PointObs],
     open: &[f64],
@@ -2052,7 +2142,7 @@ fn compare(
         .iter()
         .map(|o| {
             let pr = map.points[o.point];
-            let p = st.joints[pr.joint].points[pr.index].x;
+            let p = &st[o.point];
             let predicted = open[o.point];
             let misfit = predicted - o.width;
             total += misfit.abs() / o.tolerance;
@@ -2063,6 +2153,7 @@ fn compare(
                 point: pr.index,
                 x: p[0],
                 y: p[1],
+                z: p.get(2).copied(),
                 observed: o.width,
                 predicted,
                 misfit,
@@ -2075,7 +2166,7 @@ fn compare(
 }
 
 fn predicted(
-    st: &Structure,
+    st: &[Vec<f64>],
     map: &KinematicMap,
     open: &[f64],
     roles: &[PointRole],
@@ -2085,12 +2176,13 @@ fn predicted(
         .filter(|&k| open[k] > 1e-7 * omax && map.gap[k] <= 0.0)
         .map(|k| {
             let pr = map.points[k];
-            let p = st.joints[pr.joint].points[pr.index].x;
+            let p = &st[k];
             PredictedCrack {
                 joint: pr.joint,
                 point: pr.index,
                 x: p[0],
                 y: p[1],
+                z: p.get(2).copied(),
                 opening: open[k],
                 observed: match roles[k] {
                     PointRole::Open { .. } => "open",
@@ -2103,10 +2195,10 @@ fn predicted(
         .collect()
 }
 
-fn reproduction(
-    st: &Structure,
+fn reproduction<D: Spatial>(
+    st: &[Vec<f64>],
     map: &KinematicMap,
-    forward: &SettlementResult,
+    forward: &SettlementResult<D>,
     open: &[f64],
     predicted_work: f64,
 ) -> Reproduction {
@@ -2164,21 +2256,18 @@ fn reproduction(
     }
 }
 
-fn support_motions(st: &Structure) -> Vec<SupportMotion> {
-    st.supports
-        .iter()
-        .filter(|s| s.motion.iter().any(|x| *x != 0.0))
-        .map(|s| SupportMotion {
-            support: s.name.clone(),
-            u: s.motion[0],
-            v: s.motion[1],
-            theta: s.motion[2],
+fn support_motions<S: Assembly>(st: &S) -> Vec<SupportMotion<S::D>> {
+    (0..st.num_supports())
+        .filter(|&k| st.support_motion(k).iter().any(|x| *x != 0.0))
+        .map(|k| SupportMotion {
+            support: st.support_name(k).to_string(),
+            motion: <S::D as Spatial>::motion(st.support_motion(k)),
         })
         .collect()
 }
 
 /// Openings of a forward result, by point (0 when it has no mechanism).
-fn forward_openings(map: &KinematicMap, forward: &SettlementResult) -> Vec<f64> {
+fn forward_openings<D: Spatial>(map: &KinematicMap, forward: &SettlementResult<D>) -> Vec<f64> {
     let mut open = vec![0.0; map.num_points()];
     if forward.status == SettlementStatus::Mechanism {
         for (j, jr) in forward.joints.iter().enumerate() {

@@ -3,7 +3,8 @@
 //!
 //! ## State and step
 //!
-//! The state is a [`Structure`]: the current block positions and, at every collocation point,
+//! The state is a structure ([`Structure`] in 2D, [`Structure3d`] in 3D: the analysis is written
+//! once over [`Assembly`] and [`IncrementalGeometry`]): the current block positions and, at every collocation point,
 //! its gap (0: in contact; > 0: open, carrying no force). A step:
 //!
 //! 1. **Mechanism.** The classic limit LP on the current geometry ([`WarmLimit`], the same LP as
@@ -40,66 +41,284 @@
 use crate::analysis::limit::LimitStatus;
 use crate::analysis::paths::{SettlementPath, WarmLimit};
 use crate::analysis::settlement::SettlementStatus;
+use crate::dim::{Dim, Three};
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
-use crate::geometry::{self, small_displacement, RigidMotion};
+use crate::geometry::{self, RigidMotion};
 use crate::lp::SolverOptions;
-use crate::model::Point;
 use crate::reporting::report;
 pub use crate::result::incremental::*;
-use crate::result::Geometry;
 use crate::structure::OPEN_TOLERANCE;
-use crate::structure::{Assembly, Structure};
+use crate::structure::{Assembly, Structure, Structure3d};
 
-impl Control {
+/// What the incremental analysis needs of a structure beyond [`Assembly`]: where its blocks
+/// are (to attach the control point and check the step against the structure's size), how a
+/// finite rigid motion moves a point, and setting one point's gap. Implemented for the 2D
+/// [`Structure`] and the 3D [`Structure3d`]; the analysis itself is written once over it.
+pub trait IncrementalGeometry: Assembly {
+    /// Distance (m) from `x` to block `i`: 0 inside it (2D: strictly inside the polygon; 3D:
+    /// inside the polyhedron), else the distance to its boundary.
+    fn distance_to_block(&self, i: usize, x: <Self::D as Dim>::Vector) -> f64;
+    /// The blocks' bounding-box diagonal and largest coordinate magnitude (m).
+    fn extent(&self) -> (f64, f64);
+    /// Reference point (centroid) of block `i`: where its DOFs act.
+    fn block_reference(&self, i: usize) -> <Self::D as Dim>::Vector;
+    /// Point `x` of block `i` moved by the finite rigid motion `s·d_i` (the motion
+    /// [`Assembly::deformed`] gives the block).
+    fn move_point(
+        &self,
+        i: usize,
+        d: &[f64],
+        s: f64,
+        x: <Self::D as Dim>::Vector,
+    ) -> <Self::D as Dim>::Vector;
+    /// Euclidean length of a vector.
+    fn norm(v: <Self::D as Dim>::Vector) -> f64;
+    /// Position and gap of point `k` of joint `j`.
+    fn joint_point(&self, j: usize, k: usize) -> (<Self::D as Dim>::Vector, f64);
+    /// Number of points of joint `j`.
+    fn joint_points(&self, j: usize) -> usize;
+    fn set_gap(&mut self, j: usize, k: usize, gap: f64);
+    /// The cracks the structure carries: its points with a gap, widths the gaps (m).
+    fn gap_cracks(&self) -> Vec<<Self::D as crate::result::Spatial>::Crack>;
+}
+
+impl IncrementalGeometry for Structure {
+    fn distance_to_block(&self, i: usize, x: [f64; 2]) -> f64 {
+        let p = &self.blocks[i].polygon;
+        if geometry::strictly_inside(x, p, 0.0) {
+            0.0
+        } else {
+            (0..p.len())
+                .map(|k| geometry::point_segment_distance(x, p[k], p[(k + 1) % p.len()]))
+                .fold(f64::INFINITY, f64::min)
+        }
+    }
+    fn extent(&self) -> (f64, f64) {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for q in self.blocks.iter().flat_map(|b| b.polygon.iter()) {
+            for c in 0..2 {
+                lo[c] = lo[c].min(q[c]);
+                hi[c] = hi[c].max(q[c]);
+            }
+        }
+        let far = lo.iter().chain(&hi).fold(0.0f64, |m, v| m.max(v.abs()));
+        ((hi[0] - lo[0]).hypot(hi[1] - lo[1]), far)
+    }
+    fn block_reference(&self, i: usize) -> [f64; 2] {
+        self.blocks[i].centroid
+    }
+    fn move_point(&self, i: usize, d: &[f64], s: f64, x: [f64; 2]) -> [f64; 2] {
+        RigidMotion::scaled(
+            self.blocks[i].centroid,
+            [d[3 * i], d[3 * i + 1], d[3 * i + 2]],
+            s,
+        )
+        .apply(x)
+    }
+    fn norm(v: [f64; 2]) -> f64 {
+        geometry::norm(v)
+    }
+    fn joint_point(&self, j: usize, k: usize) -> ([f64; 2], f64) {
+        let p = &self.joints[j].points[k];
+        (p.x, p.gap)
+    }
+    fn joint_points(&self, j: usize) -> usize {
+        self.joints[j].points.len()
+    }
+    fn set_gap(&mut self, j: usize, k: usize, gap: f64) {
+        self.joints[j].points[k].gap = gap;
+    }
+    fn gap_cracks(&self) -> Vec<crate::result::Crack> {
+        crate::reporting::cracks_of_gaps(self)
+    }
+}
+
+impl IncrementalGeometry for Structure3d {
+    fn distance_to_block(&self, i: usize, x: [f64; 3]) -> f64 {
+        let s = &self.blocks[i].shape;
+        if crate::geometry3d::winding_number(&s.vertices, &s.faces, x).abs() > 0.5 {
+            return 0.0;
+        }
+        s.faces
+            .iter()
+            .flat_map(|f| (1..f.len().saturating_sub(1)).map(move |k| (f[0], f[k], f[k + 1])))
+            .map(|(a, b, c)| {
+                point_triangle_distance(x, s.vertices[a], s.vertices[b], s.vertices[c])
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+    fn extent(&self) -> (f64, f64) {
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for q in self.blocks.iter().flat_map(|b| b.shape.vertices.iter()) {
+            for c in 0..3 {
+                lo[c] = lo[c].min(q[c]);
+                hi[c] = hi[c].max(q[c]);
+            }
+        }
+        let far = lo.iter().chain(&hi).fold(0.0f64, |m, v| m.max(v.abs()));
+        let d = Three::sub(hi, lo);
+        (Three::dot(d, d).sqrt(), far)
+    }
+    fn block_reference(&self, i: usize) -> [f64; 3] {
+        self.blocks[i].shape.centroid
+    }
+    fn move_point(&self, i: usize, d: &[f64], s: f64, x: [f64; 3]) -> [f64; 3] {
+        use nalgebra::{Rotation3, Vector3};
+        let c = self.blocks[i].shape.centroid;
+        let m = &d[6 * i..6 * i + 6];
+        let rot = Rotation3::from_scaled_axis(Vector3::new(s * m[3], s * m[4], s * m[5]));
+        let r = rot * Vector3::new(x[0] - c[0], x[1] - c[1], x[2] - c[2]);
+        [
+            c[0] + s * m[0] + r[0],
+            c[1] + s * m[1] + r[1],
+            c[2] + s * m[2] + r[2],
+        ]
+    }
+    fn norm(v: [f64; 3]) -> f64 {
+        Three::dot(v, v).sqrt()
+    }
+    fn joint_point(&self, j: usize, k: usize) -> ([f64; 3], f64) {
+        let p = &self.joints[j].points[k];
+        (p.x, p.gap)
+    }
+    fn joint_points(&self, j: usize) -> usize {
+        self.joints[j].points.len()
+    }
+    fn set_gap(&mut self, j: usize, k: usize, gap: f64) {
+        self.joints[j].points[k].gap = gap;
+    }
+    fn gap_cracks(&self) -> Vec<crate::result::Crack3d> {
+        // The joints as a report lists them (no motion), open where they have a gap.
+        let map = self.kinematic_map();
+        let zeros = vec![0.0; map.num_dofs];
+        let np = map.num_points();
+        let rep = report(
+            self,
+            &map,
+            &zeros,
+            0.0,
+            &vec![0.0; np],
+            &vec![0.0; np * map.tangents_per_point],
+        );
+        let open: Vec<Vec<bool>> = self
+            .joints
+            .iter()
+            .map(|j| j.points.iter().map(|p| p.gap > 0.0).collect())
+            .collect();
+        let widths: Vec<Vec<f64>> = self
+            .joints
+            .iter()
+            .map(|j| j.points.iter().map(|p| p.gap).collect())
+            .collect();
+        self.cracks(&rep.joints, &open, &widths)
+    }
+}
+
+/// Distance from `p` to the triangle `(a, b, c)` (Ericson, Real-Time Collision Detection,
+/// 5.1.5: the closest point by Voronoi regions).
+fn point_triangle_distance(p: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    let (sub, dot) = (Three::sub, Three::dot);
+    let at =
+        |u: f64, v: f64, w: f64| -> [f64; 3] { [0, 1, 2].map(|i| u * a[i] + v * b[i] + w * c[i]) };
+    let dist = |q: [f64; 3]| {
+        let d = sub(p, q);
+        dot(d, d).sqrt()
+    };
+    let (ab, ac, ap) = (sub(b, a), sub(c, a), sub(p, a));
+    let (d1, d2) = (dot(ab, ap), dot(ac, ap));
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return dist(a);
+    }
+    let bp = sub(p, b);
+    let (d3, d4) = (dot(ab, bp), dot(ac, bp));
+    if d3 >= 0.0 && d4 <= d3 {
+        return dist(b);
+    }
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        let v = d1 / (d1 - d3);
+        return dist(at(1.0 - v, v, 0.0));
+    }
+    let cp = sub(p, c);
+    let (d5, d6) = (dot(ab, cp), dot(ac, cp));
+    if d6 >= 0.0 && d5 <= d6 {
+        return dist(c);
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        let w = d2 / (d2 - d6);
+        return dist(at(1.0 - w, 0.0, w));
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+        let w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return dist(at(0.0, 1.0 - w, w));
+    }
+    let denom = va + vb + vc;
+    if !(denom.abs() > 0.0) {
+        // A degenerate triangle: its vertices.
+        return dist(a).min(dist(b)).min(dist(c));
+    }
+    let (v, w) = (vb / denom, vc / denom);
+    dist(at(1.0 - v - w, v, w))
+}
+
+impl<D: crate::result::Spatial> Control<D> {
     /// A control point on `block`; `direction` is normalised.
-    pub fn new(st: &Structure, block: usize, point: Point, direction: Point) -> Result<Control> {
-        if block >= st.blocks.len() {
+    pub fn new<S: IncrementalGeometry<D = D>>(
+        st: &S,
+        block: usize,
+        point: D::Vector,
+        direction: D::Vector,
+    ) -> Result<Control<D>> {
+        if block >= st.num_blocks() {
             return Err(Error::Request(format!(
                 "control block {block} does not exist (the model has {} blocks)",
-                st.blocks.len()
+                st.num_blocks()
             )));
         }
-        if !(point[0].is_finite() && point[1].is_finite()) {
+        if !point.as_ref().iter().all(|x| x.is_finite()) {
             return Err(Error::Request("the control point must be finite".into()));
         }
-        let n = geometry::norm(direction);
+        let n = S::norm(direction);
         if !n.is_finite() || n <= 0.0 {
             return Err(Error::Request(
                 "the control direction must be a non-zero vector".into(),
             ));
         }
+        let mut direction = direction;
+        for c in direction.as_mut() {
+            *c /= n;
+        }
         Ok(Control {
             block,
             point,
-            direction: [direction[0] / n, direction[1] / n],
+            direction,
         })
     }
 
     /// The control point at `x` on the block that contains it, or the nearest block.
-    pub fn nearest(st: &Structure, x: Point, direction: Point) -> Result<Control> {
+    pub fn nearest<S: IncrementalGeometry<D = D>>(
+        st: &S,
+        x: D::Vector,
+        direction: D::Vector,
+    ) -> Result<Control<D>> {
         let mut best = (f64::INFINITY, 0usize);
-        for (i, b) in st.blocks.iter().enumerate() {
-            let p = &b.polygon;
-            let dist = if geometry::strictly_inside(x, p, 0.0) {
-                0.0
-            } else {
-                (0..p.len())
-                    .map(|k| geometry::point_segment_distance(x, p[k], p[(k + 1) % p.len()]))
-                    .fold(f64::INFINITY, f64::min)
-            };
+        for i in 0..st.num_blocks() {
+            let dist = st.distance_to_block(i, x);
             if dist < best.0 {
                 best = (dist, i);
             }
         }
         // A point far from every block is a mistake (a typo, other units): refuse it rather
         // than attach it to whichever block happens to be nearest.
-        let diag = size_of(st).0;
+        let diag = st.extent().0;
         if !(best.0 <= CONTROL_REACH * diag) {
+            let coords: Vec<String> = x.as_ref().iter().map(|c| c.to_string()).collect();
             return Err(Error::Request(format!(
-                "control point ({}, {}) is {:.3} m from the nearest block (block {}): give a point on the structure (within {:.0} % of its size)",
-                x[0],
-                x[1],
+                "control point ({}) is {:.3} m from the nearest block (block {}): give a point on the structure (within {:.0} % of its size)",
+                coords.join(", "),
                 best.0,
                 best.1,
                 100.0 * CONTROL_REACH
@@ -107,19 +326,6 @@ impl Control {
         }
         Control::new(st, best.1, x, direction)
     }
-}
-
-/// The blocks' bounding-box diagonal and largest coordinate magnitude (m).
-fn size_of(st: &Structure) -> (f64, f64) {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for q in st.blocks.iter().flat_map(|b| b.polygon.iter()) {
-        for c in 0..2 {
-            lo[c] = lo[c].min(q[c]);
-            hi[c] = hi[c].max(q[c]);
-        }
-    }
-    let far = lo.iter().chain(&hi).fold(0.0f64, |m, v| m.max(v.abs()));
-    ((hi[0] - lo[0]).hypot(hi[1] - lo[1]), far)
 }
 
 /// The smallest step, relative to the structure's size (or its distance from the origin, if
@@ -169,7 +375,7 @@ impl Default for IncrementalOptions {
 /// analysis, then every block moved by its finite rigid motion and every opened point given its
 /// gap. `release` turns `fixed` supports into contact ones afterwards (see
 /// [`crate::analysis::capacity::CapacityOptions::release_fixed`]).
-pub fn settled(st: &Structure, solver: &SolverOptions, release: bool) -> Result<Structure> {
+pub fn settled<S: Assembly>(st: &S, solver: &SolverOptions, release: bool) -> Result<S> {
     let path = SettlementPath::new(st, solver)?;
     if path.status != SettlementStatus::Mechanism {
         return Err(Error::Request(format!(
@@ -184,31 +390,28 @@ pub fn settled(st: &Structure, solver: &SolverOptions, release: bool) -> Result<
     Ok(out)
 }
 
-fn open_joints(st: &Structure) -> Vec<usize> {
-    st.joints
-        .iter()
-        .enumerate()
-        .filter(|(_, j)| j.points.iter().any(|p| p.gap > 0.0))
-        .map(|(i, _)| i)
+fn open_joints<S: IncrementalGeometry>(st: &S) -> Vec<usize> {
+    (0..st.num_joints())
+        .filter(|&j| (0..st.joint_points(j)).any(|k| st.joint_point(j, k).1 > 0.0))
         .collect()
 }
 
 /// Incremental analysis from `start` (undeformed, or settled with [`settled`]).
-pub fn incremental(
-    start: &Structure,
-    control: &Control,
+pub fn incremental<S: IncrementalGeometry>(
+    start: &S,
+    control: &Control<S::D>,
     opts: &IncrementalOptions,
-) -> Result<IncrementalResult> {
+) -> Result<IncrementalResult<S::D>> {
     incremental_with(start, control, opts, &mut |_| {})
 }
 
 /// [`incremental`], calling `progress` with every new point of the curve (for a progress bar).
-pub fn incremental_with(
-    start: &Structure,
-    control: &Control,
+pub fn incremental_with<S: IncrementalGeometry>(
+    start: &S,
+    control: &Control<S::D>,
     opts: &IncrementalOptions,
     progress: &mut dyn FnMut(&IncrementalPoint),
-) -> Result<IncrementalResult> {
+) -> Result<IncrementalResult<S::D>> {
     if !(opts.step > 0.0 && opts.step.is_finite()) {
         return Err(Error::Request("the step must be a positive number".into()));
     }
@@ -217,7 +420,7 @@ pub fn incremental_with(
             "the maximum displacement must be a positive number".into(),
         ));
     }
-    let (diag, far) = size_of(start);
+    let (diag, far) = start.extent();
     if opts.step < MIN_RELATIVE_STEP * diag.max(far) {
         return Err(Error::Request(format!(
             "step {:.3e} m: below {MIN_RELATIVE_STEP:e} of the structure's size ({:.3e} m), too small for the geometry to record",
@@ -246,7 +449,7 @@ pub fn incremental_with(
     let mut warm = WarmLimit::new(&opts.solver, opts.hot_start);
     let mut curve: Vec<IncrementalPoint> = Vec::new();
     let mut events: Vec<Event> = Vec::new();
-    let mut snapshots: Vec<Snapshot> = Vec::new();
+    let mut snapshots: Vec<Snapshot<S::D>> = Vec::new();
     let mut xc = x0;
     let mut disp = 0.0f64;
     let mut peak = (f64::NEG_INFINITY, 0.0);
@@ -304,9 +507,10 @@ pub fn incremental_with(
             break;
         }
         let d = &d;
-        let c = st.blocks[cb].centroid;
-        let uc = small_displacement(c, [d[3 * cb], d[3 * cb + 1], d[3 * cb + 2]], xc);
-        let proj = geometry::dot(dir, uc);
+        let c = st.block_reference(cb);
+        let nd = <S::D as Dim>::DOFS;
+        let uc = <S::D as Dim>::small_displacement(c, &d[nd * cb..nd * cb + nd], xc);
+        let proj = <S::D as Dim>::dot(dir, uc);
         let dscale = d.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if proj.abs() <= 1e-9 * dscale && !snap {
             status = IncrementalStatus::ControlStill;
@@ -335,10 +539,8 @@ pub fn incremental_with(
                 map.gap[k] > 0.0 && rate[k] < -rtol && map.gap[k] / -rate[k] <= alpha * (1.0 + 1e-9)
             })
             .collect();
-        let mut openings: Vec<Vec<f64>> = st
-            .joints
-            .iter()
-            .map(|j| vec![0.0; j.points.len()])
+        let mut openings: Vec<Vec<f64>> = (0..st.num_joints())
+            .map(|j| vec![0.0; st.joint_points(j)])
             .collect();
         for (k, p) in map.points.iter().enumerate() {
             openings[p.joint][p.index] = rate[k];
@@ -346,29 +548,31 @@ pub fn incremental_with(
         let mut next = st.deformed(d, alpha, &openings, alpha * rtol);
         for &k in &closing {
             let p = map.points[k];
-            next.joints[p.joint].points[p.index].gap = 0.0;
+            next.set_gap(p.joint, p.index, 0.0);
         }
-        let m = RigidMotion::scaled(c, [d[3 * cb], d[3 * cb + 1], d[3 * cb + 2]], alpha);
-        xc = m.apply(xc);
-        let new_disp = geometry::dot(dir, geometry::sub(xc, x0));
+        xc = st.move_point(cb, d, alpha, xc);
+        let new_disp = <S::D as Dim>::dot(dir, <S::D as Dim>::sub(xc, x0));
         // Events.
         let mut any = false;
-        for (j, (a, b)) in st.joints.iter().zip(&next.joints).enumerate() {
-            for (i, (pa, pb)) in a.points.iter().zip(&b.points).enumerate() {
-                let kind = match (pa.gap > 0.0, pb.gap > 0.0) {
+        for j in 0..st.num_joints() {
+            for i in 0..st.joint_points(j).min(next.joint_points(j)) {
+                let (ga, (xb, gb)) = (st.joint_point(j, i).1, next.joint_point(j, i));
+                let kind = match (ga > 0.0, gb > 0.0) {
                     (false, true) => EventKind::Opened,
                     (true, false) => EventKind::Closed,
                     _ => continue,
                 };
                 any = true;
+                let xb = xb.as_ref();
                 events.push(Event {
                     step,
                     displacement: new_disp,
                     kind,
                     joint: j,
                     point: i,
-                    x: pb.x[0],
-                    y: pb.x[1],
+                    x: xb[0],
+                    y: xb[1],
+                    z: xb.get(2).copied(),
                 });
             }
         }
@@ -376,7 +580,7 @@ pub fn incremental_with(
             && !snap
             && (step == 0 || any || (opts.snapshot_every > 0 && step % opts.snapshot_every == 0))
         {
-            let zeros = vec![0.0; map.num_points()];
+            let zeros = vec![0.0; map.num_points() * map.tangents_per_point];
             let scale = 1.0 / proj;
             let dn: Vec<f64> = d.iter().map(|x| x * scale).collect();
             let rep = report(&st, &map, &dn, 0.0, &sol.pn, &zeros);
@@ -386,7 +590,7 @@ pub fn incremental_with(
                 load_multiplier: lam.max(0.0),
                 blocks: rep.blocks,
                 hinges: rep.hinges,
-                geometry: Geometry::of(&st),
+                geometry: st.shapes(),
             });
         }
         if !closing.is_empty() && !snap {
@@ -395,7 +599,7 @@ pub fn incremental_with(
             let mut before = next.clone();
             for &k in &closing {
                 let p = map.points[k];
-                before.joints[p.joint].points[p.index].gap = f64::MIN_POSITIVE;
+                before.set_gap(p.joint, p.index, f64::MIN_POSITIVE);
             }
             let bmap = KinematicMap::new(&before);
             let bs = warm.solve(&before, &bmap)?;
@@ -455,13 +659,13 @@ pub fn incremental_with(
         peak_load_multiplier: peak_l,
         peak_displacement: peak.1,
         initial_open_joints: open_joints(start),
-        cracks: crate::reporting::cracks_of_gaps(&st),
+        cracks: st.gap_cracks(),
         steps,
         snaps,
         solves: warm.solves,
         iterations: warm.iterations,
-        initial_geometry: Geometry::of(start),
-        final_geometry: Geometry::of(&st),
+        initial_geometry: start.shapes(),
+        final_geometry: st.shapes(),
     })
 }
 
@@ -474,8 +678,8 @@ fn closes_a_gap(map: &KinematicMap, d: &[f64]) -> bool {
 
 /// When no λ gives equilibrium: a mechanism on which the live loads do no work and the dead
 /// loads do positive work (a ray of the kinematic LP), with block DOFs bounded by 1.
-fn dead_load_ray(
-    st: &Structure,
+fn dead_load_ray<S: Assembly>(
+    st: &S,
     map: &KinematicMap,
     solver: &SolverOptions,
 ) -> Result<Option<Vec<f64>>> {

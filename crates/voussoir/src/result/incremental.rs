@@ -1,17 +1,19 @@
 //! Result of an incremental analysis: λ against the control displacement, events, snapshots.
 
-use super::{BlockMotion, Geometry, Hinge};
+use super::{BlockMotion, Hinge, Spatial};
+use crate::dim::{Dim, Two};
 use crate::lp::SolverInfo;
-use crate::model::Point;
 use serde::{Deserialize, Serialize};
 
-/// The control point: a point of a block (in the start geometry) and a direction.
+/// The control point: a point of a block (in the start geometry) and a direction, `[x, y]` in
+/// 2D and `[x, y, z]` in 3D.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Control {
+#[serde(bound = "")]
+pub struct Control<D: Spatial = Two> {
     pub block: usize,
-    pub point: Point,
+    pub point: <D as Dim>::Vector,
     /// Unit direction along which the control displacement is measured.
-    pub direction: Point,
+    pub direction: <D as Dim>::Vector,
 }
 
 /// Why the analysis stopped.
@@ -73,42 +75,49 @@ pub struct Event {
     pub point: usize,
     pub x: f64,
     pub y: f64,
+    /// The point's `z` (3D models; absent in 2D).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub z: Option<f64>,
 }
 
 /// The mechanism at one step.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Snapshot {
+#[serde(bound = "")]
+pub struct Snapshot<D: Spatial = Two> {
     pub step: usize,
     pub displacement: f64,
     pub load_multiplier: f64,
     /// Block motion rates per unit control displacement.
-    pub blocks: Vec<BlockMotion>,
+    pub blocks: Vec<BlockMotion<D>>,
     /// Joints with an open point, at their point in contact.
-    pub hinges: Vec<Hinge>,
+    pub hinges: Vec<Hinge<D>>,
     /// The current geometry.
-    pub geometry: Geometry,
+    pub geometry: D::Shapes,
 }
 
-/// Result of an incremental analysis.
+/// Result of an incremental analysis (2D or 3D: the control point, the snapshots' motions, the
+/// cracks and the geometries are those of the model's dimension).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct IncrementalResult {
+#[serde(bound = "")]
+pub struct IncrementalResult<D: Spatial = Two> {
     pub status: IncrementalStatus,
     pub message: String,
     /// The solver and method that produced the result.
     pub solver: SolverInfo,
-    pub control: Control,
+    pub control: Control<D>,
     /// `{displacement, load_multiplier, …}` in the order computed.
     pub curve: Vec<IncrementalPoint>,
     pub events: Vec<Event>,
-    pub snapshots: Vec<Snapshot>,
+    pub snapshots: Vec<Snapshot<D>>,
     pub peak_load_multiplier: f64,
     pub peak_displacement: f64,
     /// Joints open at the start (e.g. opened by a settlement).
     pub initial_open_joints: Vec<usize>,
     /// The cracks of the final state: the open points of the final geometry, widths their gaps
-    /// (m) ([`super::cracks`]).
+    /// (m) ([`super::cracks`]): polylines in 2D, one record per cracked joint (or coplanar set)
+    /// in 3D.
     #[serde(default)]
-    pub cracks: Vec<super::Crack>,
+    pub cracks: Vec<D::Crack>,
     pub steps: usize,
     /// Steps without equilibrium for any λ in which the dead loads alone moved the structure
     /// until an open point closed (a hinge moving to the next joint); they add no curve point.
@@ -116,6 +125,6 @@ pub struct IncrementalResult {
     pub solves: usize,
     pub iterations: i64,
     /// Geometry at the start and at the end.
-    pub initial_geometry: Geometry,
-    pub final_geometry: Geometry,
+    pub initial_geometry: D::Shapes,
+    pub final_geometry: D::Shapes,
 }

@@ -7,6 +7,7 @@
 pub mod canonical;
 pub mod capacity;
 pub mod cracks;
+pub mod identify;
 pub mod incremental;
 pub mod limit;
 pub mod nonassociative;

@@ -404,6 +404,20 @@ pub fn reaction_ranges_by<S: Assembly>(
                     }
                 };
                 out.solves += 1;
+                // An optimum that does not certify (a solver's "optimal" whose duals do not
+                // bound it) is decided again by the dual simplex from scratch.
+                let sol = if sol.status == LpStatus::Optimal
+                    && !lp::sequence::certify(&program, &sol).is_some_and(|c| c.ok())
+                {
+                    out.solves += 1;
+                    let o = SolverOptions {
+                        method: lp::Method::DualSimplex,
+                        ..*solver
+                    };
+                    lp::solve(&program, &o)?
+                } else {
+                    sol
+                };
                 ends[s][c][e] = match sol.status {
                     LpStatus::Optimal => {
                         let cert = lp::sequence::certify(&program, &sol).ok_or_else(|| {

@@ -1,8 +1,9 @@
 //! Issue 29, item 5: the canonical selection that scales (docs/canonical.md, "Cost").
 //!
-//! The least friction coefficient of the canonical forces is now found by a Dinkelbach-type
-//! iteration instead of a bisection; it must be the same number: checked here against a plain
-//! bisection on the feasibility of the same programs (the old method, written out).
+//! The least friction coefficient the canonical forces report is the least μ for which an
+//! optimal field with the open points unloaded satisfies Coulomb's rule: checked here against
+//! an independent bisection, written out on the public programs, on the feasibility of those
+//! fields (a faster search tried for item 5 stopped 1.5 % above it; docs/canonical.md).
 
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
 use voussoir::analysis::settlement::SettlementForm;

@@ -435,42 +435,53 @@ pub fn canonical_forces<S: Assembly>(
         l.friction.is_none()
             && !(map.joint_start[j]..map.joint_start[j + 1]).all(|k| map.bilateral[k])
     });
+    // Feasibility at μ (None: the model's own laws), with a warm basis shared by all μ.
+    let mut basis: Option<Basis> = None;
+    let mut feasible =
+        |mu: Option<f64>, basis: &mut Option<Basis>, relaxed: bool| -> Result<bool> {
+            let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+            // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
+            Ok(stages
+                .solve(&fp.lp, basis)
+                .is_ok_and(|s| s.status == LpStatus::Optimal))
+        };
     // Without a physical optimal field under the model's own laws (open points unloaded),
-    // the relaxed one (shear at open points); without that either, there is nothing to select
-    // from: the solver's forces stand. With joints that take the least μ, its search answers
-    // that too (its first program is feasible exactly when the field exists).
+    // there is nothing to select from: the solver's forces stand.
     let mut relaxed = false;
-    let solve_base = |relaxed: bool, stages: &mut Stages| -> Option<(ForceProgram, Vec<f64>)> {
-        let fp = programs::physical_force_program(map, &build, value, tol, open, None, relaxed);
-        // A solver that reaches no conclusion counts as infeasible.
-        match stages.solve(&fp.lp, &mut None) {
-            Ok(s) if s.status == LpStatus::Optimal => Some((fp, s.x)),
-            _ => None,
+    if !feasible(None, &mut None, false)? {
+        relaxed = true;
+        if !feasible(None, &mut None, true)? {
+            return Ok(None);
         }
-    };
-    let (base, x0) = match solve_base(false, &mut stages) {
-        Some(found) => found,
-        None => {
-            relaxed = true;
-            match solve_base(true, &mut stages) {
-                Some(found) => found,
-                None => return Ok(None),
+    }
+    let (least, mu) = if needs_mu {
+        if feasible(Some(0.0), &mut basis, relaxed)? {
+            (Some(0.0), Some(0.0))
+        } else {
+            let (mut lo, mut hi) = (0.0, 0.5);
+            let mut found = false;
+            while hi <= MAX_FRICTION {
+                if feasible(Some(hi), &mut basis, relaxed)? {
+                    found = true;
+                    break;
+                }
+                lo = hi;
+                hi *= 4.0;
+            }
+            if found {
+                while hi - lo > copts.friction_precision * hi {
+                    let mid = 0.5 * (lo + hi);
+                    if feasible(Some(mid), &mut basis, relaxed)? {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                (Some(hi), Some(hi))
+            } else {
+                (None, None)
             }
         }
-    };
-    let (least, mu) = if needs_mu {
-        least_friction(
-            map,
-            &build,
-            value,
-            tol,
-            relaxed,
-            &base,
-            &x0,
-            open,
-            copts.friction_precision,
-            &mut stages,
-        )?
     } else {
         (None, None)
     };
@@ -546,7 +557,7 @@ pub fn canonical_forces<S: Assembly>(
         let centres = st.contact_bodies().supports;
         let fscale = max_abs(&pn).max(max_abs(&pt)).max(1e-300);
         let mut rstages = Stages::new(opts);
-        let mut b: Option<Basis> = None;
+        let mut b = basis.clone();
         for s in 0..ns {
             let mut lo = vec![0.0; nd];
             let mut hi = vec![0.0; nd];
@@ -601,277 +612,6 @@ pub fn canonical_forces<S: Assembly>(
             solves,
         },
     )))
-}
-
-/// The facet directions `(d, c)` of the Coulomb rows `d·p_t ≤ c μ p_n` the force programs use
-/// ([`programs`]: 2D `±p_t`; 3D the pyramid of `map.friction_facets` facets inscribed in the
-/// cone), `None` for the exact cone.
-fn friction_directions(map: &KinematicMap) -> Option<Vec<(Vec<f64>, f64)>> {
-    let nt = map.tangents_per_point;
-    if nt == 1 {
-        return Some(vec![(vec![1.0], 1.0), (vec![-1.0], 1.0)]);
-    }
-    if map.friction_facets == 0 {
-        return None;
-    }
-    let k = map.friction_facets.max(3);
-    let shrink = (std::f64::consts::PI / k as f64).cos();
-    Some(
-        (0..k)
-            .map(|i| {
-                let phi = (2 * i + 1) as f64 * std::f64::consts::PI / k as f64;
-                (vec![phi.cos(), phi.sin()], shrink)
-            })
-            .collect(),
-    )
-}
-
-/// `lp` with rows appended (each `lo ≤ Σ v x_j ≤ hi` over `(column, v)`) and one more column
-/// of cost `cost` and bounds `[lo, hi]` with entries `(row, v)` (row indices of the result).
-fn with_rows_and_column(
-    lp: &LinearProgram,
-    rows: &[(f64, f64, Vec<(usize, f64)>)],
-    column: (f64, f64, f64, Vec<(usize, f64)>),
-) -> LinearProgram {
-    let m0 = lp.num_rows();
-    let mut extra: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_cols()];
-    for (i, (_, _, entries)) in rows.iter().enumerate() {
-        for &(j, v) in entries {
-            extra[j].push((m0 + i, v));
-        }
-    }
-    let mut out = LinearProgram::new(if lp.maximise {
-        lp::Direction::Maximise
-    } else {
-        lp::Direction::Minimise
-    });
-    out.row_lower = lp.row_lower.clone();
-    out.row_upper = lp.row_upper.clone();
-    for (lo, hi, _) in rows {
-        out.add_row(*lo, *hi);
-    }
-    for j in 0..lp.num_cols() {
-        let entries: Vec<(usize, f64)> = lp.column(j).chain(extra[j].iter().copied()).collect();
-        out.add_column(lp.cost[j], lp.col_lower[j], lp.col_upper[j], entries);
-    }
-    let (cost, lo, hi, entries) = column;
-    out.add_column(cost, lo, hi, entries);
-    out
-}
-
-/// The least friction coefficient μ (on the joints without friction of their own) for which an
-/// optimal field with the points in `open` unloaded has `|p_t| ≤ μ p_n` everywhere: `(least,
-/// imposed)`, both `None` when no μ ≤ [`MAX_FRICTION`] admits one. `base` is the program of
-/// those fields under the model's own laws (no μ on the joints without friction) and `x0` one
-/// of its solutions.
-///
-/// A Dinkelbach-type iteration for this least largest ratio (Crouzeix, Ferland and Schaible,
-/// J. Optim. Theory Appl. 47, 1985), in place of a bisection: every field's largest ratio
-/// `max_d d·p_t / (c p_n)` is an admissible μ. At a trial μ, the LP
-/// `min s  s.t.  d·p_t − c μ p_n ≤ s·w_k` (every facet `d` of every point `k`; `w_k` the normal
-/// force of the previous field: the normalisation of that paper, so that `s` is a change of ratio; 0,
-/// the plain Coulomb row, where it carried nothing) over `base` has `s ≤ 0` exactly when μ is
-/// admissible, and a solution with `s < 0` has its largest ratio below μ: the next admissible μ.
-/// Each trial is made just below the admissible μ found so far (by the precision `prec`), so
-/// that the iteration ends with the bisection's certificate — no μ smaller by `prec` is
-/// admissible (`s > 0` or no solution) — in a handful of programs instead of fifteen or so.
-#[allow(clippy::too_many_arguments)]
-fn least_friction(
-    map: &KinematicMap,
-    build: &impl Fn(&KinematicMap) -> ForceProgram,
-    value: f64,
-    tol: f64,
-    relaxed: bool,
-    base: &ForceProgram,
-    x0: &[f64],
-    open: &[bool],
-    prec: f64,
-    stages: &mut Stages,
-) -> Result<(Option<f64>, Option<f64>)> {
-    let Some(dirs) = friction_directions(map) else {
-        return Ok((None, None));
-    };
-    // The points that take the trial μ, with their force columns.
-    let nt = map.tangents_per_point;
-    let points: Vec<(usize, Vec<usize>)> = (0..map.num_points())
-        .filter_map(|k| {
-            let law = &map.laws[map.points[k].joint];
-            if law.friction.is_some() || map.bilateral[k] || open[k] {
-                return None;
-            }
-            let n = base.pn[k]?;
-            let t: Option<Vec<usize>> = (k * nt..(k + 1) * nt).map(|r| base.pt[r]).collect();
-            Some((n, t?))
-        })
-        .collect();
-    if points.is_empty() {
-        return Ok((Some(0.0), Some(0.0)));
-    }
-    let largest_normal = |x: &[f64]| points.iter().fold(0.0f64, |m, (n, _)| m.max(x[*n]));
-    // The largest ratio of a field; forces below round-off of the largest normal force count
-    // as none (an interior point's zeros).
-    let ratio = |x: &[f64]| -> f64 {
-        let noise = 1e-9 * largest_normal(x);
-        points
-            .iter()
-            .map(|(n, t)| {
-                let shear = dirs
-                    .iter()
-                    .map(|(d, c)| t.iter().zip(d).map(|(&j, v)| v * x[j]).sum::<f64>() / c)
-                    .fold(0.0f64, f64::max);
-                if shear <= noise {
-                    0.0
-                } else if x[*n] > 0.0 {
-                    shear / x[*n]
-                } else {
-                    f64::INFINITY
-                }
-            })
-            .fold(0.0f64, f64::max)
-    };
-    // The normalisation of the next trial from a field: its normal forces (so that `s` is a
-    // change of ratio), 0 where it carried nothing.
-    let weights = |x: &[f64]| -> Vec<f64> {
-        let big = largest_normal(x);
-        points
-            .iter()
-            .map(|(n, _)| if x[*n] > 1e-7 * big { x[*n] } else { 0.0 })
-            .collect()
-    };
-    // One trial: `Some((s, field))` when the program solved.
-    let trial =
-        |mu: f64, weights: &[f64], stages: &mut Stages| -> Result<Option<(f64, Vec<f64>)>> {
-            let s_col = base.lp.num_cols();
-            let m0 = base.lp.num_rows();
-            let mut rows = Vec::with_capacity(points.len() * dirs.len());
-            let mut s_entries = Vec::with_capacity(points.len() * dirs.len());
-            for ((n, t), &w) in points.iter().zip(weights) {
-                for (d, c) in &dirs {
-                    let mut e: Vec<(usize, f64)> = t.iter().zip(d).map(|(&j, &v)| (j, v)).collect();
-                    e.push((*n, -c * mu));
-                    if w > 0.0 {
-                        s_entries.push((m0 + rows.len(), -w));
-                    }
-                    rows.push((-f64::INFINITY, 0.0, e));
-                }
-            }
-            // `s ≥ −μ/2`: where the optimal fields include self-stresses (forces on fixed supports
-            // do no work), `s` is unbounded below; the bound makes such a step at least about halve
-            // the ratio, and a normal force at most halve.
-            let mut lp =
-                with_rows_and_column(&base.lp, &rows, (1.0, -0.5 * mu, f64::INFINITY, s_entries));
-            lp.maximise = false;
-            // A solver that reaches no conclusion counts as inadmissible (that μ is not imposed).
-            let Ok(sol) = stages.solve(&lp, &mut None) else {
-                return Ok(None);
-            };
-            Ok((sol.status == LpStatus::Optimal).then(|| (sol.x[s_col], sol.x)))
-        };
-    // Below this `s` is negative beyond round-off.
-    const NEGATIVE: f64 = -1e-9;
-    // The first admissible μ: the base field's own largest ratio, or a trial at the largest μ.
-    let mut w = weights(x0);
-    let mut hi = ratio(x0);
-    if hi > MAX_FRICTION {
-        match trial(MAX_FRICTION, &w, stages)? {
-            Some((s, x)) if s < NEGATIVE => {
-                w = weights(&x);
-                hi = ratio(&x).min(MAX_FRICTION);
-            }
-            _ => {
-                // As below: the plain Coulomb program decides.
-                let fp = programs::physical_force_program(
-                    map,
-                    build,
-                    value,
-                    tol,
-                    open,
-                    Some(MAX_FRICTION),
-                    relaxed,
-                );
-                match stages.solve(&fp.lp, &mut None) {
-                    Ok(sol) if sol.status == LpStatus::Optimal => {
-                        w = weights(&sol.x);
-                        hi = ratio(&sol.x).min(MAX_FRICTION);
-                    }
-                    _ => return Ok((None, None)),
-                }
-            }
-        }
-    }
-    // Dinkelbach steps, each just below the admissible μ found so far; where a step makes
-    // no progress beyond the trial (round-off in a ratio) or `s` sat on its bound, a bisection
-    // step between the bounds.
-    let mut lo = 0.0f64;
-    // A step whose `s` sits on its bound `−μ/2` moved the fields rather than the ratio: the
-    // next trial is then the middle of the bracket (so that the worst case is the bisection);
-    // the first trial too, from the base field.
-    let mut bisect = true;
-    for _ in 0..64 {
-        if hi - lo <= prec * hi * (1.0 + 1e-9) {
-            break;
-        }
-        let mu = if bisect {
-            0.5 * (lo + hi)
-        } else if hi <= prec {
-            0.0
-        } else {
-            (hi * (1.0 - prec)).max(lo)
-        };
-        match trial(mu, &w, stages)? {
-            Some((s, x)) if s < NEGATIVE || (mu == 0.0 && s <= -NEGATIVE) => {
-                let next = ratio(&x).min(mu);
-                if std::env::var_os("VOUSSOIR_TRACE").is_some() {
-                    eprintln!("trace: least friction: μ {mu} admissible (s {s}), next {next}");
-                }
-                w = weights(&x);
-                // Linear convergence (measured on a 3,200-block wall: 0.1 % per step near the
-                // end) is no better than bisection: bisect unless the step covered half the
-                // bracket.
-                bisect = next > mu - 0.5 * (mu - lo) || s <= -0.5 * mu * (1.0 - 1e-6);
-                hi = next;
-            }
-            other => {
-                // `s ≥ 0` is not yet a proof: a point that carries nothing in every field
-                // admissible at μ holds `s` at 0. The plain Coulomb program decides.
-                let fp = programs::physical_force_program(
-                    map,
-                    build,
-                    value,
-                    tol,
-                    open,
-                    Some(mu),
-                    relaxed,
-                );
-                let plain = stages
-                    .solve(&fp.lp, &mut None)
-                    .ok()
-                    .filter(|s| s.status == LpStatus::Optimal);
-                if std::env::var_os("VOUSSOIR_TRACE").is_some() {
-                    eprintln!(
-                        "trace: least friction: μ {mu}: s {:?}, admissible {}",
-                        other.map(|o| o.0),
-                        plain.is_some()
-                    );
-                }
-                match plain {
-                    Some(sol) => {
-                        bisect = true;
-                        hi = ratio(&sol.x).min(mu);
-                        w = weights(&sol.x);
-                    }
-                    None => {
-                        bisect = false;
-                        lo = mu;
-                        if mu == 0.0 {
-                            break;
-                        }
-                    }
-                }
-            }
-        }
-    }
-    Ok((Some(hi), Some(hi)))
 }
 
 /// Solver options of the canonical stages: an interior-point backend runs at a tighter

@@ -50,7 +50,9 @@ pub enum MeshKind {
     /// Courses of `length` × `height` units, alternate courses offset by half a unit.
     RunningBond { length: f64, height: f64 },
     /// Triangles no larger than `max_area` (m²) with no angle below `min_angle_deg` (at most
-    /// 33°: Delaunay refinement is guaranteed to end below about 30°).
+    /// 33°: Delaunay refinement is guaranteed to end below about 30°). `min_angle_deg` 0: no
+    /// quality refinement, the outline's own constrained Delaunay triangulation with the
+    /// triangles larger than `max_area` split at their centroids.
     Triangles { max_area: f64, min_angle_deg: f64 },
 }
 
@@ -263,14 +265,16 @@ impl Outline {
                 )));
             }
             let a = signed_area(&q);
+            if let Some((i, j)) = crate::geometry::self_intersection(&q, tol) {
+                if a.abs() > tol * diag || q.len() > 3 {
+                    return Err(bad(format!(
+                        "{} intersects itself (its edges {i} and {j} cross or touch)",
+                        ring_name(k)
+                    )));
+                }
+            }
             if a.abs() <= tol * diag {
                 return Err(bad(format!("{} has no area", ring_name(k))));
-            }
-            if let Some((i, j)) = crate::geometry::self_intersection(&q, tol) {
-                return Err(bad(format!(
-                    "{} intersects itself (its edges {i} and {j} cross or touch)",
-                    ring_name(k)
-                )));
             }
             if a < 0.0 {
                 q.reverse();
@@ -462,10 +466,19 @@ fn triangles(
                 "the triangle refinement ran out of vertices ({budget} added): choose a larger max area or a smaller min angle than {min_angle}°"
             ))
         };
-        if !cdt.refine(params()).refinement_complete {
+        // Min angle 0: no quality refinement (no Steiner points on the outline): triangles
+        // larger than the max area are split at their centroids, below.
+        let quality = min_angle > 0.0;
+        if quality && !cdt.refine(params()).refinement_complete {
             return Err(incomplete());
         }
-        if let Some(size) = opts.size {
+        let unbounded = |_: Point| f64::INFINITY;
+        let size: Option<&(dyn Fn(Point) -> f64 + Sync)> = match opts.size {
+            Some(f) => Some(f),
+            None if !quality => Some(&unbounded),
+            None => None,
+        };
+        if let Some(size) = size {
             // Split every triangle larger than the local size at its centroid, then refine
             // again for the angles; until none is too large.
             let mut rounds = 0;
@@ -479,7 +492,7 @@ fn triangles(
                         continue;
                     }
                     let s = size(c);
-                    if !(s.is_finite() && s > 0.0) {
+                    if !(s > 0.0 && (s.is_finite() || opts.size.is_none())) {
                         return Err(bad(format!(
                             "the size field gives {s} at ({:.6}, {:.6}): expected a positive area (m²)",
                             c[0], c[1]
@@ -502,7 +515,7 @@ fn triangles(
                     cdt.insert(p)
                         .map_err(|e| bad(format!("cannot insert a vertex: {e:?}")))?;
                 }
-                if !cdt.refine(params()).refinement_complete {
+                if quality && !cdt.refine(params()).refinement_complete {
                     return Err(incomplete());
                 }
             }
@@ -973,10 +986,16 @@ pub fn foundation_supports(outline: &Outline, f: &Foundation) -> Result<Vec<Supp
 /// The outline with the foundation's part boundaries added as vertices of its base edges
 /// (so that triangles end where supports do).
 fn with_base_cuts(o: &Outline, f: &Foundation) -> Result<Outline> {
-    let (lo, hi, y) = base(o)?;
+    let (lo, hi, _) = base(o)?;
     let n = f.names.len();
-    let eps = 1e-9 * o.diag();
     let cuts: Vec<f64> = (1..n).map(|k| lo + (hi - lo) * k as f64 / n as f64).collect();
+    base_cuts(o, &cuts)
+}
+
+/// The outline with vertices added on its lowest horizontal edges at the abscissas `cuts`.
+pub(crate) fn base_cuts(o: &Outline, cuts: &[f64]) -> Result<Outline> {
+    let (_, _, y) = base(o)?;
+    let eps = 1e-9 * o.diag();
     let r = &o.outer;
     let mut out = Vec::with_capacity(r.len() + cuts.len());
     for i in 0..r.len() {

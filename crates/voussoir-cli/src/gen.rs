@@ -257,11 +257,21 @@ pub struct WallArgs {
     pub outline: Option<PathBuf>,
     /// --outline: the layer(s) of the outer boundary, one closed polyline (default: the
     /// largest closed polyline). Case-insensitive, PREFIX* matches a prefix.
-    #[arg(long = "outer-layer", value_name = "LAYER", value_delimiter = ',', requires = "outline")]
+    #[arg(
+        long = "outer-layer",
+        value_name = "LAYER",
+        value_delimiter = ',',
+        requires = "outline"
+    )]
     pub outer_layer: Vec<String>,
     /// --outline: the layer(s) of the openings (default: every other closed polyline not on an
     /// outer layer).
-    #[arg(long = "hole-layer", value_name = "LAYER", value_delimiter = ',', requires = "outline")]
+    #[arg(
+        long = "hole-layer",
+        value_name = "LAYER",
+        value_delimiter = ',',
+        requires = "outline"
+    )]
     pub hole_layer: Vec<String>,
     /// --outline: the drawing's units, mm|cm|m (default: its header's $INSUNITS).
     #[arg(long = "drawing-units", value_name = "UNIT", requires = "outline")]
@@ -300,7 +310,12 @@ pub enum MeshArg {
     /// A grid of rectangular elements (continuous head joints).
     Grid,
     /// Courses of units, head joints staggered by half a unit.
-    #[value(alias = "running", alias = "bond", alias = "runningbond", alias = "stretcher-bond")]
+    #[value(
+        alias = "running",
+        alias = "bond",
+        alias = "runningbond",
+        alias = "stretcher-bond"
+    )]
     RunningBond,
     /// Unstructured triangles (refined constrained Delaunay).
     #[value(alias = "triangle", alias = "tri", alias = "delaunay")]
@@ -336,10 +351,16 @@ impl WallArgs {
         let [l, h] = match v[..] {
             [l] => [l, l / 2.0],
             [l, h] => [l, h],
-            _ => return Err(Fail(format!("--size {size}: expected LENGTH[,HEIGHT] in metres"))),
+            _ => {
+                return Err(Fail(format!(
+                    "--size {size}: expected LENGTH[,HEIGHT] in metres"
+                )))
+            }
         };
         if !(l.is_finite() && l > 0.0 && h.is_finite() && h > 0.0) {
-            return Err(Fail(format!("--size {size}: the length and height must be positive")));
+            return Err(Fail(format!(
+                "--size {size}: the length and height must be positive"
+            )));
         }
         let mesh = self.mesh.unwrap_or(MeshArg::RunningBond);
         if mesh != MeshArg::Triangles {
@@ -347,7 +368,9 @@ impl WallArgs {
                 return Err(Fail(format!("--max-area {a}: applies to --mesh triangles")));
             }
             if let Some(a) = self.min_angle {
-                return Err(Fail(format!("--min-angle {a}: applies to --mesh triangles")));
+                return Err(Fail(format!(
+                    "--min-angle {a}: applies to --mesh triangles"
+                )));
             }
         } else if let Some(p) = self.min_piece {
             return Err(Fail(format!(
@@ -355,8 +378,14 @@ impl WallArgs {
             )));
         }
         let kind = match mesh {
-            MeshArg::Grid => MeshKind::Grid { length: l, height: h },
-            MeshArg::RunningBond => MeshKind::RunningBond { length: l, height: h },
+            MeshArg::Grid => MeshKind::Grid {
+                length: l,
+                height: h,
+            },
+            MeshArg::RunningBond => MeshKind::RunningBond {
+                length: l,
+                height: h,
+            },
             MeshArg::Triangles => MeshKind::Triangles {
                 max_area: self.max_area.unwrap_or(l * h),
                 min_angle_deg: self.min_angle.unwrap_or(30.0),
@@ -364,7 +393,9 @@ impl WallArgs {
         };
         let segments = self.segments.unwrap_or(1);
         if segments == 0 {
-            return Err(Fail("--segments 0: give at least one foundation segment".into()));
+            return Err(Fail(
+                "--segments 0: give at least one foundation segment".into(),
+            ));
         }
         let depth = self.foundation_depth.unwrap_or(0.5);
         let foundation = if segments == 1 {
@@ -380,8 +411,15 @@ impl WallArgs {
             },
             ..MeshOptions::default()
         };
-        let mut m = mesh_wall(&outline, &kind, self.unit_weight, self.width, &foundation, &opts)
-            .map_err(|e| Fail(rep.annotate(&e.to_string())))?;
+        let mut m = mesh_wall(
+            &outline,
+            &kind,
+            self.unit_weight,
+            self.width,
+            &foundation,
+            &opts,
+        )
+        .map_err(|e| Fail(rep.annotate(&e.to_string())))?;
         match self.live {
             WallLiveArg::None => {}
             WallLiveArg::Horizontal => m.loads.live.push(voussoir::model::Load::Body {
@@ -678,7 +716,9 @@ impl FacadeArgs {
             FacadeMeshArg::Triangles => FacadeMesh::Triangles,
         };
         if let (Some(a), false) = (self.min_angle, mesh == FacadeMesh::Triangles) {
-            return Err(Fail(format!("--min-angle {a}: applies to --mesh triangles")));
+            return Err(Fail(format!(
+                "--min-angle {a}: applies to --mesh triangles"
+            )));
         }
         let mut s = bondeno(element[0], mesh);
         s.element = element;

@@ -50,7 +50,8 @@ fn closed(handle: u32, layer: &str, pts: &[[f64; 2]]) -> String {
 /// A 6 × 4 m wall drawn in millimetres: outline with a 1 × 2 m door notch on layer WALL, two
 /// 1 × 1 m windows on layer OPENINGS, and a stray closed polyline on layer NOTES.
 fn drawing(dir: &Path) -> std::path::PathBuf {
-    let mm = |p: &[[f64; 2]]| -> Vec<[f64; 2]> { p.iter().map(|q| [q[0] * 1e3, q[1] * 1e3]).collect() };
+    let mm =
+        |p: &[[f64; 2]]| -> Vec<[f64; 2]> { p.iter().map(|q| [q[0] * 1e3, q[1] * 1e3]).collect() };
     let ents = [
         closed(
             0x10,
@@ -66,9 +67,21 @@ fn drawing(dir: &Path) -> std::path::PathBuf {
                 [0.0, 4.0],
             ]),
         ),
-        closed(0x11, "OPENINGS", &mm(&[[0.8, 2.0], [1.8, 2.0], [1.8, 3.0], [0.8, 3.0]])),
-        closed(0x12, "OPENINGS", &mm(&[[4.2, 2.0], [5.2, 2.0], [5.2, 3.0], [4.2, 3.0]])),
-        closed(0x13, "NOTES", &mm(&[[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]])),
+        closed(
+            0x11,
+            "OPENINGS",
+            &mm(&[[0.8, 2.0], [1.8, 2.0], [1.8, 3.0], [0.8, 3.0]]),
+        ),
+        closed(
+            0x12,
+            "OPENINGS",
+            &mm(&[[4.2, 2.0], [5.2, 2.0], [5.2, 3.0], [4.2, 3.0]]),
+        ),
+        closed(
+            0x13,
+            "NOTES",
+            &mm(&[[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]]),
+        ),
     ];
     let text = format!(
         "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{}0\nENDSEC\n0\nEOF\n",
@@ -119,8 +132,9 @@ fn issue30_item1_gen_wall_outline_from_dxf_layers_every_mesh() {
         assert!(o.status.success(), "{mesh}: {err}");
         // The import line names what it used and what it did not.
         assert!(
-            err.contains("outer boundary LWPOLYLINE handle 10 (layer WALL), 2 opening(s), units mm")
-                && err.contains("1 closed polylines on other layers"),
+            err.contains(
+                "outer boundary LWPOLYLINE handle 10 (layer WALL), 2 opening(s), units mm"
+            ) && err.contains("1 closed polylines on other layers"),
             "{err}"
         );
         let m = json(&std::fs::read_to_string(dir.join(&out)).unwrap());
@@ -133,12 +147,19 @@ fn issue30_item1_gen_wall_outline_from_dxf_layers_every_mesh() {
             .map(|s| s["name"].as_str().unwrap())
             .collect();
         assert_eq!(names, ["f0", "f1", "f2"], "{mesh}");
-        assert_eq!(m["materials"]["default"]["unit_weight"].as_f64(), Some(20.0));
+        assert_eq!(
+            m["materials"]["default"]["unit_weight"].as_f64(),
+            Some(20.0)
+        );
         assert_eq!(m["materials"]["default"]["width"].as_f64(), Some(0.5));
         // It is a valid structure (plot builds it: simple polygons, no overlaps, joints).
         let png = format!("{mesh}.png");
-        let c = voussoir(&dir, &["plot", &out, "--undeformed", "-o", &png]);
-        assert!(c.status.success(), "{mesh}: {}", String::from_utf8_lossy(&c.stderr));
+        let c = voussoir(&dir, &["plot", &out, "-o", &png]);
+        assert!(
+            c.status.success(),
+            "{mesh}: {}",
+            String::from_utf8_lossy(&c.stderr)
+        );
     }
 }
 
@@ -151,8 +172,32 @@ fn issue30_item1_gen_wall_outline_from_json_is_byte_identical_twice() {
     )
     .unwrap();
     for mesh in ["grid", "running-bond", "triangles"] {
-        let a = run(&dir, &["gen", "wall", "--outline", "o.json", "--mesh", mesh, "--size", "0.3"]);
-        let b = run(&dir, &["gen", "wall", "--outline", "o.json", "--mesh", mesh, "--size", "0.3"]);
+        let a = run(
+            &dir,
+            &[
+                "gen",
+                "wall",
+                "--outline",
+                "o.json",
+                "--mesh",
+                mesh,
+                "--size",
+                "0.3",
+            ],
+        );
+        let b = run(
+            &dir,
+            &[
+                "gen",
+                "wall",
+                "--outline",
+                "o.json",
+                "--mesh",
+                mesh,
+                "--size",
+                "0.3",
+            ],
+        );
         assert_eq!(a, b, "{mesh}: two runs differ");
         let m = json(&a);
         let want = 6.0 - 0.6;
@@ -165,15 +210,37 @@ fn issue30_item1_gen_wall_outline_from_json_is_byte_identical_twice() {
 fn issue30_item1_outline_flags_are_refused_in_one_line() {
     let dir = tmpdir(TAG, "refuse");
     drawing(&dir);
-    std::fs::write(dir.join("o.json"), r#"{"outer": [[0, 0], [3, 0], [3, 2], [0, 2]]}"#).unwrap();
+    std::fs::write(
+        dir.join("o.json"),
+        r#"{"outer": [[0, 0], [3, 0], [3, 2], [0, 2]]}"#,
+    )
+    .unwrap();
     refused(
         &dir,
-        &["gen", "wall", "--outline", "o.json", "--mesh", "grid", "--min-angle", "20"],
+        &[
+            "gen",
+            "wall",
+            "--outline",
+            "o.json",
+            "--mesh",
+            "grid",
+            "--min-angle",
+            "20",
+        ],
         "--min-angle 20: applies to --mesh triangles",
     );
     refused(
         &dir,
-        &["gen", "wall", "--outline", "o.json", "--mesh", "triangles", "--min-piece", "0.1"],
+        &[
+            "gen",
+            "wall",
+            "--outline",
+            "o.json",
+            "--mesh",
+            "triangles",
+            "--min-piece",
+            "0.1",
+        ],
         "--min-piece 0.1",
     );
     refused(
@@ -183,23 +250,51 @@ fn issue30_item1_outline_flags_are_refused_in_one_line() {
     );
     refused(
         &dir,
-        &["gen", "wall", "--outline", "o.json", "--outer-layer", "WALL"],
+        &[
+            "gen",
+            "wall",
+            "--outline",
+            "o.json",
+            "--outer-layer",
+            "WALL",
+        ],
         "apply to a DXF drawing",
     );
     refused(
         &dir,
-        &["gen", "wall", "--outline", "wall.dxf", "--outer-layer", "OPENINGS"],
+        &[
+            "gen",
+            "wall",
+            "--outline",
+            "wall.dxf",
+            "--outer-layer",
+            "OPENINGS",
+        ],
         "2 closed polylines",
     );
     refused(
         &dir,
-        &["gen", "wall", "--outline", "wall.dxf", "--outer-layer", "nothing"],
+        &[
+            "gen",
+            "wall",
+            "--outline",
+            "wall.dxf",
+            "--outer-layer",
+            "nothing",
+        ],
         "no closed polyline on that layer",
     );
     // Without --hole-layer the NOTES polyline is a hole, outside the wall: named by entity.
     refused(
         &dir,
-        &["gen", "wall", "--outline", "wall.dxf", "--outer-layer", "WALL"],
+        &[
+            "gen",
+            "wall",
+            "--outline",
+            "wall.dxf",
+            "--outer-layer",
+            "WALL",
+        ],
         "hole 2 (LWPOLYLINE handle 13 (layer NOTES)) lies outside the outer boundary",
     );
     refused(
@@ -208,7 +303,10 @@ fn issue30_item1_outline_flags_are_refused_in_one_line() {
         "--min-angle 25: applies to --mesh triangles",
     );
     // --outline and the courses of a generated wall exclude each other (clap's message).
-    let o = voussoir(&dir, &["gen", "wall", "--outline", "o.json", "--courses", "4"]);
+    let o = voussoir(
+        &dir,
+        &["gen", "wall", "--outline", "o.json", "--courses", "4"],
+    );
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("cannot be used with"));
 }
@@ -218,9 +316,15 @@ fn issue30_item1_outline_flags_are_refused_in_one_line() {
 #[test]
 fn issue30_item1_facade_of_triangles_settles_certified_with_a_picture() {
     let dir = tmpdir(TAG, "facade");
-    run(&dir, &["gen", "facade", "--mesh", "triangles", "-o", "tri.json"]);
+    run(
+        &dir,
+        &["gen", "facade", "--mesh", "triangles", "-o", "tri.json"],
+    );
     let again = run(&dir, &["gen", "facade", "--mesh", "triangles"]);
-    assert_eq!(std::fs::read_to_string(dir.join("tri.json")).unwrap(), again);
+    assert_eq!(
+        std::fs::read_to_string(dir.join("tri.json")).unwrap(),
+        again
+    );
     let m = json(&again);
     let gamma = m["materials"]["default"]["unit_weight"].as_f64().unwrap();
     let w_total = gamma * blocks_area(&m);
@@ -241,8 +345,16 @@ fn issue30_item1_facade_of_triangles_settles_certified_with_a_picture() {
     let r = json(&std::fs::read_to_string(dir.join("s.json")).unwrap());
     assert_eq!(r["status"], "mechanism", "{}", r["message"]);
     let gap = r["certificate"]["relative_gap"].as_f64().unwrap();
-    assert!(r["certificate"]["ok"].as_bool().unwrap() && gap < 1e-7, "{}", r["certificate"]);
+    assert!(
+        r["certificate"]["ok"].as_bool().unwrap() && gap < 1e-7,
+        "{}",
+        r["certificate"]
+    );
     let work = r["work_dead_loads"].as_f64().unwrap();
-    assert!(work > 0.0 && work <= w_total * 0.2, "work {work}, W·v = {}", w_total * 0.2);
+    assert!(
+        work > 0.0 && work <= w_total * 0.2,
+        "work {work}, W·v = {}",
+        w_total * 0.2
+    );
     assert!(std::fs::metadata(dir.join("s.png")).unwrap().len() > 10_000);
 }

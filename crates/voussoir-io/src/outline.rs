@@ -121,7 +121,11 @@ pub fn drawing_outline(
     // Closed polylines, scaled.
     let mut closed: Vec<(String, String, Vec<Point>)> = Vec::new();
     for r in raw {
-        let mut p: Vec<Point> = r.points.iter().map(|q| [q[0] * scale, q[1] * scale]).collect();
+        let mut p: Vec<Point> = r
+            .points
+            .iter()
+            .map(|q| [q[0] * scale, q[1] * scale])
+            .collect();
         if let Some(q) = p.iter().find(|q| !(q[0].is_finite() && q[1].is_finite())) {
             return Err(IoError(format!(
                 "DXF entity {}: a vertex coordinate is not a finite number ({}, {})",
@@ -207,10 +211,7 @@ pub fn drawing_outline(
         scale,
         ignored,
     };
-    Ok((
-        Outline::new(closed[outer_idx].2.clone(), holes),
-        report,
-    ))
+    Ok((Outline::new(closed[outer_idx].2.clone(), holes), report))
 }
 
 #[derive(Deserialize)]
@@ -247,7 +248,9 @@ pub fn read_outline(
     })?;
     let report = OutlineReport {
         outer_entity: "\"outer\"".into(),
-        hole_entities: (0..j.holes.len()).map(|k| format!("\"holes\"[{k}]")).collect(),
+        hole_entities: (0..j.holes.len())
+            .map(|k| format!("\"holes\"[{k}]"))
+            .collect(),
         units: "m".into(),
         scale: 1.0,
         ignored: BTreeMap::new(),

@@ -523,7 +523,8 @@ fn wall_outline(s: &FacadeSpec, holes: &[Vec<Point>]) -> Result<crate::outline_m
         outer.push([s.width / 2.0, top]);
     }
     outer.push([0.0, s.height]);
-    let shapes = outer.overlay_as::<i64>(&holes.to_vec(), OverlayRule::Difference, FillRule::NonZero);
+    let shapes =
+        outer.overlay_as::<i64>(&holes.to_vec(), OverlayRule::Difference, FillRule::NonZero);
     // Where a vertex may be: a vertex of the wall or of an opening, or a crossing of an
     // opening's edge with the wall's edges.
     let mut cand: Vec<Point> = outer.clone();

@@ -201,7 +201,8 @@ impl Outline {
 
     /// Area of the outer boundary minus the holes (m²).
     pub fn area(&self) -> f64 {
-        signed_area(&self.outer).abs() - self.holes.iter().map(|h| signed_area(h).abs()).sum::<f64>()
+        signed_area(&self.outer).abs()
+            - self.holes.iter().map(|h| signed_area(h).abs()).sum::<f64>()
     }
 
     /// `[xmin, ymin, xmax, ymax]` of the outer boundary.
@@ -245,8 +246,7 @@ impl Outline {
         for (k, r) in rings.iter_mut().enumerate() {
             let mut q: Vec<Point> = Vec::with_capacity(r.len());
             for &p in r.iter() {
-                if q
-                    .last()
+                if q.last()
                     .is_none_or(|l: &Point| (l[0] - p[0]).hypot(l[1] - p[1]) > tol)
                 {
                     q.push(p);
@@ -284,7 +284,11 @@ impl Outline {
         let boxes: Vec<[f64; 4]> = rings.iter().map(|r| bbox(r)).collect();
         let near = |a: usize, b: usize| -> Option<(usize, usize)> {
             let (ba, bb) = (boxes[a], boxes[b]);
-            if ba[0] > bb[2] + tol || bb[0] > ba[2] + tol || ba[1] > bb[3] + tol || bb[1] > ba[3] + tol {
+            if ba[0] > bb[2] + tol
+                || bb[0] > ba[2] + tol
+                || ba[1] > bb[3] + tol
+                || bb[1] > ba[3] + tol
+            {
                 return None;
             }
             let (p, q) = (&rings[a], &rings[b]);
@@ -305,7 +309,10 @@ impl Outline {
                 )));
             }
             if !inside(rings[h][0], &rings[0]) {
-                return Err(bad(format!("{} lies outside the outer boundary", ring_name(h))));
+                return Err(bad(format!(
+                    "{} lies outside the outer boundary",
+                    ring_name(h)
+                )));
             }
             for g in 1..h {
                 if near(g, h).is_some() {
@@ -415,7 +422,11 @@ fn sort_rows(polys: &mut [Vec<Point>], eps: f64) {
     let key = |p: &Vec<Point>| {
         let (_, c) = area_centroid(p);
         let ylow = p.iter().map(|q| q[1]).fold(f64::INFINITY, f64::min);
-        ((ylow / eps).round(), (c[0] / eps).round(), (c[1] / eps).round())
+        (
+            (ylow / eps).round(),
+            (c[0] / eps).round(),
+            (c[1] / eps).round(),
+        )
     };
     polys.sort_by(|a, b| {
         let (ka, kb) = (key(a), key(b));
@@ -442,106 +453,108 @@ fn triangles(
     }
     let n0 = vertices.len();
     let mut conflicts = Vec::new();
-    let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| -> Result<Vec<Vec<Point>>> {
-        let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> =
-            ConstrainedDelaunayTriangulation::try_bulk_load_cdt(vertices, edges, |e| {
-                conflicts.push(e)
-            })
-            .map_err(|e| bad(format!("cannot triangulate: {e:?}")))?;
-        if !conflicts.is_empty() {
-            return Err(bad("two edges of the outline cross: cannot triangulate it"));
-        }
-        // Enough Steiner points for the area bound, with room for the angle bound.
-        let budget = (8.0 * o.area() / max_area) as usize + 20 * n0 + 1000;
-        let budget = budget.min(4 * opts.max_elements);
-        let params = || {
-            RefinementParameters::<f64>::new()
-                .exclude_outer_faces(true)
-                .with_angle_limit(AngleLimit::from_deg(min_angle))
-                .with_max_allowed_area(max_area)
-                .with_max_additional_vertices(budget)
-        };
-        let incomplete = || {
-            bad(format!(
+    let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(
+        || -> Result<Vec<Vec<Point>>> {
+            let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> =
+                ConstrainedDelaunayTriangulation::try_bulk_load_cdt(vertices, edges, |e| {
+                    conflicts.push(e)
+                })
+                .map_err(|e| bad(format!("cannot triangulate: {e:?}")))?;
+            if !conflicts.is_empty() {
+                return Err(bad("two edges of the outline cross: cannot triangulate it"));
+            }
+            // Enough Steiner points for the area bound, with room for the angle bound.
+            let budget = (8.0 * o.area() / max_area) as usize + 20 * n0 + 1000;
+            let budget = budget.min(4 * opts.max_elements);
+            let params = || {
+                RefinementParameters::<f64>::new()
+                    .exclude_outer_faces(true)
+                    .with_angle_limit(AngleLimit::from_deg(min_angle))
+                    .with_max_allowed_area(max_area)
+                    .with_max_additional_vertices(budget)
+            };
+            let incomplete = || {
+                bad(format!(
                 "the triangle refinement ran out of vertices ({budget} added): choose a larger max area or a smaller min angle than {min_angle}°"
             ))
-        };
-        // Min angle 0: no quality refinement (no Steiner points on the outline): triangles
-        // larger than the max area are split at their centroids, below.
-        let quality = min_angle > 0.0;
-        if quality && !cdt.refine(params()).refinement_complete {
-            return Err(incomplete());
-        }
-        let unbounded = |_: Point| f64::INFINITY;
-        let size: Option<&(dyn Fn(Point) -> f64 + Sync)> = match opts.size {
-            Some(f) => Some(f),
-            None if !quality => Some(&unbounded),
-            None => None,
-        };
-        if let Some(size) = size {
-            // Split every triangle larger than the local size at its centroid, then refine
-            // again for the angles; until none is too large.
-            let mut rounds = 0;
-            loop {
-                let mut split: Vec<Point2<f64>> = Vec::new();
-                for f in cdt.inner_faces() {
-                    let p = f.positions();
-                    let tri = [[p[0].x, p[0].y], [p[1].x, p[1].y], [p[2].x, p[2].y]];
-                    let (a, c) = area_centroid(&tri);
-                    if !o.contains(c) {
-                        continue;
-                    }
-                    let s = size(c);
-                    if !(s > 0.0 && (s.is_finite() || opts.size.is_none())) {
-                        return Err(bad(format!(
+            };
+            // Min angle 0: no quality refinement (no Steiner points on the outline): triangles
+            // larger than the max area are split at their centroids, below.
+            let quality = min_angle > 0.0;
+            if quality && !cdt.refine(params()).refinement_complete {
+                return Err(incomplete());
+            }
+            let unbounded = |_: Point| f64::INFINITY;
+            let size: Option<&(dyn Fn(Point) -> f64 + Sync)> = match opts.size {
+                Some(f) => Some(f),
+                None if !quality => Some(&unbounded),
+                None => None,
+            };
+            if let Some(size) = size {
+                // Split every triangle larger than the local size at its centroid, then refine
+                // again for the angles; until none is too large.
+                let mut rounds = 0;
+                loop {
+                    let mut split: Vec<Point2<f64>> = Vec::new();
+                    for f in cdt.inner_faces() {
+                        let p = f.positions();
+                        let tri = [[p[0].x, p[0].y], [p[1].x, p[1].y], [p[2].x, p[2].y]];
+                        let (a, c) = area_centroid(&tri);
+                        if !o.contains(c) {
+                            continue;
+                        }
+                        let s = size(c);
+                        if !(s > 0.0 && (s.is_finite() || opts.size.is_none())) {
+                            return Err(bad(format!(
                             "the size field gives {s} at ({:.6}, {:.6}): expected a positive area (m²)",
                             c[0], c[1]
                         )));
+                        }
+                        if a > s.min(max_area) {
+                            split.push(Point2::new(c[0], c[1]));
+                        }
                     }
-                    if a > s.min(max_area) {
-                        split.push(Point2::new(c[0], c[1]));
+                    if split.is_empty() {
+                        break;
                     }
-                }
-                if split.is_empty() {
-                    break;
-                }
-                rounds += 1;
-                if rounds > 60 || cdt.num_vertices() + split.len() > 4 * opts.max_elements {
-                    return Err(bad(
+                    rounds += 1;
+                    if rounds > 60 || cdt.num_vertices() + split.len() > 4 * opts.max_elements {
+                        return Err(bad(
                         "the size field asks for more triangles than allowed: give larger areas",
                     ));
-                }
-                for p in split {
-                    cdt.insert(p)
-                        .map_err(|e| bad(format!("cannot insert a vertex: {e:?}")))?;
-                }
-                if quality && !cdt.refine(params()).refinement_complete {
-                    return Err(incomplete());
+                    }
+                    for p in split {
+                        cdt.insert(p)
+                            .map_err(|e| bad(format!("cannot insert a vertex: {e:?}")))?;
+                    }
+                    if quality && !cdt.refine(params()).refinement_complete {
+                        return Err(incomplete());
+                    }
                 }
             }
-        }
-        let mut out = Vec::new();
-        for f in cdt.inner_faces() {
-            let p = f.positions();
-            let tri = vec![[p[0].x, p[0].y], [p[1].x, p[1].y], [p[2].x, p[2].y]];
-            let (_, c) = area_centroid(&tri);
-            if o.contains(c) {
-                let mut tri = tri;
-                if signed_area(&tri) < 0.0 {
-                    tri.reverse();
+            let mut out = Vec::new();
+            for f in cdt.inner_faces() {
+                let p = f.positions();
+                let tri = vec![[p[0].x, p[0].y], [p[1].x, p[1].y], [p[2].x, p[2].y]];
+                let (_, c) = area_centroid(&tri);
+                if o.contains(c) {
+                    let mut tri = tri;
+                    if signed_area(&tri) < 0.0 {
+                        tri.reverse();
+                    }
+                    out.push(tri);
                 }
-                out.push(tri);
             }
-        }
-        if out.len() > opts.max_elements {
-            return Err(bad(format!(
-                "{} triangles (more than {}): choose a larger max area",
-                out.len(),
-                opts.max_elements
-            )));
-        }
-        Ok(out)
-    }));
+            if out.len() > opts.max_elements {
+                return Err(bad(format!(
+                    "{} triangles (more than {}): choose a larger max area",
+                    out.len(),
+                    opts.max_elements
+                )));
+            }
+            Ok(out)
+        },
+    ));
     match run {
         Ok(r) => r,
         Err(_) => Err(bad(
@@ -666,13 +679,20 @@ impl Region<'_> {
             [cell[2], cell[3]],
             [cell[0], cell[3]],
         ];
-        let cut = self
-            .edges
-            .iter()
-            .any(|&(a, b)| segment_meets_box(a, b, [cell[0] - eps, cell[1] - eps, cell[2] + eps, cell[3] + eps]));
+        let cut = self.edges.iter().any(|&(a, b)| {
+            segment_meets_box(
+                a,
+                b,
+                [cell[0] - eps, cell[1] - eps, cell[2] + eps, cell[3] + eps],
+            )
+        });
         if !cut {
             let c = [(cell[0] + cell[2]) / 2.0, (cell[1] + cell[3]) / 2.0];
-            return if self.o.contains(c) { vec![rect] } else { vec![] };
+            return if self.o.contains(c) {
+                vec![rect]
+            } else {
+                vec![]
+            };
         }
         let region: Vec<Vec<Point>> = self.o.rings().cloned().collect();
         let shapes = rect.overlay_as::<i64>(&region, OverlayRule::Intersect, FillRule::EvenOdd);
@@ -696,11 +716,20 @@ impl Region<'_> {
                 let xm = (cell[0] + cell[2]) / 2.0;
                 let ym = (cell[1] + cell[3]) / 2.0;
                 let halves = if cell[2] - cell[0] >= cell[3] - cell[1] {
-                    [[cell[0], cell[1], xm, cell[3]], [xm, cell[1], cell[2], cell[3]]]
+                    [
+                        [cell[0], cell[1], xm, cell[3]],
+                        [xm, cell[1], cell[2], cell[3]],
+                    ]
                 } else {
-                    [[cell[0], cell[1], cell[2], ym], [cell[0], ym, cell[2], cell[3]]]
+                    [
+                        [cell[0], cell[1], cell[2], ym],
+                        [cell[0], ym, cell[2], cell[3]],
+                    ]
                 };
-                return halves.iter().flat_map(|h| self.clip(*h, depth + 1)).collect();
+                return halves
+                    .iter()
+                    .flat_map(|h| self.clip(*h, depth + 1))
+                    .collect();
             }
             let Some(ring) = shape.first() else { continue };
             let mut poly: Vec<Point> = Vec::with_capacity(ring.len());
@@ -731,7 +760,10 @@ impl Region<'_> {
             for y in [cell[1], cell[3]] {
                 if (q[0] - x).abs() <= tol && (q[1] - y).abs() <= tol {
                     // A cell corner unless an outline vertex is there.
-                    if let Some(v) = verts.iter().find(|v| (v[0] - x).abs() <= eps && (v[1] - y).abs() <= eps) {
+                    if let Some(v) = verts
+                        .iter()
+                        .find(|v| (v[0] - x).abs() <= eps && (v[1] - y).abs() <= eps)
+                    {
                         return *v;
                     }
                     return [x, y];
@@ -864,7 +896,10 @@ fn merge_small(polys: &mut Vec<Vec<Point>>, whole: &[f64], frac: f64, eps: f64) 
             .filter(|&j| j != i && alive[j])
             .filter(|&j| {
                 let bj = bbox(&polys[j]);
-                bi[0] <= bj[2] + eps && bj[0] <= bi[2] + eps && bi[1] <= bj[3] + eps && bj[1] <= bi[3] + eps
+                bi[0] <= bj[2] + eps
+                    && bj[0] <= bi[2] + eps
+                    && bi[1] <= bj[3] + eps
+                    && bj[1] <= bi[3] + eps
             })
             .map(|j| (j, shared_length(&polys[i], &polys[j], eps)))
             .filter(|&(_, l)| l > 0.0)
@@ -956,7 +991,9 @@ pub fn foundation_supports(outline: &Outline, f: &Foundation) -> Result<Vec<Supp
             return Err(bad("a foundation support has an empty name"));
         }
         if !seen.insert(n) {
-            return Err(bad(format!("the foundation support name '{n}' is repeated")));
+            return Err(bad(format!(
+                "the foundation support name '{n}' is repeated"
+            )));
         }
     }
     let (lo, hi, y) = base(&o)?;
@@ -988,7 +1025,9 @@ pub fn foundation_supports(outline: &Outline, f: &Foundation) -> Result<Vec<Supp
 fn with_base_cuts(o: &Outline, f: &Foundation) -> Result<Outline> {
     let (lo, hi, _) = base(o)?;
     let n = f.names.len();
-    let cuts: Vec<f64> = (1..n).map(|k| lo + (hi - lo) * k as f64 / n as f64).collect();
+    let cuts: Vec<f64> = (1..n)
+        .map(|k| lo + (hi - lo) * k as f64 / n as f64)
+        .collect();
     base_cuts(o, &cuts)
 }
 
@@ -1113,9 +1152,18 @@ mod tests {
     fn every_kind_tiles_the_region() {
         let o = square_with_hole();
         for kind in [
-            MeshKind::Grid { length: 0.7, height: 0.4 },
-            MeshKind::RunningBond { length: 0.7, height: 0.4 },
-            MeshKind::Triangles { max_area: 0.2, min_angle_deg: 28.0 },
+            MeshKind::Grid {
+                length: 0.7,
+                height: 0.4,
+            },
+            MeshKind::RunningBond {
+                length: 0.7,
+                height: 0.4,
+            },
+            MeshKind::Triangles {
+                max_area: 0.2,
+                min_angle_deg: 28.0,
+            },
         ] {
             let p = mesh_polygons(&o, &kind, &MeshOptions::default()).unwrap();
             let a: f64 = p.iter().map(|q| signed_area(q)).sum();

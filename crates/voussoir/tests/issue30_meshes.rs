@@ -43,10 +43,7 @@ fn wall() -> (Outline, f64) {
             [0.0, 5.0],
         ],
         // The rectangle drawn clockwise: either orientation is accepted.
-        vec![
-            vec![[1.0, 2.5], [1.0, 3.7], [2.0, 3.7], [2.0, 2.5]],
-            oct,
-        ],
+        vec![vec![[1.0, 2.5], [1.0, 3.7], [2.0, 3.7], [2.0, 2.5]], oct],
     );
     let octagon = 4.0 * 0.6 * 0.6 * (std::f64::consts::PI / 4.0).sin();
     let net = 8.0 * 5.0 - 1.2 * 2.2 - 1.0 * 1.2 - octagon;
@@ -218,11 +215,20 @@ fn issue30_item1_triangles_respect_the_min_angle() {
         )
         .unwrap();
         assert!(p.iter().all(|t| t.len() == 3));
-        let worst = p.iter().map(|t| min_angle_deg(t)).fold(f64::INFINITY, f64::min);
+        let worst = p
+            .iter()
+            .map(|t| min_angle_deg(t))
+            .fold(f64::INFINITY, f64::min);
         let largest = p.iter().map(|t| signed_area(t)).fold(0.0, f64::max);
         // The outline has no corner sharper than 90°: the bound holds everywhere.
-        assert!(worst >= angle - 1e-9, "max area {max_area}, min angle {angle}: worst {worst}°");
-        assert!(largest <= max_area * (1.0 + 1e-12), "{largest} > {max_area}");
+        assert!(
+            worst >= angle - 1e-9,
+            "max area {max_area}, min angle {angle}: worst {worst}°"
+        );
+        assert!(
+            largest <= max_area * (1.0 + 1e-12),
+            "{largest} > {max_area}"
+        );
     }
 }
 
@@ -257,7 +263,11 @@ fn issue30_item1_a_size_field_refines_locally() {
     let in_band = |m: &[Vec<Point>]| m.iter().filter(|t| band(centroid(t))).count();
     for t in &fine {
         let s = if band(centroid(t)) { 0.01 } else { 0.3 };
-        assert!(signed_area(t) <= s * (1.0 + 1e-12), "{t:?}: {}", signed_area(t));
+        assert!(
+            signed_area(t) <= s * (1.0 + 1e-12),
+            "{t:?}: {}",
+            signed_area(t)
+        );
     }
     assert!(
         in_band(&fine) > 5 * in_band(&coarse),
@@ -265,7 +275,10 @@ fn issue30_item1_a_size_field_refines_locally() {
         in_band(&fine),
         in_band(&coarse)
     );
-    let worst = fine.iter().map(|t| min_angle_deg(t)).fold(f64::INFINITY, f64::min);
+    let worst = fine
+        .iter()
+        .map(|t| min_angle_deg(t))
+        .fold(f64::INFINITY, f64::min);
     assert!(worst >= 25.0 - 1e-9, "{worst}");
     // A bad size is refused in one line.
     let bad = |_: Point| -1.0;
@@ -346,7 +359,10 @@ fn issue30_item1_bad_outlines_are_refused_naming_the_polygon() {
     let bowtie = vec![[0.0, 0.0], [4.0, 3.0], [4.0, 0.0], [0.0, 3.0]];
     let e = err(Outline::new(bowtie.clone(), vec![]));
     assert!(e.contains("the outer boundary intersects itself"), "{e}");
-    let e = err(Outline::new(sq.clone(), vec![vec![[1.0, 1.0], [2.0, 1.0], [1.5, 1.0]]]));
+    let e = err(Outline::new(
+        sq.clone(),
+        vec![vec![[1.0, 1.0], [2.0, 1.0], [1.5, 1.0]]],
+    ));
     assert!(e.contains("hole 0 has no area"), "{e}");
     let e = err(Outline::new(
         sq.clone(),
@@ -357,7 +373,10 @@ fn issue30_item1_bad_outlines_are_refused_naming_the_polygon() {
         sq.clone(),
         vec![vec![[3.0, 1.0], [5.0, 1.0], [5.0, 2.0], [3.0, 2.0]]],
     ));
-    assert!(e.contains("hole 0 crosses or touches the outer boundary"), "{e}");
+    assert!(
+        e.contains("hole 0 crosses or touches the outer boundary"),
+        "{e}"
+    );
     let e = err(Outline::new(
         sq.clone(),
         vec![
@@ -374,20 +393,51 @@ fn issue30_item1_bad_outlines_are_refused_naming_the_polygon() {
         ],
     ));
     assert!(e.contains("hole 0 and hole 1 overlap"), "{e}");
-    let e = err(Outline::new(vec![[0.0, 0.0], [f64::NAN, 0.0], [1.0, 1.0]], vec![]));
+    let e = err(Outline::new(
+        vec![[0.0, 0.0], [f64::NAN, 0.0], [1.0, 1.0]],
+        vec![],
+    ));
     assert!(e.contains("not a finite number"), "{e}");
     let e = err(Outline::new(vec![[0.0, 0.0], [1.0, 0.0]], vec![]));
     assert!(e.contains("fewer than 3"), "{e}");
     // Bad sizes, one line each.
     for (k, want) in [
-        (MeshKind::Grid { length: 0.0, height: 0.2 }, "positive"),
-        (MeshKind::Triangles { max_area: 0.1, min_angle_deg: 40.0 }, "min angle"),
-        (MeshKind::Triangles { max_area: -1.0, min_angle_deg: 20.0 }, "max area"),
-        (MeshKind::Triangles { max_area: 1e-9, min_angle_deg: 20.0 }, "elements"),
+        (
+            MeshKind::Grid {
+                length: 0.0,
+                height: 0.2,
+            },
+            "positive",
+        ),
+        (
+            MeshKind::Triangles {
+                max_area: 0.1,
+                min_angle_deg: 40.0,
+            },
+            "min angle",
+        ),
+        (
+            MeshKind::Triangles {
+                max_area: -1.0,
+                min_angle_deg: 20.0,
+            },
+            "max area",
+        ),
+        (
+            MeshKind::Triangles {
+                max_area: 1e-9,
+                min_angle_deg: 20.0,
+            },
+            "elements",
+        ),
     ] {
-        let e = mesh_polygons(&Outline::new(sq.clone(), vec![]), &k, &MeshOptions::default())
-            .unwrap_err()
-            .to_string();
+        let e = mesh_polygons(
+            &Outline::new(sq.clone(), vec![]),
+            &k,
+            &MeshOptions::default(),
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.contains(want) && !e.contains('\n'), "{k:?}: {e}");
     }
 }
@@ -550,12 +600,21 @@ fn issue30_item1_facade_of_triangles_settles_between_the_bond_and_the_bound() {
     let (tri, w_tri, n) = settle_facade(FacadeMesh::Triangles);
     let (grid, w_grid, _) = settle_facade(FacadeMesh::Grid);
     let (bond, _, _) = settle_facade(FacadeMesh::RunningBond);
-    println!("work: triangles {tri} kN·m ({n} elements), grid {grid}, running bond {bond}, W·v {}", w_tri * 0.2);
+    println!(
+        "work: triangles {tri} kN·m ({n} elements), grid {grid}, running bond {bond}, W·v {}",
+        w_tri * 0.2
+    );
     assert!(tri > 0.0);
     assert!(bond <= grid, "running bond {bond} > grid {grid}");
-    assert!(tri >= bond * (1.0 - 1e-6), "triangles {tri} < running bond {bond}");
+    assert!(
+        tri >= bond * (1.0 - 1e-6),
+        "triangles {tri} < running bond {bond}"
+    );
     assert!(tri <= w_tri * 0.2, "{tri} > W·v = {}", w_tri * 0.2);
     // The same wall: the weights of the meshes agree to the arcs' chords (the triangles
     // follow the rings exactly; the grid drops slivers under 5 % of an element).
-    assert!((w_tri - w_grid).abs() < 0.01 * w_grid, "{w_tri} vs {w_grid}");
+    assert!(
+        (w_tri - w_grid).abs() < 0.01 * w_grid,
+        "{w_tri} vs {w_grid}"
+    );
 }

@@ -1098,15 +1098,23 @@ pub fn mesh_wall(
         },
     );
     let b = o.bbox();
+    // Numbers as typed (0.4·0.2 is 0.08, not 0.08000000000000002).
+    let num = |x: f64| format!("{}", (x * 1e9).round() / 1e9);
     let what = match *kind {
-        MeshKind::Grid { length, height } => format!("grid of {length} × {height} m elements"),
+        MeshKind::Grid { length, height } => {
+            format!("grid of {} × {} m elements", num(length), num(height))
+        }
         MeshKind::RunningBond { length, height } => {
-            format!("running bond of {length} × {height} m units")
+            format!("running bond of {} × {} m units", num(length), num(height))
         }
         MeshKind::Triangles {
             max_area,
             min_angle_deg,
-        } => format!("triangles of at most {max_area} m², angles ≥ {min_angle_deg}°"),
+        } => format!(
+            "triangles of at most {} m², angles ≥ {}°",
+            num(max_area),
+            num(min_angle_deg)
+        ),
     };
     Ok(Model {
         description: format!(

@@ -17,10 +17,13 @@ pub enum Gen {
     Arch(ArchArgs),
     /// A flat lintel: one course of bricks between supports `left` and `right`.
     Lintel(LintelArgs),
-    /// A running-bond wall on foundation segments f0, f1, … (one per base unit).
+    /// A running-bond wall on foundation segments f0, f1, … (one per base unit), or a wall of
+    /// any outline (--outline: a DXF drawing or JSON) meshed as a grid, a running bond or
+    /// triangles.
     Wall(WallArgs),
     /// A façade with pointed doors, rose and rectangular windows (default: the paper's Fig 18
-    /// church façade, 22 m × 19 m), meshed as a grid or a running bond on segments f0, f1, ….
+    /// church façade, 22 m × 19 m), meshed as a grid, a running bond or triangles on segments
+    /// f0, f1, ….
     #[command(alias = "façade")]
     Facade(FacadeArgs),
     /// 3D: a barrel vault, the arch of `gen arch` (every arch flag) extruded along +y over
@@ -247,8 +250,194 @@ pub struct WallArgs {
     /// (1 kN/m² on the top course).
     #[arg(long, value_enum, ignore_case = true, default_value = "none")]
     pub live: WallLiveArg,
+    /// A wall of any outline instead of courses of units: a DXF drawing (closed polylines: the
+    /// outer boundary and the openings) or a JSON file {"outer": [[x, y], …], "holes":
+    /// [[[x, y], …], …]} in m; meshed by --mesh on a foundation along its base (docs/meshes.md).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["courses", "units", "unit", "first_course"])]
+    pub outline: Option<PathBuf>,
+    /// --outline: the layer(s) of the outer boundary, one closed polyline (default: the
+    /// largest closed polyline). Case-insensitive, PREFIX* matches a prefix.
+    #[arg(
+        long = "outer-layer",
+        value_name = "LAYER",
+        value_delimiter = ',',
+        requires = "outline"
+    )]
+    pub outer_layer: Vec<String>,
+    /// --outline: the layer(s) of the openings (default: every other closed polyline not on an
+    /// outer layer).
+    #[arg(
+        long = "hole-layer",
+        value_name = "LAYER",
+        value_delimiter = ',',
+        requires = "outline"
+    )]
+    pub hole_layer: Vec<String>,
+    /// --outline: the drawing's units, mm|cm|m (default: its header's $INSUNITS).
+    #[arg(long = "drawing-units", value_name = "UNIT", requires = "outline")]
+    pub drawing_units: Option<String>,
+    /// --outline: the mesh: grid, running-bond or triangles [default: running-bond].
+    #[arg(long, value_enum, ignore_case = true, requires = "outline")]
+    pub mesh: Option<MeshArg>,
+    /// --outline: element (unit) size LENGTH[,HEIGHT] in m, height default half the length
+    /// [default: 0.5]. Triangles: at most LENGTH·HEIGHT m² each unless --max-area.
+    #[arg(long, value_name = "LENGTH[,HEIGHT]", requires = "outline")]
+    pub size: Option<String>,
+    /// --outline, triangles: the largest triangle area in m² [default: LENGTH·HEIGHT of --size].
+    #[arg(long = "max-area", value_name = "M2", requires = "outline")]
+    pub max_area: Option<f64>,
+    /// --outline, triangles: the smallest angle in degrees, at most 33 [default: 30].
+    #[arg(long = "min-angle", value_name = "DEG", requires = "outline")]
+    pub min_angle: Option<f64>,
+    /// --outline, grid and running bond: a piece of an element cut by the outline smaller than
+    /// this fraction of an element is merged into its neighbour [default: 0.05].
+    #[arg(long = "min-piece", value_name = "FRACTION", requires = "outline")]
+    pub min_piece: Option<f64>,
+    /// --outline: the base cut into N equal foundation segments f0 … f{N−1} (default 1: one
+    /// support named `base`).
+    #[arg(long, value_name = "N", requires = "outline")]
+    pub segments: Option<usize>,
+    /// --outline: depth of the foundation below the base, m [default: 0.5].
+    #[arg(long = "foundation-depth", value_name = "M", requires = "outline")]
+    pub foundation_depth: Option<f64>,
     #[command(flatten)]
     pub out: Output,
+}
+
+/// The mesh of a wall given by its outline.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MeshArg {
+    /// A grid of rectangular elements (continuous head joints).
+    Grid,
+    /// Courses of units, head joints staggered by half a unit.
+    #[value(
+        alias = "running",
+        alias = "bond",
+        alias = "runningbond",
+        alias = "stretcher-bond"
+    )]
+    RunningBond,
+    /// Unstructured triangles (refined constrained Delaunay).
+    #[value(alias = "triangle", alias = "tri", alias = "delaunay")]
+    Triangles,
+}
+
+impl WallArgs {
+    /// The model of `gen wall --outline`.
+    fn outline_model(&self, path: &std::path::Path) -> Result<Model, Fail> {
+        use voussoir::outline_mesh::{mesh_wall, Foundation, MeshKind, MeshOptions};
+        let units = match &self.drawing_units {
+            None => None,
+            Some(u) => Some(
+                u.parse::<voussoir_io::dxf::Units>()
+                    .map_err(|e| Fail(format!("--drawing-units {u}: {}", e.0)))?,
+            ),
+        };
+        let (outline, rep) = voussoir_io::outline::read_outline(
+            path,
+            &voussoir_io::outline::OutlineOptions {
+                units,
+                outer_layers: self.outer_layer.clone(),
+                hole_layers: self.hole_layer.clone(),
+            },
+        )
+        .map_err(|e| Fail(e.0))?;
+        let size = self.size.as_deref().unwrap_or("0.5");
+        let v: Vec<f64> = size
+            .split(',')
+            .map(|x| x.trim().parse::<f64>())
+            .collect::<Result<_, _>>()
+            .map_err(|_| Fail(format!("--size {size}: expected LENGTH[,HEIGHT] in metres")))?;
+        let [l, h] = match v[..] {
+            [l] => [l, l / 2.0],
+            [l, h] => [l, h],
+            _ => {
+                return Err(Fail(format!(
+                    "--size {size}: expected LENGTH[,HEIGHT] in metres"
+                )))
+            }
+        };
+        if !(l.is_finite() && l > 0.0 && h.is_finite() && h > 0.0) {
+            return Err(Fail(format!(
+                "--size {size}: the length and height must be positive"
+            )));
+        }
+        let mesh = self.mesh.unwrap_or(MeshArg::RunningBond);
+        if mesh != MeshArg::Triangles {
+            if let Some(a) = self.max_area {
+                return Err(Fail(format!("--max-area {a}: applies to --mesh triangles")));
+            }
+            if let Some(a) = self.min_angle {
+                return Err(Fail(format!(
+                    "--min-angle {a}: applies to --mesh triangles"
+                )));
+            }
+        } else if let Some(p) = self.min_piece {
+            return Err(Fail(format!(
+                "--min-piece {p}: applies to --mesh grid or running-bond (triangles are never cut)"
+            )));
+        }
+        let kind = match mesh {
+            MeshArg::Grid => MeshKind::Grid {
+                length: l,
+                height: h,
+            },
+            MeshArg::RunningBond => MeshKind::RunningBond {
+                length: l,
+                height: h,
+            },
+            MeshArg::Triangles => MeshKind::Triangles {
+                max_area: self.max_area.unwrap_or(l * h),
+                min_angle_deg: self.min_angle.unwrap_or(30.0),
+            },
+        };
+        let segments = self.segments.unwrap_or(1);
+        if segments == 0 {
+            return Err(Fail(
+                "--segments 0: give at least one foundation segment".into(),
+            ));
+        }
+        let depth = self.foundation_depth.unwrap_or(0.5);
+        let foundation = if segments == 1 {
+            Foundation::single("base", depth)
+        } else {
+            Foundation::segments(segments, "f", depth)
+        };
+        let opts = MeshOptions {
+            min_piece: if mesh == MeshArg::Triangles {
+                0.0
+            } else {
+                self.min_piece.unwrap_or(0.05)
+            },
+            ..MeshOptions::default()
+        };
+        let mut m = mesh_wall(
+            &outline,
+            &kind,
+            self.unit_weight,
+            self.width,
+            &foundation,
+            &opts,
+        )
+        .map_err(|e| Fail(rep.annotate(&e.to_string())))?;
+        match self.live {
+            WallLiveArg::None => {}
+            WallLiveArg::Horizontal => m.loads.live.push(voussoir::model::Load::Body {
+                coefficients: [1.0, 0.0],
+                blocks: None,
+            }),
+            WallLiveArg::Full => {
+                return Err(Fail(
+                    "--live full: a load on the top course of a wall of courses; with --outline give --live none or horizontal".into(),
+                ))
+            }
+        }
+        if let Some(name) = path.file_name() {
+            m.description = format!("{} ({})", m.description, name.to_string_lossy());
+        }
+        eprintln!("{}", rep.summary());
+        Ok(m)
+    }
 }
 
 fn write(model: &Model, out: &Output) -> Result<(), Fail> {
@@ -402,6 +591,11 @@ pub fn run(g: Gen) -> Result<(), Fail> {
             let m = voussoir::generate_facade::facade(&f.spec()?)?;
             write(&m, &f.out)
         }
+        Gen::Wall(w) if w.outline.is_some() => {
+            let path = w.outline.clone().unwrap_or_default();
+            let m = w.outline_model(&path)?;
+            write(&m, &w.out)
+        }
         Gen::Wall(w) => {
             let unit: Vec<f64> = w
                 .unit
@@ -449,6 +643,10 @@ pub enum FacadeMeshArg {
         alias = "stretcher-bond"
     )]
     RunningBond,
+    /// Unstructured triangles (refined constrained Delaunay) of at most one element's area
+    /// (LENGTH·HEIGHT of --element), no angle below --min-angle.
+    #[value(alias = "triangle", alias = "tri", alias = "delaunay")]
+    Triangles,
 }
 
 #[derive(Args)]
@@ -485,6 +683,9 @@ pub struct FacadeArgs {
     /// tilt --direction -x` loads the façade the other way).
     #[arg(long, value_enum, ignore_case = true, default_value = "none")]
     pub live: FacadeLiveArg,
+    /// --mesh triangles: the smallest angle of a triangle in degrees, at most 33 [default: 30].
+    #[arg(long = "min-angle", value_name = "DEG")]
+    pub min_angle: Option<f64>,
     #[command(flatten)]
     pub out: Output,
 }
@@ -512,7 +713,13 @@ impl FacadeArgs {
         let mesh = match self.mesh {
             FacadeMeshArg::Grid => FacadeMesh::Grid,
             FacadeMeshArg::RunningBond => FacadeMesh::RunningBond,
+            FacadeMeshArg::Triangles => FacadeMesh::Triangles,
         };
+        if let (Some(a), false) = (self.min_angle, mesh == FacadeMesh::Triangles) {
+            return Err(Fail(format!(
+                "--min-angle {a}: applies to --mesh triangles"
+            )));
+        }
         let mut s = bondeno(element[0], mesh);
         s.element = element;
         s.width = self.width;
@@ -522,6 +729,9 @@ impl FacadeArgs {
         s.unit_weight = self.unit_weight;
         s.thickness = self.thickness;
         s.live = self.live.into();
+        if let Some(a) = self.min_angle {
+            s.min_angle = a;
+        }
         if !self.openings.is_empty() {
             s.openings.clear();
             for o in &self.openings {

@@ -180,13 +180,13 @@ impl ImportReport {
 }
 
 /// A polygon read from the drawing, before scaling.
-struct RawPolygon {
-    what: String,
-    handle: String,
-    layer: String,
-    points: Vec<Point>,
+pub(crate) struct RawPolygon {
+    pub(crate) what: String,
+    pub(crate) handle: String,
+    pub(crate) layer: String,
+    pub(crate) points: Vec<Point>,
     /// Whether the closing flag is set.
-    closed: bool,
+    pub(crate) closed: bool,
 }
 
 fn handle_hex(e: &Entity) -> String {
@@ -234,7 +234,7 @@ pub(crate) fn expand_bulges(v: &[(Point, f64)], closed: bool) -> Vec<Point> {
     out
 }
 
-fn collect(
+pub(crate) fn collect(
     drawing: &Drawing,
     ignored: &mut BTreeMap<String, usize>,
     crack_layers: &[String],

@@ -363,7 +363,13 @@ fn gen_facade(
     let mesh = match mesh {
         "grid" => FacadeMesh::Grid,
         "running-bond" => FacadeMesh::RunningBond,
-        s => return Err(Fail::Model(format!("mesh={s}: expected grid or running-bond")).into()),
+        "triangles" => FacadeMesh::Triangles,
+        s => {
+            return Err(Fail::Model(format!(
+                "mesh={s}: expected grid, running-bond or triangles"
+            ))
+            .into())
+        }
     };
     let live = model3d::live_of(live)?;
     detached(py, || {

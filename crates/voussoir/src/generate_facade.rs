@@ -57,6 +57,9 @@ pub enum FacadeMesh {
     /// Aligned rows and columns of elements (stack bond).
     #[default]
     Grid,
+    /// Unstructured triangles (constrained Delaunay, refined: [`crate::outline_mesh`]) of at
+    /// most one element's area (`element[0]·element[1]`), no angle below `min_angle`.
+    Triangles,
 }
 
 /// Parameters of a façade.
@@ -80,6 +83,8 @@ pub struct FacadeSpec {
     /// Pieces of an element smaller than this fraction of its area are dropped.
     pub min_piece: f64,
     pub live: LiveLoad,
+    /// Triangles: the smallest angle allowed (degrees).
+    pub min_angle: f64,
 }
 
 impl Default for FacadeSpec {
@@ -145,6 +150,7 @@ pub fn bondeno(element: f64, mesh: FacadeMesh) -> FacadeSpec {
         thickness: 1.0,
         min_piece: 0.05,
         live: LiveLoad::None,
+        min_angle: 30.0,
     }
 }
 
@@ -504,6 +510,93 @@ fn course_lines(top: f64, h: f64, levels: &[f64]) -> Vec<f64> {
     ys
 }
 
+/// The wall of the façade (the gabled rectangle less the openings with their rings) as an
+/// outline: doors are notches of the outer boundary, windows holes. Every vertex is exactly a
+/// vertex of the wall or of an opening, or where an opening's side crosses the base.
+fn wall_outline(s: &FacadeSpec, holes: &[Vec<Point>]) -> Result<crate::outline_mesh::Outline> {
+    use i_overlay::core::fill_rule::FillRule;
+    use i_overlay::core::overlay_rule::OverlayRule;
+    use i_overlay::float::single::SingleFloatOverlay;
+    let top = s.height + s.gable;
+    let mut outer = vec![[0.0, 0.0], [s.width, 0.0], [s.width, s.height]];
+    if s.gable > 0.0 {
+        outer.push([s.width / 2.0, top]);
+    }
+    outer.push([0.0, s.height]);
+    let shapes =
+        outer.overlay_as::<i64>(&holes.to_vec(), OverlayRule::Difference, FillRule::NonZero);
+    // Where a vertex may be: a vertex of the wall or of an opening, or a crossing of an
+    // opening's edge with the wall's edges.
+    let mut cand: Vec<Point> = outer.clone();
+    cand.extend(holes.iter().flatten().copied());
+    for h in holes {
+        for i in 0..h.len() {
+            let (a, b) = (h[i], h[(i + 1) % h.len()]);
+            for j in 0..outer.len() {
+                let (c, d) = (outer[j], outer[(j + 1) % outer.len()]);
+                let r = [b[0] - a[0], b[1] - a[1]];
+                let q = [d[0] - c[0], d[1] - c[1]];
+                let den = r[0] * q[1] - r[1] * q[0];
+                if den == 0.0 {
+                    continue;
+                }
+                let t = ((c[0] - a[0]) * q[1] - (c[1] - a[1]) * q[0]) / den;
+                let u = ((c[0] - a[0]) * r[1] - (c[1] - a[1]) * r[0]) / den;
+                if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u) {
+                    // Exactly on an axis-parallel wall edge when it is one.
+                    let mut p = [a[0] + t * r[0], a[1] + t * r[1]];
+                    if c[1] == d[1] {
+                        p[1] = c[1];
+                    }
+                    if a[0] == b[0] {
+                        p[0] = a[0];
+                    }
+                    cand.push(p);
+                }
+            }
+        }
+    }
+    let tol = 1e-7 * s.width.hypot(top);
+    let snap = |q: &Point| -> Point {
+        cand.iter()
+            .copied()
+            .filter(|c| (c[0] - q[0]).hypot(c[1] - q[1]) <= tol)
+            .min_by(|a, b| {
+                (a[0] - q[0])
+                    .hypot(a[1] - q[1])
+                    .total_cmp(&(b[0] - q[0]).hypot(b[1] - q[1]))
+            })
+            .unwrap_or(*q)
+    };
+    if shapes.len() != 1 {
+        return Err(bad(format!(
+            "the openings cut the wall into {} separate parts",
+            shapes.len()
+        )));
+    }
+    let rings: Vec<Vec<Point>> = shapes[0]
+        .iter()
+        .map(|r| {
+            let mut v: Vec<Point> = Vec::with_capacity(r.len());
+            for q in r {
+                let p = snap(q);
+                if v.last() != Some(&p) {
+                    v.push(p);
+                }
+            }
+            while v.len() > 1 && v.first() == v.last() {
+                v.pop();
+            }
+            v
+        })
+        .collect();
+    let mut it = rings.into_iter();
+    Ok(crate::outline_mesh::Outline {
+        outer: it.next().unwrap_or_default(),
+        holes: it.collect(),
+    })
+}
+
 /// Generate a façade.
 pub fn facade(s: &FacadeSpec) -> Result<Model> {
     if !matches!(s.live, LiveLoad::None | LiveLoad::Horizontal) {
@@ -609,7 +702,27 @@ pub fn facade(s: &FacadeSpec) -> Result<Model> {
     let nx = ((s.width / ex).round() as usize).max(1);
     let dx = s.width / nx as f64;
     let mut polys: Vec<Vec<Point>> = Vec::new();
+    if s.mesh == FacadeMesh::Triangles {
+        let all: Vec<Vec<Point>> = holes.iter().map(|(h, _)| (*h).clone()).collect();
+        let outline = wall_outline(s, &all)?;
+        // Foundation segment ends on the base, so that no triangle straddles two segments.
+        let sw = s.width / s.segments as f64;
+        let cuts: Vec<f64> = (1..s.segments).map(|k| k as f64 * sw).collect();
+        let outline = crate::outline_mesh::base_cuts(&outline, &cuts)?;
+        polys = crate::outline_mesh::mesh_polygons(
+            &outline,
+            &crate::outline_mesh::MeshKind::Triangles {
+                max_area: ex * ey,
+                min_angle_deg: s.min_angle,
+            },
+            &Default::default(),
+        )
+        .map_err(|e| bad(e.to_string()))?;
+    }
     for (c, w) in ys.windows(2).enumerate() {
+        if s.mesh == FacadeMesh::Triangles {
+            break;
+        }
         let (y0, y1) = (w[0], w[1]);
         if s.gable == 0.0 && y0 >= s.height - eps {
             break;

@@ -46,6 +46,7 @@ pub mod lengths;
 pub mod lp;
 pub mod model;
 pub mod model3d;
+pub mod outline_mesh;
 pub mod programs;
 pub mod programs_identify;
 pub mod reporting;

@@ -127,7 +127,7 @@ def facade(
 ) -> Model:
     """A façade with pointed doors, rose and rectangular windows; default: the paper's Fig 18
     church façade (22 m × 19 m). ``element``: length or (length, height) in m (height default
-    half the length). ``mesh``: ``"grid"`` or ``"running-bond"``. ``openings`` replace the
+    half the length). ``mesh``: ``"grid"``, ``"running-bond"`` or ``"triangles"``. ``openings`` replace the
     default ones, in the CLI's syntax: ``"door:X,WIDTH,SPRINGING[,OFFSET,RING]"``,
     ``"rose:X,Y,RADIUS[,RING]"``, ``"rect:X0,Y0,X1,Y1"``. ``live``: ``"none"`` or
     ``"horizontal"``."""

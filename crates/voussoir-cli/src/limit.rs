@@ -21,6 +21,8 @@ pub struct LimitArgs {
     pub forces: crate::draw_args::ForcesArgs,
     #[command(flatten)]
     pub canonical: crate::canonical::LimitCanonicalArgs,
+    #[command(flatten)]
+    pub adapt: crate::adapt_args::AdaptArgs,
 }
 
 /// `limit`'s flags, resolved.
@@ -34,6 +36,7 @@ impl LimitArgs {
     pub fn resolve(&self) -> Result<LimitConfig, Fail> {
         let (crushing, facets) = self.crushing.resolve()?;
         self.draw.check()?;
+        self.adapt.options()?;
         Ok(LimitConfig {
             input: self.model.resolve()?,
             crushing,
@@ -47,9 +50,25 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
     match c.input.load_any()? {
         AnyModel::Planar(model) => {
             a.draw.check_2d()?;
-            let facts = crate::report_inputs::facts_2d(&model);
-            let st = c.input.structure_of(model, None)?;
+            let st = c.input.structure_of(model.clone(), None)?;
             a.crushing.check_strength(&st)?;
+            // --adapt: the crack lines cut into the mesh and moved; the analysis below runs on
+            // the adapted mesh.
+            let (st, model, adapted) = match a.adapt.options()? {
+                Some(o) => {
+                    let ad = voussoir::analysis::adapt::limit_adapt(
+                        &model,
+                        c.input.build,
+                        &c.input.solver,
+                        c.crushing,
+                        c.facets,
+                        &o,
+                    )?;
+                    (ad.structure, ad.model, Some(ad.record))
+                }
+                None => (st, model, None),
+            };
+            let facts = crate::report_inputs::facts_2d(&model);
             let r = match (
                 a.crushing.non_associative(),
                 a.canonical.options(),
@@ -96,11 +115,25 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                     )
                 })
                 .emit_limit(&r, &c.input.path)?;
+            if let Some(rec) = &adapted {
+                return a.out.emit(
+                    &voussoir::analysis::adapt::Adapted {
+                        result: &r,
+                        adapt: rec,
+                    },
+                    || {
+                        crate::common::limit_summary(&st, &r)
+                            + &crate::canonical::summary(&r.canonical)
+                            + &crate::adapt_args::summary(rec)
+                    },
+                );
+            }
             a.out.emit(&r, || {
                 crate::common::limit_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
             })
         }
         AnyModel::Spatial(model) => {
+            a.adapt.refuse_3d()?;
             if a.crushing.given() {
                 return Err(Fail(
                     "--crushing and --facets describe finite compressive strength, which is modelled in 2D only (3D: --friction-cone exact for the exact friction cone)".into(),

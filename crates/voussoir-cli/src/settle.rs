@@ -29,6 +29,8 @@ pub struct SettleCmdArgs {
     pub forces: crate::draw_args::ForcesArgs,
     #[command(flatten)]
     pub canonical: crate::canonical::CanonicalArgs,
+    #[command(flatten)]
+    pub adapt: crate::adapt_args::AdaptArgs,
 }
 
 /// `settle`'s flags, resolved.
@@ -65,6 +67,7 @@ impl SettleCmdArgs {
                 ));
             }
         }
+        self.adapt.options()?;
         Ok(SettleConfig {
             crushing,
             facets,
@@ -92,6 +95,16 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                 .into(),
         ));
     }
+    // --adapt: the crack lines cut into the mesh and moved (the analysis below then runs on
+    // the adapted mesh, as without --adapt).
+    let (st, model, adapted) = match a.adapt.options()? {
+        Some(o) => {
+            let ad =
+                voussoir::analysis::adapt::settle_adapt(&model, c.input.build, &c.input.solver, &o)?;
+            (ad.structure, ad.model, Some(ad.record))
+        }
+        None => (st, model, None),
+    };
     // Joint laws beyond the defaults (non-associative iteration, exact cone, other facet
     // counts) are solved as such; otherwise the canonical selection unless --raw.
     let plain = c.crushing == Crushing::Linear && c.facets == DEFAULT_FACETS;
@@ -148,12 +161,27 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
             )
         })
         .emit_settlement(&r, &c.input.path)?;
+    if let Some(rec) = &adapted {
+        return a.out.emit_split(
+            &voussoir::analysis::adapt::Adapted {
+                result: &r,
+                adapt: rec,
+            },
+            &splits,
+            || {
+                common::settle_summary(&st, &r)
+                    + &crate::canonical::summary(&r.canonical)
+                    + &crate::adapt_args::summary(rec)
+            },
+        );
+    }
     a.out.emit_split(&r, &splits, || {
         common::settle_summary(&st, &r) + &crate::canonical::summary(&r.canonical)
     })
 }
 
 fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), Fail> {
+    a.adapt.refuse_3d()?;
     if a.crushing.given() {
         return Err(Fail(
             "--crushing and --facets describe finite compressive strength, which is modelled in 2D only".into(),

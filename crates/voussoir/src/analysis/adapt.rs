@@ -72,9 +72,9 @@ impl Default for AdaptOptions {
         AdaptOptions {
             iterations: 4,
             tolerance: 0.005,
-            lines_per_iteration: 4,
-            evaluations: 6,
-            reach: 0.08,
+            lines_per_iteration: 3,
+            evaluations: 5,
+            reach: 0.1,
         }
     }
 }
@@ -267,7 +267,8 @@ where
     let mut reach = o.reach * region.size;
     for it in 1..=o.iterations {
         let new = region.lines_from_cracks(&cracks, &lines, o.lines_per_iteration);
-        if new.is_empty() && it > 1 {
+        // No crack to straighten (the first time) or no new one (later): nothing to move.
+        if new.is_empty() && (it > 1 || lines.is_empty()) {
             converged = true;
             break;
         }

@@ -99,8 +99,12 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
     // the adapted mesh, as without --adapt).
     let (st, model, adapted) = match a.adapt.options()? {
         Some(o) => {
-            let ad =
-                voussoir::analysis::adapt::settle_adapt(&model, c.input.build, &c.input.solver, &o)?;
+            let ad = voussoir::analysis::adapt::settle_adapt(
+                &model,
+                c.input.build,
+                &c.input.solver,
+                &o,
+            )?;
             (ad.structure, ad.model, Some(ad.record))
         }
         None => (st, model, None),

@@ -81,7 +81,12 @@ fn grid(nx: usize, ny: usize) -> Vec<Vec<[f64; 2]>> {
     for j in 0..ny {
         for i in 0..nx {
             let (x0, y0) = (i as f64 * dx, j as f64 * dy);
-            out.push(vec![[x0, y0], [x0 + dx, y0], [x0 + dx, y0 + dy], [x0, y0 + dy]]);
+            out.push(vec![
+                [x0, y0],
+                [x0 + dx, y0],
+                [x0 + dx, y0 + dy],
+                [x0, y0 + dy],
+            ]);
         }
     }
     out
@@ -94,12 +99,7 @@ fn triangles(nx: usize, ny: usize) -> Vec<Vec<[f64; 2]>> {
     for j in 0..ny {
         for i in 0..nx {
             let (x0, y0) = (i as f64 * dx, j as f64 * dy);
-            let (p0, p1, p2, p3) = (
-                [x0, y0],
-                [x0 + dx, y0],
-                [x0 + dx, y0 + dy],
-                [x0, y0 + dy],
-            );
+            let (p0, p1, p2, p3) = ([x0, y0], [x0 + dx, y0], [x0 + dx, y0 + dy], [x0, y0 + dy]);
             if (i + j) % 2 == 0 {
                 out.push(vec![p0, p1, p2]);
                 out.push(vec![p0, p2, p3]);
@@ -132,8 +132,13 @@ fn issue30_item2_adapted_settlement_reaches_the_hand_crack_from_two_meshes() {
         let w0 = work_of(&m);
         // The unadapted mesh misses the crack at x = a: strictly below the hand value.
         assert!(w0 < 0.95 * w_star, "{name}: unadapted {w0} vs W* {w_star}");
-        let ad = settle_adapt(&m, BuildOptions::default(), &SolverOptions::default(), &opts)
-            .unwrap();
+        let ad = settle_adapt(
+            &m,
+            BuildOptions::default(),
+            &SolverOptions::default(),
+            &opts,
+        )
+        .unwrap();
         let its = &ad.record.iterations;
         // Iteration 0 is the unadapted analysis, unchanged.
         assert!((its[0].value - w0).abs() <= 1e-9 * w0, "{name}");
@@ -217,13 +222,20 @@ fn issue30_item2_adapted_limit_never_rises() {
             // crack is along the base, so there is no crack line to move, and the adaptation
             // says so by stopping with none.
             assert!((l0 - B / H).abs() <= 1e-7 * B / H, "{l0}");
-            assert!(ad.record.lines.is_empty() && ad.record.converged, "{:?}", ad.record);
+            assert!(
+                ad.record.lines.is_empty() && ad.record.converged,
+                "{:?}",
+                ad.record
+            );
             assert_eq!(its.last().unwrap().value, l0);
         }
         lams.push(its.last().unwrap().value);
     }
     // The no-tension panel on one base: its λ is at most the rigid overturning B/H = 2.
-    assert!(lams.iter().all(|l| *l > 0.0 && *l <= B / H + 1e-9), "{lams:?}");
+    assert!(
+        lams.iter().all(|l| *l > 0.0 && *l <= B / H + 1e-9),
+        "{lams:?}"
+    );
 }
 
 #[test]
@@ -257,5 +269,8 @@ fn issue30_item2_adapt_refuses_what_it_cannot_carry_over() {
     )
     .unwrap_err()
     .to_string();
-    assert!(e.contains("one outline") && e.contains("2 separate pieces"), "{e}");
+    assert!(
+        e.contains("one outline") && e.contains("2 separate pieces"),
+        "{e}"
+    );
 }

@@ -29,7 +29,9 @@
 //! numbers of an adapted result).
 
 use crate::error::{Error, Result};
-use crate::geometry::{area_centroid, cross, dot, norm, point_segment_distance, strictly_inside, sub};
+use crate::geometry::{
+    area_centroid, cross, dot, norm, point_segment_distance, strictly_inside, sub,
+};
 use crate::lp::{self, LpStatus, SolverOptions};
 use crate::model::{Block, Load, Model, Point};
 use crate::result::cracks::Crack;
@@ -593,8 +595,16 @@ impl Region {
                 let d = [(q[0] - p[0]) / len, (q[1] - p[1]) / len];
                 let eps = 1e-6 * self.size;
                 let ts = self.hits(p, d);
-                let ta = ts.iter().copied().filter(|t| *t <= eps).fold(f64::NEG_INFINITY, f64::max);
-                let tb = ts.iter().copied().filter(|t| *t >= len - eps).fold(f64::INFINITY, f64::min);
+                let ta = ts
+                    .iter()
+                    .copied()
+                    .filter(|t| *t <= eps)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                let tb = ts
+                    .iter()
+                    .copied()
+                    .filter(|t| *t >= len - eps)
+                    .fold(f64::INFINITY, f64::min);
                 if !ta.is_finite() || !tb.is_finite() {
                     continue;
                 }
@@ -724,7 +734,14 @@ fn cut_model(model: &Model, region: &Region, lines: &[Line], tol: f64) -> Result
 
 /// Split the simple polygon `p` (counter-clockwise) along the segment `a`–`b` wherever the
 /// segment runs through its interior; the pieces go to `out`. New vertices lie on the line.
-fn split_polygon(p: &[Point], a: Point, b: Point, tol: f64, out: &mut Vec<Vec<Point>>, depth: usize) {
+fn split_polygon(
+    p: &[Point],
+    a: Point,
+    b: Point,
+    tol: f64,
+    out: &mut Vec<Vec<Point>>,
+    depth: usize,
+) {
     let len = norm(sub(b, a));
     let d = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
     let s: Vec<f64> = p
@@ -754,7 +771,10 @@ fn split_polygon(p: &[Point], a: Point, b: Point, tol: f64, out: &mut Vec<Vec<Po
         if s[i] * s[j] < 0.0 {
             let t = s[i] / (s[i] - s[j]);
             // The crossing, put exactly on the line.
-            let x = [p[i][0] + t * (p[j][0] - p[i][0]), p[i][1] + t * (p[j][1] - p[i][1])];
+            let x = [
+                p[i][0] + t * (p[j][0] - p[i][0]),
+                p[i][1] + t * (p[j][1] - p[i][1]),
+            ];
             let u = dot(sub(x, a), d);
             on.push(q.len());
             q.push([a[0] + u * d[0], a[1] + u * d[1]]);

@@ -128,10 +128,12 @@ fn spatial(d: &crate::direction::Direction) -> Result<[f64; 3], Fail> {
             [x, y, 0.0]
         }
         Direction::Vector(v) if v.len() == 3 => [v[0], v[1], v[2]],
-        Direction::Vector(_) => return Err(Fail(format!(
+        Direction::Vector(_) => {
+            return Err(Fail(format!(
             "--direction {}: a 3D model's direction vector has three components DX,DY,DZ (z up)",
             d.text()
-        ))),
+        )))
+        }
     })
 }
 

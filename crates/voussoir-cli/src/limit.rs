@@ -22,6 +22,8 @@ pub struct LimitArgs {
     pub forces: crate::draw_args::ForcesArgs,
     #[command(flatten)]
     pub canonical: crate::canonical::LimitCanonicalArgs,
+    #[command(flatten)]
+    pub adapt: crate::adapt_args::AdaptArgs,
 }
 
 /// `limit`'s flags, resolved.
@@ -41,6 +43,7 @@ impl LimitArgs {
             non_associative: self.crushing.non_associative,
             canonical: self.canonical.canonical,
             ranges: self.canonical.no_ranges.then_some(false),
+            adapt: self.adapt.options()?,
         };
         let request = self
             .model
@@ -93,6 +96,19 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                     )
                 })
                 .emit_limit(r, &c.input.path)?;
+            if let Some(rec) = &run.adapt {
+                return a.out.emit(
+                    &voussoir::analysis::adapt::Adapted {
+                        result: r,
+                        adapt: rec,
+                    },
+                    || {
+                        crate::common::limit_summary(st, r)
+                            + &crate::canonical::summary(&r.canonical)
+                            + &crate::adapt_args::summary(rec)
+                    },
+                );
+            }
             a.out.emit(r, || {
                 crate::common::limit_summary(st, r) + &crate::canonical::summary(&r.canonical)
             })

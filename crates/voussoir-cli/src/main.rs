@@ -1,5 +1,6 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
+mod adapt_args;
 mod bench;
 mod canonical;
 mod capacity;

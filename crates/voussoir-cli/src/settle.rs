@@ -27,6 +27,8 @@ pub struct SettleCmdArgs {
     pub forces: crate::draw_args::ForcesArgs,
     #[command(flatten)]
     pub canonical: crate::canonical::CanonicalArgs,
+    #[command(flatten)]
+    pub adapt: crate::adapt_args::AdaptArgs,
 }
 
 /// `settle`'s flags, resolved.
@@ -51,6 +53,7 @@ impl SettleCmdArgs {
                 (_, true) => Some(false),
                 _ => None,
             },
+            adapt: self.adapt.options()?,
         };
         let request = self
             .model
@@ -107,6 +110,20 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                     )
                 })
                 .emit_settlement(r, &c.input.path)?;
+            if let Some(rec) = &run.adapt {
+                return a.out.emit_split(
+                    &voussoir::analysis::adapt::Adapted {
+                        result: r,
+                        adapt: rec,
+                    },
+                    &run.setup.splits,
+                    || {
+                        common::settle_summary(st, r)
+                            + &crate::canonical::summary(&r.canonical)
+                            + &crate::adapt_args::summary(rec)
+                    },
+                );
+            }
             a.out.emit_split(r, &run.setup.splits, || {
                 common::settle_summary(st, r) + &crate::canonical::summary(&r.canonical)
             })

@@ -9,8 +9,8 @@ pub mod files;
 /// The summaries' units of length (README, "Units in the summaries"), shared with the library.
 pub use voussoir::lengths;
 pub mod mesh;
-pub mod outline;
 pub mod motion;
+pub mod outline;
 pub mod report3d;
 pub mod report_parts;
 pub mod result3d;

@@ -1,5 +1,6 @@
 //! Analyses: each is a composition of the structure, the kinematic map and the two LP forms.
 
+pub mod adapt;
 pub mod canonical;
 pub mod laws;
 pub mod limit;

@@ -470,6 +470,8 @@ pub struct Run<M, S: Assembly> {
     pub setup: Setup<M, S>,
     pub output: Output<S::D>,
     pub solver: SolverOptions,
+    /// The adaptation of the crack lines, when the request asked for one (2D).
+    pub adapt: Option<crate::analysis::adapt::AdaptRecord>,
 }
 
 /// The result of [`run`] for a model of either dimension.
@@ -492,6 +494,9 @@ impl AnyResult {
                 Output::Safety(x) => serde_json::to_value(x),
             };
             let mut v = v.unwrap_or(serde_json::Value::Null);
+            if let (Some(a), Some(o)) = (&r.adapt, v.as_object_mut()) {
+                o.insert("adapt".into(), serde_json::to_value(a).unwrap_or_default());
+            }
             if !r.setup.splits.is_empty() {
                 if let Some(o) = v.as_object_mut() {
                     o.insert(
@@ -607,6 +612,50 @@ fn joint_laws(a: &Analysis) -> Option<JointLaws> {
 
 /// Check what needs the structure (a compressive strength for the crushing options, a support
 /// motion where one is needed), choose the analysis's variant and run it.
+/// The adaptation a request asks for (limit and settle).
+fn adapt_of(a: &Analysis) -> Option<crate::analysis::adapt::AdaptOptions> {
+    match a {
+        Analysis::Limit(r) => r.adapt,
+        Analysis::Settle(r) => r.adapt,
+        _ => None,
+    }
+}
+
+/// `--adapt`: the crack lines cut into the 2D mesh and moved to their optimal position; the
+/// analysis then runs on the adapted mesh (docs/cracks.md).
+fn adapted(
+    mut setup: Setup<Model, Structure>,
+    req: &Request,
+) -> Result<(
+    Setup<Model, Structure>,
+    Option<crate::analysis::adapt::AdaptRecord>,
+)> {
+    let Some(o) = adapt_of(&req.analysis) else {
+        return Ok((setup, None));
+    };
+    let build = BuildOptions {
+        tolerance: req.model.tolerance,
+    };
+    let solver = req.solver.options(2);
+    let ad = match &req.analysis {
+        Analysis::Limit(r) => {
+            let laws = r.laws();
+            crate::analysis::adapt::limit_adapt(
+                &setup.model,
+                build,
+                &solver,
+                r.crushing,
+                laws.facets(),
+                &o,
+            )?
+        }
+        _ => crate::analysis::adapt::settle_adapt(&setup.model, build, &solver, &o)?,
+    };
+    setup.model = ad.model;
+    setup.structure = ad.structure;
+    Ok((setup, Some(ad.record)))
+}
+
 pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
     match prepared {
         Prepared::Planar(setup) => {
@@ -618,6 +667,7 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                 2,
                 moving(setup.model.supports.iter().map(|s| s.motion)),
             )?;
+            let (setup, adapt) = adapted(setup, req)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
                     let solver = req.solver.options(2);
@@ -631,9 +681,16 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                 setup,
                 output,
                 solver,
+                adapt,
             }))
         }
         Prepared::Spatial(setup) => {
+            if adapt_of(&req.analysis).is_some() {
+                return invalid(format!(
+                    "{} moves crack lines of 2D walls; it is not available for 3D models",
+                    req.names.name("adapt")
+                ));
+            }
             check_motion(
                 req,
                 3,
@@ -656,6 +713,7 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                 setup,
                 output,
                 solver,
+                adapt: None,
             }))
         }
     }

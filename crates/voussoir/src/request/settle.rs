@@ -33,6 +33,10 @@ pub struct SettleRequest {
     /// at most 500 blocks; true: always; false: never.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ranges: Option<bool>,
+    /// Mesh-independent cracks (2D): crack lines cut into the mesh and moved to their optimal
+    /// position before the analysis runs on the adapted mesh (docs/cracks.md).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adapt: Option<crate::analysis::adapt::AdaptOptions>,
 }
 
 impl SettleRequest {

@@ -1,0 +1,106 @@
+//! `--adapt` of `settle` and `limit` (2D): crack lines moved to their optimal position
+//! (docs/cracks.md, "Adapted crack lines").
+
+use crate::common::Fail;
+use clap::Args;
+use voussoir::analysis::adapt::{AdaptOptions, AdaptRecord, Objective};
+
+#[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Adapted crack lines (2D)")]
+pub struct AdaptArgs {
+    /// Mesh-independent cracks: cut straight crack lines into the mesh along the cracks found
+    /// and move their ends along the wall's outline (golden-section search) to the position that
+    /// maximises the work of the dead loads (settle) or minimises λ (limit); iterate until the
+    /// relative change is below --adapt-tol. 2D models whose blocks tile one outline
+    /// (docs/cracks.md). The result is the analysis of the adapted mesh plus an `adapt` record.
+    #[arg(long)]
+    pub adapt: bool,
+    /// Largest number of adaptation iterations [default: 4].
+    #[arg(long, value_name = "N")]
+    pub adapt_iterations: Option<usize>,
+    /// Converged when the work (λ) changes by less than this fraction between two iterations
+    /// [default: 0.005].
+    #[arg(long, value_name = "TOL")]
+    pub adapt_tol: Option<f64>,
+}
+
+impl AdaptArgs {
+    /// The adaptation's settings, `None` without `--adapt`.
+    pub fn options(&self) -> Result<Option<AdaptOptions>, Fail> {
+        if !self.adapt {
+            if self.adapt_iterations.is_some() {
+                return Err(Fail("--adapt-iterations goes with --adapt".into()));
+            }
+            if self.adapt_tol.is_some() {
+                return Err(Fail("--adapt-tol goes with --adapt".into()));
+            }
+            return Ok(None);
+        }
+        let mut o = AdaptOptions::default();
+        if let Some(n) = self.adapt_iterations {
+            if n == 0 {
+                return Err(Fail("--adapt-iterations must be at least 1".into()));
+            }
+            o.iterations = n;
+        }
+        if let Some(t) = self.adapt_tol {
+            if !(t > 0.0 && t.is_finite()) {
+                return Err(Fail(format!(
+                    "--adapt-tol must be a positive number (got {t})"
+                )));
+            }
+            o.tolerance = t;
+        }
+        Ok(Some(o))
+    }
+}
+
+/// The summary lines of an adaptation.
+pub fn summary(r: &AdaptRecord) -> String {
+    let what = match r.objective {
+        Objective::SettlementWork => "work",
+        Objective::LoadMultiplier => "λ",
+    };
+    let unit = match r.objective {
+        Objective::SettlementWork => " kN·m",
+        Objective::LoadMultiplier => "",
+    };
+    let n = r.iterations.len().saturating_sub(1);
+    let mut s = format!(
+        "adapted crack lines: {} ({} iteration{}, tolerance {}), {} line{}\n",
+        if r.converged {
+            "converged"
+        } else {
+            "NOT converged"
+        },
+        n,
+        if n == 1 { "" } else { "s" },
+        r.tolerance,
+        r.lines.len(),
+        if r.lines.len() == 1 { "" } else { "s" },
+    );
+    for it in &r.iterations {
+        s += &format!(
+            "  iteration {}: {} blocks, {} line{}, {what} {:.6}{unit}{}, {} search solves, {:.1} s\n",
+            it.iteration,
+            it.blocks,
+            it.lines,
+            if it.lines == 1 { "" } else { "s" },
+            it.value,
+            if it.certified { " (certified)" } else { " (NOT certified)" },
+            it.evaluations,
+            it.time
+        );
+    }
+    for (k, l) in r.lines.iter().enumerate() {
+        s += &format!(
+            "  line {}: ({:.4}, {:.4}) to ({:.4}, {:.4}) m\n",
+            k + 1,
+            l[0][0],
+            l[0][1],
+            l[1][0],
+            l[1][1]
+        );
+    }
+    s
+}

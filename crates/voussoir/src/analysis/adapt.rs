@@ -1,0 +1,856 @@
+//! Mesh-independent cracks (issue 30, item 2; docs/cracks.md, "Adapted crack lines").
+//!
+//! A rigid-block model cracks only along its element edges, so its crack pattern and its work
+//! (or λ) depend on the mesh. Following the route the paper announces as future work (Milani
+//! and Lourenço 2009, Milani 2015: interfaces moved onto the failure lines by sequential linear
+//! programming; Chiozzi, Milani and Tralli 2017, Grillanda et al. 2021: a few crack lines
+//! placed by a search that maximises the work or minimises λ), the crack lines are here
+//! *inserted into the mesh and moved*:
+//!
+//! 1. Solve the paper's program on the model as given (iteration 0).
+//! 2. Read its crack polylines ([`crate::result::cracks`]); simplify each (Douglas–Peucker, to
+//!    the element size) into straight runs, and extend every run that is not already a crack
+//!    line to the wall's outline (the union of the blocks, its outer boundary and openings):
+//!    a *crack line* is a chord of the wall between two points of its outline.
+//! 3. Cut every element a crack line crosses into two along the line (exactly: the new
+//!    vertices lie on the line), so that the two sides can open as a wedge about any point of
+//!    it. A cut only adds freedom: the previous mechanism is still admissible, so the work
+//!    never decreases (λ never increases).
+//! 4. Move each end of each crack line along the outline by a golden-section search of the
+//!    work (λ) over an arc of the outline (`reach` of the wall's diagonal, halved at each
+//!    iteration), the other lines held, every trial geometry cut afresh from the original
+//!    mesh and solved; a move is kept only if it improves the objective.
+//! 5. Solve the best geometry in full (certified) and repeat from 2 until the relative change
+//!    of the objective between iterations is below `tolerance`, or `iterations` are done.
+//!
+//! The search trials solve the settlement's motion LP only (or the limit analysis); each
+//! iteration's reported result is the full analysis with its certificate. The library does no
+//! I/O; the times in the record are wall-clock seconds (they are the only non-deterministic
+//! numbers of an adapted result).
+
+use crate::error::{Error, Result};
+use crate::geometry::{
+    area_centroid, cross, dot, norm, point_segment_distance, strictly_inside, sub,
+};
+use crate::lp::{self, LpStatus, SolverOptions};
+use crate::model::{Block, Load, Model, Point};
+use crate::result::cracks::Crack;
+use crate::result::BodyName;
+use crate::structure::{BuildOptions, Structure};
+use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::single::SingleFloatOverlay;
+use serde::{Deserialize, Serialize};
+use std::time::Instant;
+
+/// What the adaptation optimises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Objective {
+    /// The work of the dead loads of a settlement (maximised, as by the paper's program).
+    SettlementWork,
+    /// The collapse load multiplier λ (minimised).
+    LoadMultiplier,
+}
+
+/// Settings of the adaptation.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct AdaptOptions {
+    /// Largest number of adaptation iterations (after the unadapted solve).
+    pub iterations: usize,
+    /// Converged when the relative change of the objective between two iterations is below this.
+    pub tolerance: f64,
+    /// Largest number of new crack lines taken from one iteration's cracks.
+    pub lines_per_iteration: usize,
+    /// Solves of the golden-section search per crack-line end.
+    pub evaluations: usize,
+    /// Half the arc of the outline searched for each end, as a fraction of the wall's diagonal
+    /// (halved at each iteration).
+    pub reach: f64,
+}
+
+impl Default for AdaptOptions {
+    fn default() -> Self {
+        AdaptOptions {
+            iterations: 4,
+            tolerance: 0.005,
+            lines_per_iteration: 3,
+            evaluations: 5,
+            reach: 0.1,
+        }
+    }
+}
+
+/// One iteration of the adaptation (0: the model as given).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AdaptIteration {
+    pub iteration: usize,
+    /// Blocks of the mesh solved.
+    pub blocks: usize,
+    /// Crack lines inserted.
+    pub lines: usize,
+    /// Work of the dead loads (kN·m) or load multiplier λ of the full solve.
+    pub value: f64,
+    /// Whether that solve is certified (duality gap within tolerance).
+    pub certified: bool,
+    /// Search solves of this iteration.
+    pub evaluations: usize,
+    /// Wall-clock seconds from the start of the adaptation to the end of this iteration (in the
+    /// summary only: the JSON stays byte-identical for the same input).
+    #[serde(skip)]
+    pub time: f64,
+}
+
+/// The record of an adaptation (the `adapt` field of an adapted result).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AdaptRecord {
+    /// One sentence: what was done.
+    pub method: String,
+    pub objective: Objective,
+    /// The relative change of the last iteration was below `tolerance`.
+    pub converged: bool,
+    pub tolerance: f64,
+    pub iterations: Vec<AdaptIteration>,
+    /// The crack lines inserted, each from one point of the outline to another (m).
+    pub lines: Vec<[Point; 2]>,
+}
+
+/// An adapted model: the mesh with its crack lines cut in, its structure and the record.
+#[derive(Clone, Debug)]
+pub struct Adaptation {
+    pub model: Model,
+    pub structure: Structure,
+    pub record: AdaptRecord,
+}
+
+/// What one solve of a geometry gives the adaptation.
+#[derive(Clone, Debug)]
+pub struct Evaluation {
+    /// The work or λ; `None` when the program has no mechanism (no collapse, cannot stand).
+    pub value: Option<f64>,
+    /// The cracks (full solves only).
+    pub cracks: Vec<Crack>,
+    pub certified: bool,
+}
+
+/// A result together with its adaptation record (serialised as the result's fields plus
+/// `adapt`).
+#[derive(Serialize)]
+pub struct Adapted<'a, R: Serialize> {
+    #[serde(flatten)]
+    pub result: &'a R,
+    pub adapt: &'a AdaptRecord,
+}
+
+/// Why `--adapt` cannot be applied to `model`, if it cannot: loads tied to block edges and
+/// existing cracks name elements that the cuts replace.
+pub fn check_model(model: &Model) -> Result<()> {
+    if !model.cracks.is_empty() {
+        return Err(Error::Request(
+            "--adapt re-meshes the wall, so it takes a model without existing cracks (they name joints of the original mesh)".into(),
+        ));
+    }
+    if model
+        .loads
+        .dead
+        .iter()
+        .chain(&model.loads.live)
+        .any(|l| matches!(l, Load::Edge { .. }))
+    {
+        return Err(Error::Request(
+            "--adapt re-meshes the wall: edge loads (tied to an element's edge) are not carried over; give them as point or body loads".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Settlement with adapted crack lines: the work of the dead loads maximised over the
+/// positions of the crack lines. The model's supports carry their prescribed motions.
+pub fn settle_adapt(
+    model: &Model,
+    build: BuildOptions,
+    opts: &SolverOptions,
+    o: &AdaptOptions,
+) -> Result<Adaptation> {
+    adapt(model, build, Objective::SettlementWork, o, |st, full| {
+        if full {
+            let r = crate::analysis::settlement::settle(st, opts)?;
+            let ok = r.certificate.as_ref().is_some_and(|c| c.ok);
+            Ok(Evaluation {
+                value: r.work_dead_loads,
+                cracks: r.cracks,
+                certified: ok,
+            })
+        } else {
+            let map = crate::discretize::KinematicMap::new(st);
+            let mp = crate::programs::settlement_motion_program(&map, &st.load_vector(false))?;
+            let s = lp::solve(&mp.lp, opts)?;
+            Ok(Evaluation {
+                value: (s.status == LpStatus::Optimal).then(|| mp.objective_sign * s.objective),
+                cracks: Vec::new(),
+                certified: false,
+            })
+        }
+    })
+}
+
+/// Limit analysis with adapted crack lines: λ minimised over the positions of the crack lines.
+pub fn limit_adapt(
+    model: &Model,
+    build: BuildOptions,
+    opts: &SolverOptions,
+    crushing: crate::analysis::limit::Crushing,
+    facets: usize,
+    o: &AdaptOptions,
+) -> Result<Adaptation> {
+    adapt(model, build, Objective::LoadMultiplier, o, |st, _| {
+        let r = crate::analysis::limit::limit_with(st, opts, crushing, facets)?;
+        let ok = r.certificate.as_ref().is_some_and(|c| c.ok);
+        Ok(Evaluation {
+            value: if r.status == crate::analysis::limit::LimitStatus::Collapse {
+                r.load_multiplier
+            } else {
+                None
+            },
+            cracks: r.cracks,
+            certified: ok,
+        })
+    })
+}
+
+/// The adaptation with any solve: `solve(structure, full)` returns the objective (and, when
+/// `full`, the cracks and the certificate).
+pub fn adapt<F>(
+    model: &Model,
+    build: BuildOptions,
+    objective: Objective,
+    o: &AdaptOptions,
+    mut solve: F,
+) -> Result<Adaptation>
+where
+    F: FnMut(&Structure, bool) -> Result<Evaluation>,
+{
+    check_model(model)?;
+    if !(o.tolerance > 0.0 && o.tolerance.is_finite()) {
+        return Err(Error::Request(format!(
+            "--adapt-tol must be a positive number (got {})",
+            o.tolerance
+        )));
+    }
+    let start = Instant::now();
+    let st0 = Structure::new(model, build)?;
+    let tol = st0.tolerance;
+    let region = Region::of(model, tol)?;
+    let sign = match objective {
+        Objective::SettlementWork => 1.0,
+        Objective::LoadMultiplier => -1.0,
+    };
+    let score = |v: Option<f64>| v.map_or(f64::NEG_INFINITY, |x| sign * x);
+
+    let ev = solve(&st0, true)?;
+    let Some(v0) = ev.value else {
+        return Err(Error::Request(match objective {
+            Objective::SettlementWork => "--adapt: the model as given has no settlement mechanism (it cannot stand, or the motions are incompatible): there are no cracks to adapt".into(),
+            Objective::LoadMultiplier => "--adapt: the model as given does not collapse under its live loads: there are no cracks to adapt".into(),
+        }));
+    };
+    let mut iterations = vec![AdaptIteration {
+        iteration: 0,
+        blocks: st0.blocks.len(),
+        lines: 0,
+        value: v0,
+        certified: ev.certified,
+        evaluations: 0,
+        time: start.elapsed().as_secs_f64(),
+    }];
+    let mut lines: Vec<Line> = Vec::new();
+    let mut current = (model.clone(), st0);
+    let mut cracks = ev.cracks;
+    let mut value = v0;
+    let mut converged = false;
+    let mut reach = o.reach * region.size;
+    for it in 1..=o.iterations {
+        let new = region.lines_from_cracks(&cracks, &lines, o.lines_per_iteration);
+        // No crack to straighten (the first time) or no new one (later): nothing to move.
+        if new.is_empty() && (it > 1 || lines.is_empty()) {
+            converged = true;
+            break;
+        }
+        lines.extend(new);
+        let mut evaluations = 0usize;
+        let mut trial = |ls: &[Line], evaluations: &mut usize| -> f64 {
+            *evaluations += 1;
+            match cut_model(model, &region, ls, tol).and_then(|m| Structure::new(&m, build)) {
+                Ok(st) => solve(&st, false).map_or(f64::NEG_INFINITY, |e| score(e.value)),
+                Err(_) => f64::NEG_INFINITY,
+            }
+        };
+        let mut best = trial(&lines, &mut evaluations);
+        for li in 0..lines.len() {
+            for end in 0..2 {
+                let s0 = lines[li].ends[end].1;
+                let lp = lines[li].ends[end].0;
+                let mut f = |s: f64, evaluations: &mut usize| {
+                    let mut ls = lines.clone();
+                    ls[li].ends[end] = (lp, region.wrap(lp, s));
+                    if ls[li].degenerate(&region) {
+                        return f64::NEG_INFINITY;
+                    }
+                    trial(&ls, evaluations)
+                };
+                let (s, v) = golden_section(s0 - reach, s0 + reach, o.evaluations, |s| {
+                    f(s, &mut evaluations)
+                });
+                if v > best + 1e-9 * best.abs().max(1e-12) {
+                    best = v;
+                    lines[li].ends[end] = (lp, region.wrap(lp, s));
+                }
+            }
+        }
+        reach *= 0.5;
+        let m = cut_model(model, &region, &lines, tol)?;
+        let st = Structure::new(&m, build)?;
+        let ev = solve(&st, true)?;
+        let v = ev.value.unwrap_or(f64::NAN);
+        iterations.push(AdaptIteration {
+            iteration: it,
+            blocks: st.blocks.len(),
+            lines: lines.len(),
+            value: v,
+            certified: ev.certified,
+            evaluations,
+            time: start.elapsed().as_secs_f64(),
+        });
+        let change = (v - value).abs() / v.abs().max(value.abs()).max(f64::MIN_POSITIVE);
+        current = (m, st);
+        cracks = ev.cracks;
+        value = v;
+        if change < o.tolerance {
+            converged = true;
+            break;
+        }
+    }
+    let method = format!(
+        "crack lines cut into the mesh along the straightened crack polylines and moved along the outline by golden-section search ({} solves per end, reach {:.3} m halved per iteration), {} the {}",
+        o.evaluations,
+        o.reach * region.size,
+        match objective {
+            Objective::SettlementWork => "maximising",
+            Objective::LoadMultiplier => "minimising",
+        },
+        match objective {
+            Objective::SettlementWork => "work of the dead loads",
+            Objective::LoadMultiplier => "load multiplier",
+        }
+    );
+    Ok(Adaptation {
+        model: current.0,
+        structure: current.1,
+        record: AdaptRecord {
+            method,
+            objective,
+            converged,
+            tolerance: o.tolerance,
+            iterations,
+            lines: lines.iter().map(|l| l.points(&region)).collect(),
+        },
+    })
+}
+
+/// Golden-section search for the largest `f` on `[lo, hi]` with `n` evaluations; returns the
+/// best point evaluated and its value.
+fn golden_section(lo: f64, hi: f64, n: usize, mut f: impl FnMut(f64) -> f64) -> (f64, f64) {
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (lo, hi);
+    let mut best = (f64::NAN, f64::NEG_INFINITY);
+    let note = |x: f64, v: f64, best: &mut (f64, f64)| {
+        if v > best.1 {
+            *best = (x, v);
+        }
+    };
+    if n == 0 {
+        return best;
+    }
+    let mut x1 = b - g * (b - a);
+    let mut f1 = f(x1);
+    note(x1, f1, &mut best);
+    if n == 1 {
+        return best;
+    }
+    let mut x2 = a + g * (b - a);
+    let mut f2 = f(x2);
+    note(x2, f2, &mut best);
+    for _ in 2..n {
+        if f1 >= f2 {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = f(x1);
+            note(x1, f1, &mut best);
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = f(x2);
+            note(x2, f2, &mut best);
+        }
+    }
+    best
+}
+
+/// A crack line: a chord between two points of the outline, each `(loop, arc length)`.
+#[derive(Clone, Copy, Debug)]
+struct Line {
+    ends: [(usize, f64); 2],
+}
+
+impl Line {
+    fn points(&self, r: &Region) -> [Point; 2] {
+        [r.point_at(self.ends[0]), r.point_at(self.ends[1])]
+    }
+
+    fn degenerate(&self, r: &Region) -> bool {
+        let [a, b] = self.points(r);
+        norm(sub(b, a)) < 0.05 * r.element
+    }
+}
+
+/// The wall's outline: the union of its blocks (outer boundary and openings).
+struct Region {
+    loops: Vec<Vec<Point>>,
+    /// Cumulative arc length at each vertex of each loop (last entry: the perimeter).
+    cum: Vec<Vec<f64>>,
+    /// Diagonal of the wall's bounding box.
+    size: f64,
+    /// Typical element size: the median square root of the blocks' areas.
+    element: f64,
+}
+
+impl Region {
+    fn of(model: &Model, tol: f64) -> Result<Region> {
+        let subj: Vec<Vec<[f64; 2]>> = model.blocks.iter().map(|b| b.polygon.clone()).collect();
+        let clip: Vec<Vec<[f64; 2]>> = Vec::new();
+        let shapes = subj.overlay_as::<i64>(&clip, OverlayRule::Subject, FillRule::NonZero);
+        if shapes.len() != 1 {
+            return Err(Error::Request(format!(
+                "--adapt needs a wall meshed from one outline (its blocks tiling one polygon, with or without openings): this model's blocks form {} separate pieces",
+                shapes.len()
+            )));
+        }
+        let loops: Vec<Vec<Point>> = shapes
+            .into_iter()
+            .flatten()
+            .filter(|c| c.len() >= 3)
+            .collect();
+        let cum = loops
+            .iter()
+            .map(|l| {
+                let mut c = vec![0.0];
+                for i in 0..l.len() {
+                    let d = norm(sub(l[(i + 1) % l.len()], l[i]));
+                    c.push(c[i] + d);
+                }
+                c
+            })
+            .collect();
+        let pts: Vec<Point> = loops.iter().flatten().copied().collect();
+        let bb = crate::geometry::bbox(&pts);
+        let size = (bb[2] - bb[0]).hypot(bb[3] - bb[1]).max(tol);
+        let mut sizes: Vec<f64> = model
+            .blocks
+            .iter()
+            .map(|b| area_centroid(&b.polygon).0.abs().sqrt())
+            .collect();
+        sizes.sort_by(f64::total_cmp);
+        let element = sizes[sizes.len() / 2].max(tol);
+        Ok(Region {
+            loops,
+            cum,
+            size,
+            element,
+        })
+    }
+
+    fn perimeter(&self, l: usize) -> f64 {
+        *self.cum[l].last().unwrap_or(&0.0)
+    }
+
+    fn wrap(&self, l: usize, s: f64) -> f64 {
+        let p = self.perimeter(l);
+        if p > 0.0 {
+            s.rem_euclid(p)
+        } else {
+            0.0
+        }
+    }
+
+    fn point_at(&self, (l, s): (usize, f64)) -> Point {
+        let s = self.wrap(l, s);
+        let c = &self.cum[l];
+        let lp = &self.loops[l];
+        let i = match c.binary_search_by(|x| x.total_cmp(&s)) {
+            Ok(i) => i.min(lp.len() - 1),
+            Err(i) => (i - 1).min(lp.len() - 1),
+        };
+        let (a, b) = (lp[i], lp[(i + 1) % lp.len()]);
+        let len = c[i + 1] - c[i];
+        let t = if len > 0.0 { (s - c[i]) / len } else { 0.0 };
+        [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+    }
+
+    /// The nearest point of the outline, as `(loop, arc length)`.
+    fn project(&self, p: Point) -> (usize, f64) {
+        let mut best = (f64::INFINITY, (0, 0.0));
+        for (l, lp) in self.loops.iter().enumerate() {
+            for i in 0..lp.len() {
+                let (a, b) = (lp[i], lp[(i + 1) % lp.len()]);
+                let d = sub(b, a);
+                let len2 = dot(d, d);
+                let t = if len2 > 0.0 {
+                    (dot(sub(p, a), d) / len2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let q = [a[0] + t * d[0], a[1] + t * d[1]];
+                let dist = norm(sub(p, q));
+                if dist < best.0 {
+                    best = (dist, (l, self.cum[l][i] + t * len2.sqrt()));
+                }
+            }
+        }
+        best.1
+    }
+
+    /// Whether a line runs along the outline (its midpoint on it): it would cut nothing.
+    fn along_outline(&self, l: &Line) -> bool {
+        let [a, b] = l.points(self);
+        let m = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+        norm(sub(self.point_at(self.project(m)), m)) < 0.01 * self.element
+    }
+
+    /// Parameters `t` where the line `p + t·d` (d a unit vector) crosses the outline.
+    fn hits(&self, p: Point, d: Point) -> Vec<f64> {
+        let mut ts = Vec::new();
+        for lp in &self.loops {
+            for i in 0..lp.len() {
+                let (a, b) = (lp[i], lp[(i + 1) % lp.len()]);
+                let e = sub(b, a);
+                let den = cross(d, e);
+                if den.abs() < 1e-14 * norm(e).max(1e-300) {
+                    continue;
+                }
+                // p + t d = a + u e
+                let ap = sub(a, p);
+                let t = cross(ap, e) / den;
+                let u = cross(ap, d) / den;
+                if (-1e-9..=1.0 + 1e-9).contains(&u) {
+                    ts.push(t);
+                }
+            }
+        }
+        ts
+    }
+
+    /// New crack lines from a result's cracks: each crack (widest first, down to 2 % of the
+    /// widest, joints between blocks only) simplified to straight runs at least one element
+    /// long, each run not already along a crack line extended to the outline both ways.
+    fn lines_from_cracks(&self, cracks: &[Crack], existing: &[Line], max: usize) -> Vec<Line> {
+        let mut out: Vec<Line> = Vec::new();
+        let widest = cracks.iter().map(|c| c.max_opening).fold(0.0f64, f64::max);
+        if widest <= 0.0 {
+            return out;
+        }
+        let mut known: Vec<[Point; 2]> = existing.iter().map(|l| l.points(self)).collect();
+        for c in cracks {
+            if out.len() >= max {
+                break;
+            }
+            if c.max_opening < 0.02 * widest || c.closed_loop {
+                continue;
+            }
+            // Cracks along the foundation are the supports' joints: no line to move.
+            if c.faces
+                .iter()
+                .all(|f| f.iter().any(|b| matches!(b, BodyName::Support(_))))
+            {
+                continue;
+            }
+            let runs = douglas_peucker(&c.points, 0.75 * self.element);
+            for w in runs.windows(2) {
+                if out.len() >= max {
+                    break;
+                }
+                let (p, q) = (w[0], w[1]);
+                let len = norm(sub(q, p));
+                if len < self.element {
+                    continue;
+                }
+                let near = 0.05 * self.element;
+                if known.iter().any(|k| {
+                    point_segment_distance(p, k[0], k[1]) <= near
+                        && point_segment_distance(q, k[0], k[1]) <= near
+                }) {
+                    continue;
+                }
+                let d = [(q[0] - p[0]) / len, (q[1] - p[1]) / len];
+                let eps = 1e-6 * self.size;
+                let ts = self.hits(p, d);
+                let ta = ts
+                    .iter()
+                    .copied()
+                    .filter(|t| *t <= eps)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                let tb = ts
+                    .iter()
+                    .copied()
+                    .filter(|t| *t >= len - eps)
+                    .fold(f64::INFINITY, f64::min);
+                if !ta.is_finite() || !tb.is_finite() {
+                    continue;
+                }
+                let a = [p[0] + ta * d[0], p[1] + ta * d[1]];
+                let b = [p[0] + tb * d[0], p[1] + tb * d[1]];
+                let line = Line {
+                    ends: [self.project(a), self.project(b)],
+                };
+                if line.degenerate(self) || self.along_outline(&line) {
+                    continue;
+                }
+                known.push(line.points(self));
+                out.push(line);
+            }
+        }
+        out
+    }
+}
+
+/// The vertices kept by the Douglas–Peucker simplification of a polyline at `tol`.
+fn douglas_peucker(p: &[Point], tol: f64) -> Vec<Point> {
+    if p.len() <= 2 {
+        return p.to_vec();
+    }
+    let mut keep = vec![false; p.len()];
+    keep[0] = true;
+    keep[p.len() - 1] = true;
+    let mut stack = vec![(0usize, p.len() - 1)];
+    while let Some((i, j)) = stack.pop() {
+        let mut far = (0.0, 0usize);
+        for k in i + 1..j {
+            let d = point_segment_distance(p[k], p[i], p[j]);
+            if d > far.0 {
+                far = (d, k);
+            }
+        }
+        if far.0 > tol {
+            keep[far.1] = true;
+            stack.push((i, far.1));
+            stack.push((far.1, j));
+        }
+    }
+    p.iter()
+        .zip(keep)
+        .filter(|(_, k)| *k)
+        .map(|(q, _)| *q)
+        .collect()
+}
+
+/// The model with every block cut along the crack lines (each extended by a hair beyond the
+/// outline so that the border elements are cut through). Loads follow their blocks.
+fn cut_model(model: &Model, region: &Region, lines: &[Line], tol: f64) -> Result<Model> {
+    let mut pieces: Vec<(usize, Vec<Point>)> = model
+        .blocks
+        .iter()
+        .enumerate()
+        .map(|(i, b)| (i, b.polygon.clone()))
+        .collect();
+    let margin = 1e-6 * region.size;
+    for l in lines {
+        let [a, b] = l.points(region);
+        let len = norm(sub(b, a));
+        if len <= tol {
+            continue;
+        }
+        let d = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
+        let a = [a[0] - margin * d[0], a[1] - margin * d[1]];
+        let b = [b[0] + margin * d[0], b[1] + margin * d[1]];
+        let mut next = Vec::with_capacity(pieces.len() + 16);
+        for (parent, p) in pieces {
+            let mut out = Vec::new();
+            split_polygon(&p, a, b, tol, &mut out, 0);
+            next.extend(out.into_iter().map(|q| (parent, q)));
+        }
+        pieces = next;
+    }
+    let blocks: Vec<Block> = pieces
+        .iter()
+        .map(|(parent, p)| Block {
+            polygon: p.clone(),
+            material: model.blocks[*parent].material.clone(),
+        })
+        .collect();
+    let of_parent = |b: usize| -> Vec<usize> {
+        pieces
+            .iter()
+            .enumerate()
+            .filter(|(_, (p, _))| *p == b)
+            .map(|(i, _)| i)
+            .collect()
+    };
+    let map_load = |l: &Load| -> Load {
+        match l {
+            Load::Point { block, at, force } => {
+                let cands = of_parent(*block);
+                let inside = cands.iter().copied().find(|&i| {
+                    let poly = &pieces[i].1;
+                    strictly_inside(*at, poly, tol)
+                        || (0..poly.len()).any(|k| {
+                            point_segment_distance(*at, poly[k], poly[(k + 1) % poly.len()]) <= tol
+                        })
+                });
+                Load::Point {
+                    block: inside.or(cands.first().copied()).unwrap_or(*block),
+                    at: *at,
+                    force: *force,
+                }
+            }
+            Load::Body {
+                coefficients,
+                blocks,
+            } => Load::Body {
+                coefficients: *coefficients,
+                blocks: blocks
+                    .as_ref()
+                    .map(|bs| bs.iter().flat_map(|b| of_parent(*b)).collect()),
+            },
+            other => other.clone(),
+        }
+    };
+    let mut m = model.clone();
+    m.blocks = blocks;
+    m.loads.dead = model.loads.dead.iter().map(map_load).collect();
+    m.loads.live = model.loads.live.iter().map(map_load).collect();
+    Ok(m)
+}
+
+/// Split the simple polygon `p` (counter-clockwise) along the segment `a`–`b` wherever the
+/// segment runs through its interior; the pieces go to `out`. New vertices lie on the line.
+fn split_polygon(
+    p: &[Point],
+    a: Point,
+    b: Point,
+    tol: f64,
+    out: &mut Vec<Vec<Point>>,
+    depth: usize,
+) {
+    let len = norm(sub(b, a));
+    let d = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
+    let s: Vec<f64> = p
+        .iter()
+        .map(|v| {
+            let x = cross(d, sub(*v, a));
+            if x.abs() <= tol {
+                0.0
+            } else {
+                x
+            }
+        })
+        .collect();
+    if depth > 64 || s.iter().all(|x| *x >= 0.0) || s.iter().all(|x| *x <= 0.0) {
+        out.push(p.to_vec());
+        return;
+    }
+    let n = p.len();
+    let mut q: Vec<Point> = Vec::with_capacity(n + 4);
+    let mut on: Vec<usize> = Vec::new();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        if s[i] == 0.0 {
+            on.push(q.len());
+        }
+        q.push(p[i]);
+        if s[i] * s[j] < 0.0 {
+            let t = s[i] / (s[i] - s[j]);
+            // The crossing, put exactly on the line.
+            let x = [
+                p[i][0] + t * (p[j][0] - p[i][0]),
+                p[i][1] + t * (p[j][1] - p[i][1]),
+            ];
+            let u = dot(sub(x, a), d);
+            on.push(q.len());
+            q.push([a[0] + u * d[0], a[1] + u * d[1]]);
+        }
+    }
+    let mut along: Vec<(f64, usize)> = on.iter().map(|&k| (dot(sub(q[k], a), d), k)).collect();
+    along.sort_by(|x, y| x.0.total_cmp(&y.0));
+    for w in along.windows(2) {
+        let ((t0, i0), (t1, i1)) = (w[0], w[1]);
+        if t1 - t0 <= tol || t0 < -tol || t1 > len + tol {
+            continue;
+        }
+        let (i, j) = (i0.min(i1), i0.max(i1));
+        if j - i == 1 || (i == 0 && j == q.len() - 1) {
+            continue; // an edge of the polygon, not a diagonal
+        }
+        let tm = 0.5 * (t0 + t1);
+        let mid = [a[0] + tm * d[0], a[1] + tm * d[1]];
+        if !strictly_inside(mid, &q, tol) {
+            continue;
+        }
+        let p1: Vec<Point> = q[i..=j].to_vec();
+        let mut p2: Vec<Point> = q[j..].to_vec();
+        p2.extend_from_slice(&q[..=i]);
+        split_polygon(&p1, a, b, tol, out, depth + 1);
+        split_polygon(&p2, a, b, tol, out, depth + 1);
+        return;
+    }
+    out.push(p.to_vec());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_square_splits_along_its_diagonal_line() {
+        let sq = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let mut out = Vec::new();
+        split_polygon(&sq, [-0.5, 0.25], [1.5, 0.75], 1e-12, &mut out, 0);
+        assert_eq!(out.len(), 2);
+        let areas: Vec<f64> = out.iter().map(|p| area_centroid(p).0).collect();
+        assert!((areas[0] + areas[1] - 1.0).abs() < 1e-12);
+        assert!(areas.iter().all(|a| *a > 0.0));
+        // A segment that stops short of the square leaves it whole.
+        let mut out = Vec::new();
+        split_polygon(&sq, [-0.5, 0.25], [0.5, 0.5], 1e-12, &mut out, 0);
+        assert_eq!(out.len(), 1);
+    }
+
+    #[test]
+    fn an_l_shape_crossed_twice_gives_three_pieces() {
+        // A U shape cut by a horizontal line through both arms.
+        let u = vec![
+            [0.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 2.0],
+            [2.0, 2.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
+        let mut out = Vec::new();
+        split_polygon(&u, [-1.0, 1.5], [4.0, 1.5], 1e-12, &mut out, 0);
+        assert_eq!(out.len(), 3);
+        let total: f64 = out.iter().map(|p| area_centroid(p).0).sum();
+        assert!((total - 5.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn golden_section_finds_a_peak() {
+        let (x, v) = golden_section(0.0, 4.0, 30, |x| -(x - 1.3f64).powi(2));
+        assert!((x - 1.3).abs() < 1e-4 && v <= 0.0);
+    }
+}

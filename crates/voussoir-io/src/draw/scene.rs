@@ -1509,6 +1509,7 @@ fn legend_entries(
 mod tests {
     use super::*;
     use crate::draw::chrome::wrap;
+    use crate::draw::svg::text_width;
 
     #[test]
     fn pixel_matrix_matches_the_world_rigid_motion() {

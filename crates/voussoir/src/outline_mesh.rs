@@ -651,7 +651,7 @@ struct Region<'a> {
 
 impl Region<'_> {
     /// The ordinate where an outline edge crosses `x = c` nearest to `y` (or x at `y = c`).
-    fn crossing(&self, axis: usize, c: f64, near: f64) -> Option<f64> {
+    fn axis_crossing(&self, axis: usize, c: f64, near: f64) -> Option<f64> {
         let other = 1 - axis;
         let mut best: Option<f64> = None;
         for &(mut a, mut b) in &self.edges {
@@ -783,14 +783,14 @@ impl Region<'_> {
         }
         for x in [cell[0], cell[2]] {
             if (q[0] - x).abs() <= tol {
-                if let Some(y) = self.crossing(0, x, q[1]) {
+                if let Some(y) = self.axis_crossing(0, x, q[1]) {
                     return [x, y];
                 }
             }
         }
         for y in [cell[1], cell[3]] {
             if (q[1] - y).abs() <= tol {
-                if let Some(x) = self.crossing(1, y, q[0]) {
+                if let Some(x) = self.axis_crossing(1, y, q[0]) {
                     return [x, y];
                 }
             }

@@ -81,7 +81,7 @@ fn cleaned_up(
     if !(failed || sol.reduced_accuracy) || s.status != LimitStatus::Collapse {
         return s;
     }
-    match lp::crossover(&fp.lp, sol, opts) {
+    match lp::run_crossover(&fp.lp, sol, opts) {
         Ok(vertex) => {
             let mut c = limit_solution(map, fp, live, &vertex, s.solver.clone());
             c.iterations += s.iterations;

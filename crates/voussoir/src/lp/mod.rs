@@ -553,7 +553,7 @@ fn solve_once(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
 /// their bounds relative to their duals start basic (free columns first), every other one
 /// nonbasic at its nearer bound; HiGHS repairs a singular start and ends at an optimal vertex,
 /// whose duals are exact to the simplex tolerances.
-pub fn crossover(
+pub fn run_crossover(
     lp: &LinearProgram,
     start: &LpSolution,
     opts: &SolverOptions,

@@ -18,7 +18,6 @@
 pub mod clarabel;
 pub mod highs;
 pub mod scale;
-pub mod sequence;
 
 pub use scale::Scaling;
 

@@ -48,6 +48,24 @@ impl LimitRequest {
     }
 
     pub(super) fn validate(&self, req: &Request) -> Result<()> {
+        let n = req.names;
+        if let (Some(r), false) = (self.ranges, self.canonical) {
+            // The ranges are a stage of the canonical selection: without it they would be
+            // silently ignored.
+            use super::Names;
+            let (flag, canonical) = match n {
+                Names::Flags if r => (n.name("ranges"), n.name("canonical")),
+                Names::Flags => (n.name("no_ranges"), n.name("canonical")),
+                Names::Keywords => (
+                    n.given("ranges", if r { "True" } else { "False" }),
+                    n.given("canonical", "True"),
+                ),
+                Names::Fields => (n.given("ranges", r), n.given("canonical", true)),
+            };
+            return invalid(format!(
+                "{flag} applies to the canonical selection: add {canonical} (limit reports the solver's own optimum by default)"
+            ));
+        }
         self.laws().validate(req.names)
     }
 

@@ -601,6 +601,26 @@ fn check_motion(req: &Request, dims: usize, moving: bool) -> Result<()> {
     Ok(())
 }
 
+/// Refuse an analysis whose answer is made of the dead loads on a model that has none: a
+/// weightless model settles by every mechanism at zero work (nothing to certify), and tilts or
+/// carries a settlement by nothing.
+fn check_dead_loads<S: Assembly>(req: &Request, st: &S) -> Result<()> {
+    let needs_weight = match &req.analysis {
+        Analysis::Settle(_) => Some("settle"),
+        Analysis::Capacity(_) => Some("capacity"),
+        Analysis::Tilt(_) => Some("tilt"),
+        _ => None,
+    };
+    if let Some(what) = needs_weight {
+        if st.load_vector(false).iter().all(|x| *x == 0.0) {
+            return invalid(format!(
+                "{what} needs dead loads: the model's blocks weigh nothing (unit_weight 0) and it has no dead loads, so every mechanism would do zero work"
+            ));
+        }
+    }
+    Ok(())
+}
+
 fn joint_laws(a: &Analysis) -> Option<JointLaws> {
     match a {
         Analysis::Limit(r) => Some(r.laws()),
@@ -667,6 +687,7 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                 2,
                 moving(setup.model.supports.iter().map(|s| s.motion)),
             )?;
+            check_dead_loads(req, &setup.structure)?;
             let (setup, adapt) = adapted(setup, req)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
@@ -696,6 +717,7 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                 3,
                 moving(setup.model.supports.iter().map(|s| s.motion)),
             )?;
+            check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
                     let solver = req.solver.options(3);

@@ -173,9 +173,17 @@ pub fn report3d_html_with(
         if r.units() == crate::draw::MotionUnits::Normalised {
             cr.text("The mechanism of a limit analysis is a rate (normalised): its crack widths compare the joints' openings with each other, they are not millimetres of a real displacement; the positions and lengths are geometric.");
         }
+        if !r.cracks().is_empty() {
+            let (head, rows) = rp::crack_polyline_table(
+                r.cracks(),
+                r.units() != crate::draw::MotionUnits::Normalised,
+            );
+            cr.items
+                .push(Item::table(rp::CRACK_POLYLINES_CAPTION, head, rows));
+        }
         let (head, rows) = rp::crack_table(&cracks, 3);
         cr.items.push(Item::table(
-            "Cracks (position: centroid of the opened part; width: largest opening; length: of the opened part, along the crack's line)",
+            "Cracked joints (position: centroid of the opened part; width: largest opening; length: of the opened part, along the crack's line)",
             head,
             rows,
         ));

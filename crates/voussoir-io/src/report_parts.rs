@@ -1050,6 +1050,28 @@ fn solve3(a: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
     Some(x)
 }
 
+/// The cracks as the summary and the drawings show them (polylines through consecutive open
+/// joints in 2D, connected coplanar cracked joints in 3D), widest first, one row each with the
+/// summary's own words: the report, the terminal and the JSON's `cracks` tell the same story.
+/// `widths`: a settlement's widths in mm; otherwise openings relative to the largest.
+pub fn crack_polyline_table<C: voussoir::result::CrackText>(
+    cracks: &[C],
+    widths: bool,
+) -> (Vec<String>, Vec<Vec<String>>) {
+    let largest = cracks.iter().fold(0.0f64, |m, c| m.max(c.max_opening()));
+    let head = vec!["crack".to_string(), "description".to_string()];
+    let rows = cracks
+        .iter()
+        .enumerate()
+        .map(|(i, c)| vec![(i + 1).to_string(), c.describe(widths, largest)])
+        .collect();
+    (head, rows)
+}
+
+/// The caption of [`crack_polyline_table`].
+pub const CRACK_POLYLINES_CAPTION: &str =
+    "Cracks, widest first, as in the summary and the drawings (the result's \"cracks\")";
+
 /// The crack table's header and rows: position in m, width and length in mm.
 pub fn crack_table(rows: &[CrackRow], dim: usize) -> (Vec<String>, Vec<Vec<String>>) {
     let mut head = vec![

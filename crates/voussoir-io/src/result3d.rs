@@ -46,6 +46,10 @@ pub trait Result3d {
     fn reactions(&self) -> &[Reaction<Three>] {
         &[]
     }
+    /// The cracks as the summary lists them (widest first); none where the result has none.
+    fn cracks(&self) -> &[voussoir::result::Crack3d] {
+        &[]
+    }
     /// The solver and method that produced the result.
     fn solver(&self) -> Option<&SolverInfo> {
         None
@@ -116,6 +120,9 @@ fn crack_summary(joints: &[JointResult<Three>]) -> String {
 }
 
 impl Result3d for LimitResult<Three> {
+    fn cracks(&self) -> &[voussoir::result::Crack3d] {
+        &self.cracks
+    }
     fn reactions(&self) -> &[Reaction<Three>] {
         &self.reactions
     }
@@ -201,6 +208,9 @@ impl Result3d for LimitResult<Three> {
 }
 
 impl Result3d for SettlementResult<Three> {
+    fn cracks(&self) -> &[voussoir::result::Crack3d] {
+        &self.cracks
+    }
     fn reactions(&self) -> &[Reaction<Three>] {
         &self.reactions
     }
@@ -313,6 +323,9 @@ impl Result3d for SettlementResult<Three> {
 
 /// The tilting-table result: its limit analysis, titled and summed up by the tilt angle.
 impl Result3d for TiltResult<Three> {
+    fn cracks(&self) -> &[voussoir::result::Crack3d] {
+        &self.limit.cracks
+    }
     fn reactions(&self) -> &[Reaction<Three>] {
         &self.limit.reactions
     }

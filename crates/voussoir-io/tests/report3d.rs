@@ -122,7 +122,19 @@ fn limit_report_is_deterministic_offline_and_carries_the_blocks() {
     );
     let table =
         &a[a.find("<h2>Cracked joints</h2>").unwrap()..a.find("<h2>Static drawing</h2>").unwrap()];
-    assert_eq!(table.matches("<tr><td>").count(), cracked);
+    // The section has the cracks as the summary lists them (one row per crack of the result's
+    // `cracks`), then the cracked joints (one row per joint that is not closed).
+    assert!(!r.cracks.is_empty());
+    assert_eq!(table.matches("<tr><td>").count(), r.cracks.len() + cracked);
+    for (i, c) in r.cracks.iter().enumerate() {
+        let row = format!("<tr><td>{}</td><td>", i + 1);
+        assert!(table.contains(&row), "crack {} has no row", i + 1);
+        assert!(
+            table.contains(&format!("joint {} (", c.joints[0])) || c.joints.len() > 1,
+            "crack {} does not name its joint",
+            i + 1
+        );
+    }
 }
 
 #[test]

@@ -578,10 +578,10 @@ fn figures(sec: &mut Section, scene: Scene, geometry: &Geometry, scale: Option<f
 /// check of the vertical reactions against the total weight.
 fn result_tables(
     sec: &mut Section,
-    joints: &[JointResult],
+    (joints, polylines): (&[JointResult], &[voussoir::result::Crack]),
     reactions: &[voussoir::result::Reaction],
     echo: &crate::report_parts::ModelEcho,
-    vertical_check: bool,
+    settlement: bool,
 ) {
     use crate::report_parts as rp;
     let cracks = rp::crack_rows_2d(joints);
@@ -589,9 +589,14 @@ fn result_tables(
         sec.items.push(Item::Heading("Cracks".into()));
         sec.text("No joint opens or slides.");
     } else {
+        if !polylines.is_empty() {
+            // A settlement's widths are mm; a limit mechanism is a rate (relative openings).
+            let (head, rows) = rp::crack_polyline_table(polylines, settlement);
+            sec.table(rp::CRACK_POLYLINES_CAPTION, head, rows);
+        }
         let (head, rows) = rp::crack_table(&cracks, 2);
         sec.table(
-            "Cracks (position: centroid of the opened part; width: largest opening; length: of the opened part)",
+            "Cracked joints (position: centroid of the opened part; width: largest opening; length: of the opened part)",
             head,
             rows,
         );
@@ -615,7 +620,7 @@ fn result_tables(
         foot,
         collapsed: false,
     });
-    if vertical_check && !reactions.is_empty() {
+    if settlement && !reactions.is_empty() {
         let fy: f64 = reactions.iter().map(|r| r.fy).sum();
         let w = echo.total_weight();
         sec.text(format!(
@@ -737,7 +742,7 @@ pub fn limit_report(r: &LimitResult, opts: &ReportOptions) -> Report {
     let res = rep.section("Results");
     res.key_values(kv);
     res.text("The mechanism of a limit analysis is a rate (normalised to unit work of the live loads): its crack widths compare the joints' openings with each other, they are not millimetres of a real displacement; the positions and lengths are geometric.");
-    result_tables(res, &r.joints, &r.reactions, &echo, false);
+    result_tables(res, (&r.joints, &r.cracks), &r.reactions, &echo, false);
     figures(
         rep.section("Figures"),
         Scene::limit(r),
@@ -846,7 +851,7 @@ pub fn settlement_report(r: &SettlementResult, opts: &ReportOptions) -> Report {
     ));
     let res = rep.section("Results");
     res.key_values(kv);
-    result_tables(res, &r.joints, &r.reactions, &echo, true);
+    result_tables(res, (&r.joints, &r.cracks), &r.reactions, &echo, true);
     figures(
         rep.section("Figures"),
         Scene::settlement(r),

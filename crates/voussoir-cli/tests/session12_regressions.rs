@@ -109,3 +109,43 @@ fn session12_settle_of_a_weightless_model_is_refused_3d() {
     );
     assert!(!d.join("r.json").exists());
 }
+
+/// The report's crack table was made per joint while the summary and the drawings list crack
+/// polylines: the report now lists the result's `cracks` in the summary's own words, in the
+/// same order, and keeps the per-joint table after it.
+#[test]
+fn session12_report_lists_the_cracks_of_the_summary() {
+    let d = tmpdir("s12", "reportcracks");
+    arch(&d);
+    let out = run(
+        &d,
+        &[
+            "settle",
+            "arch.json",
+            "--move",
+            "right=0.005,-0.01",
+            "--report",
+            "r.html",
+            "-o",
+            "r.json",
+        ],
+    );
+    let html = std::fs::read_to_string(d.join("r.html")).unwrap();
+    let r = json(&std::fs::read_to_string(d.join("r.json")).unwrap());
+    let n = r["cracks"].as_array().unwrap().len();
+    assert!(n >= 3, "a settled arch opens at least three joints: {n}");
+    let lines: Vec<&str> = out
+        .lines()
+        .filter_map(|l| l.trim_start().strip_prefix("crack "))
+        .collect();
+    assert_eq!(lines.len(), n.min(10), "{out}");
+    let start = html.find("Cracks, widest first").expect("crack table");
+    let joints = html.find("Cracked joints").expect("joint table");
+    assert!(start < joints);
+    let table = &html[start..joints];
+    for l in lines {
+        let (k, text) = l.split_once(": ").unwrap();
+        let row = format!("<tr><td>{}</td><td>{}</td></tr>", k.trim(), text);
+        assert!(table.contains(&row), "no row {row} in\n{table}");
+    }
+}

@@ -530,6 +530,7 @@ pub fn existing_crack(c: Crack) -> ExistingCrack {
         snap: c.snap,
         opening: c.opening,
         units: c.units,
+        ..Default::default()
     }
 }
 

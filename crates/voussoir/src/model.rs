@@ -88,13 +88,32 @@ pub struct ExistingCrack {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<usize>,
     /// A crack line `[[x, y], …]` (m).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, alias = "points", skip_serializing_if = "Option::is_none")]
     pub polyline: Option<Vec<[f64; 2]>>,
     /// Catch distance of a `polyline` (m); default a quarter of each point's joint length.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub snap: Option<f64>,
     /// Width (≥ 0), in `units`.
+    #[serde(alias = "openings")]
     pub opening: Width,
+    /// The derived fields of a result's crack record (`length`, `max_opening`, `joints`,
+    /// `faces`, `start`, `end`, `closed_loop`), so that a result's `cracks` can be given as
+    /// they are written: read, not used — `points` and `openings` carry the observation.
+    #[serde(default, skip_serializing)]
+    pub length: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub max_opening: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub joints: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub faces: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub start: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub end: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub closed_loop: Option<serde_json::Value>,
+
     /// Unit of the width: `"m"` (default), `"cm"` or `"mm"`. Coordinates stay in metres.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub units: Option<String>,

@@ -71,13 +71,32 @@ pub struct Crack {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<usize>,
     /// A crack line `[[x, y], …]`, in the file's `coordinate_units` (2D models).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, alias = "points", skip_serializing_if = "Option::is_none")]
     pub polyline: Option<Vec<[f64; 2]>>,
     /// Catch distance of a `polyline`, in the file's `coordinate_units`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub snap: Option<f64>,
     /// Width, ≥ 0, in `units` (this crack's, else the file's; default m).
+    #[serde(alias = "openings")]
     pub opening: Width,
+    /// The derived fields of a result's crack record (`length`, `max_opening`, `joints`,
+    /// `faces`, `start`, `end`, `closed_loop`), so that a result's `cracks` can be given as
+    /// they are written: read, not used — `points` and `openings` carry the observation.
+    #[serde(default, skip_serializing)]
+    pub length: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub max_opening: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub joints: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub faces: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub start: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub end: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub closed_loop: Option<serde_json::Value>,
+
     /// Measurement tolerance of this crack, in the same unit as its width; default: the file's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,

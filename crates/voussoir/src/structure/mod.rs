@@ -404,16 +404,6 @@ impl Structure {
             }
         }
         let line: Vec<[f64; 2]> = line.iter().map(|p| [p[0] * fc, p[1] * fc]).collect();
-        let (w0, w1) = match w {
-            Width::One(w) => (*w * ws, *w * ws),
-            Width::PerPoint(v) if v.len() == 2 => (v[0] * ws, v[1] * ws),
-            Width::PerPoint(v) => {
-                return bad(format!(
-                    "a crack given by \"polyline\" takes one width, or two (at its start and end); {} given",
-                    v.len()
-                ))
-            }
-        };
         // Cumulative length at each vertex.
         let mut cum = vec![0.0];
         for s in line.windows(2) {
@@ -421,6 +411,38 @@ impl Structure {
             cum.push(cum.last().unwrap() + l);
         }
         let total = *cum.last().unwrap();
+        // The width at arc length s: one width; two, at the start and the end, linear between;
+        // or one per vertex (a result's crack record: `points` and `openings`), piecewise
+        // linear between the vertices.
+        let width_at: Box<dyn Fn(f64) -> f64> = match w {
+            Width::One(w) => {
+                let w = *w * ws;
+                Box::new(move |_| w)
+            }
+            Width::PerPoint(v) if v.len() == line.len() && line.len() >= 2 => {
+                let (v, cum) = (v.clone(), cum.clone());
+                Box::new(move |s: f64| {
+                    let i = cum.partition_point(|&c| c <= s).clamp(1, cum.len() - 1);
+                    let (c0, c1) = (cum[i - 1], cum[i]);
+                    let f = if c1 > c0 { ((s - c0) / (c1 - c0)).clamp(0.0, 1.0) } else { 0.0 };
+                    (v[i - 1] + (v[i] - v[i - 1]) * f) * ws
+                })
+            }
+            Width::PerPoint(v) if v.len() == 2 => {
+                let (w0, w1) = (v[0] * ws, v[1] * ws);
+                Box::new(move |s: f64| {
+                    let f = if total > 0.0 { s / total } else { 0.0 };
+                    w0 + (w1 - w0) * f
+                })
+            }
+            Width::PerPoint(v) => {
+                return bad(format!(
+                    "a crack given by \"polyline\" takes one width, two (at its start and end) or one per vertex ({}); {} given",
+                    line.len(),
+                    v.len()
+                ))
+            }
+        };
         // Distance from p to the line and the arc length of its projection.
         let project = |p: [f64; 2]| -> (f64, f64) {
             if line.len() == 1 {
@@ -449,8 +471,7 @@ impl Structure {
             for (k, q) in jt.points.iter().enumerate() {
                 let (dist, s) = project(q.x);
                 if dist <= reach {
-                    let f = if total > 0.0 { s / total } else { 0.0 };
-                    out.push((j, k, w0 + (w1 - w0) * f));
+                    out.push((j, k, width_at(s)));
                 }
             }
         }

@@ -7,8 +7,10 @@
 //! so each macro-block moves as one rigid piece and is drawn in one colour; a block at rest is
 //! drawn in stone grey.
 
+mod layers;
+
 use super::legend::Entry;
-use super::svg::{arrow, esc, fmt_fixed, human, nice, num, points_attr, polygon_path};
+use super::svg::{esc, fmt_fixed, human, nice, num};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
@@ -651,657 +653,304 @@ pub fn auto_scale(dmax: f64, tmax: f64, size: f64) -> f64 {
     }
 }
 
-/// Draw a scene as SVG.
+/// Draw a scene as SVG, in stages: the motion of the bodies at the drawing's scale
+/// ([`Motion`]), the arrows to draw ([`Arrows`]), the layout of the page ([`Layout`]), the
+/// layers painted in order ([`layers::Painter`]), and the legend of what was
+/// drawn.
 pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
-    let b = build_bodies(scene);
-    let has_motion = opts.deformed && b.dmax > 0.0 && b.groups.iter().any(|g| g.moving);
-    let scale = if has_motion {
-        match opts.scale {
-            Some(s) if s.is_finite() && s >= 0.0 => s,
-            _ => auto_scale(b.dmax, b.tmax, b.size),
-        }
-    } else {
-        0.0
-    };
-    let motions: Vec<RigidMotion> = b
-        .groups
-        .iter()
-        .map(|g| world_motion(g, if has_motion { scale } else { 0.0 }))
-        .collect();
-    let moved = |body: usize, p: [f64; 2]| -> [f64; 2] { motions[b.bodies[body].group].apply(p) };
-
-    // Loads to draw: (body, tip, direction, relative length, live).
-    let live_max = scene
-        .geometry
-        .loads
-        .iter()
-        .filter(|l| l.live)
-        .fold(0.0f64, |m, l| m.max(l.fx.hypot(l.fy)));
-    let dead_max = scene
-        .geometry
-        .loads
-        .iter()
-        .filter(|l| !l.live)
-        .fold(0.0f64, |m, l| m.max(l.fx.hypot(l.fy)));
-    let arrow_len = 0.09 * b.size;
-    let mut loads: Vec<(usize, [f64; 2], [f64; 2], bool)> = Vec::new();
-    for l in &scene.geometry.loads {
-        let (show, fmax) = if l.live {
-            (opts.live_loads && scene.live_loads, live_max)
-        } else {
-            (opts.dead_loads, dead_max)
-        };
-        let f = l.fx.hypot(l.fy);
-        if !show
-            || !(f > 0.0)
-            || !(fmax > 0.0)
-            || l.block >= b.nb
-            || !l.x.is_finite()
-            || !l.y.is_finite()
-        {
-            continue;
-        }
-        let len = arrow_len * (f / fmax).max(0.25);
-        loads.push((
-            l.block,
-            [l.x, l.y],
-            [l.fx / f * len, l.fy / f * len],
-            l.live,
-        ));
-    }
-    // Contact-force arrows: (body a, centre of pressure, force vector in m of drawing).
-    let mut forces: Vec<(usize, [f64; 2], [f64; 2])> = Vec::new();
-    let mut force_max = 0.0f64;
+    let mo = Motion::new(scene, opts);
     let joint_by_id: BTreeMap<usize, &JointResult> =
         scene.joints.iter().map(|j| (j.id, j)).collect();
-    if opts.forces {
-        let fmax = scene
-            .thrust_line
-            .iter()
-            .filter_map(|t| joint_by_id.get(&t.joint))
-            .fold(0.0f64, |m, j| m.max(j.normal_force.hypot(j.shear_force)));
-        force_max = fmax;
-        for t in scene.thrust_line {
-            let Some(j) = joint_by_id.get(&t.joint) else {
-                continue;
-            };
-            let Some(a) = b.body_of(&j.a) else { continue };
-            let n = j.normal;
-            let tg = [-n[1], n[0]];
-            let f = [
-                j.normal_force * n[0] + j.shear_force * tg[0],
-                j.normal_force * n[1] + j.shear_force * tg[1],
-            ];
-            let mag = f[0].hypot(f[1]);
-            if !(mag > 0.0) || !(fmax > 0.0) || !t.x.is_finite() || !t.y.is_finite() {
-                continue;
-            }
-            let len = 0.12 * b.size * mag / fmax;
-            forces.push((a, [t.x, t.y], [f[0] / mag * len, f[1] / mag * len]));
-        }
-    }
-
-    // Bounding box of everything drawn, in world units.
-    let mut bb = Bbox::new();
-    for (i, body) in b.bodies.iter().enumerate() {
-        for v in &body.poly {
-            if !has_motion || opts.undeformed {
-                bb.add(*v);
-            }
-            bb.add(moved(i, *v));
-        }
-    }
-    for (blk, tip, d, _) in &loads {
-        let t = moved(*blk, *tip);
-        bb.add([t[0] - d[0], t[1] - d[1]]);
-        bb.add(t);
-    }
-    for (a, p, d) in &forces {
-        let c = moved(*a, *p);
-        bb.add([c[0] - d[0] / 2.0, c[1] - d[1] / 2.0]);
-        bb.add([c[0] + d[0] / 2.0, c[1] + d[1] / 2.0]);
-    }
-    if !bb.valid() {
-        bb = Bbox([0.0, 0.0, 1.0, 1.0]);
-    }
-    let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
-
-    // Layout.
-    let page = Page::new(opts.width, opts.max_height, 760.0, &scene.info);
-    let (width, max_h, margin, title_h) = (page.width, page.max_height, MARGIN, page.title_h);
-    let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
-    // The legend's height: the entries that may be drawn (a superset of those drawn below),
-    // flowed and wrapped within the figure (super::legend).
-    let may = LegendItems {
-        undeformed: has_motion && opts.undeformed,
-        hinges: opts.hinges && !scene.hinges.is_empty(),
-        cracks: opts.cracks && scene.joints.iter().any(|j| j.state != JointState::Closed),
-        crack_lines: opts.cracks && !scene.cracks.is_empty(),
-        thrust: (opts.thrust_line && !scene.thrust_line.is_empty()).then_some("centre of pressure"),
-        live: loads.iter().any(|l| l.3).then_some(live_max),
-        dead: loads.iter().any(|l| !l.3).then_some(dead_max),
-        forces: (!forces.is_empty()).then_some(force_max),
-        supports: b.nb < b.bodies.len(),
-    };
-    let legend_h = if opts.legend {
-        let e = legend_entries(scene, &may, &opts.id, k, b.size, has_motion, 0.0, false);
-        super::legend::height(super::legend::layout(&e, margin, width - margin).height)
-    } else {
-        8.0
-    };
-    let draw_w = bw * k;
-    let draw_h = bh * k;
-    let height = (title_h + margin + draw_h + margin + legend_h).ceil();
-    let fr = Frame {
-        k,
-        ox: (width - draw_w) / 2.0 - k * bb.0[0],
-        oy: title_h + margin + k * bb.0[3],
-    };
-
-    let pxm: Vec<[f64; 5]> = b.groups.iter().map(|g| px_motion(&fr, g)).collect();
-    let s_eff = if has_motion { scale } else { 0.0 };
-    let stroke = (0.03 * b.mean_block * k).clamp(0.25, 1.1);
-    let hinge_r = (0.22 * b.mean_block * k).clamp(2.0, 5.5);
-    let id = esc(&opts.id);
+    let ar = Arrows::new(scene, opts, &mo, &joint_by_id);
+    let lay = Layout::new(scene, opts, &mo, &ar);
+    let b = &mo.b;
+    let has_motion = mo.has_motion;
     let interactive = opts.interactive && has_motion;
+    let p = layers::Painter::new(scene, opts, &mo, &lay.fr, &joint_by_id, interactive);
 
     let mut o = String::with_capacity(4096 + 120 * b.bodies.len());
-    page.open(&mut o, height);
+    lay.page.open(&mut o, lay.height);
     if interactive {
-        let mut m = String::new();
-        for (i, g) in pxm.iter().enumerate() {
-            if i > 0 {
-                m.push(';');
-            }
-            let _ = write!(
-                m,
-                "{},{},{},{},{}",
-                num(g[0]),
-                num(g[1]),
-                fmt_fixed(g[2], 5),
-                fmt_fixed(g[3], 5),
-                fmt_fixed(g[4], 9)
-            );
-        }
-        let _ = write!(
-            o,
-            " data-scale=\"{}\" data-motions=\"{}\"",
-            fmt_fixed(scale, 9),
-            m
-        );
+        p.motion_data(&mut o, mo.scale);
     }
     o.push_str(">\n");
-    page.head(&mut o, &id, height, &scene.title);
+    lay.page.head(&mut o, &p.id, lay.height, &scene.title);
 
-    // Undeformed outline, faint.
-    if has_motion && opts.undeformed {
-        let mut d = String::new();
-        for body in &b.bodies {
-            polygon_path(&mut d, body.poly.iter().map(|p| fr.px(*p)));
-        }
-        let _ = writeln!(
-            o,
-            "<path class=\"undeformed\" d=\"{d}\" fill=\"none\" stroke=\"{FAINT}\" stroke-width=\"{}\" stroke-dasharray=\"4 3\"/>",
-            num((stroke * 0.9).max(0.4))
-        );
-    }
-
-    // Bodies by group: supports hatched, blocks filled.
-    for (gi, g) in b.groups.iter().enumerate() {
-        let mut d = String::new();
-        for &m in &g.members {
-            polygon_path(&mut d, b.bodies[m].poly.iter().map(|p| fr.px(*p)));
-        }
-        if d.is_empty() {
-            continue;
-        }
-        let fill = if g.support {
-            format!("url(#{id}-hatch)")
-        } else if !has_motion {
-            STONE.to_string()
-        } else if !g.moving {
-            STILL.to_string()
-        } else {
-            PALETTE[g.colour % PALETTE.len()].to_string()
-        };
-        let _ = write!(
-            o,
-            "<path class=\"{}\" d=\"{d}\" fill=\"{fill}\" stroke=\"{EDGE}\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
-            if g.support { "support" } else { "blocks" },
-            num(if g.support { stroke.max(0.8) } else { stroke })
-        );
-        if g.moving && has_motion {
-            let _ = write!(o, " transform=\"{}\"", px_matrix(&pxm[gi], s_eff));
-            if interactive {
-                let _ = write!(o, " data-g=\"{gi}\"");
-            }
-        }
-        o.push_str("/>\n");
-    }
-
-    // A point that moves with body `body`: its static pixel position and, for the slider, the
-    // data `g,x,y` (group and undeformed pixel position).
-    let at = |body: usize, p: [f64; 2]| -> ([f64; 2], String) {
-        let gi = b.bodies[body].group;
-        let p0 = fr.px(p);
-        let p1 = if b.groups[gi].moving && has_motion {
-            px_apply(&pxm[gi], s_eff, p0)
-        } else {
-            p0
-        };
-        (p1, format!("{},{},{}", gi, num(p0[0]), num(p0[1])))
-    };
-
-    // Cracks: the wedge between the two faces of every open joint.
-    let mut n_cracks = 0;
-    if has_motion && opts.cracks {
-        let mut static_d = String::new();
-        let mut items = String::new();
-        for j in scene.joints {
-            if !matches!(
-                j.state,
-                JointState::Open | JointState::Hinge | JointState::Sliding
-            ) || j.points.len() < 2
-            {
-                continue;
-            }
-            let (Some(a), Some(bb_)) = (b.body_of(&j.a), b.body_of(&j.b)) else {
-                continue;
-            };
-            let t = [-j.normal[1], j.normal[0]];
-            let along = |p: &voussoir::result::PointResult| p.x * t[0] + p.y * t[1];
-            let (Some(p0), Some(p1)) = (
-                j.points
-                    .iter()
-                    .filter(|p| p.x.is_finite() && p.y.is_finite())
-                    .min_by(|x, y| along(x).total_cmp(&along(y))),
-                j.points
-                    .iter()
-                    .filter(|p| p.x.is_finite() && p.y.is_finite())
-                    .max_by(|x, y| along(x).total_cmp(&along(y))),
-            ) else {
-                continue;
-            };
-            let (q0, q1) = ([p0.x, p0.y], [p1.x, p1.y]);
-            let corners = [at(a, q0), at(a, q1), at(bb_, q1), at(bb_, q0)];
-            n_cracks += 1;
-            let pts: Vec<[f64; 2]> = corners.iter().map(|c| c.0).collect();
-            if interactive {
-                let data: Vec<&str> = corners.iter().map(|c| c.1.as_str()).collect();
-                let _ = writeln!(
-                    items,
-                    "<polygon points=\"{}\" data-pts=\"{}\"/>",
-                    points_attr(&pts),
-                    data.join(" ")
-                );
-            } else {
-                polygon_path(&mut static_d, pts);
-            }
-        }
-        if !static_d.is_empty() {
-            let _ = writeln!(o, "<path class=\"cracks\" d=\"{static_d}\" fill=\"{CRACK}\" fill-opacity=\"0.85\" stroke=\"{CRACK}\" stroke-width=\"0.6\" stroke-linejoin=\"round\"/>");
-        }
-        if !items.is_empty() {
-            let _ = writeln!(o, "<g class=\"cracks\" fill=\"{CRACK}\" fill-opacity=\"0.85\" stroke=\"{CRACK}\" stroke-width=\"0.6\" stroke-linejoin=\"round\">\n{items}</g>");
-        }
-    }
-
-    // Crack lines: each crack's polyline, its points carried by the first body of the joint
-    // they lie on (the face the wedge opens from); the first ten numbered as in the summaries.
-    let mut n_crack_lines = 0;
-    let mut crack_interior: Vec<[f64; 2]> = Vec::new();
-    let mut hairline_tips: Vec<[f64; 2]> = Vec::new();
-    if opts.cracks && !scene.cracks.is_empty() {
-        let mut lines = String::new();
-        let mut labels = String::new();
-        let lw = (stroke * 2.4).clamp(1.4, 2.6);
-        // Line width grows with the square root of the opening; cracks narrower than 1 % of the
-        // widest (hairlines) are left out of the drawing (the summaries and the JSON list them).
-        let widest = scene
-            .cracks
-            .iter()
-            .fold(0.0f64, |m, c| m.max(c.max_opening));
-        let fs = 11.0;
-        for (n, c) in scene.cracks.iter().enumerate() {
-            if c.points.len() > 2 {
-                crack_interior.extend_from_slice(&c.points[1..c.points.len() - 1]);
-            }
-            if !(c.max_opening >= HAIRLINE * widest) {
-                // A settlement's hairline is left out with its hinges (a collapse mechanism's
-                // hinges are all drawn: each is part of the mechanism).
-                if scene.units == MotionUnits::Metres {
-                    hairline_tips.extend(c.points.iter().copied());
-                }
-                continue;
-            }
-            let on: Vec<&JointResult> = c
-                .joints
-                .iter()
-                .filter_map(|j| joint_by_id.get(j).copied())
-                .collect();
-            let body_at = |p: [f64; 2]| -> Option<usize> {
-                let mut best: Option<(f64, usize)> = None;
-                for j in &on {
-                    let Some(a) = b.body_of(&j.a) else { continue };
-                    let d = j
-                        .points
-                        .windows(2)
-                        .map(|w| {
-                            voussoir::geometry::point_segment_distance(
-                                p,
-                                [w[0].x, w[0].y],
-                                [w[1].x, w[1].y],
-                            )
-                        })
-                        .fold(f64::INFINITY, f64::min);
-                    if best.is_none_or(|(bd, _)| d < bd) {
-                        best = Some((d, a));
-                    }
-                }
-                best.map(|(_, a)| a).or_else(|| nearest_block(&b, p))
-            };
-            let pts: Vec<([f64; 2], String)> = c
-                .points
-                .iter()
-                .filter(|p| p[0].is_finite() && p[1].is_finite())
-                .filter_map(|p| body_at(*p).map(|a| at(a, *p)))
-                .collect();
-            if pts.len() < 2 {
-                continue;
-            }
-            n_crack_lines += 1;
-            let xy: Vec<[f64; 2]> = pts.iter().map(|p| p.0).collect();
-            let _ = write!(lines, "<polyline points=\"{}\"", points_attr(&xy));
-            if widest > 0.0 && c.max_opening < widest {
-                let w = (lw * (c.max_opening / widest).sqrt()).max(0.6);
-                let _ = write!(lines, " stroke-width=\"{}\"", num(w));
-            }
-            if interactive {
-                let data: Vec<&str> = pts.iter().map(|p| p.1.as_str()).collect();
-                let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
-            }
-            lines.push_str("/>\n");
-            if n < 10 {
-                // The label at the crack's middle (by length, in the undeformed geometry),
-                // carried by the body there, offset off the line.
-                let w: Vec<[f64; 2]> = c
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|p| p[0].is_finite() && p[1].is_finite())
-                    .collect();
-                let half = 0.5
-                    * w.windows(2)
-                        .map(|s| (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]))
-                        .sum::<f64>();
-                let mut acc = 0.0;
-                let mut mw = w[0];
-                for s in w.windows(2) {
-                    let l = (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]);
-                    if acc + l >= half && l > 0.0 {
-                        let t = (half - acc) / l;
-                        mw = [
-                            s[0][0] + t * (s[1][0] - s[0][0]),
-                            s[0][1] + t * (s[1][1] - s[0][1]),
-                        ];
-                        break;
-                    }
-                    acc += l;
-                }
-                if let Some(a) = body_at(mw) {
-                    let (p1, data) = at(a, mw);
-                    if interactive {
-                        // Written at its undeformed place and moved by the slider (data-at).
-                        let p0 = fr.px(mw);
-                        let _ = writeln!(
-                            labels,
-                            "<text x=\"{}\" y=\"{}\" transform=\"translate({} {})\" data-at=\"{data}\">{}</text>",
-                            num(p0[0] + 4.0),
-                            num(p0[1] - 4.0),
-                            num(p1[0] - p0[0]),
-                            num(p1[1] - p0[1]),
-                            n + 1
-                        );
-                    } else {
-                        let _ = writeln!(
-                            labels,
-                            "<text x=\"{}\" y=\"{}\">{}</text>",
-                            num(p1[0] + 4.0),
-                            num(p1[1] - 4.0),
-                            n + 1
-                        );
-                    }
-                }
-            }
-        }
-        if !lines.is_empty() {
-            let _ = writeln!(
-                o,
-                "<g class=\"crack-lines\" fill=\"none\" stroke=\"{CRACK_LINE}\" stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n{lines}</g>",
-                num(lw)
-            );
-        }
-        if !labels.is_empty() {
-            let _ = writeln!(
-                o,
-                "<g class=\"crack-labels\" font-size=\"{fs}\" font-weight=\"bold\" fill=\"{CRACK_LINE}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">\n{labels}</g>"
-            );
-        }
-    }
-
-    // Load arrows (kept in their direction, carried by their block).
-    let head = (0.018 * width).clamp(6.0, 11.0);
-    let draw_arrows = |o: &mut String,
-                       class: &str,
-                       colour: &str,
-                       list: &[(usize, [f64; 2], [f64; 2], bool)]| {
-        if list.is_empty() {
-            return;
-        }
-        let sw = (stroke * 1.6).clamp(1.0, 1.8);
-        let _ = writeln!(
-            o,
-            "<g class=\"{class}\" stroke=\"{colour}\" fill=\"{colour}\" stroke-width=\"{}\">",
-            num(sw)
-        );
-        if interactive && list.len() <= 2000 {
-            for (body, tip, d, _) in list {
-                let (p1, data) = at(*body, *tip);
-                let p0 = fr.px(*tip);
-                let tail = fr.px([tip[0] - d[0], tip[1] - d[1]]);
-                let (mut sh, mut hd) = (String::new(), String::new());
-                arrow(&mut sh, &mut hd, tail, p0, head);
-                let _ = writeln!(
-                    o,
-                    "<g transform=\"translate({} {})\" data-at=\"{}\" data-ref=\"{},{}\"><path d=\"{sh}\" fill=\"none\"/><path d=\"{hd}\" stroke=\"none\"/></g>",
-                    num(p1[0] - p0[0]),
-                    num(p1[1] - p0[1]),
-                    data,
-                    num(p0[0]),
-                    num(p0[1])
-                );
-            }
-        } else {
-            let (mut sh, mut hd) = (String::new(), String::new());
-            for (body, tip, d, _) in list {
-                let t = moved(*body, *tip);
-                arrow(
-                    &mut sh,
-                    &mut hd,
-                    fr.px([t[0] - d[0], t[1] - d[1]]),
-                    fr.px(t),
-                    head,
-                );
-            }
-            let _ = writeln!(
-                o,
-                "<path d=\"{sh}\" fill=\"none\"/>\n<path d=\"{hd}\" stroke=\"none\"/>"
-            );
-        }
-        o.push_str("</g>\n");
-    };
-    let live: Vec<_> = loads.iter().copied().filter(|l| l.3).collect();
-    let dead: Vec<_> = loads.iter().copied().filter(|l| !l.3).collect();
-    draw_arrows(&mut o, "dead-loads", "#555555", &dead);
-    draw_arrows(&mut o, "live-loads", LOAD, &live);
+    p.undeformed(&mut o);
+    p.bodies(&mut o);
+    let n_cracks = p.crack_wedges(&mut o);
+    let lines = p.crack_lines(&mut o);
+    let head = (0.018 * lay.page.width).clamp(6.0, 11.0);
+    let live: Vec<_> = ar.loads.iter().copied().filter(|l| l.3).collect();
+    let dead: Vec<_> = ar.loads.iter().copied().filter(|l| !l.3).collect();
+    p.arrows(&mut o, "dead-loads", "#555555", &dead, head);
+    p.arrows(&mut o, "live-loads", LOAD, &live, head);
     // Contact forces: arrows centred on the centre of pressure.
-    if !forces.is_empty() {
-        let centred: Vec<(usize, [f64; 2], [f64; 2], bool)> = forces
+    if !ar.forces.is_empty() {
+        let centred: Vec<LoadArrow> = ar
+            .forces
             .iter()
-            .map(|(a, p, d)| (*a, [p[0] + d[0] / 2.0, p[1] + d[1] / 2.0], *d, true))
+            .map(|(a, q, d)| (*a, [q[0] + d[0] / 2.0, q[1] + d[1] / 2.0], *d, true))
             .collect();
-        draw_arrows(&mut o, "contact-forces", FORCE, &centred);
+        p.arrows(&mut o, "contact-forces", FORCE, &centred, head);
     }
-
-    // Thrust line: centres of pressure, joined along chains of bodies.
-    let mut drew_thrust = None;
-    if opts.thrust_line && !scene.thrust_line.is_empty() {
-        let chains = thrust_chains(scene, &b, &joint_by_id);
-        // Dots on a thrust line (up to 400 a chain) unless --pressure-points off; dots on their
-        // own (walls, façades) by the rule of PressurePoints.
-        let lone = chains.iter().filter(|c| c.len() == 1).count();
-        let lone_dots = opts.pressure_points.lone(lone);
-        let mut lines = String::new();
-        let mut dots = String::new();
-        let dot_r = (hinge_r * 0.45).max(1.2);
-        for chain in &chains {
-            let pts: Vec<([f64; 2], String)> =
-                chain.iter().map(|(body, p)| at(*body, *p)).collect();
-            if pts.len() >= 2 {
-                let xy: Vec<[f64; 2]> = pts.iter().map(|p| p.0).collect();
-                let _ = write!(lines, "<polyline points=\"{}\"", points_attr(&xy));
-                if interactive {
-                    let data: Vec<&str> = pts.iter().map(|p| p.1.as_str()).collect();
-                    let _ = write!(lines, " data-pts=\"{}\"", data.join(" "));
-                }
-                lines.push_str("/>\n");
-            }
-            let dots_here = match (chain.len(), opts.pressure_points) {
-                (1, _) => lone_dots,
-                (_, PressurePoints::Off) => false,
-                (n, PressurePoints::Auto) => n <= 400,
-                (_, PressurePoints::On) => true,
-            };
-            if dots_here {
-                for p in &pts {
-                    let _ = write!(
-                        dots,
-                        "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
-                        num(p.0[0]),
-                        num(p.0[1]),
-                        num(dot_r)
-                    );
-                    if interactive {
-                        let _ = write!(dots, " data-at=\"{}\"", p.1);
-                    }
-                    dots.push_str("/>\n");
-                }
-            }
-        }
-        if !lines.is_empty() || !dots.is_empty() {
-            drew_thrust = Some(if lines.is_empty() {
-                "centre of pressure"
-            } else {
-                "thrust line"
-            });
-            let _ = writeln!(
-                o,
-                "<g class=\"thrust-line\" fill=\"none\" stroke=\"{THRUST}\" stroke-width=\"{}\" stroke-linejoin=\"round\">\n{lines}</g>",
-                num((stroke * 2.2).clamp(1.2, 2.2))
-            );
-            if !dots.is_empty() {
-                let _ = writeln!(
-                    o,
-                    "<g class=\"pressure-centres\" fill=\"{THRUST}\">\n{dots}</g>"
-                );
-            }
-        }
-    }
-
-    // Hinges on top.
-    let mut n_hinges = 0;
-    if opts.hinges && !scene.hinges.is_empty() {
-        let _ = writeln!(
-            o,
-            "<g class=\"hinges\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"{}\">",
-            num((hinge_r * 0.3).clamp(0.8, 1.5))
-        );
-        for h in scene.hinges {
-            if !h.x.is_finite() || !h.y.is_finite() {
-                continue;
-            }
-            // A closed point a crack runs through is a bend of that crack, not a hinge; the
-            // hinges of a settlement's hairlines are left out with them.
-            let tol = 1e-9 * b.size;
-            if crack_interior
-                .iter()
-                .chain(&hairline_tips)
-                .any(|p| (p[0] - h.x).hypot(p[1] - h.y) <= tol)
-            {
-                continue;
-            }
-            // The hinge moves with body a of its joint; results without joints (capacity
-            // curves) use the block nearest to the hinge.
-            let a = match joint_by_id.get(&h.joint).and_then(|j| b.body_of(&j.a)) {
-                Some(a) => a,
-                None => match nearest_block(&b, [h.x, h.y]) {
-                    Some(a) => a,
-                    None => continue,
-                },
-            };
-            let (p, data) = at(a, [h.x, h.y]);
-            n_hinges += 1;
-            let _ = write!(
-                o,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
-                num(p[0]),
-                num(p[1]),
-                num(hinge_r)
-            );
-            if interactive {
-                let _ = write!(o, " data-at=\"{data}\"");
-            }
-            o.push_str("/>\n");
-        }
-        o.push_str("</g>\n");
-    }
+    let drew_thrust = p.thrust(&mut o);
+    let n_hinges = p.hinges(&mut o, &lines);
 
     if b.bodies.is_empty() {
-        page.nothing_to_draw(&mut o, draw_h);
+        lay.page.nothing_to_draw(&mut o, lay.draw_h);
     }
-
+    let (width, margin) = (lay.page.width, MARGIN);
     if opts.legend {
         let items = LegendItems {
             undeformed: has_motion && opts.undeformed,
             hinges: n_hinges > 0,
             cracks: n_cracks > 0,
-            crack_lines: n_crack_lines > 0,
+            crack_lines: lines.drawn > 0,
             thrust: drew_thrust,
-            live: (!live.is_empty()).then_some(live_max),
-            dead: (!dead.is_empty()).then_some(dead_max),
-            forces: (!forces.is_empty()).then_some(force_max),
+            live: (!live.is_empty()).then_some(ar.live_max),
+            dead: (!dead.is_empty()).then_some(ar.dead_max),
+            forces: (!ar.forces.is_empty()).then_some(ar.force_max),
             supports: b.nb < b.bodies.len(),
         };
         let e = legend_entries(
             scene,
             &items,
-            &id,
-            k,
+            &p.id,
+            lay.fr.k,
             b.size,
             has_motion,
-            scale,
+            mo.scale,
             interactive,
         );
-        super::legend::write(&mut o, &e, margin, width - margin, height - legend_h);
+        super::legend::write(
+            &mut o,
+            &e,
+            margin,
+            width - margin,
+            lay.height - lay.legend_h,
+        );
     }
     o.push_str("</svg>\n");
     Drawing {
         svg: o,
         width,
-        height,
-        scale: if has_motion { scale } else { 0.0 },
-        frame: fr,
+        height: lay.height,
+        scale: mo.scale,
+        frame: lay.fr,
         deformed: has_motion,
+    }
+}
+
+/// An arrow to draw: (body it moves with, tip, vector in m of drawing, live load).
+type LoadArrow = (usize, [f64; 2], [f64; 2], bool);
+
+/// Stage 1: the bodies, and their finite motions at the drawing's displacement scale (0 when
+/// nothing moves or the undeformed configuration is asked for).
+struct Motion {
+    b: Bodies,
+    has_motion: bool,
+    /// The displacement scale (0 when nothing moves).
+    scale: f64,
+    motions: Vec<RigidMotion>,
+}
+
+impl Motion {
+    fn new(scene: &Scene, opts: &DrawOptions) -> Motion {
+        let b = build_bodies(scene);
+        let has_motion = opts.deformed && b.dmax > 0.0 && b.groups.iter().any(|g| g.moving);
+        let scale = if has_motion {
+            match opts.scale {
+                Some(s) if s.is_finite() && s >= 0.0 => s,
+                _ => auto_scale(b.dmax, b.tmax, b.size),
+            }
+        } else {
+            0.0
+        };
+        let motions = b.groups.iter().map(|g| world_motion(g, scale)).collect();
+        Motion {
+            b,
+            has_motion,
+            scale,
+            motions,
+        }
+    }
+
+    /// A point of body `body` in its moved position (world units).
+    fn moved(&self, body: usize, p: [f64; 2]) -> [f64; 2] {
+        self.motions[self.b.bodies[body].group].apply(p)
+    }
+}
+
+/// Stage 2: the load arrows and the contact-force arrows to draw, with the largest of each
+/// kind (the legend's reference arrows).
+struct Arrows {
+    loads: Vec<LoadArrow>,
+    live_max: f64,
+    dead_max: f64,
+    /// (body a, centre of pressure, force vector in m of drawing).
+    forces: Vec<(usize, [f64; 2], [f64; 2])>,
+    force_max: f64,
+}
+
+impl Arrows {
+    fn new(
+        scene: &Scene,
+        opts: &DrawOptions,
+        mo: &Motion,
+        joint_by_id: &BTreeMap<usize, &JointResult>,
+    ) -> Arrows {
+        let b = &mo.b;
+        let largest = |live: bool| {
+            scene
+                .geometry
+                .loads
+                .iter()
+                .filter(|l| l.live == live)
+                .fold(0.0f64, |m, l| m.max(l.fx.hypot(l.fy)))
+        };
+        let (live_max, dead_max) = (largest(true), largest(false));
+        let arrow_len = 0.09 * b.size;
+        let mut loads = Vec::new();
+        for l in &scene.geometry.loads {
+            let (show, fmax) = if l.live {
+                (opts.live_loads && scene.live_loads, live_max)
+            } else {
+                (opts.dead_loads, dead_max)
+            };
+            let f = l.fx.hypot(l.fy);
+            if !show
+                || !(f > 0.0)
+                || !(fmax > 0.0)
+                || l.block >= b.nb
+                || !l.x.is_finite()
+                || !l.y.is_finite()
+            {
+                continue;
+            }
+            let len = arrow_len * (f / fmax).max(0.25);
+            loads.push((
+                l.block,
+                [l.x, l.y],
+                [l.fx / f * len, l.fy / f * len],
+                l.live,
+            ));
+        }
+        let mut forces = Vec::new();
+        let mut force_max = 0.0f64;
+        if opts.forces {
+            let fmax = scene
+                .thrust_line
+                .iter()
+                .filter_map(|t| joint_by_id.get(&t.joint))
+                .fold(0.0f64, |m, j| m.max(j.normal_force.hypot(j.shear_force)));
+            force_max = fmax;
+            for t in scene.thrust_line {
+                let Some(j) = joint_by_id.get(&t.joint) else {
+                    continue;
+                };
+                let Some(a) = b.body_of(&j.a) else { continue };
+                let n = j.normal;
+                let tg = [-n[1], n[0]];
+                let f = [
+                    j.normal_force * n[0] + j.shear_force * tg[0],
+                    j.normal_force * n[1] + j.shear_force * tg[1],
+                ];
+                let mag = f[0].hypot(f[1]);
+                if !(mag > 0.0) || !(fmax > 0.0) || !t.x.is_finite() || !t.y.is_finite() {
+                    continue;
+                }
+                let len = 0.12 * b.size * mag / fmax;
+                forces.push((a, [t.x, t.y], [f[0] / mag * len, f[1] / mag * len]));
+            }
+        }
+        Arrows {
+            loads,
+            live_max,
+            dead_max,
+            forces,
+            force_max,
+        }
+    }
+}
+
+/// Stage 3: the page: the bounding box of everything drawn, the world → pixel frame, the
+/// legend's height (of the entries that may be drawn) and the page's height.
+struct Layout {
+    page: Page,
+    fr: Frame,
+    legend_h: f64,
+    draw_h: f64,
+    height: f64,
+}
+
+impl Layout {
+    fn new(scene: &Scene, opts: &DrawOptions, mo: &Motion, ar: &Arrows) -> Layout {
+        let b = &mo.b;
+        let has_motion = mo.has_motion;
+        // Bounding box of everything drawn, in world units.
+        let mut bb = Bbox::new();
+        for (i, body) in b.bodies.iter().enumerate() {
+            for v in &body.poly {
+                if !has_motion || opts.undeformed {
+                    bb.add(*v);
+                }
+                bb.add(mo.moved(i, *v));
+            }
+        }
+        for (blk, tip, d, _) in &ar.loads {
+            let t = mo.moved(*blk, *tip);
+            bb.add([t[0] - d[0], t[1] - d[1]]);
+            bb.add(t);
+        }
+        for (a, p, d) in &ar.forces {
+            let c = mo.moved(*a, *p);
+            bb.add([c[0] - d[0] / 2.0, c[1] - d[1] / 2.0]);
+            bb.add([c[0] + d[0] / 2.0, c[1] + d[1] / 2.0]);
+        }
+        if !bb.valid() {
+            bb = Bbox([0.0, 0.0, 1.0, 1.0]);
+        }
+        let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
+
+        let page = Page::new(opts.width, opts.max_height, 760.0, &scene.info);
+        let (width, max_h, margin, title_h) = (page.width, page.max_height, MARGIN, page.title_h);
+        let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
+        // The legend's height: the entries that may be drawn (a superset of those drawn),
+        // flowed and wrapped within the figure (super::legend).
+        let may = LegendItems {
+            undeformed: has_motion && opts.undeformed,
+            hinges: opts.hinges && !scene.hinges.is_empty(),
+            cracks: opts.cracks && scene.joints.iter().any(|j| j.state != JointState::Closed),
+            crack_lines: opts.cracks && !scene.cracks.is_empty(),
+            thrust: (opts.thrust_line && !scene.thrust_line.is_empty())
+                .then_some("centre of pressure"),
+            live: ar.loads.iter().any(|l| l.3).then_some(ar.live_max),
+            dead: ar.loads.iter().any(|l| !l.3).then_some(ar.dead_max),
+            forces: (!ar.forces.is_empty()).then_some(ar.force_max),
+            supports: b.nb < b.bodies.len(),
+        };
+        let legend_h = if opts.legend {
+            let e = legend_entries(scene, &may, &opts.id, k, b.size, has_motion, 0.0, false);
+            super::legend::height(super::legend::layout(&e, margin, width - margin).height)
+        } else {
+            8.0
+        };
+        let draw_w = bw * k;
+        let draw_h = bh * k;
+        let height = (title_h + margin + draw_h + margin + legend_h).ceil();
+        let fr = Frame {
+            k,
+            ox: (width - draw_w) / 2.0 - k * bb.0[0],
+            oy: title_h + margin + k * bb.0[3],
+        };
+        Layout {
+            page,
+            fr,
+            legend_h,
+            draw_h,
+            height,
+        }
     }
 }
 

@@ -2,6 +2,7 @@
 
 use super::{canonical_options, invalid, JointLaws, Output, Request};
 use crate::analysis::canonical::settle_canonical;
+use crate::analysis::canonical_friction::settle_nonassociative_canonical;
 use crate::analysis::limit::{Crushing, DEFAULT_FACETS};
 use crate::analysis::nonassociative::{settle_nonassociative, NonAssociativeOptions};
 use crate::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
@@ -133,13 +134,26 @@ impl SettleRequest {
         };
         if self.non_associative && both {
             let solver = req.solver.iteration(dims);
-            let r = settle_nonassociative(
-                st,
-                &solver,
-                crushing,
-                facets,
-                &NonAssociativeOptions::settlement(),
-            )?;
+            // In 2D (unless `raw`) the canonical mechanism of the last iterate's program
+            // (least crack area; analysis::canonical_friction), as for Heyman's rules.
+            let r = if dims == 2 && !self.raw && crushing == Crushing::Linear {
+                settle_nonassociative_canonical(
+                    st,
+                    &solver,
+                    crushing,
+                    facets,
+                    &NonAssociativeOptions::settlement(),
+                    &canonical_options(self.ranges),
+                )?
+            } else {
+                settle_nonassociative(
+                    st,
+                    &solver,
+                    crushing,
+                    facets,
+                    &NonAssociativeOptions::settlement(),
+                )?
+            };
             return Ok((Output::Settlement(r), solver));
         }
         let r = if self.canonical(dims) {

@@ -128,10 +128,7 @@ fn issue30_item4_friction_wall_canonical_mechanism_keeps_the_work() {
     let c = &r.canonical.as_ref().expect("a canonical record").mechanism;
     // The same iteration, the same last program: its optimum by the simplex (selection) and by
     // Clarabel (the plain result) agree to Clarabel's tolerance (1e-6 relative, stated).
-    let (w, wp) = (
-        r.work_dead_loads.unwrap(),
-        plain.work_dead_loads.unwrap(),
-    );
+    let (w, wp) = (r.work_dead_loads.unwrap(), plain.work_dead_loads.unwrap());
     assert!((w - wp).abs() <= 1e-6 * wp, "canonical {w} vs plain {wp}");
     // The reported work is that of the reported mechanism: dead-load work on the block
     // motions less |shear|·|slip| at every point, recomputed from the JSON fields (1e-5
@@ -173,7 +170,9 @@ fn issue30_item4_friction_wall_stepped_crack_follows_the_bond_and_is_determinist
     // Independent estimate: the running bond's own step, one course (h) per half unit (b/2).
     let bond = 2.0 * H / B;
     let (fit, step) = drop_boundary_slope(&st, &r);
-    eprintln!("drop boundary: step slope {step:.4}, least-squares slope {fit:.4} (bond 2h/b = {bond})");
+    eprintln!(
+        "drop boundary: step slope {step:.4}, least-squares slope {fit:.4} (bond 2h/b = {bond})"
+    );
     // The step is the bond's exactly (block positions); the fitted line within [1, 1.5]·2h/b
     // (it starts over the settlement's edge and steepens near the top).
     assert!((step - bond).abs() < 1e-9, "step slope {step}");
@@ -202,8 +201,7 @@ fn issue30_item4_limit_nonassociative_canonical_keeps_lambda() {
     let o = NonAssociativeOptions::default();
     let opts = SolverOptions::default();
     let plain = limit_nonassociative_result(&st, &opts, &o).unwrap();
-    let r =
-        limit_nonassociative_canonical(&st, &opts, &o, &CanonicalOptions::default()).unwrap();
+    let r = limit_nonassociative_canonical(&st, &opts, &o, &CanonicalOptions::default()).unwrap();
     assert_eq!(r.status, LimitStatus::Collapse);
     let (l, lp) = (r.load_multiplier.unwrap(), plain.load_multiplier.unwrap());
     assert!((l - 0.6).abs() < 1e-6, "λ = {l}");

@@ -95,7 +95,10 @@ pub fn crack_area_with_slips(
         if map.gap[k] > 0.0 || map.bilateral[k] {
             continue;
         }
-        let s: f64 = (0..nt).map(|m| slide[k * nt + m].powi(2)).sum::<f64>().sqrt();
+        let s: f64 = (0..nt)
+            .map(|m| slide[k * nt + m].powi(2))
+            .sum::<f64>()
+            .sqrt();
         a += weights[k] * (open[k] + s);
         size += weights[k] * (open[k].abs() + s);
     }
@@ -259,10 +262,11 @@ fn select(
 
 /// The canonical mechanism of the settlement program on `map` (its shear capacities fixed),
 /// with the value of the program: `(mechanism, motion LP optimum, record)`, or None when a
-/// stage does not solve.
+/// stage does not solve. `raw` is the iteration's own mechanism (the record compares with it).
 fn select_settlement<S: Assembly>(
     st: &S,
     map: &KinematicMap,
+    raw: &[f64],
     opts: &SolverOptions,
     copts: &CanonicalOptions,
 ) -> Result<Option<(Vec<f64>, f64, CanonicalMechanism)>> {
@@ -275,10 +279,9 @@ fn select_settlement<S: Assembly>(
     if first.status != LpStatus::Optimal {
         return Ok(None);
     }
-    let raw: Vec<f64> = first.x[..map.num_dofs].iter().map(|v| -v).collect();
     let weights = tributary_weights(st, map);
     let Some((d, mech)) = select(
-        map, &fp, &kp.lp, &first, &raw, basis, 1.0, &weights, &o, copts,
+        map, &fp, &kp.lp, &first, raw, basis, 1.0, &weights, &o, copts,
     )?
     else {
         return Ok(None);
@@ -305,7 +308,7 @@ pub fn settle_nonassociative_canonical<S: Assembly>(
         && it.last.status == SettlementStatus::Mechanism
         && map.shear_limits.is_some()
     {
-        select_settlement(st, &map, opts, copts)?
+        select_settlement(st, &map, &it.last.mechanism, opts, copts)?
     } else {
         None
     };
@@ -356,8 +359,7 @@ pub fn limit_nonassociative_canonical<S: Assembly>(
     let (associative, it) = solve_limit_nonassociative(st, &mut map, opts, o)?;
     let mut s = it.last;
     let mut canonical = None;
-    if s.status == LimitStatus::Collapse && !s.mechanism.is_empty() && map.shear_limits.is_some()
-    {
+    if s.status == LimitStatus::Collapse && !s.mechanism.is_empty() && map.shear_limits.is_some() {
         let (dead, live) = (st.load_vector(false), st.load_vector(true));
         let fp = programs::limit_force_program(&map, &dead, &live);
         let kp = programs::kinematic_program(&fp)?;

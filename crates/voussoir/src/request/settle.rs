@@ -96,8 +96,9 @@ impl SettleRequest {
     }
 
     /// Whether the canonical selection runs: in 2D, unless `raw`, with the default joint laws
-    /// (joint laws beyond the defaults — non-associative iteration, exact crushing, other facet
-    /// counts — are solved as such). In 3D the solver's own solution (the canonical selection
+    /// (joint laws beyond the defaults — exact crushing, other facet counts — are solved as
+    /// such; the non-associative iteration has its own selection in 2D unless `raw`,
+    /// `analysis::canonical_friction`). In 3D the solver's own solution (the canonical selection
     /// is not yet fast enough on 3D models; docs/canonical.md).
     pub fn canonical(&self, dims: usize) -> bool {
         dims == 2

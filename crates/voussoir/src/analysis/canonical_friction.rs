@@ -137,7 +137,7 @@ impl Stages {
 /// `y = −d`), solved as `first` (with its basis `start`); `raw` is that solution's mechanism.
 /// Openings are `N d + support_scale·g_n`. Returns the mechanism and how it was selected, or
 /// None when a stage does not solve.
-#[allow(clippy::too_many_arguments)]
+#[allow(clippy::too_many_arguments, clippy::needless_range_loop)]
 fn select(
     map: &KinematicMap,
     fp: &ForceProgram,

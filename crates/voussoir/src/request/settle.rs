@@ -64,6 +64,14 @@ impl SettleRequest {
                 n.given("settlement_form", "both")
             ));
         }
+        if self.non_associative && self.ranges == Some(true) {
+            // The frictional selection keeps the iteration's forces: no reaction ranges.
+            return invalid(format!(
+                "{} is not computed with {} (the forces are the friction iteration's)",
+                n.name("ranges"),
+                n.name("non_associative")
+            ));
+        }
         if req.model.exact_cone() {
             if self.non_associative {
                 return invalid(format!(

@@ -11,7 +11,9 @@ use voussoir::result::Spatial;
 pub struct CanonicalArgs {
     /// Report the solver's own optimal solution (a vertex with simplex, an interior point with
     /// clarabel) instead of the canonical one: faster, but when the optimum is not unique the
-    /// crack pattern and the forces depend on --method (docs/canonical.md).
+    /// crack pattern and the forces depend on --method (docs/canonical.md). With
+    /// --non-associative: the last iterate's own mechanism instead of the least crack area
+    /// among the optima of its program.
     #[arg(long)]
     pub raw: bool,
     /// Skip the ranges of the support reactions over the optimal force fields (2 LPs per
@@ -31,7 +33,9 @@ pub struct CanonicalArgs {
 pub struct LimitCanonicalArgs {
     /// Report the canonical collapse mechanism and forces (least crack area among the optimal
     /// mechanisms, then a generic tie-break; physical forces of least complementary energy)
-    /// instead of the solver's own (docs/canonical.md).
+    /// instead of the solver's own (docs/canonical.md). With --non-associative: the mechanism
+    /// of least crack area (openings and slips) among the optima of the last iterate's program;
+    /// the forces stay the iteration's.
     #[arg(long)]
     pub canonical: bool,
     /// With --canonical: skip the ranges of the support reactions.

@@ -2,6 +2,7 @@
 
 pub mod adapt;
 pub mod canonical;
+pub mod canonical_friction;
 pub mod laws;
 pub mod limit;
 pub mod nonassociative;

@@ -2,6 +2,7 @@
 
 use super::{canonical_options, invalid, JointLaws, Output, Request};
 use crate::analysis::canonical::limit_canonical;
+use crate::analysis::canonical_friction::limit_nonassociative_canonical;
 use crate::analysis::limit::{limit_with, Crushing};
 use crate::analysis::nonassociative::{limit_nonassociative_result, NonAssociativeOptions};
 use crate::error::Result;
@@ -121,7 +122,18 @@ impl LimitRequest {
                     )
                 });
             }
-            limit_nonassociative_result(st, &solver, &NonAssociativeOptions::default())?
+            if self.canonical {
+                // The canonical mechanism of the last iterate's program (least crack area;
+                // analysis::canonical_friction).
+                limit_nonassociative_canonical(
+                    st,
+                    &solver,
+                    &NonAssociativeOptions::default(),
+                    &canonical_options(self.ranges),
+                )?
+            } else {
+                limit_nonassociative_result(st, &solver, &NonAssociativeOptions::default())?
+            }
         } else if self.canonical && crushing == Crushing::Linear {
             limit_canonical(st, &solver, facets, &canonical_options(self.ranges))?
         } else {

@@ -2,6 +2,7 @@
 
 use super::{canonical_options, invalid, JointLaws, Output, Request};
 use crate::analysis::canonical::settle_canonical;
+use crate::analysis::canonical_friction::settle_nonassociative_canonical;
 use crate::analysis::limit::{Crushing, DEFAULT_FACETS};
 use crate::analysis::nonassociative::{settle_nonassociative, NonAssociativeOptions};
 use crate::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
@@ -63,6 +64,14 @@ impl SettleRequest {
                 n.given("settlement_form", "both")
             ));
         }
+        if self.non_associative && self.ranges == Some(true) {
+            // The frictional selection keeps the iteration's forces: no reaction ranges.
+            return invalid(format!(
+                "{} is not computed with {} (the forces are the friction iteration's)",
+                n.name("ranges"),
+                n.name("non_associative")
+            ));
+        }
         if req.model.exact_cone() {
             if self.non_associative {
                 return invalid(format!(
@@ -95,8 +104,9 @@ impl SettleRequest {
     }
 
     /// Whether the canonical selection runs: in 2D, unless `raw`, with the default joint laws
-    /// (joint laws beyond the defaults — non-associative iteration, exact crushing, other facet
-    /// counts — are solved as such). In 3D the solver's own solution (the canonical selection
+    /// (joint laws beyond the defaults — exact crushing, other facet counts — are solved as
+    /// such; the non-associative iteration has its own selection in 2D unless `raw`,
+    /// `analysis::canonical_friction`). In 3D the solver's own solution (the canonical selection
     /// is not yet fast enough on 3D models; docs/canonical.md).
     pub fn canonical(&self, dims: usize) -> bool {
         dims == 2
@@ -133,13 +143,26 @@ impl SettleRequest {
         };
         if self.non_associative && both {
             let solver = req.solver.iteration(dims);
-            let r = settle_nonassociative(
-                st,
-                &solver,
-                crushing,
-                facets,
-                &NonAssociativeOptions::settlement(),
-            )?;
+            // In 2D (unless `raw`) the canonical mechanism of the last iterate's program
+            // (least crack area; analysis::canonical_friction), as for Heyman's rules.
+            let r = if dims == 2 && !self.raw && crushing == Crushing::Linear {
+                settle_nonassociative_canonical(
+                    st,
+                    &solver,
+                    crushing,
+                    facets,
+                    &NonAssociativeOptions::settlement(),
+                    &canonical_options(self.ranges),
+                )?
+            } else {
+                settle_nonassociative(
+                    st,
+                    &solver,
+                    crushing,
+                    facets,
+                    &NonAssociativeOptions::settlement(),
+                )?
+            };
             return Ok((Output::Settlement(r), solver));
         }
         let r = if self.canonical(dims) {

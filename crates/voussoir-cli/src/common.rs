@@ -613,6 +613,18 @@ impl Input {
         req: &voussoir::request::Request,
         hooks: &mut voussoir::request::Hooks,
     ) -> Result<voussoir::request::AnyResult, Fail> {
+        let prepared = self.prepare(model, req)?;
+        Ok(voussoir::request::solve_with(prepared, req, hooks)?)
+    }
+
+    /// The first half of [`Input::run`]: the request's model options and support motion
+    /// applied and the structure built (errors naming the drawing entity of a crack or a mesh
+    /// face), the model's warnings printed.
+    pub fn prepare(
+        &self,
+        model: &AnyModel,
+        req: &voussoir::request::Request,
+    ) -> Result<voussoir::request::Prepared, Fail> {
         let annotate = |e: voussoir::Error| {
             let m = e.to_string();
             Fail(match model {
@@ -628,7 +640,7 @@ impl Input {
         for w in warnings {
             eprintln!("warning: {w}");
         }
-        Ok(voussoir::request::solve_with(prepared, req, hooks)?)
+        Ok(prepared)
     }
 
     /// `--existing-cracks`: the survey drawing's crack lines added to the model's cracks

@@ -140,19 +140,23 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
     } else {
         a.draw.check_2d()?;
     }
+    let mut identify = IdentifyRequest {
+        observations: Observations::default(),
+        unknowns: a.unknowns.iter().cloned().map(UnknownSpec::Text).collect(),
+        no_ranges: a.no_ranges,
+        settlement_form: a.form.settlement_form.form(),
+    };
+    // The model with the known motions first (their errors before the observations'), then
+    // the observations read and the analysis run.
+    let mut req = a
+        .model
+        .request(Analysis::Identify(identify.clone()), a.settle.motion()?)?;
+    let prepared = input.prepare(&any, &req)?;
     let (obs, names) = observations(&a, model_units)?;
-    let req = a.model.request(
-        Analysis::Identify(IdentifyRequest {
-            observations: obs.clone(),
-            unknowns: a.unknowns.iter().cloned().map(UnknownSpec::Text).collect(),
-            no_ranges: a.no_ranges,
-            settlement_form: a.form.settlement_form.form(),
-        }),
-        a.settle.motion()?,
-    )?;
-    let result = input
-        .run(&any, &req)
-        .map_err(|e| Fail(annotate(&e.0, &names)))?;
+    identify.observations = obs.clone();
+    req.analysis = Analysis::Identify(identify);
+    let result = voussoir::request::solve(prepared, &req)
+        .map_err(|e| Fail(annotate(&Fail::from(e).0, &names)))?;
     let internal = || Fail("internal: not an identification".into());
     match result {
         AnyResult::Planar(run) => {

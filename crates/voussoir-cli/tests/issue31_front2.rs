@@ -178,3 +178,62 @@ fn issue31_item2_plot_draws_a_saved_3d_incremental_result() {
     );
     assert!(!dir.join("inc.html").exists());
 }
+
+#[test]
+fn issue31_item5_draw3d_stages_draw_the_same_bytes() {
+    // The README's vault and dome, drawn before the renderer was split into stages (fixtures,
+    // with their commands in tests/fixtures/issue31_draw3d/README.md) and now.
+    let dir = tmpdir("issue31f2", "draw3d");
+    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/issue31_draw3d");
+    run(
+        &dir,
+        &[
+            "gen", "vault", "--live", "full", "--depth", "1", "--rings", "3", "-o", "vault3.json",
+        ],
+    );
+    run(
+        &dir,
+        &[
+            "gen",
+            "dome",
+            "--courses",
+            "8",
+            "--segments",
+            "16",
+            "--thickness",
+            "0.3",
+            "-o",
+            "dome.json",
+        ],
+    );
+    let cases: [(&str, &[&str]); 3] = [
+        (
+            "vault-settle.svg",
+            &["settle", "vault3.json", "--move", "right=1cm,0,0", "--svg"],
+        ),
+        ("vault-limit.svg", &["limit", "vault3.json", "--svg"]),
+        (
+            "dome-settle.svg",
+            &[
+                "settle",
+                "dome.json",
+                "--friction",
+                "0.5",
+                "--move",
+                "base0=0,0,-2cm",
+                "--move",
+                "base1=0,0,-2cm",
+                "--svg",
+            ],
+        ),
+    ];
+    for (name, args) in cases {
+        let mut a = args.to_vec();
+        a.push(name);
+        run(&dir, &a);
+        let now = std::fs::read(dir.join(name)).unwrap();
+        let before = std::fs::read(fixtures.join(name)).unwrap();
+        assert!(now.len() > 10_000, "{name}: {} bytes", now.len());
+        assert!(now == before, "{name} differs from the drawing before the split");
+    }
+}

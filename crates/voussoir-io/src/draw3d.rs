@@ -606,29 +606,10 @@ pub fn view_scores(r: &(impl Result3d + ?Sized)) -> Vec<(f64, f64)> {
             for (bi, (vs, fs, _)) in bodies.iter().enumerate() {
                 for (fi, f) in fs.iter().enumerate() {
                     let world: Vec<V3> = f.iter().map(|&i| vs[i]).collect();
-                    let n = newell(&world);
-                    let ln = norm(n);
-                    if !(ln > 0.0) {
-                        continue;
+                    // The scores test visibility by planes, not by depth.
+                    if let Some(face) = Face::project(bi, fi, world, &cam) {
+                        faces.push(Face { depth: 0.0, ..face });
                     }
-                    let n = vscale(n, 1.0 / ln);
-                    if dot(n, toward) <= 1e-9 {
-                        continue;
-                    }
-                    let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
-                    let mut fb = Bbox::new();
-                    for p in &px {
-                        fb.add(*p);
-                    }
-                    faces.push(Face {
-                        body: bi,
-                        index: fi,
-                        world,
-                        px,
-                        normal: n,
-                        depth: 0.0,
-                        bbox: fb.0,
-                    });
                 }
             }
             let mut score = 0.0;

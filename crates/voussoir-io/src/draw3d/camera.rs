@@ -92,32 +92,40 @@ pub(super) fn visible_faces(lay: &Layout, cam: &Camera) -> (Vec<Face>, Vec<usize
         let verts: Vec<V3> = b.vertices.iter().map(|v| lay.moved(bi, *v)).collect();
         for (fi, f) in b.faces.iter().enumerate() {
             let world: Vec<V3> = f.iter().map(|&i| verts[i]).collect();
-            let n = newell(&world);
-            let ln = norm(n);
-            if !(ln > 0.0) {
-                continue;
-            }
-            let n = vscale(n, 1.0 / ln);
-            if dot(n, cam.toward) <= 1e-9 {
-                continue;
-            }
-            let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
-            let mut fb = Bbox::new();
-            for p in &px {
-                fb.add(*p);
-            }
-            let depth = world.iter().map(|p| cam.depth(*p)).sum::<f64>() / world.len() as f64;
-            faces.push(Face {
-                body: bi,
-                index: fi,
-                world,
-                px,
-                normal: n,
-                depth,
-                bbox: fb.0,
-            });
+            faces.extend(Face::project(bi, fi, world, cam));
         }
     }
     let order = paint_order(&faces, 1e-7 * lay.size);
     (faces, order)
+}
+
+impl Face {
+    /// Face `index` of body `body` with (deformed) world vertices `world`, projected by `cam`
+    /// with its mean depth; `None` for a degenerate face or one turned away from the camera.
+    pub(super) fn project(body: usize, index: usize, world: Vec<V3>, cam: &Camera) -> Option<Face> {
+        let n = newell(&world);
+        let ln = norm(n);
+        if !(ln > 0.0) {
+            return None;
+        }
+        let n = vscale(n, 1.0 / ln);
+        if dot(n, cam.toward) <= 1e-9 {
+            return None;
+        }
+        let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
+        let mut fb = Bbox::new();
+        for p in &px {
+            fb.add(*p);
+        }
+        let depth = world.iter().map(|p| cam.depth(*p)).sum::<f64>() / world.len() as f64;
+        Some(Face {
+            body,
+            index,
+            world,
+            px,
+            normal: n,
+            depth,
+            bbox: fb.0,
+        })
+    }
 }

@@ -35,7 +35,7 @@
 // `!(x > 0.0)` is how this module rejects NaN along with non-positive values (as in `draw`).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::draw::chrome::{Bbox, Page, MARGIN};
+use crate::draw::chrome::{Page, MARGIN};
 use crate::draw::scene::PressurePoints;
 use crate::draw::svg::{esc, human, num};
 use crate::result3d::{

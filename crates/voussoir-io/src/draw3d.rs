@@ -589,19 +589,11 @@ pub fn view_scores(r: &(impl Result3d + ?Sized)) -> Vec<(f64, f64)> {
     auto_azimuths()
         .into_iter()
         .map(|az| {
-            let (right, up, toward) = View::Axonometric {
+            let cam = Camera::of_view(View::Axonometric {
                 azimuth: az,
                 elevation: DEFAULT_ELEVATION,
-            }
-            .basis();
-            let cam = Camera {
-                right,
-                up,
-                toward,
-                k: 1.0,
-                ox: 0.0,
-                oy: 0.0,
-            };
+            });
+            let toward = cam.toward;
             let mut faces: Vec<Face> = Vec::new();
             for (bi, (vs, fs, _)) in bodies.iter().enumerate() {
                 for (fi, f) in fs.iter().enumerate() {

@@ -24,15 +24,8 @@ pub(super) fn frame(r: &(impl Result3d + ?Sized), lay: &Layout, opts: &Draw3dOpt
         View::Auto => auto_view(r),
         v => v,
     };
-    let (right, up, toward) = view.basis();
-    let cam0 = Camera {
-        right,
-        up,
-        toward,
-        k: 1.0,
-        ox: 0.0,
-        oy: 0.0,
-    };
+    let cam0 = Camera::of_view(view);
+    let (right, up, toward) = (cam0.right, cam0.up, cam0.toward);
     let mut bb = Bbox::new();
     for (i, b) in lay.bodies.iter().enumerate() {
         if !lay.drawn(i) {
@@ -97,6 +90,21 @@ pub(super) fn visible_faces(lay: &Layout, cam: &Camera) -> (Vec<Face>, Vec<usize
     }
     let order = paint_order(&faces, 1e-7 * lay.size);
     (faces, order)
+}
+
+impl Camera {
+    /// The camera of a view at one pixel per metre, unshifted (extents, scores).
+    pub(super) fn of_view(view: View) -> Camera {
+        let (right, up, toward) = view.basis();
+        Camera {
+            right,
+            up,
+            toward,
+            k: 1.0,
+            ox: 0.0,
+            oy: 0.0,
+        }
+    }
 }
 
 impl Face {

@@ -453,8 +453,9 @@ pub enum Prepared {
     Spatial(Setup<Model3d, Structure3d>),
 }
 
-/// The result of an analysis, of a dimension.
+/// The result of an analysis, of a dimension. (One per run: the variants' sizes do not matter.)
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
 pub enum Output<D: Spatial> {
     Limit(LimitResult<D>),
     Settlement(SettlementResult<D>),

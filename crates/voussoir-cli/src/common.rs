@@ -7,12 +7,11 @@ use std::path::PathBuf;
 use voussoir::analysis::limit::Crushing;
 use voussoir::analysis::{LimitResult, SettlementResult};
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::model3d::AnyModel;
 use voussoir::result::{CrackText, Hinge, Spatial};
-use voussoir::settlement_input::ModelSupports;
 use voussoir::structure::Body;
 use voussoir::Assembly;
-use voussoir::{BuildOptions, Model, Structure, Structure3d};
+use voussoir::{BuildOptions, Model};
 use voussoir_io::lengths::Length;
 
 /// A failure: one line for the user.
@@ -344,19 +343,9 @@ pub struct SplitArgs {
 }
 
 pub use voussoir::settlement_input::SupportSplit;
-pub use voussoir_io::motion::{parse_profile, signed_length, Motion};
+pub use voussoir_io::motion::signed_length;
 
 impl SettleArgs {
-    /// Parse every `--split`, `--move` and `--profile` (before any work).
-    pub fn resolve(&self) -> Result<Motion, Fail> {
-        Ok(Motion::parse_with_splits(
-            &self.moves,
-            &self.fixed,
-            self.profile.as_deref(),
-            &self.split.splits,
-        )?)
-    }
-
     /// The request's support motion: every `--split`, `--move` and `--profile` parsed by the
     /// library (before any work).
     pub fn motion(&self) -> Result<voussoir::request::SupportMotion, Fail> {
@@ -367,11 +356,6 @@ impl SettleArgs {
             &self.split.splits,
             voussoir::request::Names::Flags,
         )?)
-    }
-
-    /// Apply the splits, moves, fixed supports and profile to a model: the supports cut.
-    pub fn apply<M: ModelSupports>(&self, model: &mut M) -> Result<Vec<SupportSplit>, Fail> {
-        Ok(self.resolve()?.apply(model)?)
     }
 }
 
@@ -427,21 +411,11 @@ pub fn split_summary(splits: &[SupportSplit]) -> String {
 pub struct Input {
     pub path: PathBuf,
     pub build: BuildOptions,
-    pub friction: Option<f64>,
-    pub compressive_strength: Option<f64>,
     pub dxf: crate::import::DxfArgs,
     /// `--existing-cracks`: the survey drawing and how to read it.
     pub existing_cracks: Option<(PathBuf, voussoir_io::survey::SurveyOptions)>,
-    pub solver: SolverOptions,
-    /// The solver for a 3D model (interior point unless --method says otherwise), for the
-    /// commands not on the request layer yet (whose requests choose it themselves).
-    #[allow(dead_code)]
-    pub solver3d: SolverOptions,
-    /// 3D: facets of the friction pyramid (None: the default), exact cone asked for.
-    pub friction_facets: Option<usize>,
+    /// 3D: the exact friction cone asked for.
     pub exact_friction_cone: bool,
-    /// The supports cut by the motion applied when building the structure.
-    pub splits: std::sync::Arc<std::sync::Mutex<Vec<SupportSplit>>>,
 }
 
 impl ModelArgs {
@@ -510,35 +484,17 @@ impl ModelArgs {
             }
         }
         Ok(Input {
-            splits: Default::default(),
-            friction_facets: self.friction_facets,
             exact_friction_cone: self.friction_cone == Some(FrictionConeArg::Exact),
             path: self.model.clone(),
             build: BuildOptions {
                 tolerance: self.tolerance,
             },
-            friction: self.friction,
-            compressive_strength: self.compressive_strength,
             dxf,
             existing_cracks: self
                 .existing_cracks
                 .clone()
                 .map(|p| (p, self.survey.options(self.dxf.units))),
-            solver: self.solver(),
-            // The library's default method of a 3D model unless --method says otherwise.
-            solver3d: SolverOptions {
-                method: self
-                    .solver
-                    .method
-                    .map(method)
-                    .unwrap_or(voussoir::request::default_method(3)),
-                ..self.solver()
-            },
         })
-    }
-
-    pub fn solver(&self) -> SolverOptions {
-        self.solver.options()
     }
 
     /// A request for `analysis` with `motion`, the model options and the solver of these
@@ -570,14 +526,6 @@ impl ModelArgs {
         };
         r.validate()?;
         Ok(r)
-    }
-
-    /// Apply `--friction` and `--compressive-strength` to every material (the implicit
-    /// `default` one included).
-    pub fn override_materials(&self, m: &mut Model) -> Result<(), Fail> {
-        check_materials(self.friction, self.compressive_strength)?;
-        m.override_joint_laws(self.friction, self.compressive_strength);
-        Ok(())
     }
 }
 
@@ -629,29 +577,7 @@ fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
     Ok(())
 }
 
-// `load_any`, `structure3d*`: for the commands not on the request layer yet.
-#[allow(dead_code)]
 impl Input {
-    /// Read a model of either dimension and apply the material overrides.
-    pub fn load_any(&self) -> Result<AnyModel, Fail> {
-        let mut m = self.dxf.read_any(&self.path)?.0;
-        match &mut m {
-            AnyModel::Planar(p) => self.add_existing_cracks(p)?,
-            AnyModel::Spatial(_) if self.existing_cracks.is_some() => {
-                return Err(Fail(format!(
-                    "--existing-cracks applies to 2D models, and {} is a 3D model",
-                    self.path.display()
-                )))
-            }
-            AnyModel::Spatial(_) => {}
-        }
-        match &mut m {
-            AnyModel::Planar(p) => p.override_joint_laws(self.friction, self.compressive_strength),
-            AnyModel::Spatial(s) => s.override_joint_laws(self.friction, self.compressive_strength),
-        }
-        Ok(m)
-    }
-
     /// Read a model of either dimension (with `--existing-cracks`), as given: the request
     /// layer applies the material overrides.
     pub fn read_any(&self) -> Result<AnyModel, Fail> {
@@ -677,6 +603,28 @@ impl Input {
         model: &AnyModel,
         req: &voussoir::request::Request,
     ) -> Result<voussoir::request::AnyResult, Fail> {
+        self.run_with(model, req, &mut voussoir::request::Hooks::default())
+    }
+
+    /// [`Input::run`], telling `hooks` of the analysis's progress (a progress bar).
+    pub fn run_with(
+        &self,
+        model: &AnyModel,
+        req: &voussoir::request::Request,
+        hooks: &mut voussoir::request::Hooks,
+    ) -> Result<voussoir::request::AnyResult, Fail> {
+        let prepared = self.prepare(model, req)?;
+        Ok(voussoir::request::solve_with(prepared, req, hooks)?)
+    }
+
+    /// The first half of [`Input::run`]: the request's model options and support motion
+    /// applied and the structure built (errors naming the drawing entity of a crack or a mesh
+    /// face), the model's warnings printed.
+    pub fn prepare(
+        &self,
+        model: &AnyModel,
+        req: &voussoir::request::Request,
+    ) -> Result<voussoir::request::Prepared, Fail> {
         let annotate = |e: voussoir::Error| {
             let m = e.to_string();
             Fail(match model {
@@ -692,74 +640,7 @@ impl Input {
         for w in warnings {
             eprintln!("warning: {w}");
         }
-        Ok(voussoir::request::solve(prepared, req)?)
-    }
-
-    /// Load a 3D model, apply a support motion, validate and find its joints, for a command
-    /// whose programs are LPs (the friction pyramid): `--friction-cone exact` is refused.
-    pub fn structure3d(
-        &self,
-        model: Model3d,
-        motion: Option<&Motion>,
-    ) -> Result<Structure3d, Fail> {
-        if self.exact_friction_cone {
-            return Err(Fail(
-                "--friction-cone exact is not solved by this command (limit, settle, tilt and capacity solve the exact cone; here the friction cone is the inscribed pyramid of --friction-facets)".into(),
-            ));
-        }
-        self.structure3d_any_cone(model, motion)
-    }
-
-    /// [`Input::structure3d`] for the commands that honour `--friction-cone exact` themselves
-    /// (limit, settle, tilt).
-    pub fn structure3d_any_cone(
-        &self,
-        mut model: Model3d,
-        motion: Option<&Motion>,
-    ) -> Result<Structure3d, Fail> {
-        if let Some(s) = motion {
-            self.note_splits(s.apply(&mut model)?);
-        }
-        let mut st = Structure3d::new(&model, self.build)
-            .map_err(|e| Fail(crate::import::annotate_mesh(&e.to_string())))?;
-        if let Some(k) = self.friction_facets {
-            st.friction_facets = k;
-        }
-        for w in model.warnings() {
-            eprintln!("warning: {w}");
-        }
-        Ok(st)
-    }
-
-    /// Keep the supports cut while applying a motion, for [`Input::splits`].
-    fn note_splits(&self, splits: Vec<SupportSplit>) {
-        if let Ok(mut s) = self.splits.lock() {
-            *s = splits;
-        }
-    }
-
-    /// The supports cut by the last motion applied by [`Input::structure_of`] or
-    /// [`Input::structure3d_any_cone`] (`--split`, a profile's breakpoints).
-    pub fn splits(&self) -> Vec<SupportSplit> {
-        self.splits.lock().map(|s| s.clone()).unwrap_or_default()
-    }
-
-    /// `--friction-facets` and `--friction-cone` refused for a 2D model.
-    pub fn refuse_3d_friction(&self) -> Result<(), Fail> {
-        if self.friction_facets.is_some() || self.exact_friction_cone {
-            return Err(Fail(
-                "--friction-facets and --friction-cone apply to 3D models (a 2D joint's friction is exact)".into(),
-            ));
-        }
-        Ok(())
-    }
-
-    /// Read the model (JSON, or DXF by extension) and apply the material overrides.
-    pub fn load(&self) -> Result<Model, Fail> {
-        let mut m = self.dxf.read(&self.path)?.0;
-        self.add_existing_cracks(&mut m)?;
-        m.override_joint_laws(self.friction, self.compressive_strength);
-        Ok(m)
+        Ok(prepared)
     }
 
     /// `--existing-cracks`: the survey drawing's crack lines added to the model's cracks
@@ -783,29 +664,6 @@ impl Input {
             m.cracks.push(voussoir_io::survey::existing_crack(c));
         }
         Ok(())
-    }
-
-    /// Load, apply a support motion, validate and discretise.
-    pub fn structure(&self, motion: Option<&Motion>) -> Result<Structure, Fail> {
-        self.structure_of(self.load()?, motion)
-    }
-
-    /// A loaded 2D model with a support motion, validated and discretised.
-    pub fn structure_of(
-        &self,
-        mut model: Model,
-        motion: Option<&Motion>,
-    ) -> Result<Structure, Fail> {
-        self.refuse_3d_friction()?;
-        if let Some(s) = motion {
-            self.note_splits(s.apply(&mut model)?);
-        }
-        let st = Structure::new(&model, self.build)
-            .map_err(|e| Fail(annotate_cracks(&e.to_string())))?;
-        for w in model.warnings() {
-            eprintln!("warning: {w}");
-        }
-        Ok(st)
     }
 }
 

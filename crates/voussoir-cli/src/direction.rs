@@ -100,36 +100,14 @@ impl Direction {
         }
     }
 
-    /// A vector in the plane of a 2D model (x to the right, y up): the axes and the multiples
-    /// of 90° exactly, other angles by their cosine and sine, a vector as given.
-    pub fn planar(&self, flag: &str) -> Result<[f64; 2], String> {
+    /// The direction in a request: its meaning in the model's dimension is the library's
+    /// ([`voussoir::request::Toward::resolve`]).
+    pub fn toward(&self) -> voussoir::request::Toward {
+        use voussoir::request::Toward;
         match self {
-            Direction::Axis { axis: 0, sign } => Ok([*sign, 0.0]),
-            Direction::Axis { axis: 1, sign } => Ok([0.0, *sign]),
-            Direction::Axis { .. } => Err(format!(
-                "{flag} {}: a 2D model's directions are in its plane (+x, -x, +y, -y, an angle or DX,DY)",
-                self.text()
-            )),
-            Direction::Angle(a) => {
-                let r = a.rem_euclid(360.0);
-                Ok(if r == 0.0 || r >= 360.0 {
-                    [1.0, 0.0]
-                } else if r == 90.0 {
-                    [0.0, 1.0]
-                } else if r == 180.0 {
-                    [-1.0, 0.0]
-                } else if r == 270.0 {
-                    [0.0, -1.0]
-                } else {
-                    let t = a.to_radians();
-                    [t.cos(), t.sin()]
-                })
-            }
-            Direction::Vector(v) if v.len() == 2 => Ok([v[0], v[1]]),
-            Direction::Vector(_) => Err(format!(
-                "{flag} {}: a 2D direction has two components DX,DY",
-                self.text()
-            )),
+            Direction::Axis { .. } => Toward::Axis(self.text()),
+            Direction::Angle(a) => Toward::Angle(*a),
+            Direction::Vector(v) => Toward::Vector(v.clone()),
         }
     }
 
@@ -165,22 +143,19 @@ mod tests {
 
     #[test]
     fn one_syntax() {
-        assert_eq!(
-            parse("+x").unwrap().planar("--direction").unwrap(),
-            [1.0, 0.0]
-        );
-        assert_eq!(
-            parse("-y").unwrap().planar("--direction").unwrap(),
-            [0.0, -1.0]
-        );
-        assert_eq!(
-            parse("90").unwrap().planar("--direction").unwrap(),
-            [0.0, 1.0]
-        );
-        assert_eq!(
-            parse("-0.5,2").unwrap().planar("--direction").unwrap(),
-            [-0.5, 2.0]
-        );
+        use voussoir::request::{Names, Toward};
+        let planar = |s: &str| {
+            parse(s)
+                .unwrap()
+                .toward()
+                .resolve(2, "direction", Names::Flags)
+                .unwrap()
+        };
+        assert_eq!(planar("+x"), [1.0, 0.0]);
+        assert_eq!(planar("-y"), [0.0, -1.0]);
+        assert_eq!(planar("90"), [0.0, 1.0]);
+        assert_eq!(planar("-0.5,2"), [-0.5, 2.0]);
+        assert!(matches!(parse("+z").unwrap().toward(), Toward::Axis(_)));
         assert_eq!(parse("-x").unwrap().azimuth("--direction").unwrap(), 180.0);
         assert_eq!(parse("0,1").unwrap().azimuth("--direction").unwrap(), 90.0);
         assert_eq!(parse("-30").unwrap().azimuth("--direction").unwrap(), -30.0);

@@ -7,11 +7,9 @@ use crate::import::UnitsArg;
 use clap::Args;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use voussoir::analysis::identify::{
-    identify, Component, IdentifyGeometry, IdentifyOptions, Observations, Unknown,
-};
-use voussoir::dim::Dim;
-use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::analysis::identify::Observations;
+use voussoir::model3d::AnyModel;
+use voussoir::request::{Analysis, AnyResult, IdentifyRequest, UnknownSpec};
 use voussoir::result::identify::IdentifyResult;
 use voussoir::result::Spatial;
 use voussoir::Assembly;
@@ -136,93 +134,99 @@ pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
         model.dxf.units = None;
     }
     let input = model.resolve_with(Some(a.survey.is_some()))?;
-    let motion = a.settle.resolve()?;
-    let mut model = match input.load_any()? {
-        AnyModel::Planar(m) => m,
-        AnyModel::Spatial(m) => return run3d(&a, input, motion, m),
+    let any = input.read_any()?;
+    if let AnyModel::Spatial(_) = any {
+        refuse_3d(&a)?;
+    } else {
+        a.draw.check_2d()?;
+    }
+    let mut identify = IdentifyRequest {
+        observations: Observations::default(),
+        unknowns: a.unknowns.iter().cloned().map(UnknownSpec::Text).collect(),
+        no_ranges: a.no_ranges,
+        settlement_form: a.form.settlement_form.form(),
     };
-    a.draw.check_2d()?;
-    let mut splits = motion.apply(&mut model)?;
-    // Unknown profiles act on the foundations as drawn, as `--profile` does: a support that
-    // spans one of their breakpoints is cut there first.
-    let xs: Vec<f64> = a
-        .unknowns
-        .iter()
-        .flat_map(|spec| profile_unknown_breakpoints(spec))
-        .collect();
-    if !xs.is_empty() {
-        splits.extend(
-            voussoir::settlement_input::split_supports_at(&mut model, &xs)
-                .map_err(|e| Fail(format!("--unknown: {e}")))?,
-        );
-        voussoir::settlement_input::refresh_motions(&model, &mut splits);
-    }
-    let facts = crate::report_inputs::facts_2d(&model);
-    let st = input.structure_of(model, None)?;
-    let solver = input.solver;
+    // The model with the known motions first (their errors before the observations'), then
+    // the observations read and the analysis run.
+    let mut req = a
+        .model
+        .request(Analysis::Identify(identify.clone()), a.settle.motion()?)?;
+    let prepared = input.prepare(&any, &req)?;
     let (obs, names) = observations(&a, model_units)?;
-    let mut unknowns = Vec::new();
-    for spec in &a.unknowns {
-        unknowns.extend(parse_unknown(spec, &st)?);
+    identify.observations = obs.clone();
+    req.analysis = Analysis::Identify(identify);
+    let result = voussoir::request::solve(prepared, &req)
+        .map_err(|e| Fail(annotate(&Fail::from(e).0, &names)))?;
+    let internal = || Fail("internal: not an identification".into());
+    match result {
+        AnyResult::Planar(run) => {
+            let st = &run.setup.structure;
+            let (r, unknowns) = run.output.identify().ok_or_else(internal)?;
+            if a.draw.svg.is_some() || a.draw.png.is_some() {
+                let d = draw::draw_identify(r, &a.draw.options()?, a.draw.title.as_deref());
+                write_drawing(&d.svg, a.draw.svg.as_deref(), a.draw.png.as_deref())?;
+            }
+            if let Some(path) = &a.draw.report {
+                let facts = crate::report_inputs::facts_2d(&run.setup.model);
+                let rep = draw::identify_report(
+                    r,
+                    &ReportOptions {
+                        title: a.draw.title.clone(),
+                        source: a.model.model.display().to_string(),
+                        scale: a.draw.scale,
+                        inputs: Some(voussoir_io::report_parts::ReportInputs {
+                            // The model with the known motions (the identified ones are results).
+                            model: Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                                &voussoir::Assembly::shapes(st),
+                                voussoir::Assembly::contact_joints(st).len(),
+                            )),
+                            unknown_lengths: unknowns.iter().map(|u| u.length()).collect(),
+                            ..crate::report_inputs::report_inputs(
+                                "identify",
+                                facts,
+                                st,
+                                &input,
+                                &run.solver,
+                                crate::report_inputs::Laws::default(),
+                                settings(&a, &obs),
+                            )
+                        }),
+                    },
+                );
+                crate::outputs::stage(path, rep.to_html().as_bytes())?;
+            }
+            // Each unknown's kind of length: a rotation (every support's θ only) or a motion.
+            let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
+            a.out
+                .emit_split(r, &run.setup.splits, || summary(st, r, &kinds))
+        }
+        AnyResult::Spatial(run) => {
+            let st = &run.setup.structure;
+            let (r, unknowns) = run.output.identify().ok_or_else(internal)?;
+            if a.draw.svg.is_some()
+                || a.draw.png.is_some()
+                || a.draw.vtk.is_some()
+                || a.draw.view.is_some()
+            {
+                let draw = DrawArgs {
+                    title: Some(a.draw.title.clone().unwrap_or_else(|| {
+                        "Forward settlement of the identified support motion".to_string()
+                    })),
+                    ..a.draw.clone()
+                };
+                draw.emit_3d(&r.forward, &input.path)?;
+            }
+            let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
+            a.out
+                .emit_split(r, &run.setup.splits, || summary(st, r, &kinds))
+        }
     }
-    let r = identify(
-        &st,
-        &obs,
-        &unknowns,
-        &IdentifyOptions {
-            solver,
-            ranges: !a.no_ranges,
-            form: a.form.settlement_form.form(),
-        },
-    )
-    .map_err(|e| Fail(annotate(&Fail::from(e).0, &names)))?;
-    if a.draw.svg.is_some() || a.draw.png.is_some() {
-        let d = draw::draw_identify(&r, &a.draw.options()?, a.draw.title.as_deref());
-        write_drawing(&d.svg, a.draw.svg.as_deref(), a.draw.png.as_deref())?;
-    }
-    if let Some(path) = &a.draw.report {
-        let rep = draw::identify_report(
-            &r,
-            &ReportOptions {
-                title: a.draw.title.clone(),
-                source: a.model.model.display().to_string(),
-                scale: a.draw.scale,
-                inputs: Some(voussoir_io::report_parts::ReportInputs {
-                    // The model with the known motions (the identified ones are results).
-                    model: Some(voussoir_io::report_parts::ModelEcho::of_2d(
-                        &voussoir::Assembly::shapes(&st),
-                        voussoir::Assembly::contact_joints(&st).len(),
-                    )),
-                    unknown_lengths: unknowns.iter().map(|u| u.length()).collect(),
-                    ..crate::report_inputs::report_inputs(
-                        "identify",
-                        facts,
-                        &st,
-                        &input,
-                        &solver,
-                        crate::report_inputs::Laws::default(),
-                        settings(&a, &obs),
-                    )
-                }),
-            },
-        );
-        crate::outputs::stage(path, rep.to_html().as_bytes())?;
-    }
-    // Each unknown's kind of length: a rotation (every support's θ only) or a motion.
-    let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
-    a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
 }
 
-/// A 3D model: the same analysis on the [`voussoir::Structure3d`]. The observations are
-/// points (`at: [x, y, z]`) or joints; `--svg`, `--png`, `--vtk` and `--view` draw the forward
-/// settlement of the identified motion (a 3D structure drawing), `--report` and `--survey`
-/// (2D) are refused.
-fn run3d(
-    a: &IdentifyArgs,
-    input: crate::common::Input,
-    motion: crate::common::Motion,
-    mut model: Model3d,
-) -> Result<(), Fail> {
+/// A 3D model: the observations are points (`at: [x, y, z]`) or joints; `--svg`, `--png`,
+/// `--vtk` and `--view` draw the forward settlement of the identified motion (a 3D structure
+/// drawing), `--report` and `--survey` (2D) are refused.
+fn refuse_3d(a: &IdentifyArgs) -> Result<(), Fail> {
     if a.survey.is_some() {
         return Err(Fail(
             "--survey reads a 2D crack survey drawing; on a 3D model give the observed cracks as --cracks OBS.json (\"at\": [x, y, z] or \"joint\", docs/identify.md)".into(),
@@ -233,46 +237,7 @@ fn run3d(
             "--report applies to 2D identifications; on a 3D model --svg, --png, --vtk and --view draw the forward settlement of the identified motion".into(),
         ));
     }
-    for spec in &a.unknowns {
-        if matches!(
-            spec.trim().split_once(':'),
-            Some(("uniform" | "linear" | "table", _))
-        ) {
-            return Err(Fail(format!(
-                "--unknown {spec}: a settlement profile as unknown applies to 2D models; on a 3D model give the supports' components (NAME=u,v,w,theta_x,theta_y,theta_z)"
-            )));
-        }
-    }
-    let splits = motion.apply(&mut model)?;
-    let st = input.structure3d(model, None)?;
-    let solver = input.solver3d;
-    let (obs, _) = observations(a, None)?;
-    let mut unknowns = Vec::new();
-    for spec in &a.unknowns {
-        unknowns.extend(parse_unknown(spec, &st)?);
-    }
-    let r = identify(
-        &st,
-        &obs,
-        &unknowns,
-        &IdentifyOptions {
-            solver,
-            ranges: !a.no_ranges,
-            form: a.form.settlement_form.form(),
-        },
-    )?;
-    if a.draw.svg.is_some() || a.draw.png.is_some() || a.draw.vtk.is_some() || a.draw.view.is_some()
-    {
-        let draw = DrawArgs {
-            title: Some(a.draw.title.clone().unwrap_or_else(|| {
-                "Forward settlement of the identified support motion".to_string()
-            })),
-            ..a.draw.clone()
-        };
-        draw.emit_3d(&r.forward, &input.path)?;
-    }
-    let kinds: Vec<Length> = unknowns.iter().map(|u| u.length()).collect();
-    a.out.emit_split(&r, &splits, || summary(&st, &r, &kinds))
+    Ok(())
 }
 
 /// The settings of the identification as given, for the report.
@@ -472,155 +437,4 @@ fn motion_text<M: serde::Serialize>(m: &M) -> String {
         }
     }
     parts.join("  ")
-}
-
-/// Split `[LO:HI]` bounds (either side may be empty).
-fn parse_bounds(s: &str, spec: &str) -> Result<(Option<f64>, Option<f64>), Fail> {
-    let bad = || {
-        Fail(format!(
-            "--unknown {spec}: bounds are written [LO:HI] (either side may be empty)"
-        ))
-    };
-    let inner = s
-        .strip_prefix('[')
-        .and_then(|t| t.strip_suffix(']'))
-        .ok_or_else(bad)?;
-    let (lo, hi) = inner.split_once(':').ok_or_else(bad)?;
-    let num = |t: &str| -> Result<Option<f64>, Fail> {
-        let t = t.trim();
-        if t.is_empty() {
-            return Ok(None);
-        }
-        t.parse::<f64>().map(Some).map_err(|_| bad())
-    };
-    Ok((num(lo)?, num(hi)?))
-}
-
-/// `f22` → ("f", 22).
-fn split_number(name: &str) -> Option<(&str, u64)> {
-    let i = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
-    if i == name.len() {
-        return None;
-    }
-    Some((&name[..i], name[i..].parse().ok()?))
-}
-
-/// One `--unknown` specification (see docs/identify.md):
-/// `NAME=COMP[,COMP…]`, `A..B=COMP` (supports A to B sharing one value), or a profile with one
-/// value written `?` (`uniform:X0,X1,?`, `linear:X0,V0,X1,?`, `table:X,V;X,?;…`); each component
-/// or `?` may carry bounds `[LO:HI]`.
-pub fn parse_unknown<S: IdentifyGeometry>(spec: &str, st: &S) -> Result<Vec<Unknown>, Fail> {
-    let spec = spec.trim();
-    if let Some((kind, _)) = spec.split_once(':') {
-        if matches!(kind, "uniform" | "linear" | "table") {
-            return parse_profile_unknown(spec, st).map(|u| vec![u]);
-        }
-    }
-    let (names, comps) = spec.split_once('=').ok_or_else(|| {
-        Fail(format!("--unknown {spec}: expected NAME=u,v,theta, A..B=v or a profile with a '?' (uniform:X0,X1,?)"))
-    })?;
-    let label = names.trim();
-    let names: Vec<String> = if let Some((a, b)) = label.split_once("..") {
-        let (Some((pa, na)), Some((pb, nb))) = (split_number(a.trim()), split_number(b.trim()))
-        else {
-            return Err(Fail(format!("--unknown {spec}: a range A..B needs numbered names with one prefix, e.g. f22..f43")));
-        };
-        if pa != pb || na > nb {
-            return Err(Fail(format!(
-                "--unknown {spec}: a range A..B needs one prefix and A's number ≤ B's"
-            )));
-        }
-        (na..=nb).map(|n| format!("{pa}{n}")).collect()
-    } else {
-        vec![label.to_string()]
-    };
-    let mut out = Vec::new();
-    for c in comps.split(',') {
-        let c = c.trim();
-        let (c, lo, hi) = match c.find('[') {
-            Some(i) => {
-                let (lo, hi) = parse_bounds(&c[i..], spec)?;
-                (&c[..i], lo, hi)
-            }
-            None => (c, None, None),
-        };
-        let dofs = <S::D as Dim>::DOFS;
-        let comp = match Component::parse(c.trim()) {
-            Some(comp) if comp.index_in(dofs).is_some() => comp,
-            _ if dofs == 3 => {
-                return Err(Fail(format!(
-                    "--unknown {spec}: component '{}' is not u, v or theta",
-                    c.trim()
-                )));
-            }
-            _ => {
-                return Err(Fail(format!(
-                    "--unknown {spec}: component '{}' is not u, v, w, theta_x, theta_y or theta_z (a 3D model)",
-                    c.trim()
-                )));
-            }
-        };
-        out.push(Unknown::supports(st, label, &names, comp, lo, hi)?);
-    }
-    Ok(out)
-}
-
-/// The breakpoints of an unknown profile (`uniform:X0,X1,?`, …; its positions are known), or
-/// none when `spec` is not one or cannot be read (its own parse reports why).
-fn profile_unknown_breakpoints(spec: &str) -> Vec<f64> {
-    let spec = spec.trim();
-    let Some(q) = spec.find('?') else {
-        return Vec::new();
-    };
-    if !matches!(
-        spec.split_once(':'),
-        Some(("uniform" | "linear" | "table", _))
-    ) {
-        return Vec::new();
-    }
-    let rest = &spec[q + 1..];
-    let tail = match rest.strip_prefix('[') {
-        Some(r) => r.find(']').map_or("", |end| &r[end + 1..]),
-        None => rest,
-    };
-    crate::common::parse_profile(&format!("{}0{tail}", &spec[..q]))
-        .map(|p| p.breakpoints())
-        .unwrap_or_default()
-}
-
-fn parse_profile_unknown<S: IdentifyGeometry>(spec: &str, st: &S) -> Result<Unknown, Fail> {
-    let bad = |m: &str| Fail(format!("--unknown {spec}: {m}"));
-    let q = spec
-        .find('?')
-        .ok_or_else(|| bad("a profile unknown needs one value written '?'"))?;
-    if spec[q + 1..].contains('?') {
-        return Err(bad("only one '?' per profile"));
-    }
-    let rest = &spec[q + 1..];
-    let (tail, lo, hi) = if rest.starts_with('[') {
-        let end = rest.find(']').ok_or_else(|| bad("unclosed bounds"))?;
-        let (lo, hi) = parse_bounds(&rest[..=end], spec)?;
-        (&rest[end + 1..], lo, hi)
-    } else {
-        (rest, None, None)
-    };
-    let head = &spec[..q];
-    // The '?' must be a value, not a position: count the numbers before it.
-    let (kind, nums) = head.split_once(':').unwrap_or((head, ""));
-    let before = nums.split([',', ';']).count() - 1;
-    let is_value = match kind {
-        "uniform" => before == 2,
-        "linear" => before == 1 || before == 3,
-        "table" => before % 2 == 1,
-        _ => false,
-    };
-    if !is_value {
-        return Err(bad(
-            "the '?' must stand for a settlement value v, not a position x",
-        ));
-    }
-    let p0 = crate::common::parse_profile(&format!("{head}0{tail}"))?;
-    let p1 = crate::common::parse_profile(&format!("{head}1{tail}"))?;
-    let name = format!("{head}?{tail}");
-    Ok(Unknown::profile(st, &name, &p0, &p1, lo, hi)?)
 }

@@ -252,18 +252,6 @@ impl DxfArgs {
         Ok(())
     }
 
-    /// Read `path` as a 2D model: DXF by extension, JSON otherwise. The report is there for
-    /// DXF. A 3D model is refused with a line that says where 3D models go.
-    pub fn read(&self, path: &Path) -> Result<(Model, Option<ImportReport>), Fail> {
-        match self.read_any(path)? {
-            (AnyModel::Planar(m), rep) => Ok((m, rep)),
-            (AnyModel::Spatial(_), _) => Err(Fail(format!(
-                "{} is a 3D model: this command analyses 2D models only (3D models go to limit, settle, capacity and tilt)",
-                path.display()
-            ))),
-        }
-    }
-
     /// Read `path` as a model of either dimension: DXF (2D) or OBJ/PLY (3D) by extension, JSON
     /// otherwise.
     pub fn read_any(&self, path: &Path) -> Result<(AnyModel, Option<ImportReport>), Fail> {

@@ -5,11 +5,9 @@ use crate::common::{Fail, ModelArgs, OutArgs, SettleArgs};
 use clap::Args;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
-use voussoir::analysis::incremental::{
-    incremental_with, settled, Control, EventKind, IncrementalGeometry, IncrementalOptions,
-    IncrementalResult,
-};
-use voussoir::model3d::{AnyModel, Model3d};
+use voussoir::analysis::incremental::{EventKind, IncrementalPoint, IncrementalResult};
+use voussoir::model3d::AnyModel;
+use voussoir::request::{Analysis, AnyResult, Hooks, IncrementalRequest};
 use voussoir::result::Spatial;
 use voussoir::Assembly;
 use voussoir_io::lengths::Length;
@@ -83,180 +81,131 @@ pub fn length(s: &str) -> Result<f64, String> {
     }
 }
 
-/// The numbers of `--control` (checked against the model's dimension by [`pair`], [`triple`]).
-fn numbers(flag: &str, s: &str) -> Result<Vec<f64>, Fail> {
+/// The numbers of `--control` (checked against the model's dimension by the request layer).
+fn numbers(s: &str) -> Result<Vec<f64>, Fail> {
     s.split(',')
         .map(|x| x.trim().parse::<f64>())
         .collect::<Result<_, _>>()
         .map_err(|_| {
             Fail(format!(
-                "--{flag} {s}: expected two numbers X,Y (2D) or three X,Y,Z (3D)"
+                "--control {s}: expected two numbers X,Y (2D) or three X,Y,Z (3D)"
             ))
         })
 }
 
-fn pair(flag: &str, s: &str, v: &[f64]) -> Result<[f64; 2], Fail> {
-    match v {
-        [x, y] if x.is_finite() && y.is_finite() => Ok([*x, *y]),
-        _ => Err(Fail(format!(
-            "--{flag} {s}: expected two finite numbers X,Y (the model is 2D)"
-        ))),
+pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
+    let req = a.model.request(
+        Analysis::Incremental(IncrementalRequest {
+            control: numbers(&a.control)?,
+            direction: a.direction.toward(),
+            max: a.max,
+            step: a.step,
+            keep_fixed: a.keep_fixed,
+            snapshot_every: a.snapshot_every,
+            no_stop: a.no_stop,
+        }),
+        SettleArgs {
+            moves: a.moves.clone(),
+            fixed: a.fixed.clone(),
+            profile: None,
+            split: a.split.clone(),
+        }
+        .motion()?,
+    )?;
+    a.draw.check()?;
+    let input = a.model.resolve()?;
+    let model = input.read_any()?;
+    match &model {
+        AnyModel::Planar(_) => a.draw.check_2d()?,
+        AnyModel::Spatial(_) => refuse_3d_drawing(&a)?,
     }
-}
-
-fn triple(flag: &str, s: &str, v: &[f64]) -> Result<[f64; 3], Fail> {
-    match v {
-        [x, y, z] if x.is_finite() && y.is_finite() && z.is_finite() => Ok([*x, *y, *z]),
-        _ => Err(Fail(format!(
-            "--{flag} {s}: expected three finite numbers X,Y,Z (the model is 3D)"
-        ))),
-    }
-}
-
-/// `--direction` in space (z up): an axis, a horizontal angle from +x towards +y, or
-/// DX,DY,DZ; a two-component vector is refused (it would be read in the plane of a 2D model).
-fn spatial(d: &crate::direction::Direction) -> Result<[f64; 3], Fail> {
-    use crate::direction::Direction;
-    Ok(match d {
-        Direction::Axis { axis, sign } => {
-            let mut v = [0.0; 3];
-            v[*axis] = *sign;
-            v
-        }
-        Direction::Angle(_) => {
-            let [x, y] = d.planar("--direction").map_err(Fail)?;
-            [x, y, 0.0]
-        }
-        Direction::Vector(v) if v.len() == 3 => [v[0], v[1], v[2]],
-        Direction::Vector(_) => {
-            return Err(Fail(format!(
-            "--direction {}: a 3D model's direction vector has three components DX,DY,DZ (z up)",
-            d.text()
-        )))
-        }
-    })
-}
-
-/// The analysis, with a progress bar on a terminal.
-fn analyse<S: IncrementalGeometry>(
-    start: &S,
-    control: &Control<S::D>,
-    opts: &IncrementalOptions,
-    max: f64,
-) -> Result<IncrementalResult<S::D>, Fail> {
-    Ok(if std::io::stderr().is_terminal() {
-        let scale = 1e6; // µm
-        let bar = indicatif::ProgressBar::new((max * scale).ceil().max(1.0) as u64);
+    // The progress bar on a terminal (µm of control displacement).
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let scale = 1e6;
+        let bar = indicatif::ProgressBar::new((a.max * scale).ceil().max(1.0) as u64);
         bar.set_style(
             indicatif::ProgressStyle::with_template("{bar:40} {msg}")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
-        let r = incremental_with(start, control, opts, &mut |p| {
-            bar.set_position((p.displacement.abs() * scale) as u64);
+        bar
+    });
+    let mut step = |p: &IncrementalPoint| {
+        if let Some(bar) = &bar {
+            bar.set_position((p.displacement.abs() * 1e6) as u64);
             bar.set_message(format!(
                 "{}  λ = {:.5}",
                 Length::Motion.show(p.displacement),
                 p.load_multiplier
             ));
-        });
+        }
+    };
+    let result = input.run_with(
+        &model,
+        &req,
+        &mut Hooks {
+            step: Some(&mut step),
+            task: None,
+        },
+    );
+    if let Some(bar) = &bar {
         bar.finish_and_clear();
-        r?
-    } else {
-        incremental_with(start, control, opts, &mut |_| {})?
-    })
+    }
+    let internal = || Fail("internal: not an incremental result".into());
+    match result? {
+        AnyResult::Planar(run) => {
+            let st = &run.setup.structure;
+            let r = run.output.incremental().ok_or_else(internal)?;
+            // The model's materials for the report (read again only when one is asked for).
+            let facts = match a.draw.report {
+                Some(_) => crate::report_inputs::facts_2d(&run.setup.model),
+                None => Default::default(),
+            };
+            a.draw
+                .clone()
+                .with_inputs(|| {
+                    let mut i = crate::report_inputs::report_inputs(
+                        "incremental",
+                        facts,
+                        st,
+                        &input,
+                        &run.solver,
+                        crate::report_inputs::Laws::default(),
+                        settings(&a, r),
+                    );
+                    // The model with the settlement given by --move (the result starts after it).
+                    i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                        &voussoir::Assembly::shapes(st),
+                        voussoir::Assembly::contact_joints(st).len(),
+                    ));
+                    i
+                })
+                .emit_incremental(r, &input.path)?;
+            a.out.emit_split(r, &run.setup.splits, || summary(st, r))
+        }
+        AnyResult::Spatial(run) => {
+            let st = &run.setup.structure;
+            let r = run.output.incremental().ok_or_else(internal)?;
+            if a.draw.svg.is_some() || a.draw.png.is_some() {
+                let title = a
+                    .draw
+                    .title
+                    .as_deref()
+                    .unwrap_or(voussoir_io::draw::INCREMENTAL_TITLE);
+                let svg = voussoir_io::draw::incremental_plot(&[("λ(dx)", r)], title).svg;
+                crate::draw_args::write_drawing(
+                    &svg,
+                    a.draw.svg.as_deref(),
+                    a.draw.png.as_deref(),
+                )?;
+            }
+            a.out.emit_split(r, &run.setup.splits, || summary(st, r))
+        }
+    }
 }
 
-pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
-    let xs = numbers("control", &a.control)?;
-    if a.moves.is_empty() && !a.fixed.is_empty() {
-        return Err(Fail("--fixed only applies with --move".into()));
-    }
-    if a.moves.is_empty() && a.keep_fixed {
-        return Err(Fail("--keep-fixed only applies with --move".into()));
-    }
-    if a.step > a.max {
-        return Err(Fail(format!(
-            "--step {} mm is larger than --max {} mm",
-            a.step * 1e3,
-            a.max * 1e3
-        )));
-    }
-    a.draw.check()?;
-    let input = a.model.resolve()?;
-    let model = match input.load_any()? {
-        AnyModel::Planar(m) => m,
-        AnyModel::Spatial(m) => return run3d(&a, &xs, input, m),
-    };
-    let x = pair("control", &a.control, &xs)?;
-    let dir = a.direction.planar("--direction").map_err(Fail)?;
-    a.draw.check_2d()?;
-    let motion = SettleArgs {
-        moves: a.moves.clone(),
-        fixed: a.fixed.clone(),
-        profile: None,
-        split: a.split.clone(),
-    }
-    .resolve()?;
-    let solver = input.solver;
-    // The model's materials for the report (read again only when one is asked for).
-    let facts = match a.draw.report {
-        Some(_) => crate::report_inputs::facts_2d(&model),
-        None => Default::default(),
-    };
-    let st = input.structure_of(model, Some(&motion))?;
-    let start = if a.moves.is_empty() {
-        st.clone()
-    } else {
-        settled(&st, &solver, !a.keep_fixed)?
-    };
-    // The block that carries the control point is chosen on the undeformed structure, so that
-    // a point on a joint (the crown) names the same block with and without --move.
-    let block = Control::nearest(&st, x, dir)?.block;
-    let control = Control::new(&start, block, x, dir)?;
-    let opts = IncrementalOptions {
-        step: a.step,
-        max_displacement: a.max,
-        stop_after_peak: !a.no_stop,
-        snapshot_every: a.snapshot_every,
-        solver,
-        ..IncrementalOptions::default()
-    };
-    let r = analyse(&start, &control, &opts, a.max)?;
-    a.draw
-        .clone()
-        .with_inputs(|| {
-            let mut i = crate::report_inputs::report_inputs(
-                "incremental",
-                facts,
-                &st,
-                &input,
-                &solver,
-                crate::report_inputs::Laws::default(),
-                settings(&a, &r),
-            );
-            // The model with the settlement given by --move (the result starts after it).
-            i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
-                &voussoir::Assembly::shapes(&st),
-                voussoir::Assembly::contact_joints(&st).len(),
-            ));
-            i
-        })
-        .emit_incremental(&r, &input.path)?;
-    a.out
-        .emit_split(&r, &input.splits(), || summary(&start, &r))
-}
-
-/// A 3D model: the same analysis on the [`voussoir::Structure3d`] (control point X,Y,Z, a
-/// direction in space). The figure is the λ curve (--svg, --png); the report, --vtk and --view
-/// draw 2D incremental results or 3D structures and are refused.
-fn run3d(
-    a: &IncrementalArgs,
-    xs: &[f64],
-    input: crate::common::Input,
-    model: Model3d,
-) -> Result<(), Fail> {
-    let x = triple("control", &a.control, xs)?;
-    let dir = spatial(&a.direction)?;
+/// A 3D incremental result's figure is the λ curve (--svg, --png); the report, --vtk and
+/// --view draw 2D incremental results or 3D structures and are refused.
+fn refuse_3d_drawing(a: &IncrementalArgs) -> Result<(), Fail> {
     for (given, flag) in [
         (a.draw.report.is_some(), "--report"),
         (a.draw.vtk.is_some(), "--vtk"),
@@ -270,45 +219,7 @@ fn run3d(
             )));
         }
     }
-    let motion = SettleArgs {
-        moves: a.moves.clone(),
-        fixed: a.fixed.clone(),
-        profile: None,
-        split: a.split.clone(),
-    }
-    .resolve()?;
-    // The default method of 2D (a simplex warm-started from step to step, docs/incremental.md),
-    // not the interior point that other 3D commands start with.
-    let solver = input.solver;
-    let st = input.structure3d(model, Some(&motion))?;
-    let start = if a.moves.is_empty() {
-        st.clone()
-    } else {
-        settled(&st, &solver, !a.keep_fixed)?
-    };
-    // Chosen on the undeformed structure, as in 2D.
-    let block = Control::nearest(&st, x, dir)?.block;
-    let control = Control::new(&start, block, x, dir)?;
-    let opts = IncrementalOptions {
-        step: a.step,
-        max_displacement: a.max,
-        stop_after_peak: !a.no_stop,
-        snapshot_every: a.snapshot_every,
-        solver,
-        ..IncrementalOptions::default()
-    };
-    let r = analyse(&start, &control, &opts, a.max)?;
-    if a.draw.svg.is_some() || a.draw.png.is_some() {
-        let title = a
-            .draw
-            .title
-            .as_deref()
-            .unwrap_or(voussoir_io::draw::INCREMENTAL_TITLE);
-        let svg = voussoir_io::draw::incremental_plot(&[("λ(dx)", &r)], title).svg;
-        crate::draw_args::write_drawing(&svg, a.draw.svg.as_deref(), a.draw.png.as_deref())?;
-    }
-    a.out
-        .emit_split(&r, &input.splits(), || summary(&start, &r))
+    Ok(())
 }
 
 /// The settings of the analysis as given (lengths by the README's rule: cm), for the report.

@@ -185,6 +185,20 @@ fn run_many(a: &PlotArgs) -> Result<(), Fail> {
             .collect();
         let t = a.title.as_deref().unwrap_or(draw::INCREMENTAL_TITLE);
         draw::incremental_plot(&curves, t).svg
+    } else if saved.iter().all(|s| matches!(s, Saved::Incremental3d(_))) {
+        let curves: Vec<(
+            &str,
+            &voussoir::analysis::IncrementalResult<voussoir::dim::Three>,
+        )> = saved
+            .iter()
+            .zip(&labels)
+            .filter_map(|(s, l)| match s {
+                Saved::Incremental3d(r) => Some((l.as_str(), r.as_ref())),
+                _ => None,
+            })
+            .collect();
+        let t = a.title.as_deref().unwrap_or(draw::INCREMENTAL_TITLE);
+        draw::incremental_plot(&curves, t).svg
     } else {
         let kinds: Vec<&str> = saved.iter().map(|s| s.kind()).collect();
         return Err(Fail(format!(
@@ -213,7 +227,10 @@ fn check_flags(a: &PlotArgs, saved: &Saved, report: bool) -> Result<(), Fail> {
     if !a.labels.is_empty()
         && !matches!(
             saved,
-            Saved::Capacity(_) | Saved::Capacity3d(_) | Saved::Incremental(_)
+            Saved::Capacity(_)
+                | Saved::Capacity3d(_)
+                | Saved::Incremental(_)
+                | Saved::Incremental3d(_)
         )
     {
         return Err(Fail(format!(
@@ -265,7 +282,7 @@ fn check_flags(a: &PlotArgs, saved: &Saved, report: bool) -> Result<(), Fail> {
         if let Some(f) = structure_flags(a).first() {
             let figure = match saved {
                 Saved::Safety(_) => "its chart of reaction ranges",
-                Saved::Incremental(_) => "its λ(dx) curve",
+                Saved::Incremental(_) | Saved::Incremental3d(_) => "its λ(dx) curve",
                 _ => "its λ(s) curve",
             };
             return Err(Fail(format!(
@@ -360,6 +377,14 @@ pub fn run(a: PlotArgs) -> Result<(), Fail> {
             None,
         ),
         (Saved::Incremental(r), Some(l)) => (
+            draw::incremental_plot(
+                &[(l, r.as_ref())],
+                a.title.as_deref().unwrap_or(draw::INCREMENTAL_TITLE),
+            )
+            .svg,
+            None,
+        ),
+        (Saved::Incremental3d(r), Some(l)) => (
             draw::incremental_plot(
                 &[(l, r.as_ref())],
                 a.title.as_deref().unwrap_or(draw::INCREMENTAL_TITLE),

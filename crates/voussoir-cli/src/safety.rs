@@ -5,14 +5,15 @@
 use crate::common::{Fail, ModelArgs, OutArgs, SolverArgs};
 use crate::gen::{ArchArgs, DomeArgs};
 use clap::{Args, Subcommand};
-use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use voussoir::analysis::safety::{least_thickness, LeastThickness, SafetyResult};
-use voussoir::generate::RadiusAt;
-use voussoir::lp::Method;
-use voussoir::request::{Analysis, AnyResult, SafetyRequest, SupportMotion};
-use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
+use voussoir::analysis::safety::SafetyResult;
+use voussoir::model3d::AnyModel;
+use voussoir::request::{
+    least_thickness, Analysis, AnyResult, Generator, LeastThicknessRequest, Names, SafetyRequest,
+    SolverRequest, SupportMotion,
+};
+use voussoir::Assembly;
 
 #[derive(Args)]
 pub struct SafetyArgs {
@@ -92,28 +93,6 @@ pub struct Bracket {
     pub json: bool,
     #[command(flatten)]
     pub solver: SolverArgs,
-}
-
-/// What `safety least-thickness` reports.
-#[derive(Serialize)]
-struct LeastThicknessResult {
-    generator: &'static str,
-    /// The least thickness (m) at which the structure stands, and the bracket.
-    #[serde(flatten)]
-    found: LeastThickness,
-    /// The radius of the centreline at the least thickness (m), and thickness / that radius
-    /// (Milankovitch's t/R = 0.1075 for a semicircular arch, Heyman's 0.042 for a hemisphere).
-    centreline_radius: f64,
-    thickness_over_radius: f64,
-    solver: voussoir::lp::SolverInfo,
-}
-
-fn centreline(radius: f64, at: RadiusAt, t: f64) -> f64 {
-    match at {
-        RadiusAt::Intrados => radius + t / 2.0,
-        RadiusAt::Centreline => radius,
-        RadiusAt::Extrados => radius - t / 2.0,
-    }
 }
 
 pub fn run(a: SafetyArgs) -> Result<(), Fail> {
@@ -214,82 +193,47 @@ fn write_report(
 }
 
 pub fn run_least(g: Generated) -> Result<(), Fail> {
-    let (radius, at, bracket) = match &g {
-        Generated::Arch(x) => (x.arch.radius, x.arch.radius_at.into(), &x.bracket),
-        Generated::Dome(x) => (x.dome.radius, x.dome.radius_at.into(), &x.bracket),
+    let (generator, bracket, output) = match &g {
+        Generated::Arch(x) => (
+            Generator::Arch(x.arch.spec()?),
+            &x.bracket,
+            x.arch.out.output.clone(),
+        ),
+        Generated::Dome(x) => (
+            Generator::Dome(x.dome.spec()),
+            &x.bracket,
+            x.dome.out.output.clone(),
+        ),
     };
-    if !(radius.is_finite() && radius > 0.0) {
-        return Err(Fail(format!("--radius {radius}: must be a number > 0")));
-    }
-    let rel = bracket.bisection_tolerance;
-    if !(rel.is_finite() && rel > 0.0 && rel < 1.0) {
-        return Err(Fail(format!(
-            "--bisection-tolerance {rel}: must be a number between 0 and 1"
-        )));
-    }
-    let lo = bracket.lower.unwrap_or(radius / 1000.0);
-    let hi = bracket.upper.unwrap_or(radius / 2.0);
-    let build = BuildOptions::default();
-    // The solver: dual simplex for the 2D arch, interior point for the 3D dome (as for models).
-    let mut solver = bracket.solver.options();
-    let (generator, found, model_json) = match &g {
-        Generated::Arch(x) => {
-            let spec = x.arch.spec()?;
-            let make = |t: f64| {
-                voussoir::generate::arch(&voussoir::generate::ArchSpec {
-                    thickness: t,
-                    ..spec.clone()
-                })
-            };
-            let found = least_thickness(
-                |t| Structure::new(&make(t)?, build),
-                lo,
-                hi,
-                rel * radius,
-                &solver,
-            )?;
-            let json = voussoir_io::files::to_json(&make(found.thickness)?)?;
-            ("arch", found, (json, x.arch.out.output.clone()))
-        }
-        Generated::Dome(x) => {
-            if bracket.solver.method.is_none() {
-                solver.method = Method::Ipm;
-            }
-            let spec = x.dome.spec();
-            let make = |t: f64| {
-                voussoir::generate3d::dome(&voussoir::generate3d::DomeSpec {
-                    thickness: t,
-                    ..spec.clone()
-                })
-            };
-            let found = least_thickness(
-                |t| Structure3d::new(&make(t)?, build),
-                lo,
-                hi,
-                rel * radius,
-                &solver,
-            )?;
-            let json = voussoir_io::files::to_json(&make(found.thickness)?)?;
-            ("dome", found, (json, x.dome.out.output.clone()))
-        }
+    let req = LeastThicknessRequest {
+        lower: bracket.lower,
+        upper: bracket.upper,
+        bisection_tolerance: bracket.bisection_tolerance,
     };
-    if let (json, Some(path)) = &model_json {
+    let solver = SolverRequest {
+        method: bracket.solver.method.map(crate::common::method),
+        log: bracket.solver.options().log,
+    };
+    let run = least_thickness(&generator, &req, &solver, Names::Flags)?;
+    if let Some(path) = &output {
+        let json = match &run.model {
+            AnyModel::Planar(m) => voussoir_io::files::to_json(m)?,
+            AnyModel::Spatial(m) => voussoir_io::files::to_json(m)?,
+        };
         crate::outputs::stage(path, json.as_bytes())?;
     }
-    let rc = centreline(radius, at, found.thickness);
-    let r = LeastThicknessResult {
-        generator,
-        centreline_radius: rc,
-        thickness_over_radius: found.thickness / rc,
-        found,
-        solver: solver.info(),
-    };
+    let r = &run.result;
     if bracket.json {
-        crate::common::out(&voussoir_io::files::to_json(&r)?);
+        crate::common::out(&voussoir_io::files::to_json(r)?);
     } else {
         crate::common::out(&format!(
-            "least thickness of the {generator}: {:.8} m (t/R = {:.6} with R = {:.6} m at the centreline); it does not stand at {:.8} m; {} bisection steps\n",
-            r.found.thickness, r.thickness_over_radius, rc, r.found.below, r.found.steps
+            "least thickness of the {}: {:.8} m (t/R = {:.6} with R = {:.6} m at the centreline); it does not stand at {:.8} m; {} bisection steps\n",
+            r.generator,
+            r.found.thickness,
+            r.thickness_over_radius,
+            r.centreline_radius,
+            r.found.below,
+            r.found.steps
         ));
     }
     Ok(())

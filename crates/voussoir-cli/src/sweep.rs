@@ -8,10 +8,9 @@ use crate::common::{Fail, SettleArgs, SettleModelArgs};
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
-use voussoir::analysis::capacity::CapacityOptions;
-use voussoir::model3d::AnyModel;
-use voussoir::sweep::{self, csv, jsonl, SweepKind, SweepRecord, SweepSpec};
-use voussoir::{Assembly, BuildOptions};
+use voussoir::request::{Analysis, AnyResult, Hooks, SweepRequest};
+use voussoir::sweep::{self, csv, jsonl, SweepRecord};
+use voussoir::Assembly;
 
 #[derive(Args)]
 pub struct SweepArgs {
@@ -119,148 +118,41 @@ fn write_outputs(
 pub fn run(a: SweepArgs) -> Result<(), Fail> {
     // Flags resolved before any work (a DXF flag on a JSON model, bad numbers).
     let input = a.model.resolve()?;
-    let modes = [
-        a.magnitudes.is_some(),
-        a.angles.is_some(),
-        a.samples.is_some(),
-    ]
-    .iter()
-    .filter(|x| **x)
-    .count();
-    if modes != 1 {
-        return Err(Fail(
-            "give exactly one of --magnitudes, --angles, --samples".into(),
-        ));
-    }
     let drawn = a.summary.is_some() || a.svg.is_some() || a.png.is_some() || a.report.is_some();
     if drawn && !a.capacity {
         return Err(Fail(
             "--summary, --svg, --png and --report describe the distribution of λ after the settlement: give --capacity".into(),
         ));
     }
-    if a.capacity && a.capacity_steps == 0 {
-        return Err(Fail(
-            "--capacity-steps 0: a capacity curve needs at least one interval".into(),
-        ));
-    }
-    let kind = match (a.magnitudes, a.angles, a.samples) {
-        (Some(n), _, _) => SweepKind::Scale(n),
-        (_, Some(n), _) => SweepKind::Direction(n),
-        (_, _, Some(n)) => SweepKind::Sample {
-            count: n,
-            cov: a.cov,
-            seed: a.seed,
-        },
-        _ => unreachable!("exactly one mode"),
+    let shard = match &a.shard {
+        Some(s) => Some(parse_shard(s)?),
+        None => None,
     };
-    let n = kind.count();
-    let spec = SweepSpec {
-        kind,
-        build: BuildOptions {
-            tolerance: a.model.tolerance,
-        },
-        solver: a.model.solver(),
-        form: a.model.settlement_form(),
-        capacity: a.capacity.then_some(CapacityOptions {
-            steps: a.capacity_steps,
-            mechanisms: false,
-            ..CapacityOptions::default()
-        }),
+    let sweep = SweepRequest {
+        magnitudes: a.magnitudes,
+        angles: a.angles,
+        samples: a.samples,
+        cov: a.cov,
+        seed: a.seed,
+        settlement_form: a.model.settlement_form(),
+        capacity: a.capacity,
+        capacity_steps: a.capacity_steps,
+        shard: shard.map(|(i, n)| [i, n]),
+        tasks: None,
     };
-    let (shard, shards) = match &a.shard {
-        Some(s) => parse_shard(s)?,
-        None => (0, 1),
-    };
-    sweep::check_size(n, shards)?;
-    match input.load_any()? {
-        AnyModel::Planar(mut model) => {
-            // The 3D friction flags are refused as for any 2D model.
-            input.refuse_3d_friction()?;
-            a.model.override_materials(&mut model)?;
-            let splits = a.settle.apply(&mut model)?;
-            // The sweep's records carry no model: the supports cut are told on stderr.
-            eprint!("{}", crate::common::split_summary(&splits));
-            let base: Vec<Vec<f64>> = model.supports.iter().map(|s| s.motion.to_vec()).collect();
-            sweep::check(&spec, &[], &base)?;
-            let st = voussoir::Structure::new(&model, spec.build)?;
-            // The report's inputs: the model with the base settlement, as every analysis
-            // builds it.
-            let inputs = (a.report.is_some() && a.capacity).then(|| {
-                let mut i = crate::report_inputs::report_inputs_tol(
-                    "sweep",
-                    crate::report_inputs::facts_2d(&model),
-                    &st,
-                    a.model.tolerance,
-                    &spec.solver,
-                    crate::report_inputs::Laws::default(),
-                    settings(&a, n),
-                );
-                i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
-                    &Assembly::shapes(&st),
-                    Assembly::contact_joints(&st).len(),
-                ));
-                i
-            });
-            sweep_on(&a, &st, &spec, shard, shards, inputs)
-        }
-        AnyModel::Spatial(mut model) => {
-            // 3D: the records' motions have six components (u, v, w, θx, θy, θz); the friction
-            // pyramid of --friction-facets; the 3D default solver (interior point).
-            let splits = a.settle.apply(&mut model)?;
-            eprint!("{}", crate::common::split_summary(&splits));
-            let base: Vec<Vec<f64>> = model.supports.iter().map(|s| s.motion.to_vec()).collect();
-            let spec = SweepSpec {
-                solver: input.solver3d,
-                ..spec
-            };
-            sweep::check(&spec, &[], &base)?;
-            let st = input.structure3d(model.clone(), None)?;
-            let inputs = (a.report.is_some() && a.capacity).then(|| {
-                let mut i = crate::report_inputs::report_inputs_tol(
-                    "sweep",
-                    crate::report_inputs::facts_3d(&model),
-                    &st,
-                    a.model.tolerance,
-                    &spec.solver,
-                    crate::report_inputs::Laws {
-                        cone: Some(crate::settle::friction_cone(&input, &st)),
-                        crushing: None,
-                        non_associative: false,
-                    },
-                    settings(&a, n),
-                );
-                i.model = Some(voussoir_io::report_parts::ModelEcho::of_3d(
-                    &Assembly::shapes(&st),
-                    Assembly::contact_joints(&st).len(),
-                ));
-                i
-            });
-            sweep_on(&a, &st, &spec, shard, shards, inputs)
-        }
-    }
-}
-
-/// Run shard `shard` of `shards` of the sweep on the structure `st` (either dimension; its
-/// supports carry the base settlement) and write the records and the distribution.
-fn sweep_on<S: Assembly>(
-    a: &SweepArgs,
-    st: &S,
-    spec: &SweepSpec,
-    shard: usize,
-    shards: usize,
-    inputs: Option<voussoir_io::report_parts::ReportInputs>,
-) -> Result<(), Fail>
-where
-    <S::D as voussoir::result::Spatial>::Motion: sweep::MotionSize,
-{
-    let n = spec.kind.count();
-    let tasks = sweep::shard_tasks(n, shard, shards);
+    let req = a
+        .model
+        .base
+        .request(Analysis::Sweep(sweep.clone()), a.settle.motion()?)?;
+    let model = input.read_any()?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(a.threads.unwrap_or(0))
         .build()
         .map_err(|e| Fail(format!("cannot start worker threads: {e}")))?;
+    let tasks = sweep.task_list().len();
+    let count = sweep.kind().map_or(0, |k| k.count());
     let bar = if std::io::stderr().is_terminal() {
-        let b = indicatif::ProgressBar::new(tasks.len() as u64);
+        let b = indicatif::ProgressBar::new(tasks as u64);
         if let Ok(style) = indicatif::ProgressStyle::with_template(
             "{bar:40} {pos}/{len} analyses, {elapsed} elapsed, ETA {eta}",
         ) {
@@ -275,22 +167,91 @@ where
             b.inc(1);
         }
     };
-    let records = pool.install(|| sweep::run_assembly(st, spec, &tasks, &progress));
+    let result = pool.install(|| {
+        input.run_with(
+            &model,
+            &req,
+            &mut Hooks {
+                step: None,
+                task: Some(&progress),
+            },
+        )
+    });
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    let records = records?;
+    let (records, splits, inputs) = match result? {
+        AnyResult::Planar(run) => {
+            let st = &run.setup.structure;
+            // The report's inputs: the model with the base settlement, as every analysis
+            // builds it.
+            let inputs = (a.report.is_some() && a.capacity).then(|| {
+                let mut i = crate::report_inputs::report_inputs_tol(
+                    "sweep",
+                    crate::report_inputs::facts_2d(&run.setup.model),
+                    st,
+                    a.model.tolerance,
+                    &run.solver,
+                    crate::report_inputs::Laws::default(),
+                    settings(&a, count),
+                );
+                i.model = Some(voussoir_io::report_parts::ModelEcho::of_2d(
+                    &Assembly::shapes(st),
+                    Assembly::contact_joints(st).len(),
+                ));
+                i
+            });
+            (
+                run.output.sweep().map(<[_]>::to_vec),
+                run.setup.splits,
+                inputs,
+            )
+        }
+        AnyResult::Spatial(run) => {
+            let st = &run.setup.structure;
+            let inputs = (a.report.is_some() && a.capacity).then(|| {
+                let mut i = crate::report_inputs::report_inputs_tol(
+                    "sweep",
+                    crate::report_inputs::facts_3d(&run.setup.model),
+                    st,
+                    a.model.tolerance,
+                    &run.solver,
+                    crate::report_inputs::Laws {
+                        cone: Some(crate::settle::friction_cone(&input, st)),
+                        crushing: None,
+                        non_associative: false,
+                    },
+                    settings(&a, count),
+                );
+                i.model = Some(voussoir_io::report_parts::ModelEcho::of_3d(
+                    &Assembly::shapes(st),
+                    Assembly::contact_joints(st).len(),
+                ));
+                i
+            });
+            (
+                run.output.sweep().map(<[_]>::to_vec),
+                run.setup.splits,
+                inputs,
+            )
+        }
+    };
+    let records = records.ok_or_else(|| Fail("internal: not a sweep".into()))?;
+    // The sweep's records carry no model: the supports cut are told on stderr.
+    eprint!("{}", crate::common::split_summary(&splits));
     write_outputs(&records, &a.jsonl, &a.csv)?;
     let certified = records.iter().filter(|r| r.certified).count();
+    let (i, n) = shard.unwrap_or((0, 1));
     eprintln!(
-        "{} analyses (shard {}/{} of {n}) on {} threads; {certified} certified",
+        "{} analyses (shard {}/{} of {}) on {} threads; {certified} certified",
         records.len(),
-        shard,
-        shards,
+        i,
+        n,
+        count,
         pool.current_num_threads()
     );
     if a.capacity {
-        write_distribution(a, &records, inputs)?;
+        write_distribution(&a, &records, inputs)?;
     }
     Ok(())
 }

@@ -35,21 +35,21 @@
 // `!(x > 0.0)` is how this module rejects NaN along with non-positive values (as in `draw`).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::draw::chrome::{
-    Bbox, Page, CRACK, EDGE, FAINT, HINGE, LOAD, MARGIN, PALETTE, STILL, STONE, THRUST,
-};
-use crate::draw::legend::{self, Entry};
-use crate::draw::scene::{auto_scale, PressurePoints};
-use crate::draw::svg::{arrow, esc, human, num, polygon_path};
-use crate::draw::MotionUnits;
+use crate::draw::chrome::{Page, MARGIN};
+use crate::draw::scene::PressurePoints;
+use crate::draw::svg::{esc, human, num};
 use crate::result3d::{
-    add, cross, dot, norm, polygon_order, scale as vscale, small_displacement, sub, validate,
-    Motions, Result3d, V3,
+    add, cross, dot, norm, scale as vscale, small_displacement, sub, validate, Motions, Result3d,
+    V3,
 };
 use crate::IoError;
-use std::collections::{BTreeMap, BTreeSet};
+
+mod camera;
+mod layers;
+mod layout;
+mod legend;
+use std::collections::BTreeSet;
 use std::fmt::Write as _;
-use voussoir::result::JointState;
 
 /// Which way the camera looks.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -589,46 +589,19 @@ pub fn view_scores(r: &(impl Result3d + ?Sized)) -> Vec<(f64, f64)> {
     auto_azimuths()
         .into_iter()
         .map(|az| {
-            let (right, up, toward) = View::Axonometric {
+            let cam = Camera::of_view(View::Axonometric {
                 azimuth: az,
                 elevation: DEFAULT_ELEVATION,
-            }
-            .basis();
-            let cam = Camera {
-                right,
-                up,
-                toward,
-                k: 1.0,
-                ox: 0.0,
-                oy: 0.0,
-            };
+            });
+            let toward = cam.toward;
             let mut faces: Vec<Face> = Vec::new();
             for (bi, (vs, fs, _)) in bodies.iter().enumerate() {
                 for (fi, f) in fs.iter().enumerate() {
                     let world: Vec<V3> = f.iter().map(|&i| vs[i]).collect();
-                    let n = newell(&world);
-                    let ln = norm(n);
-                    if !(ln > 0.0) {
-                        continue;
+                    // The scores test visibility by planes, not by depth.
+                    if let Some(face) = Face::project(bi, fi, world, &cam) {
+                        faces.push(Face { depth: 0.0, ..face });
                     }
-                    let n = vscale(n, 1.0 / ln);
-                    if dot(n, toward) <= 1e-9 {
-                        continue;
-                    }
-                    let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
-                    let mut fb = Bbox::new();
-                    for p in &px {
-                        fb.add(*p);
-                    }
-                    faces.push(Face {
-                        body: bi,
-                        index: fi,
-                        world,
-                        px,
-                        normal: n,
-                        depth: 0.0,
-                        bbox: fb.0,
-                    });
                 }
             }
             let mut score = 0.0;
@@ -685,312 +658,27 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     validate(r)?;
     let g = r.shapes();
     let motions = Motions::of(r);
-    let nb = g.blocks.len();
-    let show_supports = opts.supports;
+    // Layout: sizes, motions and colours, loads (world coordinates).
+    let lay = layout::layout(r, g, &motions, opts);
+    // Camera: the view and the extent of the drawing.
+    let frame = camera::frame(r, &lay, opts);
+    let view = frame.view;
 
-    // Size of the model.
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    let all_vertices = g
-        .blocks
-        .iter()
-        .flat_map(|b| b.vertices.iter())
-        .chain(g.supports.iter().flat_map(|s| s.vertices.iter()));
-    for v in all_vertices {
-        for c in 0..3 {
-            lo[c] = lo[c].min(v[c]);
-            hi[c] = hi[c].max(v[c]);
-        }
-    }
-    let (size, origin) = if lo[0] <= hi[0] {
-        (
-            (0..3)
-                .map(|c| hi[c] - lo[c])
-                .fold(0.0f64, f64::max)
-                .max(1e-9),
-            [
-                (lo[0] + hi[0]) / 2.0,
-                (lo[1] + hi[1]) / 2.0,
-                (lo[2] + hi[2]) / 2.0,
-            ],
-        )
-    } else {
-        (1.0, [0.0; 3])
-    };
-
-    // Largest small displacement and rotation.
-    type BodyMotion<'b> = (&'b [V3], (V3, [f64; 6]));
-    let all_motions: Vec<BodyMotion> = g
-        .blocks
-        .iter()
-        .zip(&motions.blocks)
-        .map(|(b, m)| (b.vertices.as_slice(), *m))
-        .chain(
-            g.supports
-                .iter()
-                .zip(&motions.supports)
-                .map(|(s, m)| (s.vertices.as_slice(), *m)),
-        )
-        .collect();
-    let mut dmax = 0.0f64;
-    let mut body_dmax = Vec::with_capacity(all_motions.len());
-    for (vs, (c, d)) in &all_motions {
-        let m = vs
-            .iter()
-            .map(|v| norm(small_displacement(*c, d, *v)))
-            .fold(0.0f64, f64::max);
-        body_dmax.push(m);
-        dmax = dmax.max(m);
-    }
-    let moving: Vec<bool> = body_dmax
-        .iter()
-        .map(|&m| dmax > 0.0 && m > 1e-9 * dmax)
-        .collect();
-    let tmax = all_motions
-        .iter()
-        .zip(&moving)
-        .filter(|(_, &mv)| mv)
-        .map(|((_, (_, d)), _)| norm([d[3], d[4], d[5]]))
-        .fold(0.0f64, f64::max);
-    let has_motion = opts.deformed && moving.iter().any(|&m| m);
-    let scale = if has_motion {
-        match opts.scale {
-            Some(s) if s.is_finite() && s >= 0.0 => s,
-            _ => auto_scale(dmax, tmax, size),
-        }
-    } else {
-        0.0
-    };
-
-    // Colours: one per macro-block (the same rigid field), as in 2D.
-    let tq = tmax.max(1e-300);
-    let uq = dmax.max(1e-300);
-    let mut colour_of: BTreeMap<(i64, i64, i64, i64, i64, i64), usize> = BTreeMap::new();
-    let mut bodies: Vec<Body> = Vec::with_capacity(all_motions.len());
-    for (i, (_, (c, d))) in all_motions.iter().enumerate() {
-        let support = i >= nb;
-        let (vertices, faces) = if support {
-            let s = &g.supports[i - nb];
-            (s.vertices.as_slice(), s.faces.as_slice())
-        } else {
-            (
-                g.blocks[i].vertices.as_slice(),
-                g.blocks[i].faces.as_slice(),
-            )
-        };
-        let mv = moving[i] && has_motion;
-        let colour = if support {
-            STILL
-        } else if !has_motion {
-            STONE
-        } else if !mv {
-            STILL
-        } else {
-            let w = small_displacement(*c, d, origin);
-            let q = |x: f64, r: f64| ((x / r) * 1e7).round() as i64;
-            let key = (
-                q(w[0], uq),
-                q(w[1], uq),
-                q(w[2], uq),
-                q(d[3], tq),
-                q(d[4], tq),
-                q(d[5], tq),
-            );
-            let n = colour_of.len();
-            PALETTE[*colour_of.entry(key).or_insert(n) % PALETTE.len()]
-        };
-        bodies.push(Body {
-            vertices,
-            faces,
-            support,
-            moving: mv,
-            colour,
-            motion: Rigid::new(*c, d, if mv { scale } else { 0.0 }),
-        });
-    }
-    let moved = |body: usize, p: V3| -> V3 { bodies[body].motion.apply(p) };
-    let drawn = |i: usize| show_supports || !bodies[i].support;
-
-    // Loads: (block, point, vector in metres of drawing, live).
-    let live_max = g
-        .loads
-        .iter()
-        .filter(|l| l.live)
-        .fold(0.0f64, |m, l| m.max(norm([l.fx, l.fy, l.fz])));
-    let dead_max = g
-        .loads
-        .iter()
-        .filter(|l| !l.live)
-        .fold(0.0f64, |m, l| m.max(norm([l.fx, l.fy, l.fz])));
-    let arrow_len = 0.09 * size;
-    let mut loads: Vec<(usize, V3, V3, bool)> = Vec::new();
-    for l in &g.loads {
-        let (show, fmax) = if l.live {
-            (opts.live_loads && r.live_loads(), live_max)
-        } else {
-            (opts.dead_loads, dead_max)
-        };
-        let f = norm([l.fx, l.fy, l.fz]);
-        let at = [l.x, l.y, l.z];
-        if !show || !(f > 0.0) || !(fmax > 0.0) || l.block >= nb || !crate::result3d::finite(at) {
-            continue;
-        }
-        let len = arrow_len * (f / fmax).max(0.25);
-        loads.push((l.block, at, vscale([l.fx, l.fy, l.fz], len / f), l.live));
-    }
-
-    // Camera basis and extent of everything drawn (in camera units).
-    let view = match opts.view {
-        View::Auto => auto_view(r),
-        v => v,
-    };
-    let (right, up, toward) = view.basis();
-    let cam0 = Camera {
-        right,
-        up,
-        toward,
-        k: 1.0,
-        ox: 0.0,
-        oy: 0.0,
-    };
-    let mut bb = Bbox::new();
-    for (i, b) in bodies.iter().enumerate() {
-        if !drawn(i) {
-            continue;
-        }
-        for v in b.vertices {
-            bb.add(cam0.px(moved(i, *v)));
-            if has_motion && opts.undeformed {
-                bb.add(cam0.px(*v));
-            }
-        }
-    }
-    for (blk, at, d, _) in &loads {
-        let t = moved(*blk, *at);
-        bb.add(cam0.px(t));
-        bb.add(cam0.px(sub(t, *d)));
-    }
-    if !bb.valid() {
-        bb = Bbox([0.0, -1.0, 1.0, 0.0]);
-    }
-    let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
-
-    // Layout (as in 2D).
+    // The page (as in 2D).
     let page = Page::new(opts.width, opts.max_height, 700.0, &r.info());
     let (width, max_h, margin, title_h) = (page.width, page.max_height, MARGIN, page.title_h);
-    let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
-    let (draw_w, draw_h) = (bw * k, bh * k);
+    let k = ((width - 2.0 * margin) / frame.bw).min(max_h / frame.bh);
+    let draw_h = frame.bh * k;
     // The legend: entries flowed and wrapped within the figure (crate::draw::legend). Its height
     // is that of the entries that may be drawn (a superset of those drawn below).
-    let n_pressure = r
-        .thrust_line()
-        .iter()
-        .filter(|t| crate::result3d::finite([t.x, t.y, t.z]))
-        .count();
-    let show_pressure = n_pressure > 0 && opts.pressure_points.lone(n_pressure);
-    let mut labels = LegendLabels {
-        undeformed: has_motion && opts.undeformed,
-        supports: show_supports && !g.supports.is_empty(),
-        hinges: opts.hinges && !r.hinges().is_empty(),
-        cracks: opts.cracks && r.joints().iter().any(|j| j.state != JointState::Closed),
-        pressure: show_pressure,
-        live: loads.iter().any(|l| l.3).then(|| {
-            crate::draw::legend::live_load_label(r.load_multiplier(), tilt_of(r), live_max)
-        }),
-        dead: loads
-            .iter()
-            .any(|l| !l.3)
-            .then(|| format!("dead load (largest {} kN)", human(dead_max, 3))),
-        motion: has_motion.then(|| match r.units() {
-            MotionUnits::Metres => format!("displacements drawn × {}", human(scale, 4)),
-            MotionUnits::Normalised => format!(
-                "mechanism drawn × {} (normalised: live loads do unit work)",
-                human(scale, 4)
-            ),
-        }),
-        view: describe_view(&view, &opts.view, has_motion),
-        id: esc(&opts.id),
-        size,
-        k,
-    };
-    let legend_h = if opts.legend {
-        let l = legend::layout(&labels.entries(), margin, width - margin);
-        legend::height(l.height)
-    } else {
-        8.0
-    };
+    let labels = legend::labels(r, g, &lay, opts, view, k);
+    let legend_h = legend::height(&labels, opts, margin, width);
     let height = (title_h + margin + draw_h + margin + legend_h).ceil();
-    // cam0.px gives (x·right, −x·up): bb.0[1] is the top.
-    let cam = Camera {
-        right,
-        up,
-        toward,
-        k,
-        ox: (width - draw_w) / 2.0 - k * bb.0[0],
-        oy: title_h + margin - k * bb.0[1],
-    };
-    let mean_size = if nb > 0 {
-        let vol: f64 = g
-            .blocks
-            .iter()
-            .map(|b| {
-                let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-                for v in &b.vertices {
-                    for c in 0..3 {
-                        lo[c] = lo[c].min(v[c]);
-                        hi[c] = hi[c].max(v[c]);
-                    }
-                }
-                if lo[0] <= hi[0] {
-                    (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])
-                } else {
-                    0.0
-                }
-            })
-            .sum();
-        (vol / nb as f64).cbrt().max(1e-9)
-    } else {
-        size / 10.0
-    };
-    let stroke = (0.012 * mean_size * k).clamp(0.35, 1.1);
-    let hinge_r = (0.06 * mean_size * k).clamp(2.5, 5.5);
+    let cam = frame.camera(k, width, title_h + margin);
+    let pens = layers::Pens::new(lay.mean_size, k);
 
-    // Visible faces (deformed), with their depth and picture.
-    let mut faces: Vec<Face> = Vec::new();
-    for (bi, b) in bodies.iter().enumerate() {
-        if !drawn(bi) {
-            continue;
-        }
-        let verts: Vec<V3> = b.vertices.iter().map(|v| moved(bi, *v)).collect();
-        for (fi, f) in b.faces.iter().enumerate() {
-            let world: Vec<V3> = f.iter().map(|&i| verts[i]).collect();
-            let n = newell(&world);
-            let ln = norm(n);
-            if !(ln > 0.0) {
-                continue;
-            }
-            let n = vscale(n, 1.0 / ln);
-            if dot(n, toward) <= 1e-9 {
-                continue;
-            }
-            let px: Vec<[f64; 2]> = world.iter().map(|p| cam.px(*p)).collect();
-            let mut fb = Bbox::new();
-            for p in &px {
-                fb.add(*p);
-            }
-            let depth = world.iter().map(|p| cam.depth(*p)).sum::<f64>() / world.len() as f64;
-            faces.push(Face {
-                body: bi,
-                index: fi,
-                world,
-                px,
-                normal: n,
-                depth,
-                bbox: fb.0,
-            });
-        }
-    }
-    let order = paint_order(&faces, 1e-7 * size);
+    // Visible faces (deformed), with their depth and picture, in paint order.
+    let (faces, order) = camera::visible_faces(&lay, &cam);
 
     let id = esc(&opts.id);
     let mut o = String::with_capacity(4096 + 160 * faces.len());
@@ -999,353 +687,32 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
     let title = opts.title.clone().unwrap_or_else(|| r.title());
     page.head(&mut o, &id, height, &title);
 
-    // Undeformed edges, faint, behind the solids.
-    if has_motion && opts.undeformed {
-        let mut d = String::new();
-        for (bi, b) in bodies.iter().enumerate() {
-            if !drawn(bi) || !b.moving {
-                continue;
-            }
-            let mut edges = BTreeSet::new();
-            for f in b.faces {
-                for k in 0..f.len() {
-                    let (a, c) = (f[k], f[(k + 1) % f.len()]);
-                    edges.insert((a.min(c), a.max(c)));
-                }
-            }
-            for (a, c) in edges {
-                let (p, q) = (cam.px(b.vertices[a]), cam.px(b.vertices[c]));
-                let _ = write!(
-                    d,
-                    "M{} {}L{} {}",
-                    num(p[0]),
-                    num(p[1]),
-                    num(q[0]),
-                    num(q[1])
-                );
-            }
-        }
-        if !d.is_empty() {
-            let _ = writeln!(
-                o,
-                "<path class=\"undeformed\" d=\"{d}\" fill=\"none\" stroke=\"{FAINT}\" stroke-width=\"{}\" stroke-dasharray=\"4 3\"/>",
-                num((stroke * 0.9).max(0.5))
-            );
-        }
-    }
-
-    // Faces, far to near.
-    let light = {
-        let l = add(
-            add(vscale(right, -0.45), vscale(up, 0.6)),
-            vscale(toward, 0.66),
-        );
-        vscale(l, 1.0 / norm(l))
-    };
-    let _ = writeln!(
-        o,
-        "<g class=\"solids\" stroke=\"{EDGE}\" stroke-width=\"{}\" stroke-linejoin=\"round\">",
-        num(stroke)
-    );
-    for &fi in &order {
-        let f = &faces[fi];
-        let lambert = 0.64 + 0.36 * dot(f.normal, light).max(0.0);
-        let mut d = String::new();
-        polygon_path(&mut d, f.px.iter().copied());
-        let b = &bodies[f.body];
-        if b.support {
-            let _ = writeln!(
-                o,
-                "<path class=\"support\" d=\"{d}\" fill=\"url(#{id}-hatch)\"/><path d=\"{d}\" fill=\"#000000\" fill-opacity=\"{}\" stroke=\"none\"/>",
-                crate::draw::svg::fmt_fixed(0.55 * (1.0 - lambert), 3)
-            );
-        } else {
-            let _ = writeln!(
-                o,
-                "<path class=\"block\" data-block=\"{}\" d=\"{d}\" fill=\"{}\"/>",
-                f.body,
-                shade(b.colour, lambert)
-            );
-        }
-    }
-    o.push_str("</g>\n");
-
-    let joint_by_id: BTreeMap<usize, &voussoir::result::JointResult<voussoir::dim::Three>> =
-        r.joints().iter().map(|j| (j.id, j)).collect();
-    let body_index = |b: &voussoir::result::BodyName| -> Option<usize> {
-        match b {
-            voussoir::result::BodyName::Block(i) if *i < nb => Some(*i),
-            voussoir::result::BodyName::Block(_) => None,
-            voussoir::result::BodyName::Support(s) => {
-                g.supports.iter().position(|x| &x.name == s).map(|k| nb + k)
-            }
-        }
-    };
-    // A point carried by body a of joint `j` (unmoved if the joint is unknown).
-    let carried = |joint: usize, p: V3| -> V3 {
-        match joint_by_id.get(&joint).and_then(|j| body_index(&j.a)) {
-            Some(a) => moved(a, p),
-            None => p,
-        }
-    };
-
-    // Markers hidden behind a face by more than this (m along the line of sight) are drawn
-    // faint: a hinge point is carried by one body and lies on the other's faces, which the
-    // finite motions of the drawing separate by second-order amounts.
-    let hide_eps = 0.03 * mean_size;
-    let hidden_at = |p: V3| hidden(&faces, &cam, p, hide_eps);
-
-    // Opened cracks: the joint's polygon on both sides and the wedge between them; the parts
-    // behind solids faint.
-    let mut n_cracks = 0;
-    if opts.cracks {
-        let (mut wedge, mut wedge_h) = (String::new(), String::new());
-        let (mut outline, mut outline_h) = (String::new(), String::new());
-        for j in r.joints() {
-            if j.state == JointState::Closed || j.points.len() < 2 {
-                continue;
-            }
-            let (Some(a), Some(b)) = (body_index(&j.a), body_index(&j.b)) else {
-                continue;
-            };
-            let pts: Vec<V3> = j.points.iter().map(|p| [p.x, p.y, p.z]).collect();
-            if pts.iter().any(|p| !crate::result3d::finite(*p)) {
-                continue;
-            }
-            let ord = polygon_order(&pts, j.normal);
-            let wa: Vec<V3> = ord.iter().map(|&k| moved(a, pts[k])).collect();
-            let wb: Vec<V3> = ord.iter().map(|&k| moved(b, pts[k])).collect();
-            n_cracks += 1;
-            let m = ord.len();
-            let edges = if m == 2 { 1 } else { m };
-            for k in 0..edges {
-                let k1 = (k + 1) % m;
-                let mid = vscale(add(add(wa[k], wa[k1]), add(wb[k], wb[k1])), 0.25);
-                let target = if hidden_at(mid) {
-                    &mut wedge_h
-                } else {
-                    &mut wedge
-                };
-                polygon_path(
-                    target,
-                    [cam.px(wa[k]), cam.px(wa[k1]), cam.px(wb[k1]), cam.px(wb[k])],
-                );
-                for w in [&wa, &wb] {
-                    split_segment(
-                        &mut outline,
-                        &mut outline_h,
-                        &faces,
-                        &cam,
-                        w[k],
-                        w[k1],
-                        hide_eps,
-                        12,
-                    );
-                }
-            }
-        }
-        if n_cracks > 0 {
-            let sw = num((stroke * 1.8).clamp(1.2, 2.0));
-            let _ = writeln!(
-                o,
-                "<g class=\"cracks\" stroke=\"{CRACK}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"><path class=\"hidden\" d=\"{wedge_h}\" fill=\"{CRACK}\" fill-opacity=\"0.15\" stroke=\"none\"/><path class=\"hidden\" d=\"{outline_h}\" fill=\"none\" stroke-opacity=\"0.4\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/><path d=\"{wedge}\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke-width=\"0.6\"/><path d=\"{outline}\" fill=\"none\" stroke-width=\"{sw}\"/></g>"
-            );
-        }
-    }
-
-    // Loads.
-    let head = (0.018 * width).clamp(6.0, 11.0);
-    let sw = (stroke * 1.6).clamp(1.0, 1.8);
-    let mut n_live = 0;
-    let mut n_dead = 0;
-    for (live, colour, class) in [(false, "#555555", "dead-loads"), (true, LOAD, "live-loads")] {
-        let (mut sh, mut hd) = (String::new(), String::new());
-        for (blk, at, d, l) in &loads {
-            if *l != live {
-                continue;
-            }
-            let t = moved(*blk, *at);
-            arrow(&mut sh, &mut hd, cam.px(sub(t, *d)), cam.px(t), head);
-            if live {
-                n_live += 1;
-            } else {
-                n_dead += 1;
-            }
-        }
-        if !sh.is_empty() || !hd.is_empty() {
-            let _ = writeln!(
-                o,
-                "<g class=\"{class}\" stroke=\"{colour}\" fill=\"{colour}\" stroke-width=\"{}\"><path d=\"{sh}\" fill=\"none\"/><path d=\"{hd}\" stroke=\"none\"/></g>",
-                num(sw)
-            );
-        }
-    }
-
-    // Centres of pressure.
-    let mut n_thrust = 0;
-    if show_pressure {
-        let dot_r = (hinge_r * 0.55).max(1.8);
-        let mut dots = String::new();
-        for t in r.thrust_line() {
-            let p = [t.x, t.y, t.z];
-            if !crate::result3d::finite(p) {
-                continue;
-            }
-            let w = carried(t.joint, p);
-            let q = cam.px(w);
-            n_thrust += 1;
-            let _ = writeln!(
-                dots,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"{}/>",
-                num(q[0]),
-                num(q[1]),
-                num(dot_r),
-                if hidden_at(w) {
-                    " opacity=\"0.35\""
-                } else {
-                    ""
-                }
-            );
-        }
-        if n_thrust > 0 {
-            let _ = writeln!(
-                o,
-                "<g class=\"pressure-centres\" fill=\"{THRUST}\" stroke=\"#ffffff\" stroke-width=\"0.8\">\n{dots}</g>"
-            );
-        }
-    }
-
-    // Hinges: points, and hinge lines where a joint has two or more.
-    let mut n_hinges = 0;
-    if opts.hinges && !r.hinges().is_empty() {
-        let mut by_joint: BTreeMap<usize, Vec<V3>> = BTreeMap::new();
-        for h in r.hinges() {
-            let p = [h.x, h.y, h.z];
-            if crate::result3d::finite(p) {
-                by_joint.entry(h.joint).or_default().push(p);
-            }
-        }
-        let (mut lines, mut lines_h) = (String::new(), String::new());
-        let mut dots = String::new();
-        for (&j, pts) in &by_joint {
-            let w: Vec<V3> = pts.iter().map(|p| carried(j, *p)).collect();
-            if w.len() >= 2 {
-                // The two points farthest apart (first pair on ties).
-                let mut best = (0, 1, -1.0);
-                for a in 0..pts.len() {
-                    for b in a + 1..pts.len() {
-                        let d = norm(sub(pts[a], pts[b]));
-                        if d > best.2 {
-                            best = (a, b, d);
-                        }
-                    }
-                }
-                split_segment(
-                    &mut lines,
-                    &mut lines_h,
-                    &faces,
-                    &cam,
-                    w[best.0],
-                    w[best.1],
-                    hide_eps,
-                    24,
-                );
-            }
-            for p in &w {
-                n_hinges += 1;
-                let q = cam.px(*p);
-                let _ = writeln!(
-                    dots,
-                    "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"{}/>",
-                    num(q[0]),
-                    num(q[1]),
-                    num(hinge_r),
-                    if hidden_at(*p) {
-                        " opacity=\"0.35\""
-                    } else {
-                        ""
-                    }
-                );
-            }
-        }
-        let lw = num((hinge_r * 0.75).clamp(2.0, 3.5));
-        if !lines_h.is_empty() {
-            let _ = writeln!(
-                o,
-                "<path class=\"hinge-lines hidden\" d=\"{lines_h}\" fill=\"none\" stroke=\"{HINGE}\" stroke-opacity=\"0.35\" stroke-width=\"{lw}\" stroke-dasharray=\"5 4\"/>"
-            );
-        }
-        if !lines.is_empty() {
-            let _ = writeln!(
-                o,
-                "<path class=\"hinge-lines\" d=\"{lines}\" fill=\"none\" stroke=\"{HINGE}\" stroke-width=\"{lw}\" stroke-linecap=\"round\"/>"
-            );
-        }
-        if n_hinges > 0 {
-            let _ = writeln!(
-                o,
-                "<g class=\"hinges\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"{}\">\n{dots}</g>",
-                num((hinge_r * 0.3).clamp(0.8, 1.5))
-            );
-        }
-    }
-
-    if bodies.is_empty() {
+    // Layers, back to front.
+    let m = layers::Marks::new(r, g, &lay, &cam, &faces, &order, pens);
+    layers::undeformed(&mut o, &m, opts);
+    layers::solids(&mut o, &m, &id);
+    let cracks = layers::cracks(&mut o, &m, opts);
+    let (live, dead) = layers::loads(&mut o, &m, width);
+    let thrust = layers::pressure(&mut o, &m, labels.show_pressure);
+    let hinges = layers::hinges(&mut o, &m, opts);
+    if lay.bodies.is_empty() {
         page.nothing_to_draw(&mut o, draw_h);
     }
-
-    // Axes: a small triad in the lower right corner of the drawing area.
-    {
-        let base = [width - margin - 34.0, title_h + margin + draw_h - 6.0];
-        let len = 24.0;
-        let mut s = String::new();
-        for (axis, name) in [
-            ([1.0, 0.0, 0.0], "x"),
-            ([0.0, 1.0, 0.0], "y"),
-            ([0.0, 0.0, 1.0], "z"),
-        ] {
-            let v = [dot(axis, right), -dot(axis, up)];
-            let l = v[0].hypot(v[1]);
-            if l < 0.15 {
-                // Seen end-on: a dot.
-                let _ = write!(
-                    s,
-                    "<circle cx=\"{}\" cy=\"{}\" r=\"2\" fill=\"#555555\"/><text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\">{name}</text>",
-                    num(base[0]),
-                    num(base[1]),
-                    num(base[0] + 4.0),
-                    num(base[1] + 12.0)
-                );
-                continue;
-            }
-            let tip = [base[0] + len * v[0], base[1] + len * v[1]];
-            let (mut sh, mut hd) = (String::new(), String::new());
-            arrow(&mut sh, &mut hd, base, tip, 6.0);
-            let lab = [
-                base[0] + (len + 9.0) * v[0] / l.max(1e-9) * l.min(1.0),
-                base[1] + (len + 9.0) * v[1] / l.max(1e-9) * l.min(1.0),
-            ];
-            let _ = write!(
-                s,
-                "<path d=\"{sh}\" stroke=\"#555555\" stroke-width=\"1.2\" fill=\"none\"/><path d=\"{hd}\" fill=\"#555555\"/><text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#555555\" text-anchor=\"middle\">{name}</text>",
-                num(lab[0]),
-                num(lab[1] + 4.0)
-            );
-        }
-        let _ = writeln!(o, "<g class=\"axes\">{s}</g>");
-    }
+    layers::axes(
+        &mut o,
+        &m,
+        [width - margin - 34.0, title_h + margin + draw_h - 6.0],
+    );
 
     if opts.legend {
-        labels.hinges = n_hinges > 0;
-        labels.cracks = n_cracks > 0;
-        labels.pressure = n_thrust > 0;
-        if n_live == 0 {
-            labels.live = None;
-        }
-        if n_dead == 0 {
-            labels.dead = None;
-        }
-        legend::write(
+        let labels = labels.drawn(&legend::Drawn {
+            hinges,
+            cracks,
+            thrust,
+            live,
+            dead,
+        });
+        crate::draw::legend::write(
             &mut o,
             &labels.entries(),
             margin,
@@ -1358,87 +725,11 @@ pub fn draw3d(r: &(impl Result3d + ?Sized), opts: &Draw3dOptions) -> Result<Draw
         svg: o,
         width,
         height,
-        scale,
+        scale: lay.scale,
         camera: cam,
-        deformed: has_motion,
+        deformed: lay.has_motion,
         view,
     })
-}
-
-/// The tilt of a tilting-table result for the legend: α and "towards azimuth …°".
-fn tilt_of(r: &(impl Result3d + ?Sized)) -> Option<(f64, String)> {
-    r.tilt()
-        .map(|(a, az)| (a, format!("towards azimuth {}°", human(az, 6))))
-}
-
-/// The view as the legend states it; an automatic view says that it was chosen.
-fn describe_view(view: &View, asked: &View, has_motion: bool) -> String {
-    let d = view.describe();
-    if *asked == View::Auto && has_motion {
-        format!("{d} (chosen to show the largest motions)")
-    } else {
-        d
-    }
-}
-
-/// The texts and flags of a 3D legend.
-struct LegendLabels {
-    undeformed: bool,
-    supports: bool,
-    hinges: bool,
-    cracks: bool,
-    pressure: bool,
-    live: Option<String>,
-    dead: Option<String>,
-    /// "displacements drawn × …".
-    motion: Option<String>,
-    view: String,
-    /// The figure's id prefix (the hatch pattern).
-    id: String,
-    /// Model size (m) and pixels per metre, for the scale bar.
-    size: f64,
-    k: f64,
-}
-
-impl LegendLabels {
-    fn entries(&self) -> Vec<Entry> {
-        let id = &self.id;
-        let mut e = Vec::new();
-        if self.undeformed {
-            e.push(Entry::symbol(format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"none\" stroke=\"{FAINT}\" stroke-dasharray=\"4 3\"/>"), "undeformed"));
-        }
-        if self.supports {
-            e.push(Entry::symbol(format!("<rect x=\"0\" y=\"-6\" width=\"22\" height=\"12\" fill=\"url(#{id}-hatch)\" stroke=\"{EDGE}\" stroke-width=\"0.8\"/>"), "support"));
-        }
-        if self.hinges {
-            e.push(Entry::symbol(format!("<path d=\"M1 4L21 -4\" stroke=\"{HINGE}\" stroke-width=\"2.5\" stroke-linecap=\"round\"/><circle cx=\"11\" cy=\"0\" r=\"4.5\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"1.2\"/>"), "hinge (point, line)"));
-        }
-        if self.cracks {
-            e.push(Entry::symbol(format!("<path d=\"M2 6L22 -6L22 6Z\" fill=\"{CRACK}\" fill-opacity=\"0.55\" stroke=\"{CRACK}\" stroke-width=\"1.5\"/>"), "crack (joint not closed)"));
-        }
-        if self.pressure {
-            e.push(Entry::symbol(
-                format!("<circle cx=\"11\" cy=\"0\" r=\"3.5\" fill=\"{THRUST}\"/>"),
-                "centre of pressure",
-            ));
-        }
-        let arrow_sym = |c: &str| {
-            format!("<path d=\"M1 0L15 0\" stroke=\"{c}\" stroke-width=\"1.6\"/><path d=\"M22 0L13 -4.5L13 4.5Z\" fill=\"{c}\"/>")
-        };
-        if let Some(l) = &self.live {
-            e.push(Entry::symbol(arrow_sym(LOAD), l.clone()));
-        }
-        if let Some(l) = &self.dead {
-            e.push(Entry::symbol(arrow_sym("#555555"), l.clone()));
-        }
-        // Scale bar (lengths in the picture plane), displacement scale, view.
-        e.push(Entry::scale_bar(self.size, self.k));
-        if let Some(m) = &self.motion {
-            e.push(Entry::text(m.clone(), "#333333"));
-        }
-        e.push(Entry::text(self.view.clone(), "#777777"));
-        e
-    }
 }
 
 /// The drawing as PNG ([`crate::draw::PNG_ZOOM`] pixels per SVG pixel), with the drawing used.

@@ -9,18 +9,16 @@
 //! turned into `voussoir.VoussoirError`, so a failure never takes the interpreter down.
 
 mod analysis3d;
-mod identify;
 mod model3d;
 mod options;
 mod sweep;
 
-use options::{Common, Fail, Settle};
+use options::Fail;
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use std::path::PathBuf;
-use voussoir::analysis::incremental::{incremental_with, settled, Control, IncrementalOptions};
 use voussoir::generate::{self, FirstCourse, LintelSpec, WallSpec};
 use voussoir::generate_facade::{self, bondeno, FacadeMesh, Opening};
 use voussoir::{BuildOptions, Structure};
@@ -108,21 +106,6 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, Fail> + Send)
 
 fn json<T: serde::Serialize>(v: &T) -> Result<String, Fail> {
     Ok(to_json(v)?)
-}
-
-/// [`json`] of a result whose model had supports cut (a profile's breakpoints): with
-/// `split_supports`, as the CLI writes it; without any, exactly [`json`].
-fn json_split<T: serde::Serialize>(
-    v: &T,
-    splits: &[voussoir::settlement_input::SupportSplit],
-) -> Result<String, Fail> {
-    if splits.is_empty() {
-        return json(v);
-    }
-    json(&voussoir_io::motion::WithSplits {
-        result: v,
-        split_supports: splits,
-    })
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -459,79 +442,11 @@ fn motion(
 
 /// Run a request (the JSON of `voussoir::request::Request`, as `python/voussoir/_options.py`
 /// builds it from the keywords) on a model (JSON, 2D or 3D): the library's one entry, the
-/// result as the CLI's JSON. Messages name Python's keywords.
+/// result as the CLI's JSON (a sweep's records as JSON lines). Messages name Python's keywords.
 #[pyfunction]
-fn run(py: Python<'_>, model: String, request: String) -> PyResult<String> {
-    detached(py, || {
-        voussoir_io::files::unique_keys(&model)
-            .map_err(|e| Fail::Model(format!("invalid model JSON: {e}")))?;
-        let model = voussoir::model3d::AnyModel::from_json(&model)
-            .map_err(|e| Fail::Model(format!("invalid model JSON: {e}")))?;
-        let mut req = voussoir::request::Request::from_json(&request)?;
-        req.names = voussoir::request::Names::Keywords;
-        let r = voussoir::request::run(&model, &req)?;
-        fn out<M, S: voussoir::Assembly>(r: &voussoir::request::Run<M, S>) -> Result<String, Fail> {
-            use voussoir::request::Output;
-            let s = &r.setup.splits;
-            match &r.output {
-                Output::Limit(x) => json_split(x, s),
-                Output::Settlement(x) => json_split(x, s),
-                Output::Capacity(x) => json_split(x, s),
-                Output::Tilt(x) => json_split(x, s),
-                Output::Safety(x) => json_split(x, s),
-            }
-        }
-        match &r {
-            voussoir::request::AnyResult::Planar(r) => out(r),
-            voussoir::request::AnyResult::Spatial(r) => out(r),
-        }
-    })
-}
-
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn incremental(
-    py: Python<'_>,
-    model: String,
-    common: Common,
-    control: (f64, f64),
-    direction: (f64, f64),
-    max: f64,
-    step: f64,
-    settle: Settle,
-    keep_fixed: bool,
-    snapshot_every: usize,
-    no_stop: bool,
-) -> PyResult<String> {
-    detached(py, || {
-        for (name, p) in [("control", control), ("direction", direction)] {
-            if !(p.0.is_finite() && p.1.is_finite()) {
-                return Err(Fail::Model(format!(
-                    "{name}=({}, {}): expected two finite numbers",
-                    p.0, p.1
-                )));
-            }
-        }
-        if settle.moves.is_empty() && !settle.fixed.is_empty() {
-            return Err(Fail::Model("fixed only applies with settle".into()));
-        }
-        let (st, solver) = common.structure(&model, Some(&settle))?;
-        let start = if settle.moves.is_empty() {
-            st
-        } else {
-            settled(&st, &solver, !keep_fixed)?
-        };
-        let control = Control::nearest(&start, [control.0, control.1], [direction.0, direction.1])?;
-        let opts = IncrementalOptions {
-            step,
-            max_displacement: max,
-            stop_after_peak: !no_stop,
-            snapshot_every,
-            solver,
-            ..IncrementalOptions::default()
-        };
-        json(&incremental_with(&start, &control, &opts, &mut |_| {})?)
-    })
+#[pyo3(signature = (model, request, threads=None))]
+fn run(py: Python<'_>, model: String, request: String, threads: Option<usize>) -> PyResult<String> {
+    detached(py, || analysis3d::run_json(&model, &request, threads))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -620,15 +535,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(gen_facade, m)?)?;
     m.add_function(wrap_pyfunction!(motion, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
-    m.add_function(wrap_pyfunction!(incremental, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep_base, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep_task, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep_run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_csv, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep3d_base, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep3d_task, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep3d_run, m)?)?;
-    m.add_function(wrap_pyfunction!(identify::identify, m)?)?;
     m.add_function(wrap_pyfunction!(draw_svg, m)?)?;
     m.add_function(wrap_pyfunction!(report_html, m)?)?;
     m.add_function(wrap_pyfunction!(svg_to_png, m)?)?;

@@ -172,8 +172,9 @@ def test_issue31_item2_executor_and_refusals(vault):
         fs = v.safety(v.generate.dome(courses=3, segments=6), executor=ex)
         assert fut.result() == v.limit(m)
         assert fs.result().stands
-    # 3D sweeps run (test_issue31_sweep3d.py); incremental of a 3D model goes through the CLI.
-    with pytest.raises(ValueError, match="incremental analyses 2D models only"):
+    # 3D sweeps run (test_issue31_sweep3d.py), and 3D incremental analyses
+    # (test_issue31_requests2.py): a 2D control point on a 3D model is refused, named.
+    with pytest.raises(ValueError, match="control=0,3: expected three finite numbers"):
         v.incremental(m, control=(0, 3))
     with pytest.raises(v.ModelError, match="crushing"):
         v.limit(m, crushing="conic")

@@ -63,6 +63,8 @@ pub enum Saved {
     Capacity3d(Box<CapacityResult<Three>>),
     /// An incremental result (has `curve` and `peak_load_multiplier`): drawn as its λ–dx curve.
     Incremental(Box<IncrementalResult>),
+    /// A 3D incremental result (a control point `[x, y, z]`): drawn as its λ–dx curve.
+    Incremental3d(Box<IncrementalResult<Three>>),
     /// A tilting-table result (has `tilt_angle` and `limit`): the mechanism at the critical tilt.
     Tilt(Box<TiltResult>),
     Tilt3d(Box<TiltResult<Three>>),
@@ -88,6 +90,7 @@ impl Saved {
             Saved::Capacity(_) => "capacity result",
             Saved::Capacity3d(_) => "3D capacity result",
             Saved::Incremental(_) => "incremental result",
+            Saved::Incremental3d(_) => "3D incremental result",
             Saved::Tilt(_) => "tilt result",
             Saved::Tilt3d(_) => "3D tilt result",
             Saved::Identify(_) => "identify result",
@@ -102,7 +105,11 @@ impl Saved {
     pub fn is_chart(&self) -> bool {
         matches!(
             self,
-            Saved::Capacity(_) | Saved::Capacity3d(_) | Saved::Incremental(_) | Saved::Safety(_)
+            Saved::Capacity(_)
+                | Saved::Capacity3d(_)
+                | Saved::Incremental(_)
+                | Saved::Incremental3d(_)
+                | Saved::Safety(_)
         )
     }
 
@@ -197,7 +204,16 @@ pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
         });
     }
     if has("status") && has("curve") && has("peak_load_multiplier") {
-        return Ok(Saved::Incremental(parse(v, "incremental result")?));
+        // The control point's dimension tells a 3D result ([x, y, z]) from a 2D one.
+        let point = obj
+            .get("control")
+            .and_then(|c| c.get("point"))
+            .and_then(|p| p.as_array());
+        return Ok(if point.is_some_and(|p| p.len() == 3) {
+            Saved::Incremental3d(parse(v, "3D incremental result")?)
+        } else {
+            Saved::Incremental(parse(v, "incremental result")?)
+        });
     }
     if has("blocks") && has("supports") && !has("status") {
         return match AnyModel::from_json(text)
@@ -326,6 +342,9 @@ pub fn draw_saved_view(
         Saved::Incremental(r) => chart(
             incremental_plot(&[("λ(dx)", r.as_ref())], title.unwrap_or(INCREMENTAL_TITLE)).svg,
         ),
+        Saved::Incremental3d(r) => chart(
+            incremental_plot(&[("λ(dx)", r.as_ref())], title.unwrap_or(INCREMENTAL_TITLE)).svg,
+        ),
         Saved::Safety(r) => chart(safety_figure(
             r,
             &title.map_or_else(|| safety::safety_title(r), str::to_string),
@@ -364,6 +383,10 @@ pub fn report_saved(saved: &Saved, opts: &ReportOptions) -> Result<String, IoErr
         Saved::Capacity(r) => capacity_report(r.as_ref(), opts).to_html(),
         Saved::Capacity3d(r) => capacity_report(r.as_ref(), opts).to_html(),
         Saved::Incremental(r) => incremental_report(r, opts).to_html(),
+        Saved::Incremental3d(_) => return Err(IoError(
+            "a 3D incremental result has no report (.html): draw its λ(dx) curve as .svg or .png"
+                .into(),
+        )),
         Saved::Tilt(r) => tilt_report(r, opts).to_html(),
         Saved::Identify(r) => identify_report(r, opts).to_html(),
         Saved::Safety(r) => safety_report(r, opts).to_html(),

@@ -10,6 +10,7 @@ Ray executor…). With an executor a single analysis returns a future of its res
 
 from __future__ import annotations
 
+import json
 import os
 from typing import Any, Iterable, List, Optional, Sequence, Tuple, Union
 
@@ -38,14 +39,52 @@ def _model(model: ModelLike) -> Model:
 
 # Executed in the caller's process, or in an executor's worker (module-level, so it pickles).
 def _run(kind: str, model_json: str, args: tuple) -> Any:
-    # limit, settle, capacity and tilt: one request through the library's one entry
-    # (`voussoir::request::run`), which makes every choice; the others: their native function.
-    fn = _native.run if kind in _REQUESTS else getattr(_native, kind)
-    text = fn(model_json, *args)
+    # Every analysis: one request through the library's one entry (`voussoir::request::run`),
+    # which makes every choice.
+    text = _native.run(model_json, *args)
     return _WRAP[kind](text)
 
 
-_REQUESTS = ("limit", "settle", "capacity", "tilt")
+def _submit(kind: str, m: Model, req: str, executor):
+    if executor is None:
+        return _run(kind, m._json, (req,))
+    return executor.submit(_run, kind, m._json, (req,))
+
+
+def _request(m: Model, analysis: dict, *, tolerance=None, method=None, friction=None,
+             compressive_strength=None, friction_facets=None, friction_cone=None,
+             move=None, fixed=None, profile=None, split=None) -> str:
+    """The request's JSON for a model of either dimension (3D: the 3D keywords and moves)."""
+    if m.dim == 3:
+        c3 = a3.common3d(
+            tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
+            move, fixed, profile, split,
+        )
+        return a3.request(c3, analysis)
+    if friction_facets is not None or friction_cone is not None:
+        _planar(m, analysis["type"], friction_facets, friction_cone)
+    return o.request(
+        analysis, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile, split),
+    )
+
+
+def _toward(name: str, d):
+    """A direction as the request takes it: an axis string, an angle or a vector."""
+    if isinstance(d, str):
+        t = d.strip()
+        try:
+            if "," in t:
+                return [float(v) for v in t.split(",")]
+            return float(t)
+        except ValueError:
+            return t
+    if isinstance(d, (int, float)) and not isinstance(d, bool):
+        return float(d)
+    try:
+        return [float(v) for v in d]
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}={d!r}: expected an axis, an angle in degrees or a vector") from None
 
 
 _WRAP = {
@@ -55,6 +94,7 @@ _WRAP = {
     "incremental": IncrementalResult,
     "tilt": TiltResult,
     "identify": IdentifyResult,
+    "safety": a3.SafetyResult,
 }
 
 
@@ -309,20 +349,27 @@ def incremental(
     keyword ``settle=`` is still accepted); ``fixed``/``keep_fixed`` as for :func:`capacity`.
     ``snapshot_every``: keep the mechanism every N steps. ``no_stop``: go on after λ reaches 0.
     """
-    c = o.common(tolerance, method or "dual-simplex", friction, compressive_strength)
-    s = o.settle(o.renamed("move", move, "settle", settle), fixed, None)
-    args = (
-        c,
-        o.pair("control", control),
-        o.direction("direction", direction),
-        float(max),
-        float(step),
-        s,
-        bool(keep_fixed),
-        int(snapshot_every),
-        bool(no_stop),
+    m = _model(model)
+    try:
+        point = [float(x) for x in control]
+    except (TypeError, ValueError):
+        raise ValueError(f"control={control!r}: expected (x, y) or (x, y, z)") from None
+    a = {
+        "type": "incremental",
+        "control": point,
+        "direction": _toward("direction", direction),
+        "max": float(max),
+        "step": float(step),
+        "keep_fixed": bool(keep_fixed),
+        "snapshot_every": int(snapshot_every),
+        "no_stop": bool(no_stop),
+    }
+    r = _request(
+        m, a, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength,
+        move=o.renamed("move", move, "settle", settle), fixed=fixed,
     )
-    return _dispatch("incremental", model, args, executor)
+    return _submit("incremental", m, r, executor)
 
 
 def tilt(
@@ -346,7 +393,7 @@ def tilt(
         from ._generate3d import azimuth
 
         c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
-        return a3.dispatch("tilt3d", m._json, (c3, azimuth("direction", direction)), executor)
+        return a3.run("tilt", m._json, c3, {"azimuth": azimuth("direction", direction)}, executor)
     if friction_facets is not None or friction_cone is not None:
         _planar(m, "tilt", friction_facets, friction_cone)
     import math
@@ -362,16 +409,9 @@ def tilt(
     return _dispatch("tilt", m, (r,), executor)
 
 
-def _sweep_task(base: str, common: dict, kind: str, n: int, k: int, cov: float, seed: int) -> str:
+def _sweep_task(model_json: str, req: dict, k: int) -> str:
     # One scenario; module-level so that executors can pickle it.
-    return _native.sweep_task(base, common, kind, n, k, cov, seed)
-
-
-def _sweep3d_task(
-    base: str, c3: dict, form: str, kind: str, n: int, k: int, cov: float, seed: int
-) -> str:
-    # One scenario of a 3D sweep; module-level so that executors can pickle it.
-    return _native.sweep3d_task(base, c3, form, kind, n, k, cov, seed)
+    return _native.run(model_json, json.dumps(dict(req, analysis=dict(req["analysis"], tasks=[k]))))
 
 
 def _shard(shard) -> Tuple[int, int]:
@@ -453,42 +493,28 @@ def sweep(
     m = _model(model)
     i, shards = _shard(shard)
     tasks = [k for k in range(n) if k % shards == i]
-    if m.dim == 3:
-        c3 = a3.common3d(
-            tolerance, method, friction, compressive_strength, friction_facets, friction_cone,
-            move, fixed, profile, split,
-        )
-        form = o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS)
-        base = _native.sweep3d_base(m._json, c3, form, kind, n, float(cov), seed)
-        if executor is None:
-            if threads is not None and int(threads) < 1:
-                raise ValueError(f"threads={threads}: expected at least 1")
-            lines = _native.sweep3d_run(
-                base, c3, form, kind, n, tasks, float(cov), seed, int(threads or 0)
-            )
-        else:
-            futures = [
-                executor.submit(_sweep3d_task, base, c3, form, kind, n, k, float(cov), seed)
-                for k in tasks
-            ]
-            lines = [f.result() for f in futures]
-        return SweepResult(lines)
-    if split is not None:
-        raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
-    _planar(m, "sweep", friction_facets, friction_cone)
-    c = o.common(tolerance, method or "dual-simplex", friction, compressive_strength, "linear", 16, settlement_form)
-    s = o.settle(move, fixed, profile)
-    base = _native.sweep_base(m._json, c, s, kind, n, float(cov), seed)
+    a = {
+        "type": "sweep",
+        {"steps": "magnitudes", "directions": "angles", "samples": "samples"}[kind]: n,
+        "cov": float(cov),
+        "seed": seed,
+        "settlement_form": o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS),
+    }
+    req = json.loads(_request(
+        m, a, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength, friction_facets=friction_facets,
+        friction_cone=friction_cone, move=move, fixed=fixed, profile=profile, split=split,
+    ))
     if executor is None:
         if threads is not None and int(threads) < 1:
             raise ValueError(f"threads={threads}: expected at least 1")
-        lines = _native.sweep_run(base, c, kind, n, tasks, float(cov), seed, int(threads or 0))
-    else:
-        futures = [
-            executor.submit(_sweep_task, base, c, kind, n, k, float(cov), seed) for k in tasks
-        ]
-        lines = [f.result() for f in futures]
-    return SweepResult(lines)
+        req["analysis"]["tasks"] = tasks
+        text = _native.run(m._json, json.dumps(req), None if threads is None else int(threads))
+        return SweepResult([line for line in text.split("\n") if line])
+    # Checked once (no task), then one request per task on the executor.
+    _native.run(m._json, json.dumps(dict(req, analysis=dict(req["analysis"], tasks=[]))))
+    futures = [executor.submit(_sweep_task, m._json, req, k) for k in tasks]
+    return SweepResult([f.result() for f in futures])
 
 
 def identify(
@@ -515,7 +541,8 @@ def identify(
     support's motion: ``"u"``, ``"v"`` or ``"theta"``), or a list of dicts
     ``{"supports": ["f22", "f23"], "component": "v", "lower": …, "upper": …}`` (one value shared by
     several supports) or ``{"name": …, "profile": [P0, P1]}`` (a profile family: the profile as
-    JSON with the unknown set to 0 and to 1). ``move``/``fixed``/``profile``: the known motions,
+    JSON with the unknown set to 0 and to 1), or the CLI's ``--unknown`` strings (``"right=u,w"``,
+``"uniform:0,3,?"``). ``move/``fixed``/``profile``: the known motions,
     as for :func:`settle`. ``ranges``: compute each unknown's range (two LPs per unknown).
 
     >>> import voussoir as v
@@ -531,15 +558,27 @@ def identify(
         cracks_json = cracks
     else:
         cracks_json = Path(cracks).read_text()
+    if isinstance(unknowns, str):
+        unknowns = [unknowns]
     if isinstance(unknowns, dict):
         specs = [{"supports": [k], "component": c} for k, c in unknowns.items()]
     else:
-        specs = [dict(u) for u in unknowns]
-    c = o.common(tolerance, method or "dual-simplex", friction, None, "linear", 16, settlement_form)
-    s = o.settle(move, fixed, profile)
-    return _dispatch(
-        "identify", model, (c, s, cracks_json, json.dumps(specs), bool(ranges)), executor
-    )
+        # The CLI's syntax ("right=u,w", "uniform:0,3,?") or the objects.
+        specs = [u if isinstance(u, str) else dict(u) for u in unknowns]
+    try:
+        observations = json.loads(cracks_json)
+    except ValueError as e:
+        raise ValueError(f"cracks: not an observation file: {e}") from None
+    a = {
+        "type": "identify",
+        "observations": observations,
+        "unknowns": specs,
+        "no_ranges": not ranges,
+        "settlement_form": o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS),
+    }
+    m = _model(model)
+    r = _request(m, a, tolerance=tolerance, method=method, friction=friction, move=move, fixed=fixed, profile=profile)
+    return _submit("identify", m, r, executor)
 
 
 def safety(
@@ -561,13 +600,12 @@ def safety(
     over the admissible force fields. Other keywords as :func:`limit` (method: dual simplex in
     2D, interior point in 3D)."""
     m = _model(model)
-    if m.dim != 3 and friction_facets is not None:
-        _planar(m, "safety", friction_facets)
-    c = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, None)
-    args = (m._json, c, float(bisection_tolerance), bool(ranges))
-    if executor is None:
-        return a3._run_safety(*args)
-    return executor.submit(a3._run_safety, *args)
+    a = {"type": "safety", "bisection_tolerance": float(bisection_tolerance), "no_ranges": not ranges}
+    r = _request(
+        m, a, tolerance=tolerance, method=method, friction=friction,
+        compressive_strength=compressive_strength, friction_facets=friction_facets,
+    )
+    return _submit("safety", m, r, executor)
 
 
 def least_thickness(

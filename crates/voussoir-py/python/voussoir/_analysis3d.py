@@ -138,7 +138,7 @@ _WRAP = {
     "limit": LimitResult,
     "settle": SettlementResult,
     "capacity": CapacityResult,
-    "tilt3d": TiltResult,
+    "tilt": TiltResult,
 }
 
 
@@ -192,8 +192,6 @@ class SafetyResult(Result):
 
 
 
-def _run_safety(model_json: str, c: dict, tol: float, ranges: bool) -> SafetyResult:
-    return SafetyResult(_native.safety_any(model_json, c, tol, ranges))
 
 
 class LeastThicknessResult:

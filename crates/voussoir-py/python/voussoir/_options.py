@@ -88,7 +88,7 @@ def _move_items(move: Moves) -> list:
     return out
 
 
-def motion(move: Moves = None, fixed=None, profile=None) -> dict:
+def motion(move: Moves = None, fixed=None, profile=None, split=None) -> dict:
     """The support motion of a request, parsed by the library (the one parser of the CLI and
     Python: lengths in m or with a unit, ``"right=0,-5mm"``; θ in degrees): the JSON of
     ``voussoir::request::SupportMotion`` as a dict (keys ``move``, ``fixed``, ``profile``,
@@ -105,7 +105,10 @@ def motion(move: Moves = None, fixed=None, profile=None) -> dict:
         raise TypeError(
             "profile must be a string (uniform:X0,X1,V | linear:X0,V0,X1,V1 | table:X,V;X,V;…) or a dict"
         )
-    return json.loads(_native.motion(_move_items(move), fixed_list(fixed), p))
+    if isinstance(split, str):
+        split = [split]
+    splits = [str(x) for x in (split or [])]
+    return json.loads(_native.motion(_move_items(move), fixed_list(fixed), p, splits))
 
 
 def moves(move: Moves) -> list:

@@ -22,19 +22,31 @@
 pub mod motion;
 
 mod capacity;
+mod identify;
+mod incremental;
+mod least;
 mod limit;
 mod safety;
 mod settle;
+mod sweep;
 mod tilt;
 
 pub use capacity::CapacityRequest;
+pub use identify::{parse_unknown, IdentifyRequest, UnknownSpec};
+pub use incremental::{IncrementalRequest, Toward};
+pub use least::{
+    least_thickness, Generator, LeastThicknessRequest, LeastThicknessResult, LeastThicknessRun,
+};
 pub use limit::LimitRequest;
 pub use motion::{parse_profile, signed_length, Move, Split, SupportMotion};
 pub use safety::SafetyRequest;
 pub use settle::SettleRequest;
+pub use sweep::SweepRequest;
 pub use tilt::TiltRequest;
 
 use crate::analysis::canonical::CanonicalOptions;
+use crate::analysis::identify::{IdentifyGeometry, Unknown};
+use crate::analysis::incremental::{IncrementalGeometry, IncrementalPoint};
 use crate::analysis::limit::{Crushing, DEFAULT_FACETS, MAX_FACETS, MIN_FACETS};
 use crate::analysis::safety::SafetyResult;
 use crate::analysis::tilt::TiltResult;
@@ -42,9 +54,12 @@ use crate::analysis::{CapacityResult, LimitResult, SettlementResult};
 use crate::error::{Error, Result};
 use crate::lp::{Method, SolverOptions};
 use crate::model3d::{AnyModel, Model3d};
+use crate::result::identify::IdentifyResult;
+use crate::result::incremental::IncrementalResult;
 use crate::result::Spatial;
 use crate::settlement_input::SupportSplit;
 use crate::structure::{Assembly, BuildOptions, Structure, Structure3d};
+use crate::sweep::{MotionSize, SweepRecord};
 use crate::Model;
 use serde::{Deserialize, Serialize};
 
@@ -317,12 +332,23 @@ pub enum Analysis {
     Capacity(CapacityRequest),
     Tilt(TiltRequest),
     Safety(SafetyRequest),
+    Incremental(IncrementalRequest),
+    Identify(IdentifyRequest),
+    Sweep(SweepRequest),
 }
 
 impl Analysis {
-    /// Whether the analysis takes a support motion (settle, capacity).
+    /// Whether the analysis takes a support motion (settle, capacity; incremental: a
+    /// settlement first; identify: the known motions; sweep: the base settlement).
     pub fn takes_motion(&self) -> bool {
-        matches!(self, Analysis::Settle(_) | Analysis::Capacity(_))
+        matches!(
+            self,
+            Analysis::Settle(_)
+                | Analysis::Capacity(_)
+                | Analysis::Incremental(_)
+                | Analysis::Identify(_)
+                | Analysis::Sweep(_)
+        )
     }
 
     /// The command's name (`limit`, `settle`, …).
@@ -333,6 +359,9 @@ impl Analysis {
             Analysis::Capacity(_) => "capacity",
             Analysis::Tilt(_) => "tilt",
             Analysis::Safety(_) => "safety",
+            Analysis::Incremental(_) => "incremental",
+            Analysis::Identify(_) => "identify",
+            Analysis::Sweep(_) => "sweep",
         }
     }
 }
@@ -388,6 +417,9 @@ impl Request {
             Analysis::Capacity(r) => r.validate(self),
             Analysis::Tilt(r) => r.validate(self),
             Analysis::Safety(r) => r.validate(self),
+            Analysis::Incremental(r) => r.validate(self),
+            Analysis::Identify(r) => r.validate(self),
+            Analysis::Sweep(r) => r.validate(self),
         }?;
         if !self.motion.is_empty() && !self.analysis.takes_motion() {
             return invalid(format!(
@@ -421,14 +453,20 @@ pub enum Prepared {
     Spatial(Setup<Model3d, Structure3d>),
 }
 
-/// The result of an analysis, of a dimension.
+/// The result of an analysis, of a dimension. (One per run: the variants' sizes do not matter.)
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
 pub enum Output<D: Spatial> {
     Limit(LimitResult<D>),
     Settlement(SettlementResult<D>),
     Capacity(CapacityResult<D>),
     Tilt(TiltResult<D>),
     Safety(SafetyResult),
+    Incremental(IncrementalResult<D>),
+    /// The identification and its unknowns as read on the structure.
+    Identify(IdentifyResult<D>, Vec<Unknown>),
+    /// The records of the sweep's tasks, in task order.
+    Sweep(Vec<SweepRecord>),
 }
 
 impl<D: Spatial> Output<D> {
@@ -462,6 +500,39 @@ impl<D: Spatial> Output<D> {
             _ => None,
         }
     }
+    pub fn incremental(&self) -> Option<&IncrementalResult<D>> {
+        match self {
+            Output::Incremental(r) => Some(r),
+            _ => None,
+        }
+    }
+    pub fn identify(&self) -> Option<(&IdentifyResult<D>, &[Unknown])> {
+        match self {
+            Output::Identify(r, u) => Some((r, u)),
+            _ => None,
+        }
+    }
+    pub fn sweep(&self) -> Option<&[SweepRecord]> {
+        match self {
+            Output::Sweep(r) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// The result's JSON value (a sweep: the array of its records).
+    pub fn to_value(&self) -> serde_json::Value {
+        let v = match self {
+            Output::Limit(x) => serde_json::to_value(x),
+            Output::Settlement(x) => serde_json::to_value(x),
+            Output::Capacity(x) => serde_json::to_value(x),
+            Output::Tilt(x) => serde_json::to_value(x),
+            Output::Safety(x) => serde_json::to_value(x),
+            Output::Incremental(x) => serde_json::to_value(x),
+            Output::Identify(x, _) => serde_json::to_value(x),
+            Output::Sweep(x) => serde_json::to_value(x),
+        };
+        v.unwrap_or(serde_json::Value::Null)
+    }
 }
 
 /// An analysis run: its setup, its result, and the solver options it ran with.
@@ -486,14 +557,7 @@ impl AnyResult {
     /// motion cut supports).
     pub fn to_value(&self) -> serde_json::Value {
         fn of<M, S: Assembly>(r: &Run<M, S>) -> serde_json::Value {
-            let v = match &r.output {
-                Output::Limit(x) => serde_json::to_value(x),
-                Output::Settlement(x) => serde_json::to_value(x),
-                Output::Capacity(x) => serde_json::to_value(x),
-                Output::Tilt(x) => serde_json::to_value(x),
-                Output::Safety(x) => serde_json::to_value(x),
-            };
-            let mut v = v.unwrap_or(serde_json::Value::Null);
+            let mut v = r.output.to_value();
             if let (Some(a), Some(o)) = (&r.adapt, v.as_object_mut()) {
                 o.insert("adapt".into(), serde_json::to_value(a).unwrap_or_default());
             }
@@ -520,7 +584,9 @@ fn check_dimension(req: &Request, dims: usize) -> Result<()> {
         Analysis::Limit(r) => r.check_dimension(req, dims),
         Analysis::Settle(r) => r.check_dimension(req, dims),
         Analysis::Capacity(r) => r.check_dimension(req, dims),
-        Analysis::Tilt(_) | Analysis::Safety(_) => Ok(()),
+        Analysis::Incremental(r) => r.check_dimension(req, dims),
+        Analysis::Identify(r) => r.check_dimension(req, dims),
+        Analysis::Tilt(_) | Analysis::Safety(_) | Analysis::Sweep(_) => Ok(()),
     }
 }
 
@@ -534,7 +600,10 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
             check_dimension(req, 2)?;
             let mut model = m.clone();
             model.override_joint_laws(req.model.friction, req.model.compressive_strength);
-            let splits = req.motion.apply(&mut model, n)?;
+            let mut splits = req.motion.apply(&mut model, n)?;
+            if let Analysis::Identify(r) = &req.analysis {
+                splits.extend(r.split_profiles(&mut model, n)?);
+            }
             if req.model.friction_facets.is_some() || req.model.exact_cone() {
                 return invalid(format!(
                     "{} and {} apply to 3D models (a 2D joint's friction is exact)",
@@ -626,12 +695,10 @@ fn joint_laws(a: &Analysis) -> Option<JointLaws> {
         Analysis::Limit(r) => Some(r.laws()),
         Analysis::Settle(r) => Some(r.laws()),
         Analysis::Capacity(r) => Some(r.laws()),
-        Analysis::Tilt(_) | Analysis::Safety(_) => None,
+        _ => None,
     }
 }
 
-/// Check what needs the structure (a compressive strength for the crushing options, a support
-/// motion where one is needed), choose the analysis's variant and run it.
 /// The adaptation a request asks for (limit and settle).
 fn adapt_of(a: &Analysis) -> Option<crate::analysis::adapt::AdaptOptions> {
     match a {
@@ -676,17 +743,31 @@ fn adapted(
     Ok((setup, Some(ad.record)))
 }
 
+/// What a front end may watch while an analysis runs: each new point of an incremental
+/// analysis's curve, each finished task of a sweep (called from the worker threads). Default:
+/// nothing.
+#[derive(Default)]
+pub struct Hooks<'a> {
+    pub step: Option<&'a mut dyn FnMut(&IncrementalPoint)>,
+    pub task: Option<&'a (dyn Fn() + Sync)>,
+}
+
+/// [`solve_with`] without hooks.
 pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
+    solve_with(prepared, req, &mut Hooks::default())
+}
+
+/// Check what needs the structure (a compressive strength for the crushing options, a support
+/// motion where one is needed), choose the analysis's variant and run it; `hooks` are told
+/// of its progress. A sweep runs its tasks on the current rayon pool.
+pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Result<AnyResult> {
     match prepared {
         Prepared::Planar(setup) => {
             if let Some(laws) = joint_laws(&req.analysis) {
                 laws.check_strength(&setup.structure, req.names)?;
             }
-            check_motion(
-                req,
-                2,
-                moving(setup.model.supports.iter().map(|s| s.motion)),
-            )?;
+            let moves = moving(setup.model.supports.iter().map(|s| s.motion));
+            check_motion(req, 2, moves)?;
             check_dead_loads(req, &setup.structure)?;
             let (setup, adapt) = adapted(setup, req)?;
             let (output, solver) = match &req.analysis {
@@ -696,7 +777,7 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                     let r = crate::analysis::tilt::tilt(&setup.structure, dir, &solver)?;
                     (Output::Tilt(r), solver)
                 }
-                _ => solve_any(&setup.structure, req, 2)?,
+                _ => solve_more(&setup.structure, req, 2, moves, hooks)?,
             };
             Ok(AnyResult::Planar(Run {
                 setup,
@@ -712,11 +793,8 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                     req.names.name("adapt")
                 ));
             }
-            check_motion(
-                req,
-                3,
-                moving(setup.model.supports.iter().map(|s| s.motion)),
-            )?;
+            let moves = moving(setup.model.supports.iter().map(|s| s.motion));
+            check_motion(req, 3, moves)?;
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
@@ -729,7 +807,7 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                     };
                     (Output::Tilt(r), solver)
                 }
-                _ => solve_any(&setup.structure, req, 3)?,
+                _ => solve_more(&setup.structure, req, 3, moves, hooks)?,
             };
             Ok(AnyResult::Spatial(Run {
                 setup,
@@ -738,6 +816,34 @@ pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
                 adapt: None,
             }))
         }
+    }
+}
+
+/// The analyses that need more of the structure than [`Assembly`] (incremental, identify,
+/// sweep), then the others.
+fn solve_more<S>(
+    st: &S,
+    req: &Request,
+    dims: usize,
+    moves: bool,
+    hooks: &mut Hooks,
+) -> Result<(Output<S::D>, SolverOptions)>
+where
+    S: IncrementalGeometry + IdentifyGeometry,
+    <S::D as Spatial>::Motion: MotionSize,
+{
+    match &req.analysis {
+        Analysis::Incremental(r) => {
+            let mut nothing = |_: &IncrementalPoint| {};
+            let progress: &mut dyn FnMut(&IncrementalPoint) = match hooks.step.as_mut() {
+                Some(f) => &mut **f,
+                None => &mut nothing,
+            };
+            r.solve(st, req, dims, moves, progress)
+        }
+        Analysis::Identify(r) => r.solve(st, req, dims),
+        Analysis::Sweep(r) => r.solve(st, req, dims, hooks.task.unwrap_or(&|| {})),
+        _ => solve_any(st, req, dims),
     }
 }
 
@@ -755,14 +861,24 @@ fn solve_any<S: Assembly>(
             let out = crate::analysis::safety::safety(st, &r.options(solver))?;
             Ok((Output::Safety(out), solver))
         }
-        // Tilt is dispatched by dimension in `solve` (a 2D sign, a 3D azimuth).
-        Analysis::Tilt(_) => Err(Error::Request(
-            "the tilting table is solved per dimension".into(),
-        )),
+        // Tilt is dispatched by dimension in `solve` (a 2D sign, a 3D azimuth), the others in
+        // `solve_more`.
+        Analysis::Tilt(_)
+        | Analysis::Incremental(_)
+        | Analysis::Identify(_)
+        | Analysis::Sweep(_) => Err(Error::Request(format!(
+            "internal: {} is not solved here",
+            req.analysis.name()
+        ))),
     }
 }
 
 /// The one entry: run `req` on a model of either dimension.
 pub fn run(model: &AnyModel, req: &Request) -> Result<AnyResult> {
     solve(prepare(model, req)?, req)
+}
+
+/// [`run`], telling `hooks` of the analysis's progress.
+pub fn run_with(model: &AnyModel, req: &Request, hooks: &mut Hooks) -> Result<AnyResult> {
+    solve_with(prepare(model, req)?, req, hooks)
 }

@@ -177,6 +177,29 @@ impl Stages {
 
     fn solve(&mut self, lp: &LinearProgram, basis: &mut Option<Basis>) -> Result<lp::LpSolution> {
         self.solves += 1;
+        let t0 = std::time::Instant::now();
+        let r = self.solve_inner(lp, basis);
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!(
+                "trace: stage solve {} {:?} rows {} cols {} warm {} -> {:?} {:.3} s it {:?}",
+                self.solves,
+                self.opts.method,
+                lp.num_rows(),
+                lp.num_cols(),
+                basis.is_some(),
+                r.as_ref().map(|s| s.status),
+                t0.elapsed().as_secs_f64(),
+                r.as_ref().map(|s| s.iterations)
+            );
+        }
+        r
+    }
+
+    fn solve_inner(
+        &mut self,
+        lp: &LinearProgram,
+        basis: &mut Option<Basis>,
+    ) -> Result<lp::LpSolution> {
         if let Some(b) = basis.as_mut() {
             while b.rows.len() < lp.num_rows() {
                 b.rows.push(BasisStatus::Basic);
@@ -190,6 +213,13 @@ impl Stages {
             *basis = keep;
         }
         Ok(s)
+    }
+}
+
+/// With the environment variable `VOUSSOIR_TRACE` set: the time of each part on stderr.
+fn trace(what: &str, t0: std::time::Instant) {
+    if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        eprintln!("trace: {what} {:.3} s", t0.elapsed().as_secs_f64());
     }
 }
 
@@ -270,7 +300,11 @@ pub fn canonical_mechanism(
         .filter(|&(_, c)| c != 0.0)
         .collect();
     let slack = copts.tolerance * area2.abs().max(1e-9 * scale);
-    let face2 = face1.with_row(&area_entries, -f64::INFINITY, area2 - area_const + slack);
+    let mut face2 = face1.with_row(&area_entries, -f64::INFINITY, area2 - area_const + slack);
+    // The least-crack face exactly, as the optimal face: the rows and columns with non-zero
+    // stage-2 duals held at their bounds (the area row stays as a guard). Fewer free
+    // directions: the extremes below take a few pivots where they took thousands.
+    hold_complementary(&mut face2, &s2.row_dual, &s2.col_dual, copts.dual_threshold);
     // Stage 3 (only if the least-crack face is not a point): the least value of a fixed generic
     // linear functional `r·y` on it — a unique vertex, exact with every method. Its maximum
     // tells whether the face is a point.
@@ -294,7 +328,23 @@ pub fn canonical_mechanism(
             }),
         )
     };
-    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.clone())? else {
+    // The optimal face is a point only if the solver's mechanism is of least crack area; then
+    // the test on the optimal face itself decides, and nothing else is needed.
+    if !changed2 && extremes(&mut st, &face1, basis.clone())?.is_some_and(|(_, w)| w <= ptol) {
+        let crack_area = area_of(raw);
+        return Ok(Some((
+            raw.to_vec(),
+            CanonicalMechanism {
+                unique: true,
+                selected_by: Selection::Optimum,
+                crack_area_solver,
+                crack_area,
+                changed: false,
+                solves: st.solves,
+            },
+        )));
+    }
+    let Some((d3, spread2)) = extremes(&mut st, &face2, basis)? else {
         return Ok(None);
     };
     let face2_point = spread2 <= ptol;
@@ -304,16 +354,7 @@ pub fn canonical_mechanism(
         (d3, Selection::GenericVertex)
     };
     let changed = raw.iter().zip(&d).any(|(a, b)| (a - b).abs() > ptol);
-    // The optimal face is a point only if the least-crack one is and the solver's mechanism
-    // is in it; then one more test on the optimal face itself.
-    let unique = !changed2
-        && face2_point
-        && extremes(&mut st, &face1, basis)?.is_some_and(|(_, w)| w <= ptol);
-    let selected_by = if unique {
-        Selection::Optimum
-    } else {
-        selected_by
-    };
+    let unique = false;
     let d = if changed { d } else { raw.to_vec() };
     let crack_area = area_of(&d);
     Ok(Some((
@@ -327,6 +368,31 @@ pub fn canonical_mechanism(
             solves: st.solves,
         },
     )))
+}
+
+/// Hold every row whose dual exceeds `rel_tau` of the largest dual at its finite bound, and
+/// every column whose reduced cost does (complementary slackness with an optimal dual
+/// solution: what [`programs::optimal_face_exact`] does for the first stage). Rows beyond the
+/// duals' length (appended guards) are left alone.
+fn hold_complementary(lp: &mut LinearProgram, row_dual: &[f64], col_dual: &[f64], rel_tau: f64) {
+    let tau = rel_tau * max_abs(row_dual).max(max_abs(col_dual));
+    let hold = |lo: &mut f64, hi: &mut f64| {
+        if hi.is_finite() && !lo.is_finite() {
+            *lo = *hi;
+        } else if lo.is_finite() && !hi.is_finite() {
+            *hi = *lo;
+        }
+    };
+    for (i, y) in row_dual.iter().enumerate().take(lp.num_rows()) {
+        if y.abs() > tau {
+            hold(&mut lp.row_lower[i], &mut lp.row_upper[i]);
+        }
+    }
+    for (j, z) in col_dual.iter().enumerate().take(lp.num_cols()) {
+        if z.abs() > tau {
+            hold(&mut lp.col_lower[j], &mut lp.col_upper[j]);
+        }
+    }
 }
 
 /// Points open in mechanism `d` (with the support motions scaled by `support_scale`): opening
@@ -429,7 +495,10 @@ pub fn canonical_forces<S: Assembly>(
         .collect();
     let p = programs::force_energy_quadratic(&fp, &w);
     let mut solves = stages.solves + 1;
-    let Ok(mut qs) = lp::solve_quadratic(&fp.lp, &p, &copts_lp) else {
+    let t0 = std::time::Instant::now();
+    let qs = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
+    trace("energy QP", t0);
+    let Ok(mut qs) = qs else {
         return Ok(None);
     };
     if qs.status != LpStatus::Optimal {
@@ -573,7 +642,9 @@ pub fn settle_canonical<S: Assembly>(
     let mp = programs::settlement_motion_program(&map, &dead)?;
     let o = stage_options(opts);
     let mut basis = None;
+    let t0 = std::time::Instant::now();
     let primal = lp::solve_warm(&mp.lp, &o, &mut basis)?;
+    trace("stage 1", t0);
     if primal.status != LpStatus::Optimal {
         return settlement::settle_with(st, opts, form);
     }
@@ -581,7 +652,9 @@ pub fn settle_canonical<S: Assembly>(
     // The motion LP's optimum: the dead loads' work.
     let value = primal.objective;
     let weights = tributary_weights(st, &map);
+    let t0 = std::time::Instant::now();
     let mut found = canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)?;
+    trace("mechanism", t0);
     if found.is_none() && !opts.method.is_simplex() {
         // The interior point's duals did not fix the optimal face (its solution is optimal
         // only to the solver's tolerance): cross over to a vertex with the dual simplex, as
@@ -608,12 +681,14 @@ pub fn settle_canonical<S: Assembly>(
     if copts.forces && mech.is_some() {
         let open = open_points(&map, &d, 1.0);
         let build = |m: &KinematicMap| programs::settlement_force_program(m, &dead);
+        let t0 = std::time::Instant::now();
         if let Some((pn, pt, f)) =
             canonical_forces(st, &map, build, work, &open, &weights, &o, copts)?
         {
             pnt = Some((pn, pt));
             forces = Some(f);
         }
+        trace("forces", t0);
     }
     let (pn, pt) = match pnt {
         Some(p) => p,

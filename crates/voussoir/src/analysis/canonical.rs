@@ -178,6 +178,7 @@ impl Stages {
     fn solve(&mut self, lp: &LinearProgram, basis: &mut Option<Basis>) -> Result<lp::LpSolution> {
         self.solves += 1;
         let t0 = std::time::Instant::now();
+        let warm = basis.is_some();
         let r = self.solve_inner(lp, basis);
         if std::env::var_os("VOUSSOIR_TRACE").is_some() {
             eprintln!(
@@ -186,12 +187,27 @@ impl Stages {
                 self.opts.method,
                 lp.num_rows(),
                 lp.num_cols(),
-                basis.is_some(),
+                warm,
                 r.as_ref().map(|s| s.status),
                 t0.elapsed().as_secs_f64(),
                 r.as_ref().map(|s| s.iterations)
             );
         }
+        r
+    }
+
+    /// Solve from scratch, with the dual simplex and presolve (the extremes of a face: most of
+    /// its rows are held equalities).
+    fn solve_fresh(&mut self, lp: &LinearProgram) -> Result<lp::LpSolution> {
+        let saved = self.opts;
+        self.opts = SolverOptions {
+            method: Method::DualSimplex,
+            presolve: true,
+            ..saved
+        };
+        let mut none = None;
+        let r = self.solve(lp, &mut none);
+        self.opts = saved;
         r
     }
 
@@ -302,23 +318,28 @@ pub fn canonical_mechanism(
     let slack = copts.tolerance * area2.abs().max(1e-9 * scale);
     let mut face2 = face1.with_row(&area_entries, -f64::INFINITY, area2 - area_const + slack);
     // The least-crack face exactly, as the optimal face: the rows and columns with non-zero
-    // stage-2 duals held at their bounds (the area row stays as a guard). Fewer free
-    // directions: the extremes below take a few pivots where they took thousands.
-    hold_complementary(&mut face2, &s2.row_dual, &s2.col_dual, copts.dual_threshold);
+    // stage-2 duals held at their bounds. Only the rows of the kinematic program itself: the
+    // work row of the optimal face is a guard at W*(1 − tolerance), and holding it there (where
+    // the held rows already fix W = W*) would leave an empty face. The area row stays as a
+    // guard too.
+    hold_complementary(
+        &mut face2,
+        &s2.row_dual[..klp.num_rows().min(s2.row_dual.len())],
+        &s2.col_dual,
+        copts.dual_threshold,
+    );
     // Stage 3 (only if the least-crack face is not a point): the least value of a fixed generic
     // linear functional `r·y` on it — a unique vertex, exact with every method. Its maximum
-    // tells whether the face is a point.
+    // tells whether the face is a point. These programs are solved from scratch with presolve:
+    // most rows of an exact face are equalities, which presolve removes, where a primal simplex
+    // warm-started from stage 2 took thousands of pivots on the façade (346 s for one).
     let r = generic_functional(nd);
-    let extremes = |st: &mut Stages,
-                    face: &LinearProgram,
-                    basis: Option<Basis>|
-     -> Result<Option<(Vec<f64>, f64)>> {
+    let extremes = |st: &mut Stages, face: &LinearProgram| -> Result<Option<(Vec<f64>, f64)>> {
         let mut lp = face.clone();
         lp.cost[..nd].copy_from_slice(&r);
-        let mut b = basis;
-        let lo = st.solve(&lp, &mut b)?;
+        let lo = st.solve_fresh(&lp)?;
         lp.maximise = true;
-        let hi = st.solve(&lp, &mut b)?;
+        let hi = st.solve_fresh(&lp)?;
         Ok(
             (lo.status == LpStatus::Optimal && hi.status == LpStatus::Optimal).then(|| {
                 (
@@ -328,23 +349,7 @@ pub fn canonical_mechanism(
             }),
         )
     };
-    // The optimal face is a point only if the solver's mechanism is of least crack area; then
-    // the test on the optimal face itself decides, and nothing else is needed.
-    if !changed2 && extremes(&mut st, &face1, basis.clone())?.is_some_and(|(_, w)| w <= ptol) {
-        let crack_area = area_of(raw);
-        return Ok(Some((
-            raw.to_vec(),
-            CanonicalMechanism {
-                unique: true,
-                selected_by: Selection::Optimum,
-                crack_area_solver,
-                crack_area,
-                changed: false,
-                solves: st.solves,
-            },
-        )));
-    }
-    let Some((d3, spread2)) = extremes(&mut st, &face2, basis)? else {
+    let Some((d3, spread2)) = extremes(&mut st, &face2)? else {
         return Ok(None);
     };
     let face2_point = spread2 <= ptol;
@@ -354,7 +359,16 @@ pub fn canonical_mechanism(
         (d3, Selection::GenericVertex)
     };
     let changed = raw.iter().zip(&d).any(|(a, b)| (a - b).abs() > ptol);
-    let unique = false;
+    // The optimal face is a point only if the least-crack one is and the solver's mechanism
+    // is in it; then one more test on the optimal face itself.
+    let unique = !changed2
+        && face2_point
+        && extremes(&mut st, &face1)?.is_some_and(|(_, w)| w <= ptol);
+    let selected_by = if unique {
+        Selection::Optimum
+    } else {
+        selected_by
+    };
     let d = if changed { d } else { raw.to_vec() };
     let crack_area = area_of(&d);
     Ok(Some((

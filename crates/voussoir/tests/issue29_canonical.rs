@@ -6,17 +6,17 @@
 //! fields (a faster search tried for item 5 stopped 1.5 % above it; docs/canonical.md).
 
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
+use voussoir::analysis::settlement::settle;
 use voussoir::analysis::settlement::SettlementForm;
+use voussoir::analysis::SettlementResult;
+use voussoir::dim::Three;
 use voussoir::discretize::KinematicMap;
+use voussoir::generate::ArchSpec;
 use voussoir::generate::{wall, WallSpec};
+use voussoir::generate3d::{dome, vault, Bond, DomeSpec};
 use voussoir::lp::{self, LpStatus, Method, SolverOptions};
 use voussoir::programs;
 use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::analysis::settlement::settle;
-use voussoir::analysis::SettlementResult;
-use voussoir::generate::ArchSpec;
-use voussoir::generate3d::{dome, vault, Bond, DomeSpec};
-use voussoir::dim::Three;
 use voussoir::{BuildOptions, Structure, Structure3d};
 
 /// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
@@ -184,11 +184,24 @@ fn same_pattern_with_every_method(st: &Structure3d, what: &str) {
         };
         let r = settle_canonical(st, &o, SettlementForm::Both, &copts).unwrap();
         let w = r.work_dead_loads.unwrap();
-        assert!((w - w0).abs() <= 1e-6 * w0.abs(), "{what} {method:?}: work {w} against {w0}");
-        assert!(r.canonical.is_some(), "{what} {method:?}: no canonical record");
-        assert!(r.certificate.as_ref().is_some_and(|c| c.ok), "{what} {method:?}: not certified");
+        assert!(
+            (w - w0).abs() <= 1e-6 * w0.abs(),
+            "{what} {method:?}: work {w} against {w0}"
+        );
+        assert!(
+            r.canonical.is_some(),
+            "{what} {method:?}: no canonical record"
+        );
+        assert!(
+            r.certificate.as_ref().is_some_and(|c| c.ok),
+            "{what} {method:?}: not certified"
+        );
         let p = joints3(&r);
-        println!("{what} {method:?}: hinged joints {:?}, {} open joints", p.0, p.1.len());
+        println!(
+            "{what} {method:?}: hinged joints {:?}, {} open joints",
+            p.0,
+            p.1.len()
+        );
         patterns.push((method, p));
     }
     for (m, p) in &patterns[1..] {

@@ -30,6 +30,11 @@ use crate::structure::Assembly;
 /// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
 pub const MAX_FRICTION: f64 = 100.0;
 
+/// Pivots allowed to each warm-started program of the early uniqueness test
+/// ([`canonical_mechanism`]); beyond them the optimal face is taken as not obviously a point and
+/// the test is left to the end.
+const UNIQUE_PIVOTS: usize = 500;
+
 /// Settings of the canonical selection.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CanonicalOptions {
@@ -177,6 +182,45 @@ impl Stages {
 
     fn solve(&mut self, lp: &LinearProgram, basis: &mut Option<Basis>) -> Result<lp::LpSolution> {
         self.solves += 1;
+        let t0 = std::time::Instant::now();
+        let warm = basis.is_some();
+        let r = self.solve_inner(lp, basis);
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!(
+                "trace: stage solve {} {:?} rows {} cols {} warm {} -> {:?} {:.3} s it {:?}",
+                self.solves,
+                self.opts.method,
+                lp.num_rows(),
+                lp.num_cols(),
+                warm,
+                r.as_ref().map(|s| s.status),
+                t0.elapsed().as_secs_f64(),
+                r.as_ref().map(|s| s.iterations)
+            );
+        }
+        r
+    }
+
+    /// Solve from scratch, with the dual simplex and presolve (the extremes of a face: most of
+    /// its rows are held equalities).
+    fn solve_fresh(&mut self, lp: &LinearProgram) -> Result<lp::LpSolution> {
+        let saved = self.opts;
+        self.opts = SolverOptions {
+            method: Method::DualSimplex,
+            presolve: true,
+            ..saved
+        };
+        let mut none = None;
+        let r = self.solve(lp, &mut none);
+        self.opts = saved;
+        r
+    }
+
+    fn solve_inner(
+        &mut self,
+        lp: &LinearProgram,
+        basis: &mut Option<Basis>,
+    ) -> Result<lp::LpSolution> {
         if let Some(b) = basis.as_mut() {
             while b.rows.len() < lp.num_rows() {
                 b.rows.push(BasisStatus::Basic);
@@ -190,6 +234,13 @@ impl Stages {
             *basis = keep;
         }
         Ok(s)
+    }
+}
+
+/// With the environment variable `VOUSSOIR_TRACE` set: the time of each part on stderr.
+fn trace(what: &str, t0: std::time::Instant) {
+    if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        eprintln!("trace: {what} {:.3} s", t0.elapsed().as_secs_f64());
     }
 }
 
@@ -270,21 +321,30 @@ pub fn canonical_mechanism(
         .filter(|&(_, c)| c != 0.0)
         .collect();
     let slack = copts.tolerance * area2.abs().max(1e-9 * scale);
-    let face2 = face1.with_row(&area_entries, -f64::INFINITY, area2 - area_const + slack);
+    let mut face2 = face1.with_row(&area_entries, -f64::INFINITY, area2 - area_const + slack);
+    // The least-crack face exactly, as the optimal face: the rows and columns with non-zero
+    // stage-2 duals held at their bounds. Only the rows of the kinematic program itself: the
+    // work row of the optimal face is a guard at W*(1 − tolerance), and holding it there (where
+    // the held rows already fix W = W*) would leave an empty face. The area row stays as a
+    // guard too.
+    hold_complementary(
+        &mut face2,
+        &s2.row_dual[..klp.num_rows().min(s2.row_dual.len())],
+        &s2.col_dual,
+        copts.dual_threshold,
+    );
     // Stage 3 (only if the least-crack face is not a point): the least value of a fixed generic
     // linear functional `r·y` on it — a unique vertex, exact with every method. Its maximum
-    // tells whether the face is a point.
+    // tells whether the face is a point. These programs are solved from scratch with presolve:
+    // most rows of an exact face are equalities, which presolve removes, where a primal simplex
+    // warm-started from stage 2 took thousands of pivots on the façade (346 s for one).
     let r = generic_functional(nd);
-    let extremes = |st: &mut Stages,
-                    face: &LinearProgram,
-                    basis: Option<Basis>|
-     -> Result<Option<(Vec<f64>, f64)>> {
+    let extremes = |st: &mut Stages, face: &LinearProgram| -> Result<Option<(Vec<f64>, f64)>> {
         let mut lp = face.clone();
         lp.cost[..nd].copy_from_slice(&r);
-        let mut b = basis;
-        let lo = st.solve(&lp, &mut b)?;
+        let lo = st.solve_fresh(&lp)?;
         lp.maximise = true;
-        let hi = st.solve(&lp, &mut b)?;
+        let hi = st.solve_fresh(&lp)?;
         Ok(
             (lo.status == LpStatus::Optimal && hi.status == LpStatus::Optimal).then(|| {
                 (
@@ -294,7 +354,53 @@ pub fn canonical_mechanism(
             }),
         )
     };
-    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.clone())? else {
+    // A unique optimum, tested first where it is likely (the solver's mechanism is of least
+    // crack area): the extremes of `r·y` on the optimal face, warm-started from the stage-2
+    // vertex by primal simplex and capped at UNIQUE_PIVOTS pivots each. On a point they take a
+    // few pivots (the façade in running bond at 0.5 m: 0–7); where the cap is reached the test
+    // is left to the end, as below.
+    let mut face1_spread: Option<f64> = None;
+    if !changed2 {
+        let mut lp = face1.clone();
+        lp.cost[..nd].copy_from_slice(&r);
+        let mut b = basis.clone();
+        let saved = st.opts;
+        st.opts = SolverOptions {
+            method: Method::PrimalSimplex,
+            iteration_limit: Some(UNIQUE_PIVOTS),
+            ..saved
+        };
+        let capped = |s: &Result<lp::LpSolution>| {
+            s.as_ref().is_ok_and(|s| {
+                s.status == LpStatus::Optimal
+                    && s.method == Method::PrimalSimplex
+                    && s.tried.is_empty()
+            })
+        };
+        let lo = st.solve(&lp, &mut b);
+        if capped(&lo) {
+            lp.maximise = true;
+            let hi = st.solve(&lp, &mut b);
+            if let (true, Ok(lo), Ok(hi)) = (capped(&hi), &lo, &hi) {
+                face1_spread = Some(hi.objective - lo.objective);
+            }
+        }
+        st.opts = saved;
+        if face1_spread.is_some_and(|w| w <= ptol) {
+            return Ok(Some((
+                raw.to_vec(),
+                CanonicalMechanism {
+                    unique: true,
+                    selected_by: Selection::Optimum,
+                    crack_area_solver,
+                    crack_area: area_of(raw),
+                    changed: false,
+                    solves: st.solves,
+                },
+            )));
+        }
+    }
+    let Some((d3, spread2)) = extremes(&mut st, &face2)? else {
         return Ok(None);
     };
     let face2_point = spread2 <= ptol;
@@ -308,7 +414,8 @@ pub fn canonical_mechanism(
     // is in it; then one more test on the optimal face itself.
     let unique = !changed2
         && face2_point
-        && extremes(&mut st, &face1, basis)?.is_some_and(|(_, w)| w <= ptol);
+        && face1_spread.is_none()
+        && extremes(&mut st, &face1)?.is_some_and(|(_, w)| w <= ptol);
     let selected_by = if unique {
         Selection::Optimum
     } else {
@@ -327,6 +434,31 @@ pub fn canonical_mechanism(
             solves: st.solves,
         },
     )))
+}
+
+/// Hold every row whose dual exceeds `rel_tau` of the largest dual at its finite bound, and
+/// every column whose reduced cost does (complementary slackness with an optimal dual
+/// solution: what [`programs::optimal_face_exact`] does for the first stage). Rows beyond the
+/// duals' length (appended guards) are left alone.
+fn hold_complementary(lp: &mut LinearProgram, row_dual: &[f64], col_dual: &[f64], rel_tau: f64) {
+    let tau = rel_tau * max_abs(row_dual).max(max_abs(col_dual));
+    let hold = |lo: &mut f64, hi: &mut f64| {
+        if hi.is_finite() && !lo.is_finite() {
+            *lo = *hi;
+        } else if lo.is_finite() && !hi.is_finite() {
+            *hi = *lo;
+        }
+    };
+    for (i, y) in row_dual.iter().enumerate().take(lp.num_rows()) {
+        if y.abs() > tau {
+            hold(&mut lp.row_lower[i], &mut lp.row_upper[i]);
+        }
+    }
+    for (j, z) in col_dual.iter().enumerate().take(lp.num_cols()) {
+        if z.abs() > tau {
+            hold(&mut lp.col_lower[j], &mut lp.col_upper[j]);
+        }
+    }
 }
 
 /// Points open in mechanism `d` (with the support motions scaled by `support_scale`): opening
@@ -429,7 +561,10 @@ pub fn canonical_forces<S: Assembly>(
         .collect();
     let p = programs::force_energy_quadratic(&fp, &w);
     let mut solves = stages.solves + 1;
-    let Ok(mut qs) = lp::solve_quadratic(&fp.lp, &p, &copts_lp) else {
+    let t0 = std::time::Instant::now();
+    let qs = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
+    trace("energy QP", t0);
+    let Ok(mut qs) = qs else {
         return Ok(None);
     };
     if qs.status != LpStatus::Optimal {
@@ -573,7 +708,9 @@ pub fn settle_canonical<S: Assembly>(
     let mp = programs::settlement_motion_program(&map, &dead)?;
     let o = stage_options(opts);
     let mut basis = None;
+    let t0 = std::time::Instant::now();
     let primal = lp::solve_warm(&mp.lp, &o, &mut basis)?;
+    trace("stage 1", t0);
     if primal.status != LpStatus::Optimal {
         return settlement::settle_with(st, opts, form);
     }
@@ -581,7 +718,9 @@ pub fn settle_canonical<S: Assembly>(
     // The motion LP's optimum: the dead loads' work.
     let value = primal.objective;
     let weights = tributary_weights(st, &map);
+    let t0 = std::time::Instant::now();
     let mut found = canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)?;
+    trace("mechanism", t0);
     if found.is_none() && !opts.method.is_simplex() {
         // The interior point's duals did not fix the optimal face (its solution is optimal
         // only to the solver's tolerance): cross over to a vertex with the dual simplex, as
@@ -608,12 +747,14 @@ pub fn settle_canonical<S: Assembly>(
     if copts.forces && mech.is_some() {
         let open = open_points(&map, &d, 1.0);
         let build = |m: &KinematicMap| programs::settlement_force_program(m, &dead);
+        let t0 = std::time::Instant::now();
         if let Some((pn, pt, f)) =
             canonical_forces(st, &map, build, work, &open, &weights, &o, copts)?
         {
             pnt = Some((pn, pt));
             forces = Some(f);
         }
+        trace("forces", t0);
     }
     let (pn, pt) = match pnt {
         Some(p) => p,

@@ -1,0 +1,443 @@
+//! Sequences of programs solved as sequences: one constraint matrix, a changing objective or
+//! changing bounds, one solver instance.
+//!
+//! The reaction ranges of `safety` are 2·N programs per support over one feasible set (the
+//! statically admissible states), differing only in their objective. Solved one by one, each
+//! is built, presolved and factorised from scratch. A [`Sequence`] keeps one HiGHS instance
+//! ([`super::highs::Persistent`]): the first program is solved with the requested method
+//! (interior point with crossover, or a simplex), and every later one starts from the optimal
+//! basis and the factorisation the previous one left — after a change of objective the basis
+//! is still primal feasible, so the primal simplex goes on from it; after a change of bounds
+//! (a bisection's right-hand side) it is still dual feasible, so the dual simplex does.
+//!
+//! Nothing is taken on trust from the warm start: each optimum is checked by its
+//! [`Certificate`] (primal feasibility, dual feasibility and the duality gap, recomputed from
+//! the solution on the program as written), and a program whose warm run fails or does not
+//! certify is solved from scratch through [`super::solve_warm`] with the method's whole
+//! fallback chain ([`super::fallback_chain`]); the sequence then goes on warm from the basis
+//! that solve left. Backends without a basis (Clarabel) solve every program from scratch.
+
+use super::highs::Persistent;
+use super::{
+    solve_warm, Basis, Direction, LinearProgram, LpSolution, LpStatus, Scaling, SolverOptions,
+};
+use crate::error::{Error, Result};
+
+/// Largest relative primal violation, dual violation and duality gap of a certified optimum.
+pub const CERTIFICATE_TOLERANCE: f64 = 1e-7;
+
+/// The optimality certificate of a solution, recomputed on the program as written: how far
+/// `x` is from feasible, how far the duals are from feasible, and the gap between the primal
+/// objective and the dual bound the duals give. Each is relative to its own scale.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Certificate {
+    /// The largest violation of a row or bound by `x`, relative to the row's own size
+    /// (`Σ |a_ij x_j|` and its bounds) but never to less than a thousandth of the largest row's
+    /// (a friction row whose terms are round-off is not judged by its round-off).
+    pub primal: f64,
+    /// The largest reduced cost of the wrong sign on a column without the bound it would
+    /// price, relative to the size of the terms that make it up (`|c_j| + Σ|a_ij y_i|`).
+    pub dual: f64,
+    /// `|cᵀx − dual bound|` relative to `Σ |c_j x_j|` (and the two values).
+    pub gap: f64,
+}
+
+impl Certificate {
+    /// All three within [`CERTIFICATE_TOLERANCE`].
+    pub fn ok(&self) -> bool {
+        self.primal <= CERTIFICATE_TOLERANCE
+            && self.dual <= CERTIFICATE_TOLERANCE
+            && self.gap <= CERTIFICATE_TOLERANCE
+    }
+}
+
+/// The certificate of an optimal solution `s` of `lp` (`None` for another status or a
+/// solution without duals). HiGHS's and Clarabel's convention: `c − Aᵀy − z = 0` in the
+/// program's own sense.
+pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
+    let (n, m) = (lp.num_cols(), lp.num_rows());
+    if s.status != LpStatus::Optimal || s.x.len() != n || s.row_dual.len() != m {
+        return None;
+    }
+    // As a minimisation: c̃ = σc, ỹ = σy (σ = −1 for a maximisation).
+    let sigma = if lp.maximise { -1.0 } else { 1.0 };
+    // Row duals of the wrong sign on a side without a bound are dropped (round-off of the
+    // solver's own tolerances; what they would have priced shows in the reduced costs).
+    let y: Vec<f64> = (0..m)
+        .map(|i| {
+            let v = sigma * s.row_dual[i];
+            if (v > 0.0 && lp.row_lower[i] == f64::NEG_INFINITY)
+                || (v < 0.0 && lp.row_upper[i] == f64::INFINITY)
+            {
+                0.0
+            } else {
+                v
+            }
+        })
+        .collect();
+    let mut dual_bound = 0.0;
+    for i in 0..m {
+        if y[i] > 0.0 {
+            dual_bound += y[i] * lp.row_lower[i];
+        } else if y[i] < 0.0 {
+            dual_bound += y[i] * lp.row_upper[i];
+        }
+    }
+    let mut dual = 0.0f64;
+    let mut primal_size = 0.0;
+    let mut primal_objective = 0.0;
+    for j in 0..n {
+        let c = sigma * lp.cost[j];
+        let (mut aty, mut size) = (0.0, c.abs());
+        for (i, a) in lp.column(j) {
+            aty += a * y[i];
+            size += (a * y[i]).abs();
+        }
+        let z = c - aty;
+        primal_objective += c * s.x[j];
+        primal_size += (c * s.x[j]).abs();
+        let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
+        if z > 0.0 {
+            if lo == f64::NEG_INFINITY {
+                dual = dual.max(if size > 0.0 { z / size } else { f64::INFINITY });
+            } else {
+                dual_bound += z * lo;
+            }
+        } else if z < 0.0 {
+            if hi == f64::INFINITY {
+                dual = dual.max(if size > 0.0 { -z / size } else { f64::INFINITY });
+            } else {
+                dual_bound += z * hi;
+            }
+        }
+    }
+    let den = primal_size
+        .max(primal_objective.abs())
+        .max(dual_bound.abs());
+    let gap = if den > 0.0 {
+        (primal_objective - dual_bound).abs() / den
+    } else {
+        0.0
+    };
+    Some(Certificate {
+        primal: primal_violation(lp, &s.x),
+        dual,
+        gap: if gap.is_nan() { f64::INFINITY } else { gap },
+    })
+}
+
+/// [`Certificate::primal`].
+fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+    if x.len() != lp.num_cols() {
+        return f64::INFINITY;
+    }
+    let finite = |b: f64| if b.is_finite() { b.abs() } else { 0.0 };
+    let mut act = vec![0.0; lp.num_rows()];
+    let mut size = vec![0.0; lp.num_rows()];
+    for (j, &xj) in x.iter().enumerate() {
+        for (i, v) in lp.column(j) {
+            act[i] += v * xj;
+            size[i] += (v * xj).abs();
+        }
+    }
+    let rows: Vec<(f64, f64)> = (0..lp.num_rows())
+        .map(|i| {
+            let d = (lp.row_lower[i] - act[i])
+                .max(act[i] - lp.row_upper[i])
+                .max(0.0);
+            (
+                d,
+                size[i]
+                    .max(finite(lp.row_lower[i]))
+                    .max(finite(lp.row_upper[i])),
+            )
+        })
+        .collect();
+    let cols: Vec<(f64, f64)> = (0..lp.num_cols())
+        .map(|j| {
+            let d = (lp.col_lower[j] - x[j])
+                .max(x[j] - lp.col_upper[j])
+                .max(0.0);
+            (
+                d,
+                x[j].abs()
+                    .max(finite(lp.col_lower[j]))
+                    .max(finite(lp.col_upper[j])),
+            )
+        })
+        .collect();
+    let floor = 1e-3 * rows.iter().fold(0.0f64, |m, r| m.max(r.1));
+    let col_floor = 1e-3 * cols.iter().fold(0.0f64, |m, c| m.max(c.1));
+    let worst = |v: &[(f64, f64)], floor: f64| {
+        v.iter()
+            .map(|&(d, s)| {
+                if d == 0.0 {
+                    0.0
+                } else if s.max(floor) > 0.0 {
+                    d / s.max(floor)
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .fold(0.0f64, f64::max)
+    };
+    worst(&rows, floor).max(worst(&cols, col_floor))
+}
+
+/// What a sequence spent.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SequenceStats {
+    /// Programs solved.
+    pub solves: usize,
+    /// Of those, solved from the basis the previous one left.
+    pub warm: usize,
+    /// Warm runs that failed or did not certify, solved again from scratch.
+    pub restarts: usize,
+    /// Simplex and interior-point iterations.
+    pub iterations: i64,
+}
+
+/// A sequence of programs with one constraint matrix, solved with one solver instance where
+/// the backend keeps one (module documentation).
+pub struct Sequence {
+    /// The current program, in the user's units.
+    lp: LinearProgram,
+    opts: SolverOptions,
+    /// The row and column factors of the first program (fixed for the sequence: the matrix
+    /// does not change); the objective factor follows each objective.
+    scaling: Option<Scaling>,
+    session: Option<Persistent>,
+    /// A basis to start the next session from (of a solve from scratch, or of the program
+    /// replaced).
+    basis: Option<Basis>,
+    /// The basis the last solve ended with.
+    last_basis: Option<Basis>,
+    costs_changed: bool,
+    bounds_changed: bool,
+    /// Whether the next solve starts with the dual simplex from a handed-over basis (the
+    /// program was replaced or its bounds changed), rather than the primal simplex (only the
+    /// objective changed).
+    dual_start: bool,
+    pub stats: SequenceStats,
+}
+
+/// The power of two nearest to `x` in the logarithm (as [`Scaling`]'s factors).
+fn pow2(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    2f64.powi(x.log2().round().clamp(-1000.0, 1000.0) as i32)
+}
+
+impl Sequence {
+    /// A sequence starting with `lp`, solved with `opts` (the first program with its method;
+    /// HiGHS's simplex from the kept basis after it).
+    pub fn new(lp: LinearProgram, opts: &SolverOptions) -> Result<Sequence> {
+        if lp.cost.iter().chain(&lp.value).any(|v| !v.is_finite())
+            || lp
+                .row_lower
+                .iter()
+                .chain(&lp.row_upper)
+                .chain(&lp.col_lower)
+                .chain(&lp.col_upper)
+                .any(|b| b.is_nan())
+        {
+            return Err(Error::Solver(
+                "the LP has a NaN bound or a coefficient that is not finite".into(),
+            ));
+        }
+        let scaling = Scaling::needed(&lp, &[]);
+        Ok(Sequence {
+            lp,
+            opts: *opts,
+            scaling,
+            session: None,
+            basis: None,
+            last_basis: None,
+            costs_changed: false,
+            bounds_changed: false,
+            dual_start: true,
+            stats: SequenceStats::default(),
+        })
+    }
+
+    /// The current program.
+    pub fn program(&self) -> &LinearProgram {
+        &self.lp
+    }
+
+    /// Replace the whole program by `lp` (another matrix: a bisection on geometry). Where it
+    /// has the same shape, the next solve starts from the last basis (a new instance, the
+    /// basis handed over); otherwise from scratch.
+    pub fn replace(&mut self, lp: LinearProgram) -> Result<()> {
+        let same = lp.num_cols() == self.lp.num_cols() && lp.num_rows() == self.lp.num_rows();
+        let last = if same { self.last_basis.take() } else { None };
+        // (`Sequence::new` below starts with the dual simplex from the basis handed over.)
+        *self = Sequence {
+            stats: self.stats,
+            ..Sequence::new(lp, &self.opts)?
+        };
+        self.basis = last;
+        Ok(())
+    }
+
+    /// A new objective (`cost` per column) and sense.
+    pub fn set_objective(&mut self, cost: &[f64], direction: Direction) -> Result<()> {
+        if cost.len() != self.lp.num_cols() || cost.iter().any(|c| !c.is_finite()) {
+            return Err(Error::Solver(
+                "the new objective does not fit the program".into(),
+            ));
+        }
+        self.lp.cost.copy_from_slice(cost);
+        self.lp.maximise = direction == Direction::Maximise;
+        self.costs_changed = true;
+        Ok(())
+    }
+
+    /// New bounds of column `j`.
+    pub fn set_col_bounds(&mut self, j: usize, lo: f64, hi: f64) -> Result<()> {
+        if j >= self.lp.num_cols() || lo.is_nan() || hi.is_nan() {
+            return Err(Error::Solver(
+                "new column bounds do not fit the program".into(),
+            ));
+        }
+        self.lp.col_lower[j] = lo;
+        self.lp.col_upper[j] = hi;
+        self.bounds_changed = true;
+        Ok(())
+    }
+
+    /// New bounds of row `i`.
+    pub fn set_row_bounds(&mut self, i: usize, lo: f64, hi: f64) -> Result<()> {
+        if i >= self.lp.num_rows() || lo.is_nan() || hi.is_nan() {
+            return Err(Error::Solver(
+                "new row bounds do not fit the program".into(),
+            ));
+        }
+        self.lp.row_lower[i] = lo;
+        self.lp.row_upper[i] = hi;
+        self.bounds_changed = true;
+        Ok(())
+    }
+
+    /// The scaling of the current program: the sequence's row and column factors with the
+    /// objective factor of the current objective.
+    fn current_scaling(&self) -> Option<Scaling> {
+        self.scaling.as_ref().map(|s| {
+            let cmax = self
+                .lp
+                .cost
+                .iter()
+                .zip(&s.col)
+                .fold(0.0f64, |m, (c, f)| m.max((c * f).abs()));
+            Scaling {
+                objective: if cmax > 0.0 { pow2(1.0 / cmax) } else { 1.0 },
+                ..s.clone()
+            }
+        })
+    }
+
+    /// The program as HiGHS's instance holds it: scaled, and always minimised (a maximisation
+    /// is the minimisation of `−c`), so that a change of sense is a change of costs.
+    fn instance_program(&self, scaling: &Option<Scaling>) -> LinearProgram {
+        let mut p = match scaling {
+            Some(s) => s.apply(&self.lp),
+            None => self.lp.clone(),
+        };
+        if p.maximise {
+            p.cost.iter_mut().for_each(|c| *c = -*c);
+            p.maximise = false;
+        }
+        p
+    }
+
+    /// One run of the kept instance on the current program (making it if there is none);
+    /// the solution in the user's units and sense.
+    fn run_session(&mut self) -> Result<LpSolution> {
+        let scaling = self.current_scaling();
+        let p = self.instance_program(&scaling);
+        match &mut self.session {
+            Some(session) => {
+                if self.costs_changed {
+                    session.set_costs(&p.cost)?;
+                }
+                if self.bounds_changed {
+                    session.set_col_bounds(&p.col_lower, &p.col_upper)?;
+                    session.set_row_bounds(&p.row_lower, &p.row_upper)?;
+                }
+            }
+            None => {
+                let mut session = Persistent::new(&p, &self.opts)?;
+                if let Some(b) = self.basis.take() {
+                    session.set_basis(&b.adapted(&p), self.dual_start)?;
+                }
+                self.session = Some(session);
+            }
+        }
+        self.costs_changed = false;
+        self.bounds_changed = false;
+        let session = self.session.as_mut().expect("made above");
+        let warm = session.is_warm();
+        let solved = session.run()?;
+        self.stats.warm += usize::from(warm);
+        self.last_basis = solved.basis;
+        let mut s = solved.solution;
+        if self.lp.maximise && s.status == LpStatus::Optimal {
+            s.objective = -s.objective;
+            s.row_dual.iter_mut().for_each(|v| *v = -*v);
+            s.col_dual.iter_mut().for_each(|v| *v = -*v);
+        }
+        Ok(match scaling {
+            Some(sc) => sc.unscale(s),
+            None => s,
+        })
+    }
+
+    /// Solve the current program. Optimal solutions come certified ([`certify`]). A warm run
+    /// that fails or does not certify is tried once more in a new instance from the last good
+    /// basis (a fresh factorisation), then solved from scratch with the method's fallback
+    /// chain; whatever that gives is returned (the caller certifies it again where it needs
+    /// to: [`certify`]).
+    pub fn solve(&mut self) -> Result<LpSolution> {
+        self.stats.solves += 1;
+        if self.costs_changed && !self.bounds_changed && self.session.is_some() {
+            self.dual_start = false;
+        } else if self.bounds_changed {
+            self.dual_start = true;
+        }
+        let keeps_basis = self.opts.method.backend().name() == "highs";
+        if keeps_basis {
+            let good = self.last_basis.clone();
+            for attempt in 0..2 {
+                match self.run_session() {
+                    Ok(s) if s.status != LpStatus::Optimal => {
+                        self.stats.iterations += s.iterations;
+                        return Ok(s);
+                    }
+                    Ok(s) if certify(&self.lp, &s).is_some_and(|c| c.ok()) => {
+                        self.stats.iterations += s.iterations;
+                        return Ok(s);
+                    }
+                    _ => {
+                        self.session = None;
+                        self.stats.restarts += 1;
+                        match (&good, attempt) {
+                            // A new instance from the last good basis.
+                            (Some(b), 0) => self.basis = Some(b.clone()),
+                            _ => break,
+                        }
+                    }
+                }
+            }
+        }
+        // From scratch; the next run starts a new instance from its basis.
+        let mut basis = None;
+        let s = solve_warm(&self.lp, &self.opts, &mut basis)?;
+        self.stats.iterations += s.iterations;
+        self.basis = basis.clone();
+        self.last_basis = basis;
+        self.costs_changed = false;
+        self.bounds_changed = false;
+        Ok(s)
+    }
+}

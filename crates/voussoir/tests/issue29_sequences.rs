@@ -8,8 +8,10 @@ use voussoir::analysis::safety::{
     least_joint_fraction, reaction_ranges_by, safety, RangeSolve, SafetyOptions,
 };
 use voussoir::generate3d::{dome, DomeSpec};
-use voussoir::lp::{Method, SolverOptions};
+use voussoir::lp::sequence::certify;
+use voussoir::lp::{Direction, LinearProgram, LpSolution, LpStatus, Method, SolverOptions};
 use voussoir::model::Model;
+use voussoir::request::default_method;
 use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
 
 /// A block [0, 3] × [0, 1] (× `s`) on two supports under [0, 1] and [2, 3], friction `mu`.
@@ -234,5 +236,192 @@ fn issue29_item4_warm_bisection_gives_the_hand_safety_factor_at_scales_1_and_100
                 "×{s}"
             );
         }
+    }
+}
+
+#[test]
+fn issue29_item4_a_reduced_cost_of_round_off_is_not_a_dual_violation() {
+    // The 3 × 6 dome's `safety` failed with "dual violation 1.0": a free column without cost
+    // whose rows' duals were 1e-13 had a reduced cost of 1e-13 made of terms of 1e-13, which
+    // counted as a violation of 1. By hand: min x0 over x0 = 1, x1 = 0 (both free) is optimal
+    // at (1, 0) with duals (1, 0); duals (1, 1e-13) leave x1 a reduced cost of −1e-13 — round-
+    // off against the objective's scale (1) — and (1, 0.01) one of −0.01, a real violation.
+    let mut lp = LinearProgram::new(Direction::Minimise);
+    let r0 = lp.add_row(1.0, 1.0);
+    let r1 = lp.add_row(0.0, 0.0);
+    lp.add_column(1.0, f64::NEG_INFINITY, f64::INFINITY, [(r0, 1.0)]);
+    lp.add_column(0.0, f64::NEG_INFINITY, f64::INFINITY, [(r1, 1.0)]);
+    let sol = |y1: f64| LpSolution {
+        status: LpStatus::Optimal,
+        objective: 1.0,
+        x: vec![1.0, 0.0],
+        row_dual: vec![1.0, y1],
+        col_dual: vec![0.0, -y1],
+        iterations: 0,
+        dual_objective: 1.0,
+        reduced_accuracy: false,
+        method: Method::DualSimplex,
+        tried: vec![],
+    };
+    let c = certify(&lp, &sol(1e-13)).unwrap();
+    assert!(c.ok() && c.dual <= 1e-10, "{c:?}");
+    // x1's reduced cost is then all of its terms: a relative violation of 1.
+    let c = certify(&lp, &sol(0.01)).unwrap();
+    assert!(!c.ok() && (c.dual - 1.0).abs() < 1e-12, "{c:?}");
+}
+
+/// The dome of the CLI's `gen dome --courses 3 --segments 6` (no friction: no sliding).
+fn dome_3x6() -> Structure3d {
+    let m = dome(&DomeSpec {
+        courses: 3,
+        segments: 6,
+        ..DomeSpec::default()
+    })
+    .unwrap();
+    Structure3d::new(&m, BuildOptions::default()).unwrap()
+}
+
+#[test]
+fn issue29_item4_ranges_of_a_3x6_dome_certify_with_rays() {
+    // Without sliding, a self-equilibrated horizontal shear can be added to any admissible
+    // state without end: every horizontal endpoint is unbounded, certified by a ray of the
+    // recession program; the vertical ones are bounded. The six supports are alike (the dome
+    // has the symmetry of its six segments): each one's least vertical reaction and each
+    // one's largest are the same, and the largest are at least W/6 (the mean) and at most W.
+    let st = dome_3x6();
+    let w: f64 = -st.load_vector(false).chunks(6).map(|f| f[2]).sum::<f64>();
+    let dual = SolverOptions {
+        method: Method::DualSimplex,
+        ..SolverOptions::default()
+    };
+    let cold = reaction_ranges_by(&st, &dual, RangeSolve::Independent).unwrap();
+    for method in [default_method(3), Method::Ipm, Method::DualSimplex] {
+        let o = SolverOptions {
+            method,
+            ..SolverOptions::default()
+        };
+        let warm = reaction_ranges_by(&st, &o, RangeSolve::Sequence).unwrap();
+        assert!(warm.certified(), "{method:?}: {warm:?}");
+        assert!(warm.worst.dual <= 1e-7 && warm.worst_ray <= 1e-7);
+        // 6 supports × 2 horizontal components × 2 ends, each certified by a ray.
+        assert_eq!(warm.unbounded, 24, "{method:?}: {warm:?}");
+        assert!(warm.ray_programs >= 1 && warm.ray_programs <= 24);
+        for (a, b) in warm.ranges.iter().zip(&cold.ranges) {
+            for c in ["fx", "fy"] {
+                let r = a.component(c).unwrap();
+                assert_eq!((r.min, r.max), (None, None), "{method:?} {} {c}", a.support);
+            }
+            let (fz, cz) = (a.component("fz").unwrap(), b.component("fz").unwrap());
+            assert!(
+                close(fz.min, cz.min, w) && close(fz.max, cz.max, w),
+                "{fz:?} {cz:?}"
+            );
+            let first = warm.ranges[0].component("fz").unwrap();
+            assert!(close(fz.min, first.min, w) && close(fz.max, first.max, w));
+            assert!(fz.min.unwrap() >= -1e-9 * w);
+            assert!(fz.max.unwrap() >= w / 6.0 * (1.0 - 1e-9) && fz.max.unwrap() <= w);
+        }
+    }
+    // The whole `safety` as the CLI runs it: ranges included.
+    let r = safety(
+        &st,
+        &SafetyOptions {
+            solver: SolverOptions {
+                method: default_method(3),
+                ..SolverOptions::default()
+            },
+            ..SafetyOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(r.reactions.len(), 6);
+}
+
+/// Three unit boxes stacked on a base, box k offset from box k − 1 by `off[k − 1]` in plan,
+/// every length × `s`.
+fn three_box_stack(off: [[f64; 2]; 2], s: f64) -> Structure3d {
+    let cuboid = |lo: [f64; 3], hi: [f64; 3]| -> serde_json::Value {
+        let v: Vec<[f64; 3]> = (0..8)
+            .map(|i| {
+                [
+                    s * if i & 1 == 0 { lo[0] } else { hi[0] },
+                    s * if i & 2 == 0 { lo[1] } else { hi[1] },
+                    s * if i & 4 == 0 { lo[2] } else { hi[2] },
+                ]
+            })
+            .collect();
+        let f = vec![
+            vec![0, 2, 3, 1],
+            vec![4, 5, 7, 6],
+            vec![0, 1, 5, 4],
+            vec![2, 6, 7, 3],
+            vec![0, 4, 6, 2],
+            vec![1, 3, 7, 5],
+        ];
+        serde_json::json!({"vertices": v, "faces": f})
+    };
+    let at = |x: f64, y: f64, z: f64| cuboid([x, y, z], [x + 1.0, y + 1.0, z + 1.0]);
+    let (x1, y1) = (off[0][0], off[0][1]);
+    let (x2, y2) = (x1 + off[1][0], y1 + off[1][1]);
+    let m: voussoir::model3d::Model3d = serde_json::from_value(serde_json::json!({
+        "blocks": [at(0.0, 0.0, 0.0), at(x1, y1, 1.0), at(x2, y2, 2.0)],
+        "supports": [{"name": "base", "vertices": cuboid([-2.0, -2.0, -1.0], [3.0, 3.0, 0.0])["vertices"], "faces": cuboid([-2.0, -2.0, -1.0], [3.0, 3.0, 0.0])["faces"]}]
+    }))
+    .unwrap();
+    Structure3d::new(&m, BuildOptions::default()).unwrap()
+}
+
+#[test]
+fn issue29_item3_safety_factor_scale_invariant() {
+    // By hand (Heyman): each joint's shrunk contact (the rectangle scaled by f about its
+    // centre) must hold the resultant of the boxes above, which loads alone fix in a stack.
+    // Along one axis, offsets e1 (box 1 on box 0) and e2 (box 2 on box 1) of unit boxes:
+    //   joint 1–2: contact width 1 − |e2|, resultant e2/2 off its centre: f = |e2|/(1 − |e2|);
+    //   joint 0–1: width 1 − |e1|, resultant (e1 + e2)/2 off: f = |e1 + e2|/(1 − |e1|);
+    //   base (box 0's whole face): resultant (2e1 + e2)/3 off, half-width 1/2:
+    //   f = 2|2e1 + e2|/3.
+    // x: e = (0.2, 0.15): 0.17647, 0.4375, 0.36667; y: e = (0.1, −0.25): 0.33333, 0.16667,
+    // 0.03333. The least fraction is the largest: 0.4375 (joint 0–1 along x).
+    let off: [[f64; 2]; 2] = [[0.2, 0.1], [0.15, -0.25]];
+    let mut hand = 0.0f64;
+    for a in 0..2 {
+        let (e1, e2) = (off[0][a], off[1][a]);
+        hand = hand
+            .max(e2.abs() / (1.0 - e2.abs()))
+            .max((e1 + e2).abs() / (1.0 - e1.abs()))
+            .max(2.0 * (2.0 * e1 + e2).abs() / 3.0);
+    }
+    assert!((hand - 0.4375).abs() < 1e-12);
+    let dual = SolverOptions {
+        method: Method::DualSimplex,
+        ..SolverOptions::default()
+    };
+    let default = SolverOptions {
+        method: default_method(3),
+        ..SolverOptions::default()
+    };
+    for s in [1.0, 100.0] {
+        let st = three_box_stack(off, s);
+        let (fd, _) = least_joint_fraction(&st, 1e-7, &dual).unwrap();
+        let (fm, _) = least_joint_fraction(&st, 1e-7, &default).unwrap();
+        let (fd, fm) = (fd.unwrap(), fm.unwrap());
+        assert!(fd >= hand - 1e-9 && fd <= hand + 1.01e-7, "×{s}: {fd}");
+        assert!((fm - fd).abs() <= 1e-6, "×{s}: {fm} against {fd}");
+        // `safety` as the CLI runs it (tolerance 1e-6), with its reaction ranges.
+        let g = |o: SolverOptions| {
+            safety(
+                &st,
+                &SafetyOptions {
+                    solver: o,
+                    ..SafetyOptions::default()
+                },
+            )
+            .unwrap()
+            .geometric_safety_factor
+            .unwrap()
+        };
+        let (gd, gm) = (g(dual), g(default));
+        assert!((gm - gd).abs() <= 1e-6, "×{s}: {gm} against {gd}");
+        assert!((1.0 / gd - hand).abs() <= 1.01e-6, "×{s}: {gd}");
     }
 }

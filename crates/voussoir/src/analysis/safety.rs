@@ -25,7 +25,7 @@
 use crate::dim::Dim;
 use crate::discretize::{ContactJoint, KinematicMap};
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, LpStatus, SolverOptions};
+use crate::lp::{self, Direction, LpSolution, LpStatus, SolverOptions};
 use crate::programs;
 pub use crate::result::safety::*;
 use crate::structure::{Assembly, Body};
@@ -139,6 +139,9 @@ pub struct Decisions {
     /// LP solves, and of those the ones started from the previous basis.
     pub solves: usize,
     pub warm: usize,
+    /// Decisions taken again by the dual simplex from scratch (their first answer could not
+    /// be checked: [`Decisions::stands`]).
+    pub redecided: usize,
 }
 
 impl Decisions {
@@ -148,6 +151,7 @@ impl Decisions {
             sequence: None,
             solves: 0,
             warm: 0,
+            redecided: 0,
         }
     }
 
@@ -171,17 +175,29 @@ impl Decisions {
         let before = seq.stats.warm;
         let sol = seq.solve()?;
         self.warm += seq.stats.warm - before;
-        if feasible(sol.status)
-            && !sol.method.is_simplex()
-            && fp.lp.relative_violation(&sol.x) > DECISION_TOLERANCE
-        {
-            let o = SolverOptions {
-                method: lp::Method::DualSimplex,
-                ..self.solver
-            };
-            return Ok(feasible(fp.solve(&o)?.status));
+        // Each decision exact, either way: "stands" with an equilibrium state checked on the
+        // program itself (largest relative violation ≤ DECISION_TOLERANCE, whatever the
+        // method); "does not stand" as the dual simplex says it (its proof of infeasibility is
+        // a dual ray). A decision that is neither — a point that violates the program, or
+        // "infeasible" from another method (an interior point, the primal simplex) — is
+        // decided again by the dual simplex from scratch.
+        let checked = match sol.status {
+            LpStatus::Infeasible => sol.method == lp::Method::DualSimplex,
+            _ => {
+                sol.x.len() == fp.lp.num_cols()
+                    && fp.lp.relative_violation(&sol.x) <= DECISION_TOLERANCE
+            }
+        };
+        if checked {
+            return Ok(feasible(sol.status));
         }
-        Ok(feasible(sol.status))
+        self.solves += 1;
+        self.redecided += 1;
+        let o = SolverOptions {
+            method: lp::Method::DualSimplex,
+            ..self.solver
+        };
+        Ok(feasible(fp.solve(&o)?.status))
     }
 }
 
@@ -285,12 +301,19 @@ pub struct ReactionRanges {
     /// The largest relative primal violation, dual violation and duality gap of the
     /// endpoints' certificates ([`lp::sequence::certify`]).
     pub worst: lp::sequence::Certificate,
+    /// Endpoints certified unbounded by a ray ([`lp::sequence::certify_ray`]).
+    pub unbounded: usize,
+    /// Recession programs solved to find those rays (one ray certifies every endpoint it
+    /// improves).
+    pub ray_programs: usize,
+    /// The largest relative violation of the recession cone by the rays used.
+    pub worst_ray: f64,
 }
 
 impl ReactionRanges {
     /// Every endpoint certified ([`lp::sequence::CERTIFICATE_TOLERANCE`]).
     pub fn certified(&self) -> bool {
-        self.worst.ok()
+        self.worst.ok() && self.worst_ray <= lp::sequence::CERTIFICATE_TOLERANCE
     }
 }
 
@@ -367,6 +390,9 @@ pub fn reaction_ranges_by<S: Assembly>(
             dual: 0.0,
             gap: 0.0,
         },
+        unbounded: 0,
+        ray_programs: 0,
+        worst_ray: 0.0,
     };
     let mut sequence = match how {
         RangeSolve::Sequence => Some(lp::sequence::Sequence::new(base.lp.clone(), solver)?),
@@ -374,8 +400,16 @@ pub fn reaction_ranges_by<S: Assembly>(
     };
     // ends[s][c] = (min, max)
     let mut ends: Vec<Vec<[Option<f64>; 2]>> = vec![vec![[None, None]; n]; supports];
+    // Rays found so far ([`lp::sequence::certify_ray`]), the recession program's sequence and
+    // a feasible point (a ray certifies unboundedness from one).
+    let mut rays: Vec<Vec<f64>> = Vec::new();
+    let mut ray_sequence: Option<lp::sequence::Sequence> = None;
+    let mut feasible_point: Option<Vec<f64>> = None;
     for (s, comps) in coefficients.iter().enumerate() {
-        for (c, (cn, ct)) in comps.iter().enumerate() {
+        // The vertical component first: bounded where the structure stands, so the first
+        // program (solved from scratch) has an optimum for the later ones to start from.
+        for c in std::iter::once(n - 1).chain(0..n - 1) {
+            let (cn, ct) = &comps[c];
             if statics && supports == 1 {
                 ends[s][c] = [Some(total[c]), Some(total[c])];
                 out.from_statics += 2;
@@ -393,30 +427,116 @@ pub fn reaction_ranges_by<S: Assembly>(
                 .into_iter()
                 .enumerate()
             {
-                let (sol, program) = match &mut sequence {
+                let program = match &sequence {
+                    Some(seq) => {
+                        let mut p = seq.program().clone();
+                        p.cost.copy_from_slice(&cost);
+                        p.maximise = direction == Direction::Maximise;
+                        p
+                    }
+                    None => programs::reaction_extreme_program(&map, &dead, cn, ct, direction).lp,
+                };
+                // A ray found for an earlier endpoint that improves this one: unbounded, no
+                // program.
+                if let Some(cert) = rays
+                    .iter()
+                    .map(|d| lp::sequence::certify_ray(&program, d))
+                    .find(|c| c.ok())
+                {
+                    out.unbounded += 1;
+                    out.worst_ray = out.worst_ray.max(cert.violation);
+                    ends[s][c][e] = None;
+                    continue;
+                }
+                let tried = match &mut sequence {
                     Some(seq) => {
                         seq.set_objective(&cost, direction)?;
-                        (seq.solve()?, seq.program().clone())
+                        seq.try_solve()
                     }
-                    None => {
-                        let fp = programs::reaction_extreme_program(&map, &dead, cn, ct, direction);
-                        (fp.solve(solver)?, fp.lp)
-                    }
+                    None => lp::solve(&program, solver).ok(),
                 };
                 out.solves += 1;
-                // An optimum that does not certify (a solver's "optimal" whose duals do not
-                // bound it) is decided again by the dual simplex from scratch.
-                let sol = if sol.status == LpStatus::Optimal
-                    && !lp::sequence::certify(&program, &sol).is_some_and(|c| c.ok())
-                {
-                    out.solves += 1;
-                    let o = SolverOptions {
-                        method: lp::Method::DualSimplex,
-                        ..*solver
-                    };
-                    lp::solve(&program, &o)?
-                } else {
-                    sol
+                let certified = |sol: &LpSolution| {
+                    sol.status == LpStatus::Optimal
+                        && lp::sequence::certify(&program, sol).is_some_and(|c| c.ok())
+                };
+                let sol = match tried {
+                    Some(sol) if certified(&sol) || sol.status == LpStatus::Infeasible => sol,
+                    Some(sol) if sol.status == LpStatus::Optimal => {
+                        // An optimum that does not certify (a solver's "optimal" whose duals
+                        // do not bound it) is decided again by the dual simplex from scratch.
+                        out.solves += 1;
+                        let o = SolverOptions {
+                            method: lp::Method::DualSimplex,
+                            ..*solver
+                        };
+                        lp::solve(&program, &o)?
+                    }
+                    _ => {
+                        // Unbounded, or a failure (an unbounded program fails in some methods
+                        // rather than saying so): the recession program decides. A ray is a
+                        // certificate of unboundedness given a feasible point.
+                        out.solves += 1;
+                        out.ray_programs += 1;
+                        let ray_seq = match &mut ray_sequence {
+                            Some(r) => r,
+                            None => ray_sequence.insert(lp::sequence::Sequence::new(
+                                lp::sequence::recession_program(&base.lp),
+                                solver,
+                            )?),
+                        };
+                        ray_seq.set_objective(&cost, direction)?;
+                        let d = ray_seq.solve()?;
+                        let cert = (d.status == LpStatus::Optimal)
+                            .then(|| lp::sequence::certify_ray(&program, &d.x));
+                        if let Some(cert) = cert.filter(|c| c.ok()) {
+                            if feasible_point.is_none() {
+                                // The ray needs a feasible point to start from.
+                                out.solves += 1;
+                                let mut p = program.clone();
+                                p.cost.iter_mut().for_each(|v| *v = 0.0);
+                                let f = lp::solve(
+                                    &p,
+                                    &SolverOptions {
+                                        method: lp::Method::DualSimplex,
+                                        ..*solver
+                                    },
+                                )?;
+                                if f.status != LpStatus::Optimal
+                                    || p.relative_violation(&f.x)
+                                        > lp::sequence::CERTIFICATE_TOLERANCE
+                                {
+                                    return Err(Error::Request(
+                                        "the structure does not stand: its reactions have no range"
+                                            .into(),
+                                    ));
+                                }
+                                feasible_point = Some(f.x);
+                            }
+                            out.unbounded += 1;
+                            out.worst_ray = out.worst_ray.max(cert.violation);
+                            rays.push(d.x);
+                            ends[s][c][e] = None;
+                            continue;
+                        }
+                        // No ray: the endpoint is bounded, and the program is solved from
+                        // scratch along the fallback chain, then by the dual simplex.
+                        out.solves += 1;
+                        let sol = match &mut sequence {
+                            Some(seq) => seq.solve_cold().ok(),
+                            None => None,
+                        };
+                        match sol {
+                            Some(sol) if certified(&sol) => sol,
+                            _ => {
+                                let o = SolverOptions {
+                                    method: lp::Method::DualSimplex,
+                                    ..*solver
+                                };
+                                lp::solve(&program, &o)?
+                            }
+                        }
+                    }
                 };
                 ends[s][c][e] = match sol.status {
                     LpStatus::Optimal => {
@@ -428,9 +548,19 @@ pub fn reaction_ranges_by<S: Assembly>(
                         out.worst.primal = out.worst.primal.max(cert.primal);
                         out.worst.dual = out.worst.dual.max(cert.dual);
                         out.worst.gap = out.worst.gap.max(cert.gap);
+                        if feasible_point.is_none() {
+                            feasible_point = Some(sol.x.clone());
+                        }
                         Some(sol.objective)
                     }
-                    LpStatus::Unbounded => None,
+                    LpStatus::Unbounded => {
+                        return Err(Error::Solver(format!(
+                            "support {} {}: the solver says the {} is unbounded, but no ray certifies it",
+                            st.support_name(s),
+                            labels[c],
+                            if e == 0 { "minimum" } else { "maximum" }
+                        )))
+                    }
                     LpStatus::Infeasible => {
                         return Err(Error::Request(
                             "the structure does not stand: its reactions have no range".into(),
@@ -446,8 +576,8 @@ pub fn reaction_ranges_by<S: Assembly>(
     }
     if !out.certified() {
         return Err(Error::Solver(format!(
-            "the reaction ranges could not be certified (relative primal violation {:.1e}, dual violation {:.1e}, duality gap {:.1e})",
-            out.worst.primal, out.worst.dual, out.worst.gap
+            "the reaction ranges could not be certified (relative primal violation {:.1e}, dual violation {:.1e}, duality gap {:.1e}, ray violation {:.1e})",
+            out.worst.primal, out.worst.dual, out.worst.gap, out.worst_ray
         )));
     }
     out.ranges = coefficients

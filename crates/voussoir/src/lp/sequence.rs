@@ -36,7 +36,9 @@ pub struct Certificate {
     /// (a friction row whose terms are round-off is not judged by its round-off).
     pub primal: f64,
     /// The largest reduced cost of the wrong sign on a column without the bound it would
-    /// price, relative to the size of the terms that make it up (`|c_j| + Σ|a_ij y_i|`).
+    /// price, relative to the size of the terms that make it up (`|c_j| + Σ|a_ij y_i|`) but
+    /// never to less than a thousandth of the largest column's (a reduced cost of 1e-13 made
+    /// of duals of 1e-13 is round-off, not a violation).
     pub dual: f64,
     /// `|cᵀx − dual bound|` relative to `Σ |c_j x_j|` (and the two values).
     pub gap: f64,
@@ -83,7 +85,11 @@ pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
             dual_bound += y[i] * lp.row_upper[i];
         }
     }
-    let mut dual = 0.0f64;
+    // Each column's reduced cost `z_j = c̃_j − Σ a_ij ỹ_i` and the size of the terms that
+    // make it up. A column whose terms are all round-off (no cost, duals of 1e-13 on its rows)
+    // is judged against a thousandth of the largest column's size, as the primal rows are:
+    // otherwise a reduced cost of 1e-13 made of terms of 1e-13 would count as a violation of 1.
+    let mut reduced = Vec::with_capacity(n);
     let mut primal_size = 0.0;
     let mut primal_objective = 0.0;
     for j in 0..n {
@@ -93,19 +99,31 @@ pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
             aty += a * y[i];
             size += (a * y[i]).abs();
         }
-        let z = c - aty;
         primal_objective += c * s.x[j];
         primal_size += (c * s.x[j]).abs();
+        reduced.push((c - aty, size));
+    }
+    let floor = 1e-3 * reduced.iter().fold(0.0f64, |m, r| m.max(r.1));
+    let relative = |z: f64, size: f64| {
+        let size = size.max(floor);
+        if size > 0.0 {
+            z.abs() / size
+        } else {
+            f64::INFINITY
+        }
+    };
+    let mut dual = 0.0f64;
+    for (j, &(z, size)) in reduced.iter().enumerate() {
         let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
         if z > 0.0 {
             if lo == f64::NEG_INFINITY {
-                dual = dual.max(if size > 0.0 { z / size } else { f64::INFINITY });
+                dual = dual.max(relative(z, size));
             } else {
                 dual_bound += z * lo;
             }
         } else if z < 0.0 {
             if hi == f64::INFINITY {
-                dual = dual.max(if size > 0.0 { -z / size } else { f64::INFINITY });
+                dual = dual.max(relative(z, size));
             } else {
                 dual_bound += z * hi;
             }
@@ -124,6 +142,75 @@ pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
         dual,
         gap: if gap.is_nan() { f64::INFINITY } else { gap },
     })
+}
+
+/// The least relative decrease of the objective along a ray that certifies an unbounded
+/// optimum ([`certify_ray`]): `−σ cᵀd ≥ RAY_DECREASE · ‖c‖₁ ‖d‖∞`, so that round-off of a
+/// direction along which the objective is constant does not pass for a decrease.
+pub const RAY_DECREASE: f64 = 1e-6;
+
+/// The recession program of `lp`: its rows and columns with every finite bound moved to 0 —
+/// the directions `d` along which a feasible point stays feasible (`x + t d` for every
+/// `t ≥ 0`) — within the box `|d_j| ≤ 1`, which makes it feasible (`d = 0`) and bounded. Its
+/// optimum is below 0 exactly when the objective of `lp` (over a nonempty feasible set) is
+/// unbounded, and its solution is then a ray that certifies it ([`certify_ray`]).
+pub fn recession_program(lp: &LinearProgram) -> LinearProgram {
+    let mut r = lp.clone();
+    let rec = |b: f64| if b.is_finite() { 0.0 } else { b };
+    for i in 0..r.num_rows() {
+        r.row_lower[i] = rec(r.row_lower[i]);
+        r.row_upper[i] = rec(r.row_upper[i]);
+    }
+    for j in 0..r.num_cols() {
+        r.col_lower[j] = rec(r.col_lower[j]).max(-1.0);
+        r.col_upper[j] = rec(r.col_upper[j]).min(1.0);
+    }
+    r
+}
+
+/// The certificate of a ray `d` of `lp`: how far it is from a recession direction and how
+/// much the objective improves along it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayCertificate {
+    /// The largest relative violation of the recession program's rows and bounds by `d`
+    /// (measured as [`Certificate::primal`]).
+    pub violation: f64,
+    /// `−σ cᵀd / (‖c‖₁ ‖d‖∞)` (σ = −1 for a maximisation): at most 1, 0 or less where `d`
+    /// does not improve the objective.
+    pub decrease: f64,
+}
+
+impl RayCertificate {
+    /// `d` is a recession direction within [`CERTIFICATE_TOLERANCE`] and improves the
+    /// objective by at least [`RAY_DECREASE`]: with any feasible point, the objective of `lp`
+    /// is unbounded.
+    pub fn ok(&self) -> bool {
+        self.violation <= CERTIFICATE_TOLERANCE && self.decrease >= RAY_DECREASE
+    }
+}
+
+/// The certificate of the ray `d` for the objective of `lp` ([`RayCertificate`]).
+pub fn certify_ray(lp: &LinearProgram, d: &[f64]) -> RayCertificate {
+    if d.len() != lp.num_cols() || d.iter().any(|v| !v.is_finite()) {
+        return RayCertificate {
+            violation: f64::INFINITY,
+            decrease: 0.0,
+        };
+    }
+    let sigma = if lp.maximise { -1.0 } else { 1.0 };
+    // Relative to the objective's size times the ray's (not to `Σ |c_j d_j|`: a ray whose
+    // entries on the objective's columns are round-off, 1e-16, would improve it by 100 %).
+    let (mut cd, mut c1, mut dmax) = (0.0, 0.0, 0.0f64);
+    for (c, v) in lp.cost.iter().zip(d) {
+        cd += sigma * c * v;
+        c1 += c.abs();
+        dmax = dmax.max(v.abs());
+    }
+    let size = c1 * dmax;
+    RayCertificate {
+        violation: primal_violation(&recession_program(lp), d),
+        decrease: if size > 0.0 { -cd / size } else { 0.0 },
+    }
 }
 
 /// [`Certificate::primal`].
@@ -400,40 +487,77 @@ impl Sequence {
     /// to: [`certify`]).
     pub fn solve(&mut self) -> Result<LpSolution> {
         self.stats.solves += 1;
+        self.choose_start();
+        if let Some(s) = self.try_warm() {
+            return Ok(s);
+        }
+        self.solve_cold()
+    }
+
+    /// Solve the current program without the fallback chain from scratch: the warm runs of
+    /// [`Sequence::solve`] (a certified optimum, or an infeasible or unbounded status), or for
+    /// a backend without a basis one solve with the method's chain; `None` where they fail or
+    /// do not certify (the caller then decides what the failure means — an unbounded program
+    /// fails in every method — before [`Sequence::solve_cold`]).
+    pub fn try_solve(&mut self) -> Option<LpSolution> {
+        self.stats.solves += 1;
+        self.choose_start();
+        if self.keeps_basis() {
+            self.try_warm()
+        } else {
+            self.solve_cold().ok()
+        }
+    }
+
+    fn keeps_basis(&self) -> bool {
+        self.opts.method.backend().name() == "highs"
+    }
+
+    fn choose_start(&mut self) {
         if self.costs_changed && !self.bounds_changed && self.session.is_some() {
             self.dual_start = false;
         } else if self.bounds_changed {
             self.dual_start = true;
         }
-        let keeps_basis = self.opts.method.backend().name() == "highs";
-        if keeps_basis {
-            let good = self.last_basis.clone();
-            for attempt in 0..2 {
-                match self.run_session() {
-                    Ok(s) if s.status != LpStatus::Optimal => {
-                        self.stats.iterations += s.iterations;
-                        return Ok(s);
-                    }
-                    Ok(s) if certify(&self.lp, &s).is_some_and(|c| c.ok()) => {
-                        self.stats.iterations += s.iterations;
-                        return Ok(s);
-                    }
-                    _ => {
-                        self.session = None;
-                        self.stats.restarts += 1;
-                        match (&good, attempt) {
-                            // A new instance from the last good basis.
-                            (Some(b), 0) => self.basis = Some(b.clone()),
-                            _ => break,
-                        }
+    }
+
+    /// The warm runs of [`Sequence::solve`]: `None` where they fail or do not certify.
+    fn try_warm(&mut self) -> Option<LpSolution> {
+        if !self.keeps_basis() {
+            return None;
+        }
+        let good = self.last_basis.clone();
+        for attempt in 0..2 {
+            match self.run_session() {
+                Ok(s) if s.status != LpStatus::Optimal => {
+                    self.stats.iterations += s.iterations;
+                    return Some(s);
+                }
+                Ok(s) if certify(&self.lp, &s).is_some_and(|c| c.ok()) => {
+                    self.stats.iterations += s.iterations;
+                    return Some(s);
+                }
+                _ => {
+                    self.session = None;
+                    self.stats.restarts += 1;
+                    match (&good, attempt) {
+                        // A new instance from the last good basis.
+                        (Some(b), 0) => self.basis = Some(b.clone()),
+                        _ => break,
                     }
                 }
             }
         }
-        // From scratch; the next run starts a new instance from its basis.
+        None
+    }
+
+    /// Solve the current program from scratch with the method's fallback chain
+    /// ([`super::solve_warm`]); the next run starts a new instance from its basis.
+    pub fn solve_cold(&mut self) -> Result<LpSolution> {
         let mut basis = None;
         let s = solve_warm(&self.lp, &self.opts, &mut basis)?;
         self.stats.iterations += s.iterations;
+        self.session = None;
         self.basis = basis.clone();
         self.last_basis = basis;
         self.costs_changed = false;

@@ -180,7 +180,8 @@ impl Decisions {
         // method); "does not stand" as the dual simplex says it (its proof of infeasibility is
         // a dual ray). A decision that is neither — a point that violates the program, or
         // "infeasible" from another method (an interior point, the primal simplex) — is
-        // decided again by the dual simplex from scratch.
+        // decided again by the elastic program (`lp::sequence::decide_feasibility`: the least
+        // total violation, certified by its duals, a Farkas certificate where it is positive).
         let checked = match sol.status {
             LpStatus::Infeasible => sol.method == lp::Method::DualSimplex,
             _ => {
@@ -191,8 +192,22 @@ impl Decisions {
         if checked {
             return Ok(feasible(sol.status));
         }
+        // The elastic program decides, with a certificate either way; where even that does
+        // not certify, the dual simplex from scratch.
         self.solves += 1;
         self.redecided += 1;
+        // Clarabel first (an interior point without crossover: seconds on the 24 × 24 dome,
+        // where HiGHS's simplex stalls in phase 1), then the requested method.
+        for method in [lp::Method::Clarabel, self.solver.method] {
+            let o = SolverOptions {
+                method,
+                ..self.solver
+            };
+            if let Some(d) = lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)? {
+                return Ok(d.feasible);
+            }
+        }
+        self.solves += 1;
         let o = SolverOptions {
             method: lp::Method::DualSimplex,
             ..self.solver

@@ -213,6 +213,70 @@ pub fn certify_ray(lp: &LinearProgram, d: &[f64]) -> RayCertificate {
     }
 }
 
+/// The elastic program of `lp`: its objective dropped, every row with a bound given a pair
+/// of slacks `s⁺ − s⁻` (each ≥ 0, cost 1), so that it is always feasible and its optimum is the
+/// least total violation of `lp`'s rows (its columns' bounds are kept).
+pub fn elastic_program(lp: &LinearProgram) -> LinearProgram {
+    let mut e = lp.clone();
+    e.maximise = false;
+    e.cost.iter_mut().for_each(|c| *c = 0.0);
+    for i in 0..lp.num_rows() {
+        if lp.row_lower[i].is_finite() || lp.row_upper[i].is_finite() {
+            e.add_column(1.0, 0.0, f64::INFINITY, [(i, 1.0)]);
+            e.add_column(1.0, 0.0, f64::INFINITY, [(i, -1.0)]);
+        }
+    }
+    e
+}
+
+/// A decision of feasibility with its certificate, either way ([`decide_feasibility`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FeasibilityDecision {
+    /// Whether `lp` has a point within the tolerance.
+    pub feasible: bool,
+    /// The least total violation of the rows, relative to the largest finite row bound.
+    pub violation: f64,
+    /// The certificate of the elastic program's optimum ([`certify`]): its duals are, where
+    /// the violation is positive, a Farkas certificate of infeasibility (row multipliers that
+    /// combine the rows into a contradiction with the columns' bounds).
+    pub certificate: Certificate,
+}
+
+/// Decide whether `lp` (its objective ignored) is feasible, with a certificate either way: the
+/// elastic program ([`elastic_program`]) solved with `opts` and certified. Its least total
+/// violation, relative to the largest finite row bound, above `tolerance` is infeasibility —
+/// certified by the elastic program's duals —, at most `tolerance` feasibility, with the
+/// point that attains it. `None` where the elastic program's optimum does not certify.
+pub fn decide_feasibility(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    tolerance: f64,
+) -> Result<Option<FeasibilityDecision>> {
+    let e = elastic_program(lp);
+    let s = super::solve(&e, opts)?;
+    let Some(certificate) = certify(&e, &s).filter(|c| c.ok()) else {
+        return Ok(None);
+    };
+    let scale = lp
+        .row_lower
+        .iter()
+        .chain(&lp.row_upper)
+        .filter(|b| b.is_finite())
+        .fold(0.0f64, |m, b| m.max(b.abs()));
+    let violation = if scale > 0.0 {
+        s.objective.max(0.0) / scale
+    } else if s.objective > 0.0 {
+        f64::INFINITY
+    } else {
+        0.0
+    };
+    Ok(Some(FeasibilityDecision {
+        feasible: violation <= tolerance,
+        violation,
+        certificate,
+    }))
+}
+
 /// [`Certificate::primal`].
 fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
     if x.len() != lp.num_cols() {

@@ -25,7 +25,7 @@
 use crate::dim::Dim;
 use crate::discretize::{ContactJoint, KinematicMap};
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, LpStatus, SolverOptions};
+use crate::lp::{self, Direction, LpSolution, LpStatus, SolverOptions};
 use crate::programs;
 pub use crate::result::safety::*;
 use crate::structure::{Assembly, Body};
@@ -126,8 +126,99 @@ pub fn shrunk_map<S: Assembly>(st: &S, base: &KinematicMap, f: f64) -> Kinematic
     m
 }
 
+/// The decisions of a bisection as one sequence ([`lp::sequence`]): each equilibrium program
+/// has the shape of the one before (the same points, moved), so it starts from the basis the
+/// previous one ended with — dual feasible, as every basis of a program with a zero objective
+/// is, so HiGHS's dual simplex goes on from it. The first program is solved with the requested
+/// method. Each decision is exact as in [`stands`]: a feasible point is checked on the program
+/// itself, and one that violates it beyond round-off is decided again by the dual simplex from
+/// scratch.
+pub struct Decisions {
+    solver: SolverOptions,
+    sequence: Option<lp::sequence::Sequence>,
+    /// LP solves, and of those the ones started from the previous basis.
+    pub solves: usize,
+    pub warm: usize,
+    /// Decisions taken again by the dual simplex from scratch (their first answer could not
+    /// be checked: [`Decisions::stands`]).
+    pub redecided: usize,
+}
+
+impl Decisions {
+    pub fn new(solver: &SolverOptions) -> Decisions {
+        Decisions {
+            solver: *solver,
+            sequence: None,
+            solves: 0,
+            warm: 0,
+            redecided: 0,
+        }
+    }
+
+    /// Whether an equilibrium state exists for the structure of kinematic map `map` under the
+    /// dead loads `dead` ([`programs::equilibrium_program`]).
+    pub fn stands(&mut self, map: &KinematicMap, dead: &[f64]) -> Result<bool> {
+        self.solves += 1;
+        let fp = programs::equilibrium_program(map, dead);
+        if !fp.cones.is_empty() {
+            return stands_on(map, dead, &self.solver);
+        }
+        let seq = match &mut self.sequence {
+            Some(seq) => {
+                seq.replace(fp.lp.clone())?;
+                seq
+            }
+            None => self
+                .sequence
+                .insert(lp::sequence::Sequence::new(fp.lp.clone(), &self.solver)?),
+        };
+        let before = seq.stats.warm;
+        let sol = seq.solve()?;
+        self.warm += seq.stats.warm - before;
+        // Each decision exact, either way: "stands" with an equilibrium state checked on the
+        // program itself (largest relative violation ≤ DECISION_TOLERANCE, whatever the
+        // method); "does not stand" as the dual simplex says it (its proof of infeasibility is
+        // a dual ray). A decision that is neither — a point that violates the program, or
+        // "infeasible" from another method (an interior point, the primal simplex) — is
+        // decided again by the elastic program (`lp::sequence::decide_feasibility`: the least
+        // total violation, certified by its duals, a Farkas certificate where it is positive).
+        let checked = match sol.status {
+            LpStatus::Infeasible => sol.method == lp::Method::DualSimplex,
+            _ => {
+                sol.x.len() == fp.lp.num_cols()
+                    && fp.lp.relative_violation(&sol.x) <= DECISION_TOLERANCE
+            }
+        };
+        if checked {
+            return Ok(feasible(sol.status));
+        }
+        // The elastic program decides, with a certificate either way; where even that does
+        // not certify, the dual simplex from scratch.
+        self.solves += 1;
+        self.redecided += 1;
+        // Clarabel first (an interior point without crossover: seconds on the 24 × 24 dome,
+        // where HiGHS's simplex stalls in phase 1), then the requested method.
+        for method in [lp::Method::Clarabel, self.solver.method] {
+            let o = SolverOptions {
+                method,
+                ..self.solver
+            };
+            if let Some(d) = lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)? {
+                return Ok(d.feasible);
+            }
+        }
+        self.solves += 1;
+        let o = SolverOptions {
+            method: lp::Method::DualSimplex,
+            ..self.solver
+        };
+        Ok(feasible(fp.solve(&o)?.status))
+    }
+}
+
 /// The least joint fraction `f` in `[0, 1]` at which `st` stands, to `tolerance` (the upper
 /// end of the final bracket), and the LP solves spent; `None` if it does not stand at `f = 1`.
+/// The decisions are one warm-started sequence ([`Decisions`]).
 pub fn least_joint_fraction<S: Assembly>(
     st: &S,
     tolerance: f64,
@@ -140,26 +231,23 @@ pub fn least_joint_fraction<S: Assembly>(
     }
     let base = KinematicMap::new(st);
     let dead = st.load_vector(false);
-    let at = |f: f64| stands_on(&shrunk_map(st, &base, f), &dead, solver);
-    let mut solves = 1;
-    if !stands_on(&base, &dead, solver)? {
-        return Ok((None, solves));
+    let mut d = Decisions::new(solver);
+    if !d.stands(&base, &dead)? {
+        return Ok((None, d.solves));
     }
-    solves += 1;
-    if at(0.0)? {
-        return Ok((Some(0.0), solves));
+    if d.stands(&shrunk_map(st, &base, 0.0), &dead)? {
+        return Ok((Some(0.0), d.solves));
     }
     let (mut lo, mut hi) = (0.0, 1.0);
     while hi - lo > tolerance {
         let mid = 0.5 * (lo + hi);
-        solves += 1;
-        if at(mid)? {
+        if d.stands(&shrunk_map(st, &base, mid), &dead)? {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    Ok((Some(hi), solves))
+    Ok((Some(hi), d.solves))
 }
 
 /// Coefficients of the force components of each support's reaction in the point forces:
@@ -200,39 +288,294 @@ fn reaction_coefficients<S: Assembly>(
     out
 }
 
+/// How the reaction ranges are solved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum RangeSolve {
+    /// One program of one solver instance whose objective changes ([`lp::sequence`]), and no
+    /// program where statics gives the answer (one or two supports). The default.
+    #[default]
+    Sequence,
+    /// Every endpoint its own program, solved from scratch (the reference the sequence is
+    /// tested against).
+    Independent,
+}
+
+/// The reaction ranges and what they cost.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReactionRanges {
+    pub ranges: Vec<AdmissibleReactionRange>,
+    /// LP solves.
+    pub solves: usize,
+    /// Of those, started from the basis of the one before ([`lp::sequence`]).
+    pub warm: usize,
+    /// Warm solves that failed or did not certify and were solved again from scratch.
+    pub restarts: usize,
+    /// Endpoints given by statics without a program of their own (one support: the total
+    /// load; two supports: the other support's optimum).
+    pub from_statics: usize,
+    /// The largest relative primal violation, dual violation and duality gap of the
+    /// endpoints' certificates ([`lp::sequence::certify`]).
+    pub worst: lp::sequence::Certificate,
+    /// Endpoints certified unbounded by a ray ([`lp::sequence::certify_ray`]).
+    pub unbounded: usize,
+    /// Recession programs solved to find those rays (one ray certifies every endpoint it
+    /// improves).
+    pub ray_programs: usize,
+    /// The largest relative violation of the recession cone by the rays used.
+    pub worst_ray: f64,
+}
+
+impl ReactionRanges {
+    /// Every endpoint certified ([`lp::sequence::CERTIFICATE_TOLERANCE`]).
+    pub fn certified(&self) -> bool {
+        self.worst.ok() && self.worst_ray <= lp::sequence::CERTIFICATE_TOLERANCE
+    }
+}
+
 /// The range of every force component of every support's reaction over the statically
-/// admissible states, and the LP solves spent. Each range is two LPs of one shape (the
-/// objective changes), warm-started where the backend keeps a basis.
+/// admissible states, and the LP solves spent ([`reaction_ranges_by`] with
+/// [`RangeSolve::Sequence`]).
 pub fn reaction_ranges<S: Assembly>(
     st: &S,
     solver: &SolverOptions,
 ) -> Result<(Vec<AdmissibleReactionRange>, usize)> {
+    let r = reaction_ranges_by(st, solver, RangeSolve::Sequence)?;
+    Ok((r.ranges, r.solves))
+}
+
+/// The range of every force component of every support's reaction over the statically
+/// admissible states.
+///
+/// Every endpoint is the optimum of `min` or `max` of the component over the feasible set of
+/// [`programs::equilibrium_program`], certified ([`lp::sequence::certify`]); an endpoint whose
+/// certificate fails is an error. With [`RangeSolve::Sequence`] the programs share one solver
+/// instance and start from each other's bases, and statics saves programs exactly:
+///
+/// * one support carries the whole load, in every admissible state: its reaction is minus the
+///   total load, no program;
+/// * with two supports the reactions add up to minus the total load in every admissible state
+///   (summing the blocks' force equations, the joint forces between blocks cancel), so the
+///   second support's least value is the total minus the first's largest, attained by the
+///   same state, and so on: half the programs.
+pub fn reaction_ranges_by<S: Assembly>(
+    st: &S,
+    solver: &SolverOptions,
+    how: RangeSolve,
+) -> Result<ReactionRanges> {
     let map = KinematicMap::new(st);
     let dead = st.load_vector(false);
     let coefficients = reaction_coefficients(st, &map);
+    let n = <S::D as Dim>::N;
     // The force components of the reaction (z up in 3D).
-    let labels = &["fx", "fy", "fz"][..<S::D as Dim>::N];
-    let mut basis = None;
-    let mut solves = 0;
-    let mut ranges = Vec::with_capacity(st.num_supports());
+    let labels = &["fx", "fy", "fz"][..n];
+    // Minus the total load: the sum of the supports' reactions in every admissible state.
+    let total: Vec<f64> = (0..n)
+        .map(|c| -dead.chunks(map.dofs_per_block).map(|f| f[c]).sum::<f64>())
+        .collect();
+    let base = programs::equilibrium_program(&map, &dead);
+    if !base.cones.is_empty() {
+        return Err(Error::Request(
+            "the reaction ranges are LPs: cone constraints are not taken".into(),
+        ));
+    }
+    let cost_of = |cn: &[f64], ct: &[f64]| -> Vec<f64> {
+        let mut cost = vec![0.0; base.lp.num_cols()];
+        for (k, col) in base.pn.iter().enumerate() {
+            if let Some(j) = col {
+                cost[*j] += cn[k];
+            }
+        }
+        for (r, col) in base.pt.iter().enumerate() {
+            if let Some(j) = col {
+                cost[*j] += ct[r];
+            }
+        }
+        cost
+    };
+    let supports = st.num_supports();
+    let statics = how == RangeSolve::Sequence && supports <= 2;
+    let mut out = ReactionRanges {
+        ranges: Vec::with_capacity(supports),
+        solves: 0,
+        warm: 0,
+        restarts: 0,
+        from_statics: 0,
+        worst: lp::sequence::Certificate {
+            primal: 0.0,
+            dual: 0.0,
+            gap: 0.0,
+        },
+        unbounded: 0,
+        ray_programs: 0,
+        worst_ray: 0.0,
+    };
+    let mut sequence = match how {
+        RangeSolve::Sequence => Some(lp::sequence::Sequence::new(base.lp.clone(), solver)?),
+        RangeSolve::Independent => None,
+    };
+    // ends[s][c] = (min, max)
+    let mut ends: Vec<Vec<[Option<f64>; 2]>> = vec![vec![[None, None]; n]; supports];
+    // Rays found so far ([`lp::sequence::certify_ray`]), the recession program's sequence and
+    // a feasible point (a ray certifies unboundedness from one).
+    let mut rays: Vec<Vec<f64>> = Vec::new();
+    let mut ray_sequence: Option<lp::sequence::Sequence> = None;
+    let mut feasible_point: Option<Vec<f64>> = None;
     for (s, comps) in coefficients.iter().enumerate() {
-        let mut components = Vec::with_capacity(comps.len());
-        for (c, (cn, ct)) in comps.iter().enumerate() {
-            let mut ends = [None, None];
+        // The vertical component first: bounded where the structure stands, so the first
+        // program (solved from scratch) has an optimum for the later ones to start from.
+        for c in std::iter::once(n - 1).chain(0..n - 1) {
+            let (cn, ct) = &comps[c];
+            if statics && supports == 1 {
+                ends[s][c] = [Some(total[c]), Some(total[c])];
+                out.from_statics += 2;
+                continue;
+            }
+            if statics && s == 1 {
+                // R₁ = total − R₀ in every admissible state.
+                let [lo, hi] = ends[0][c];
+                ends[s][c] = [hi.map(|v| total[c] - v), lo.map(|v| total[c] - v)];
+                out.from_statics += 2;
+                continue;
+            }
+            let cost = cost_of(cn, ct);
             for (e, direction) in [Direction::Minimise, Direction::Maximise]
                 .into_iter()
                 .enumerate()
             {
-                let fp = programs::reaction_extreme_program(&map, &dead, cn, ct, direction);
-                let sol = if fp.cones.is_empty() {
-                    lp::solve_warm(&fp.lp, solver, &mut basis)?
-                } else {
-                    fp.solve(solver)?
+                let program = match &sequence {
+                    Some(seq) => {
+                        let mut p = seq.program().clone();
+                        p.cost.copy_from_slice(&cost);
+                        p.maximise = direction == Direction::Maximise;
+                        p
+                    }
+                    None => programs::reaction_extreme_program(&map, &dead, cn, ct, direction).lp,
                 };
-                solves += 1;
-                ends[e] = match sol.status {
-                    LpStatus::Optimal => Some(sol.objective),
-                    LpStatus::Unbounded => None,
+                // A ray found for an earlier endpoint that improves this one: unbounded, no
+                // program.
+                if let Some(cert) = rays
+                    .iter()
+                    .map(|d| lp::sequence::certify_ray(&program, d))
+                    .find(|c| c.ok())
+                {
+                    out.unbounded += 1;
+                    out.worst_ray = out.worst_ray.max(cert.violation);
+                    ends[s][c][e] = None;
+                    continue;
+                }
+                let tried = match &mut sequence {
+                    Some(seq) => {
+                        seq.set_objective(&cost, direction)?;
+                        seq.try_solve()
+                    }
+                    None => lp::solve(&program, solver).ok(),
+                };
+                out.solves += 1;
+                let certified = |sol: &LpSolution| {
+                    sol.status == LpStatus::Optimal
+                        && lp::sequence::certify(&program, sol).is_some_and(|c| c.ok())
+                };
+                let sol = match tried {
+                    Some(sol) if certified(&sol) || sol.status == LpStatus::Infeasible => sol,
+                    Some(sol) if sol.status == LpStatus::Optimal => {
+                        // An optimum that does not certify (a solver's "optimal" whose duals
+                        // do not bound it) is decided again by the dual simplex from scratch.
+                        out.solves += 1;
+                        let o = SolverOptions {
+                            method: lp::Method::DualSimplex,
+                            ..*solver
+                        };
+                        lp::solve(&program, &o)?
+                    }
+                    _ => {
+                        // Unbounded, or a failure (an unbounded program fails in some methods
+                        // rather than saying so): the recession program decides. A ray is a
+                        // certificate of unboundedness given a feasible point.
+                        out.solves += 1;
+                        out.ray_programs += 1;
+                        let ray_seq = match &mut ray_sequence {
+                            Some(r) => r,
+                            None => ray_sequence.insert(lp::sequence::Sequence::new(
+                                lp::sequence::recession_program(&base.lp),
+                                solver,
+                            )?),
+                        };
+                        ray_seq.set_objective(&cost, direction)?;
+                        let d = ray_seq.solve()?;
+                        let cert = (d.status == LpStatus::Optimal)
+                            .then(|| lp::sequence::certify_ray(&program, &d.x));
+                        if let Some(cert) = cert.filter(|c| c.ok()) {
+                            if feasible_point.is_none() {
+                                // The ray needs a feasible point to start from.
+                                out.solves += 1;
+                                let mut p = program.clone();
+                                p.cost.iter_mut().for_each(|v| *v = 0.0);
+                                let f = lp::solve(
+                                    &p,
+                                    &SolverOptions {
+                                        method: lp::Method::DualSimplex,
+                                        ..*solver
+                                    },
+                                )?;
+                                if f.status != LpStatus::Optimal
+                                    || p.relative_violation(&f.x)
+                                        > lp::sequence::CERTIFICATE_TOLERANCE
+                                {
+                                    return Err(Error::Request(
+                                        "the structure does not stand: its reactions have no range"
+                                            .into(),
+                                    ));
+                                }
+                                feasible_point = Some(f.x);
+                            }
+                            out.unbounded += 1;
+                            out.worst_ray = out.worst_ray.max(cert.violation);
+                            rays.push(d.x);
+                            ends[s][c][e] = None;
+                            continue;
+                        }
+                        // No ray: the endpoint is bounded, and the program is solved from
+                        // scratch along the fallback chain, then by the dual simplex.
+                        out.solves += 1;
+                        let sol = match &mut sequence {
+                            Some(seq) => seq.solve_cold().ok(),
+                            None => None,
+                        };
+                        match sol {
+                            Some(sol) if certified(&sol) => sol,
+                            _ => {
+                                let o = SolverOptions {
+                                    method: lp::Method::DualSimplex,
+                                    ..*solver
+                                };
+                                lp::solve(&program, &o)?
+                            }
+                        }
+                    }
+                };
+                ends[s][c][e] = match sol.status {
+                    LpStatus::Optimal => {
+                        let cert = lp::sequence::certify(&program, &sol).ok_or_else(|| {
+                            Error::Solver(
+                                "a reaction range's optimum came without its duals".into(),
+                            )
+                        })?;
+                        out.worst.primal = out.worst.primal.max(cert.primal);
+                        out.worst.dual = out.worst.dual.max(cert.dual);
+                        out.worst.gap = out.worst.gap.max(cert.gap);
+                        if feasible_point.is_none() {
+                            feasible_point = Some(sol.x.clone());
+                        }
+                        Some(sol.objective)
+                    }
+                    LpStatus::Unbounded => {
+                        return Err(Error::Solver(format!(
+                            "support {} {}: the solver says the {} is unbounded, but no ray certifies it",
+                            st.support_name(s),
+                            labels[c],
+                            if e == 0 { "minimum" } else { "maximum" }
+                        )))
+                    }
                     LpStatus::Infeasible => {
                         return Err(Error::Request(
                             "the structure does not stand: its reactions have no range".into(),
@@ -240,18 +583,33 @@ pub fn reaction_ranges<S: Assembly>(
                     }
                 };
             }
-            components.push(ComponentRange {
-                component: labels[c].to_string(),
-                min: ends[0],
-                max: ends[1],
-            });
         }
-        ranges.push(AdmissibleReactionRange {
-            support: st.support_name(s).to_string(),
-            components,
-        });
     }
-    Ok((ranges, solves))
+    if let Some(seq) = &sequence {
+        out.warm = seq.stats.warm;
+        out.restarts = seq.stats.restarts;
+    }
+    if !out.certified() {
+        return Err(Error::Solver(format!(
+            "the reaction ranges could not be certified (relative primal violation {:.1e}, dual violation {:.1e}, duality gap {:.1e}, ray violation {:.1e})",
+            out.worst.primal, out.worst.dual, out.worst.gap, out.worst_ray
+        )));
+    }
+    out.ranges = coefficients
+        .iter()
+        .enumerate()
+        .map(|(s, comps)| AdmissibleReactionRange {
+            support: st.support_name(s).to_string(),
+            components: (0..comps.len())
+                .map(|c| ComponentRange {
+                    component: labels[c].to_string(),
+                    min: ends[s][c][0],
+                    max: ends[s][c][1],
+                })
+                .collect(),
+        })
+        .collect();
+    Ok(out)
 }
 
 /// The safety assessment of `st`: whether it stands, its geometric safety factor and the
@@ -310,7 +668,11 @@ pub fn least_thickness<S: Assembly>(
             "tolerance {tolerance}: must be a finite number > 0"
         )));
     }
-    let at = |t: f64| -> Result<bool> { stands(&build(t)?, solver) };
+    let mut d = Decisions::new(solver);
+    let mut at = |t: f64| -> Result<bool> {
+        let st = build(t)?;
+        d.stands(&KinematicMap::new(&st), &st.load_vector(false))
+    };
     if at(lo)? {
         return Err(Error::Request(format!(
             "the structure already stands at the lower thickness {lo}: give a smaller one"

@@ -366,3 +366,251 @@ impl Presolved {
         })
     }
 }
+
+/// One HiGHS instance kept across a sequence of programs with one constraint matrix
+/// ([`crate::lp::sequence`]): the costs and the bounds change between runs, and each run
+/// starts from the basis and factorisation the previous one left. After the first run
+/// (`method` as requested, presolve as requested) HiGHS's simplex is left to choose its
+/// strategy: primal simplex where the kept basis is still primal feasible (a changed
+/// objective), dual simplex where it is not (changed bounds).
+pub struct Persistent {
+    model: highs::Model,
+    cols: usize,
+    rows: usize,
+    /// Whether a run has left a basis to start from.
+    warm: bool,
+    method: Method,
+    /// Whether bounds changed since the last run (the dual simplex then restarts; after a
+    /// change of costs alone, the primal simplex).
+    bounds_changed: bool,
+}
+
+impl Persistent {
+    /// The instance of `lp` (minimised or maximised as `lp` says), configured for `o`.
+    pub fn new(lp: &LinearProgram, o: &SolverOptions) -> Result<Persistent> {
+        if o.method == Method::Clarabel {
+            return Err(Error::Solver(
+                "the HiGHS backend was handed the Clarabel method".into(),
+            ));
+        }
+        let mut model = build(lp)?;
+        configure(&mut model, o)?;
+        Ok(Persistent {
+            model,
+            cols: lp.num_cols(),
+            rows: lp.num_rows(),
+            warm: false,
+            method: o.method,
+            bounds_changed: false,
+        })
+    }
+
+    /// Whether the next run starts from a kept basis.
+    pub fn is_warm(&self) -> bool {
+        self.warm
+    }
+
+    /// Start the next run from `b` (a basis of a program of this shape, its nonbasic statuses
+    /// fitting the bounds: [`Basis::adapted`]) with HiGHS's simplex: the dual simplex with
+    /// `dual` (a basis that is dual feasible: the program's bounds or matrix changed), the
+    /// primal simplex otherwise (its objective changed). A basis HiGHS refuses is left out
+    /// (the run is then from scratch).
+    pub fn set_basis(&mut self, b: &Basis, dual: bool) -> Result<()> {
+        if b.cols.len() != self.cols || b.rows.len() != self.rows {
+            return Ok(());
+        }
+        let cs: Vec<i32> = b.cols.iter().map(|&s| to_highs(s)).collect();
+        let rs: Vec<i32> = b.rows.iter().map(|&s| to_highs(s)).collect();
+        // SAFETY: the live instance owned by `self.model`; the arrays have num_col and num_row
+        // entries.
+        let ok =
+            unsafe { highs_sys::Highs_setBasis(self.model.as_mut_ptr(), cs.as_ptr(), rs.as_ptr()) };
+        if ok != highs_sys::kHighsStatusError {
+            opt(&mut self.model, "solver", "simplex")?;
+            opt(&mut self.model, "presolve", "off")?;
+            self.warm = true;
+            self.bounds_changed = dual;
+        }
+        Ok(())
+    }
+
+    fn check(&self, what: &str, status: i32) -> Result<()> {
+        if status == highs_sys::kHighsStatusError {
+            Err(Error::Solver(format!("HiGHS refused the change of {what}")))
+        } else {
+            Ok(())
+        }
+    }
+
+    /// New costs for every column (the sense stays the one the program was built with).
+    pub fn set_costs(&mut self, cost: &[f64]) -> Result<()> {
+        if cost.len() != self.cols {
+            return Err(Error::Solver("new costs do not fit the program".into()));
+        }
+        if self.cols == 0 {
+            return Ok(());
+        }
+        // SAFETY: the pointer is the live instance owned by `self.model`; `cost` has num_col
+        // entries.
+        let s = unsafe {
+            highs_sys::Highs_changeColsCostByRange(
+                self.model.as_mut_ptr(),
+                0,
+                self.cols as highs_sys::HighsInt - 1,
+                cost.as_ptr(),
+            )
+        };
+        self.check("costs", s)
+    }
+
+    /// New bounds for every column.
+    pub fn set_col_bounds(&mut self, lower: &[f64], upper: &[f64]) -> Result<()> {
+        if lower.len() != self.cols || upper.len() != self.cols {
+            return Err(Error::Solver("new bounds do not fit the program".into()));
+        }
+        if self.cols == 0 {
+            return Ok(());
+        }
+        // SAFETY: as in `set_costs`.
+        let s = unsafe {
+            highs_sys::Highs_changeColsBoundsByRange(
+                self.model.as_mut_ptr(),
+                0,
+                self.cols as highs_sys::HighsInt - 1,
+                lower.as_ptr(),
+                upper.as_ptr(),
+            )
+        };
+        self.bounds_changed = true;
+        self.check("column bounds", s)
+    }
+
+    /// New bounds for every row.
+    pub fn set_row_bounds(&mut self, lower: &[f64], upper: &[f64]) -> Result<()> {
+        if lower.len() != self.rows || upper.len() != self.rows {
+            return Err(Error::Solver("new bounds do not fit the program".into()));
+        }
+        if self.rows == 0 {
+            return Ok(());
+        }
+        // SAFETY: as in `set_costs`, with num_row entries.
+        let s = unsafe {
+            highs_sys::Highs_changeRowsBoundsByRange(
+                self.model.as_mut_ptr(),
+                0,
+                self.rows as highs_sys::HighsInt - 1,
+                lower.as_ptr(),
+                upper.as_ptr(),
+            )
+        };
+        self.bounds_changed = true;
+        self.check("row bounds", s)
+    }
+
+    /// Run HiGHS on the program as it now stands. The first run uses the method the instance
+    /// was made with; every later one HiGHS's simplex from the kept basis (presolve off: it
+    /// would discard the basis). The solution states the method that produced it. A failed
+    /// run, or a status other than optimal, infeasible or unbounded, is an error (the caller
+    /// solves that program from scratch).
+    pub fn run(&mut self) -> Result<Solved> {
+        use highs_sys::*;
+        // From a kept basis: the primal simplex after a new objective (the basis is still
+        // primal feasible), the dual simplex after new bounds (still dual feasible where the
+        // costs did not change).
+        let method = match (self.warm, self.bounds_changed) {
+            (false, _) => self.method,
+            (true, false) => Method::PrimalSimplex,
+            (true, true) => Method::DualSimplex,
+        };
+        if self.warm {
+            opt(
+                &mut self.model,
+                "simplex_strategy",
+                if method == Method::PrimalSimplex {
+                    4
+                } else {
+                    1
+                },
+            )?;
+        }
+        self.bounds_changed = false;
+        let p = self.model.as_mut_ptr();
+        // SAFETY: `p` is the live instance owned by `self.model`; every array handed to HiGHS
+        // below has the program's num_col or num_row entries.
+        unsafe {
+            if Highs_run(p) == kHighsStatusError {
+                self.warm = false;
+                return Err(Error::Solver("HiGHS run failed: Error".into()));
+            }
+            let mut simplex = 0 as HighsInt;
+            let mut ipm = 0 as HighsInt;
+            Highs_getIntInfoValue(p, c"simplex_iteration_count".as_ptr(), &mut simplex);
+            Highs_getIntInfoValue(p, c"ipm_iteration_count".as_ptr(), &mut ipm);
+            let iterations = simplex.max(0) as i64 + ipm.max(0) as i64;
+            let status = match Highs_getModelStatus(p) {
+                s if s == kHighsModelStatusOptimal => LpStatus::Optimal,
+                s if s == kHighsModelStatusInfeasible => LpStatus::Infeasible,
+                s if s == kHighsModelStatusUnbounded => LpStatus::Unbounded,
+                s if s == kHighsModelStatusModelEmpty => LpStatus::Optimal,
+                s => {
+                    self.warm = false;
+                    return Err(Error::Solver(format!(
+                        "HiGHS stopped with model status {s}"
+                    )));
+                }
+            };
+            let (n, m) = (self.cols, self.rows);
+            let (mut cs, mut rs) = (vec![0 as HighsInt; n], vec![0 as HighsInt; m]);
+            let basis = (Highs_getBasis(p, cs.as_mut_ptr(), rs.as_mut_ptr()) != kHighsStatusError)
+                .then(|| Basis {
+                    cols: cs.into_iter().map(from_highs).collect(),
+                    rows: rs.into_iter().map(from_highs).collect(),
+                });
+            let mut valid = 0 as HighsInt;
+            Highs_getIntInfoValue(p, c"basis_validity".as_ptr(), &mut valid);
+            let had_basis = valid == kHighsBasisValidityValid;
+            if !self.warm && had_basis {
+                // From now on: HiGHS's simplex from the kept basis.
+                opt(&mut self.model, "solver", "simplex")?;
+                opt(&mut self.model, "presolve", "off")?;
+            }
+            self.warm = had_basis;
+            let p = self.model.as_mut_ptr();
+            let mut solution = LpSolution {
+                status,
+                objective: f64::NAN,
+                x: vec![],
+                row_dual: vec![],
+                col_dual: vec![],
+                iterations,
+                dual_objective: f64::NAN,
+                reduced_accuracy: false,
+                method,
+                tried: Vec::new(),
+            };
+            if status == LpStatus::Optimal {
+                let (mut x, mut cd) = (vec![0.0; n], vec![0.0; n]);
+                let (mut rv, mut rd) = (vec![0.0; m], vec![0.0; m]);
+                if Highs_getSolution(
+                    p,
+                    x.as_mut_ptr(),
+                    cd.as_mut_ptr(),
+                    rv.as_mut_ptr(),
+                    rd.as_mut_ptr(),
+                ) == kHighsStatusError
+                {
+                    self.warm = false;
+                    return Err(Error::Solver("HiGHS gave no solution".into()));
+                }
+                solution.objective = Highs_getObjectiveValue(p);
+                solution.x = x;
+                solution.col_dual = cd;
+                solution.row_dual = rd;
+            }
+            Ok(Solved {
+                solution,
+                basis: basis.filter(|_| had_basis),
+            })
+        }
+    }
+}

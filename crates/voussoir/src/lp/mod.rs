@@ -18,6 +18,7 @@
 pub mod clarabel;
 pub mod highs;
 pub mod scale;
+pub mod sequence;
 
 pub use scale::Scaling;
 

@@ -1,0 +1,631 @@
+//! Sequences of programs solved as sequences: one constraint matrix, a changing objective or
+//! changing bounds, one solver instance.
+//!
+//! The reaction ranges of `safety` are 2·N programs per support over one feasible set (the
+//! statically admissible states), differing only in their objective. Solved one by one, each
+//! is built, presolved and factorised from scratch. A [`Sequence`] keeps one HiGHS instance
+//! ([`super::highs::Persistent`]): the first program is solved with the requested method
+//! (interior point with crossover, or a simplex), and every later one starts from the optimal
+//! basis and the factorisation the previous one left — after a change of objective the basis
+//! is still primal feasible, so the primal simplex goes on from it; after a change of bounds
+//! (a bisection's right-hand side) it is still dual feasible, so the dual simplex does.
+//!
+//! Nothing is taken on trust from the warm start: each optimum is checked by its
+//! [`Certificate`] (primal feasibility, dual feasibility and the duality gap, recomputed from
+//! the solution on the program as written), and a program whose warm run fails or does not
+//! certify is solved from scratch through [`super::solve_warm`] with the method's whole
+//! fallback chain ([`super::fallback_chain`]); the sequence then goes on warm from the basis
+//! that solve left. Backends without a basis (Clarabel) solve every program from scratch.
+
+use super::highs::Persistent;
+use super::{
+    solve_warm, Basis, Direction, LinearProgram, LpSolution, LpStatus, Scaling, SolverOptions,
+};
+use crate::error::{Error, Result};
+
+/// Largest relative primal violation, dual violation and duality gap of a certified optimum.
+pub const CERTIFICATE_TOLERANCE: f64 = 1e-7;
+
+/// The optimality certificate of a solution, recomputed on the program as written: how far
+/// `x` is from feasible, how far the duals are from feasible, and the gap between the primal
+/// objective and the dual bound the duals give. Each is relative to its own scale.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Certificate {
+    /// The largest violation of a row or bound by `x`, relative to the row's own size
+    /// (`Σ |a_ij x_j|` and its bounds) but never to less than a thousandth of the largest row's
+    /// (a friction row whose terms are round-off is not judged by its round-off).
+    pub primal: f64,
+    /// The largest reduced cost of the wrong sign on a column without the bound it would
+    /// price, relative to the size of the terms that make it up (`|c_j| + Σ|a_ij y_i|`) but
+    /// never to less than a thousandth of the largest column's (a reduced cost of 1e-13 made
+    /// of duals of 1e-13 is round-off, not a violation).
+    pub dual: f64,
+    /// `|cᵀx − dual bound|` relative to `Σ |c_j x_j|` (and the two values).
+    pub gap: f64,
+}
+
+impl Certificate {
+    /// All three within [`CERTIFICATE_TOLERANCE`].
+    pub fn ok(&self) -> bool {
+        self.primal <= CERTIFICATE_TOLERANCE
+            && self.dual <= CERTIFICATE_TOLERANCE
+            && self.gap <= CERTIFICATE_TOLERANCE
+    }
+}
+
+/// The certificate of an optimal solution `s` of `lp` (`None` for another status or a
+/// solution without duals). HiGHS's and Clarabel's convention: `c − Aᵀy − z = 0` in the
+/// program's own sense.
+pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
+    let (n, m) = (lp.num_cols(), lp.num_rows());
+    if s.status != LpStatus::Optimal || s.x.len() != n || s.row_dual.len() != m {
+        return None;
+    }
+    // As a minimisation: c̃ = σc, ỹ = σy (σ = −1 for a maximisation).
+    let sigma = if lp.maximise { -1.0 } else { 1.0 };
+    // Row duals of the wrong sign on a side without a bound are dropped (round-off of the
+    // solver's own tolerances; what they would have priced shows in the reduced costs).
+    let y: Vec<f64> = (0..m)
+        .map(|i| {
+            let v = sigma * s.row_dual[i];
+            if (v > 0.0 && lp.row_lower[i] == f64::NEG_INFINITY)
+                || (v < 0.0 && lp.row_upper[i] == f64::INFINITY)
+            {
+                0.0
+            } else {
+                v
+            }
+        })
+        .collect();
+    let mut dual_bound = 0.0;
+    for i in 0..m {
+        if y[i] > 0.0 {
+            dual_bound += y[i] * lp.row_lower[i];
+        } else if y[i] < 0.0 {
+            dual_bound += y[i] * lp.row_upper[i];
+        }
+    }
+    // Each column's reduced cost `z_j = c̃_j − Σ a_ij ỹ_i` and the size of the terms that
+    // make it up. A column whose terms are all round-off (no cost, duals of 1e-13 on its rows)
+    // is judged against a thousandth of the largest column's size, as the primal rows are:
+    // otherwise a reduced cost of 1e-13 made of terms of 1e-13 would count as a violation of 1.
+    let mut reduced = Vec::with_capacity(n);
+    let mut primal_size = 0.0;
+    let mut primal_objective = 0.0;
+    for j in 0..n {
+        let c = sigma * lp.cost[j];
+        let (mut aty, mut size) = (0.0, c.abs());
+        for (i, a) in lp.column(j) {
+            aty += a * y[i];
+            size += (a * y[i]).abs();
+        }
+        primal_objective += c * s.x[j];
+        primal_size += (c * s.x[j]).abs();
+        reduced.push((c - aty, size));
+    }
+    let floor = 1e-3 * reduced.iter().fold(0.0f64, |m, r| m.max(r.1));
+    let relative = |z: f64, size: f64| {
+        let size = size.max(floor);
+        if size > 0.0 {
+            z.abs() / size
+        } else {
+            f64::INFINITY
+        }
+    };
+    let mut dual = 0.0f64;
+    for (j, &(z, size)) in reduced.iter().enumerate() {
+        let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
+        if z > 0.0 {
+            if lo == f64::NEG_INFINITY {
+                dual = dual.max(relative(z, size));
+            } else {
+                dual_bound += z * lo;
+            }
+        } else if z < 0.0 {
+            if hi == f64::INFINITY {
+                dual = dual.max(relative(z, size));
+            } else {
+                dual_bound += z * hi;
+            }
+        }
+    }
+    let den = primal_size
+        .max(primal_objective.abs())
+        .max(dual_bound.abs());
+    let gap = if den > 0.0 {
+        (primal_objective - dual_bound).abs() / den
+    } else {
+        0.0
+    };
+    Some(Certificate {
+        primal: primal_violation(lp, &s.x),
+        dual,
+        gap: if gap.is_nan() { f64::INFINITY } else { gap },
+    })
+}
+
+/// The least relative decrease of the objective along a ray that certifies an unbounded
+/// optimum ([`certify_ray`]): `−σ cᵀd ≥ RAY_DECREASE · ‖c‖₁ ‖d‖∞`, so that round-off of a
+/// direction along which the objective is constant does not pass for a decrease.
+pub const RAY_DECREASE: f64 = 1e-6;
+
+/// The recession program of `lp`: its rows and columns with every finite bound moved to 0 —
+/// the directions `d` along which a feasible point stays feasible (`x + t d` for every
+/// `t ≥ 0`) — within the box `|d_j| ≤ 1`, which makes it feasible (`d = 0`) and bounded. Its
+/// optimum is below 0 exactly when the objective of `lp` (over a nonempty feasible set) is
+/// unbounded, and its solution is then a ray that certifies it ([`certify_ray`]).
+pub fn recession_program(lp: &LinearProgram) -> LinearProgram {
+    let mut r = lp.clone();
+    let rec = |b: f64| if b.is_finite() { 0.0 } else { b };
+    for i in 0..r.num_rows() {
+        r.row_lower[i] = rec(r.row_lower[i]);
+        r.row_upper[i] = rec(r.row_upper[i]);
+    }
+    for j in 0..r.num_cols() {
+        r.col_lower[j] = rec(r.col_lower[j]).max(-1.0);
+        r.col_upper[j] = rec(r.col_upper[j]).min(1.0);
+    }
+    r
+}
+
+/// The certificate of a ray `d` of `lp`: how far it is from a recession direction and how
+/// much the objective improves along it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayCertificate {
+    /// The largest relative violation of the recession program's rows and bounds by `d`
+    /// (measured as [`Certificate::primal`]).
+    pub violation: f64,
+    /// `−σ cᵀd / (‖c‖₁ ‖d‖∞)` (σ = −1 for a maximisation): at most 1, 0 or less where `d`
+    /// does not improve the objective.
+    pub decrease: f64,
+}
+
+impl RayCertificate {
+    /// `d` is a recession direction within [`CERTIFICATE_TOLERANCE`] and improves the
+    /// objective by at least [`RAY_DECREASE`]: with any feasible point, the objective of `lp`
+    /// is unbounded.
+    pub fn ok(&self) -> bool {
+        self.violation <= CERTIFICATE_TOLERANCE && self.decrease >= RAY_DECREASE
+    }
+}
+
+/// The certificate of the ray `d` for the objective of `lp` ([`RayCertificate`]).
+pub fn certify_ray(lp: &LinearProgram, d: &[f64]) -> RayCertificate {
+    if d.len() != lp.num_cols() || d.iter().any(|v| !v.is_finite()) {
+        return RayCertificate {
+            violation: f64::INFINITY,
+            decrease: 0.0,
+        };
+    }
+    let sigma = if lp.maximise { -1.0 } else { 1.0 };
+    // Relative to the objective's size times the ray's (not to `Σ |c_j d_j|`: a ray whose
+    // entries on the objective's columns are round-off, 1e-16, would improve it by 100 %).
+    let (mut cd, mut c1, mut dmax) = (0.0, 0.0, 0.0f64);
+    for (c, v) in lp.cost.iter().zip(d) {
+        cd += sigma * c * v;
+        c1 += c.abs();
+        dmax = dmax.max(v.abs());
+    }
+    let size = c1 * dmax;
+    RayCertificate {
+        violation: primal_violation(&recession_program(lp), d),
+        decrease: if size > 0.0 { -cd / size } else { 0.0 },
+    }
+}
+
+/// The elastic program of `lp`: its objective dropped, every row with a bound given a pair
+/// of slacks `s⁺ − s⁻` (each ≥ 0, cost 1), so that it is always feasible and its optimum is the
+/// least total violation of `lp`'s rows (its columns' bounds are kept).
+pub fn elastic_program(lp: &LinearProgram) -> LinearProgram {
+    let mut e = lp.clone();
+    e.maximise = false;
+    e.cost.iter_mut().for_each(|c| *c = 0.0);
+    for i in 0..lp.num_rows() {
+        if lp.row_lower[i].is_finite() || lp.row_upper[i].is_finite() {
+            e.add_column(1.0, 0.0, f64::INFINITY, [(i, 1.0)]);
+            e.add_column(1.0, 0.0, f64::INFINITY, [(i, -1.0)]);
+        }
+    }
+    e
+}
+
+/// A decision of feasibility with its certificate, either way ([`decide_feasibility`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FeasibilityDecision {
+    /// Whether `lp` has a point within the tolerance.
+    pub feasible: bool,
+    /// The least total violation of the rows, relative to the largest finite row bound.
+    pub violation: f64,
+    /// The certificate of the elastic program's optimum ([`certify`]): its duals are, where
+    /// the violation is positive, a Farkas certificate of infeasibility (row multipliers that
+    /// combine the rows into a contradiction with the columns' bounds).
+    pub certificate: Certificate,
+}
+
+/// Decide whether `lp` (its objective ignored) is feasible, with a certificate either way: the
+/// elastic program ([`elastic_program`]) solved with `opts` and certified. Its least total
+/// violation, relative to the largest finite row bound, above `tolerance` is infeasibility —
+/// certified by the elastic program's duals —, at most `tolerance` feasibility, with the
+/// point that attains it. `None` where the elastic program's optimum does not certify.
+pub fn decide_feasibility(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    tolerance: f64,
+) -> Result<Option<FeasibilityDecision>> {
+    let e = elastic_program(lp);
+    let s = super::solve(&e, opts)?;
+    let Some(certificate) = certify(&e, &s).filter(|c| c.ok()) else {
+        return Ok(None);
+    };
+    let scale = lp
+        .row_lower
+        .iter()
+        .chain(&lp.row_upper)
+        .filter(|b| b.is_finite())
+        .fold(0.0f64, |m, b| m.max(b.abs()));
+    let violation = if scale > 0.0 {
+        s.objective.max(0.0) / scale
+    } else if s.objective > 0.0 {
+        f64::INFINITY
+    } else {
+        0.0
+    };
+    Ok(Some(FeasibilityDecision {
+        feasible: violation <= tolerance,
+        violation,
+        certificate,
+    }))
+}
+
+/// [`Certificate::primal`].
+fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+    if x.len() != lp.num_cols() {
+        return f64::INFINITY;
+    }
+    let finite = |b: f64| if b.is_finite() { b.abs() } else { 0.0 };
+    let mut act = vec![0.0; lp.num_rows()];
+    let mut size = vec![0.0; lp.num_rows()];
+    for (j, &xj) in x.iter().enumerate() {
+        for (i, v) in lp.column(j) {
+            act[i] += v * xj;
+            size[i] += (v * xj).abs();
+        }
+    }
+    let rows: Vec<(f64, f64)> = (0..lp.num_rows())
+        .map(|i| {
+            let d = (lp.row_lower[i] - act[i])
+                .max(act[i] - lp.row_upper[i])
+                .max(0.0);
+            (
+                d,
+                size[i]
+                    .max(finite(lp.row_lower[i]))
+                    .max(finite(lp.row_upper[i])),
+            )
+        })
+        .collect();
+    let cols: Vec<(f64, f64)> = (0..lp.num_cols())
+        .map(|j| {
+            let d = (lp.col_lower[j] - x[j])
+                .max(x[j] - lp.col_upper[j])
+                .max(0.0);
+            (
+                d,
+                x[j].abs()
+                    .max(finite(lp.col_lower[j]))
+                    .max(finite(lp.col_upper[j])),
+            )
+        })
+        .collect();
+    let floor = 1e-3 * rows.iter().fold(0.0f64, |m, r| m.max(r.1));
+    let col_floor = 1e-3 * cols.iter().fold(0.0f64, |m, c| m.max(c.1));
+    let worst = |v: &[(f64, f64)], floor: f64| {
+        v.iter()
+            .map(|&(d, s)| {
+                if d == 0.0 {
+                    0.0
+                } else if s.max(floor) > 0.0 {
+                    d / s.max(floor)
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .fold(0.0f64, f64::max)
+    };
+    worst(&rows, floor).max(worst(&cols, col_floor))
+}
+
+/// What a sequence spent.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SequenceStats {
+    /// Programs solved.
+    pub solves: usize,
+    /// Of those, solved from the basis the previous one left.
+    pub warm: usize,
+    /// Warm runs that failed or did not certify, solved again from scratch.
+    pub restarts: usize,
+    /// Simplex and interior-point iterations.
+    pub iterations: i64,
+}
+
+/// A sequence of programs with one constraint matrix, solved with one solver instance where
+/// the backend keeps one (module documentation).
+pub struct Sequence {
+    /// The current program, in the user's units.
+    lp: LinearProgram,
+    opts: SolverOptions,
+    /// The row and column factors of the first program (fixed for the sequence: the matrix
+    /// does not change); the objective factor follows each objective.
+    scaling: Option<Scaling>,
+    session: Option<Persistent>,
+    /// A basis to start the next session from (of a solve from scratch, or of the program
+    /// replaced).
+    basis: Option<Basis>,
+    /// The basis the last solve ended with.
+    last_basis: Option<Basis>,
+    costs_changed: bool,
+    bounds_changed: bool,
+    /// Whether the next solve starts with the dual simplex from a handed-over basis (the
+    /// program was replaced or its bounds changed), rather than the primal simplex (only the
+    /// objective changed).
+    dual_start: bool,
+    pub stats: SequenceStats,
+}
+
+/// The power of two nearest to `x` in the logarithm (as [`Scaling`]'s factors).
+fn pow2(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    2f64.powi(x.log2().round().clamp(-1000.0, 1000.0) as i32)
+}
+
+impl Sequence {
+    /// A sequence starting with `lp`, solved with `opts` (the first program with its method;
+    /// HiGHS's simplex from the kept basis after it).
+    pub fn new(lp: LinearProgram, opts: &SolverOptions) -> Result<Sequence> {
+        if lp.cost.iter().chain(&lp.value).any(|v| !v.is_finite())
+            || lp
+                .row_lower
+                .iter()
+                .chain(&lp.row_upper)
+                .chain(&lp.col_lower)
+                .chain(&lp.col_upper)
+                .any(|b| b.is_nan())
+        {
+            return Err(Error::Solver(
+                "the LP has a NaN bound or a coefficient that is not finite".into(),
+            ));
+        }
+        let scaling = Scaling::needed(&lp, &[]);
+        Ok(Sequence {
+            lp,
+            opts: *opts,
+            scaling,
+            session: None,
+            basis: None,
+            last_basis: None,
+            costs_changed: false,
+            bounds_changed: false,
+            dual_start: true,
+            stats: SequenceStats::default(),
+        })
+    }
+
+    /// The current program.
+    pub fn program(&self) -> &LinearProgram {
+        &self.lp
+    }
+
+    /// Replace the whole program by `lp` (another matrix: a bisection on geometry). Where it
+    /// has the same shape, the next solve starts from the last basis (a new instance, the
+    /// basis handed over); otherwise from scratch.
+    pub fn replace(&mut self, lp: LinearProgram) -> Result<()> {
+        let same = lp.num_cols() == self.lp.num_cols() && lp.num_rows() == self.lp.num_rows();
+        let last = if same { self.last_basis.take() } else { None };
+        // (`Sequence::new` below starts with the dual simplex from the basis handed over.)
+        *self = Sequence {
+            stats: self.stats,
+            ..Sequence::new(lp, &self.opts)?
+        };
+        self.basis = last;
+        Ok(())
+    }
+
+    /// A new objective (`cost` per column) and sense.
+    pub fn set_objective(&mut self, cost: &[f64], direction: Direction) -> Result<()> {
+        if cost.len() != self.lp.num_cols() || cost.iter().any(|c| !c.is_finite()) {
+            return Err(Error::Solver(
+                "the new objective does not fit the program".into(),
+            ));
+        }
+        self.lp.cost.copy_from_slice(cost);
+        self.lp.maximise = direction == Direction::Maximise;
+        self.costs_changed = true;
+        Ok(())
+    }
+
+    /// New bounds of column `j`.
+    pub fn set_col_bounds(&mut self, j: usize, lo: f64, hi: f64) -> Result<()> {
+        if j >= self.lp.num_cols() || lo.is_nan() || hi.is_nan() {
+            return Err(Error::Solver(
+                "new column bounds do not fit the program".into(),
+            ));
+        }
+        self.lp.col_lower[j] = lo;
+        self.lp.col_upper[j] = hi;
+        self.bounds_changed = true;
+        Ok(())
+    }
+
+    /// New bounds of row `i`.
+    pub fn set_row_bounds(&mut self, i: usize, lo: f64, hi: f64) -> Result<()> {
+        if i >= self.lp.num_rows() || lo.is_nan() || hi.is_nan() {
+            return Err(Error::Solver(
+                "new row bounds do not fit the program".into(),
+            ));
+        }
+        self.lp.row_lower[i] = lo;
+        self.lp.row_upper[i] = hi;
+        self.bounds_changed = true;
+        Ok(())
+    }
+
+    /// The scaling of the current program: the sequence's row and column factors with the
+    /// objective factor of the current objective.
+    fn current_scaling(&self) -> Option<Scaling> {
+        self.scaling.as_ref().map(|s| {
+            let cmax = self
+                .lp
+                .cost
+                .iter()
+                .zip(&s.col)
+                .fold(0.0f64, |m, (c, f)| m.max((c * f).abs()));
+            Scaling {
+                objective: if cmax > 0.0 { pow2(1.0 / cmax) } else { 1.0 },
+                ..s.clone()
+            }
+        })
+    }
+
+    /// The program as HiGHS's instance holds it: scaled, and always minimised (a maximisation
+    /// is the minimisation of `−c`), so that a change of sense is a change of costs.
+    fn instance_program(&self, scaling: &Option<Scaling>) -> LinearProgram {
+        let mut p = match scaling {
+            Some(s) => s.apply(&self.lp),
+            None => self.lp.clone(),
+        };
+        if p.maximise {
+            p.cost.iter_mut().for_each(|c| *c = -*c);
+            p.maximise = false;
+        }
+        p
+    }
+
+    /// One run of the kept instance on the current program (making it if there is none);
+    /// the solution in the user's units and sense.
+    fn run_session(&mut self) -> Result<LpSolution> {
+        let scaling = self.current_scaling();
+        let p = self.instance_program(&scaling);
+        match &mut self.session {
+            Some(session) => {
+                if self.costs_changed {
+                    session.set_costs(&p.cost)?;
+                }
+                if self.bounds_changed {
+                    session.set_col_bounds(&p.col_lower, &p.col_upper)?;
+                    session.set_row_bounds(&p.row_lower, &p.row_upper)?;
+                }
+            }
+            None => {
+                let mut session = Persistent::new(&p, &self.opts)?;
+                if let Some(b) = self.basis.take() {
+                    session.set_basis(&b.adapted(&p), self.dual_start)?;
+                }
+                self.session = Some(session);
+            }
+        }
+        self.costs_changed = false;
+        self.bounds_changed = false;
+        let session = self.session.as_mut().expect("made above");
+        let warm = session.is_warm();
+        let solved = session.run()?;
+        self.stats.warm += usize::from(warm);
+        self.last_basis = solved.basis;
+        let mut s = solved.solution;
+        if self.lp.maximise && s.status == LpStatus::Optimal {
+            s.objective = -s.objective;
+            s.row_dual.iter_mut().for_each(|v| *v = -*v);
+            s.col_dual.iter_mut().for_each(|v| *v = -*v);
+        }
+        Ok(match scaling {
+            Some(sc) => sc.unscale(s),
+            None => s,
+        })
+    }
+
+    /// Solve the current program. Optimal solutions come certified ([`certify`]). A warm run
+    /// that fails or does not certify is tried once more in a new instance from the last good
+    /// basis (a fresh factorisation), then solved from scratch with the method's fallback
+    /// chain; whatever that gives is returned (the caller certifies it again where it needs
+    /// to: [`certify`]).
+    pub fn solve(&mut self) -> Result<LpSolution> {
+        self.stats.solves += 1;
+        self.choose_start();
+        if let Some(s) = self.try_warm() {
+            return Ok(s);
+        }
+        self.solve_cold()
+    }
+
+    /// Solve the current program without the fallback chain from scratch: the warm runs of
+    /// [`Sequence::solve`] (a certified optimum, or an infeasible or unbounded status), or for
+    /// a backend without a basis one solve with the method's chain; `None` where they fail or
+    /// do not certify (the caller then decides what the failure means — an unbounded program
+    /// fails in every method — before [`Sequence::solve_cold`]).
+    pub fn try_solve(&mut self) -> Option<LpSolution> {
+        self.stats.solves += 1;
+        self.choose_start();
+        if self.keeps_basis() {
+            self.try_warm()
+        } else {
+            self.solve_cold().ok()
+        }
+    }
+
+    fn keeps_basis(&self) -> bool {
+        self.opts.method.backend().name() == "highs"
+    }
+
+    fn choose_start(&mut self) {
+        if self.costs_changed && !self.bounds_changed && self.session.is_some() {
+            self.dual_start = false;
+        } else if self.bounds_changed {
+            self.dual_start = true;
+        }
+    }
+
+    /// The warm runs of [`Sequence::solve`]: `None` where they fail or do not certify.
+    fn try_warm(&mut self) -> Option<LpSolution> {
+        if !self.keeps_basis() {
+            return None;
+        }
+        let good = self.last_basis.clone();
+        for attempt in 0..2 {
+            match self.run_session() {
+                Ok(s) if s.status != LpStatus::Optimal => {
+                    self.stats.iterations += s.iterations;
+                    return Some(s);
+                }
+                Ok(s) if certify(&self.lp, &s).is_some_and(|c| c.ok()) => {
+                    self.stats.iterations += s.iterations;
+                    return Some(s);
+                }
+                _ => {
+                    self.session = None;
+                    self.stats.restarts += 1;
+                    match (&good, attempt) {
+                        // A new instance from the last good basis.
+                        (Some(b), 0) => self.basis = Some(b.clone()),
+                        _ => break,
+                    }
+                }
+            }
+        }
+        None
+    }
+
+    /// Solve the current program from scratch with the method's fallback chain
+    /// ([`super::solve_warm`]); the next run starts a new instance from its basis.
+    pub fn solve_cold(&mut self) -> Result<LpSolution> {
+        let mut basis = None;
+        let s = solve_warm(&self.lp, &self.opts, &mut basis)?;
+        self.stats.iterations += s.iterations;
+        self.session = None;
+        self.basis = basis.clone();
+        self.last_basis = basis;
+        self.costs_changed = false;
+        self.bounds_changed = false;
+        Ok(s)
+    }
+}

@@ -1,6 +1,7 @@
 //! The `voussoir` command: parse flags, call the library, write results. Nothing else.
 
 mod bench;
+mod bench_realistic;
 mod canonical;
 mod capacity;
 mod common;

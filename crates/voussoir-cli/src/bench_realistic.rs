@@ -209,7 +209,11 @@ pub struct Cell {
     pub admissibility: Option<f64>,
     /// The certificate's verdict where the command reports one; `None` where it reports none.
     pub certified: Option<bool>,
-    /// The key number (λ, work, factor, thickness, tilt) or the error line.
+    /// The key number: λ (limit), the dead loads' work (settle), λ at the largest settlement
+    /// (capacity), the geometric safety factor (safety), the thickness (least-thickness), the
+    /// tilt angle in degrees (tilt).
+    pub value: Option<f64>,
+    /// The key number in words, or the error line.
     pub result: String,
 }
 
@@ -292,6 +296,12 @@ fn run_child(
     let pid = child.id() as libc::pid_t;
     let mut timed_out = false;
     let (status, usage) = loop {
+        // The limit first: a cell is "timed out" once its time is up, whether or not it ends
+        // in the same instant.
+        if !timed_out && t0.elapsed().as_secs_f64() > limit {
+            timed_out = true;
+            let _ = child.kill();
+        }
         let mut st: libc::c_int = 0;
         // SAFETY: plain wait4 on our own child with valid out-pointers.
         let mut ru: libc::rusage = unsafe { std::mem::zeroed() };
@@ -304,10 +314,6 @@ fn run_child(
                 "waiting for the cell's process: {}",
                 std::io::Error::last_os_error()
             )));
-        }
-        if !timed_out && t0.elapsed().as_secs_f64() > limit {
-            timed_out = true;
-            let _ = child.kill();
         }
         std::thread::sleep(Duration::from_millis(20));
     };
@@ -385,6 +391,18 @@ fn read_result(analysis: &str, v: &Value, cell: &mut Cell) {
         cell.certified = c["ok"].as_bool();
     }
     let num = |x: &Value| x.as_f64().map(|f| format!("{f:.6}"));
+    cell.value = match analysis {
+        "limit" => r["load_multiplier"].as_f64(),
+        "settle" => r["work_dead_loads"].as_f64(),
+        "capacity" => r["curve"]
+            .as_array()
+            .and_then(|c| c.last())
+            .and_then(|p| p["load_multiplier"].as_f64()),
+        "safety" => r["geometric_safety_factor"].as_f64(),
+        "least-thickness" => r["thickness"].as_f64(),
+        "tilt" => v["tilt_angle"].as_f64(),
+        _ => None,
+    };
     cell.result = match analysis {
         "limit" => num(&r["load_multiplier"])
             .map(|l| format!("λ = {l}"))
@@ -454,6 +472,7 @@ fn na(m: &ModelDef, dim: u8, blocks: usize, analysis: &str, why: &str) -> Cell {
         gap: None,
         admissibility: None,
         certified: None,
+        value: None,
         result: why.into(),
     }
 }

@@ -223,6 +223,9 @@ pub struct Config {
     pub analyses: Option<Vec<String>>,
     pub max_blocks: Option<usize>,
     pub cell_time_limit: f64,
+    /// The limit counts the cell's CPU seconds (user + system) instead of wall-clock seconds:
+    /// on a machine shared with other work the wall clock measures the others too.
+    pub limit_cpu: bool,
     pub method: Option<String>,
     pub lact3: Option<PathBuf>,
     pub workdir: Option<PathBuf>,
@@ -273,6 +276,7 @@ fn run_child(
     args: &[String],
     dir: &Path,
     limit: f64,
+    limit_cpu: bool,
     stdout: Option<&Path>,
 ) -> Result<Run, Fail> {
     let out = match stdout {
@@ -298,7 +302,12 @@ fn run_child(
     let (status, usage) = loop {
         // The limit first: a cell is "timed out" once its time is up, whether or not it ends
         // in the same instant.
-        if !timed_out && t0.elapsed().as_secs_f64() > limit {
+        let spent = if limit_cpu {
+            cpu_seconds(pid)
+        } else {
+            t0.elapsed().as_secs_f64()
+        };
+        if !timed_out && spent > limit {
             timed_out = true;
             let _ = child.kill();
         }
@@ -329,6 +338,24 @@ fn run_child(
         peak_mib: usage.ru_maxrss as f64 / 1024.0,
         stderr: std::fs::read_to_string(&err_path).unwrap_or_default(),
     })
+}
+
+/// CPU seconds (user + system) a running process has used so far (`/proc/PID/stat`); 0 where
+/// that cannot be read.
+fn cpu_seconds(pid: libc::pid_t) -> f64 {
+    let Ok(stat) = std::fs::read_to_string(format!("/proc/{pid}/stat")) else {
+        return 0.0;
+    };
+    // Fields after the command name (which is in parentheses and may hold spaces): state is
+    // field 3, utime and stime fields 14 and 15.
+    let Some(rest) = stat.rsplit_once(')').map(|(_, r)| r) else {
+        return 0.0;
+    };
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = |i: usize| f.get(i).and_then(|v| v.parse::<f64>().ok()).unwrap_or(0.0);
+    // SAFETY: sysconf has no preconditions.
+    let hz = unsafe { libc::sysconf(libc::_SC_CLK_TCK) }.max(1) as f64;
+    (ticks(11) + ticks(12)) / hz
 }
 
 fn load_average() -> Option<f64> {
@@ -576,11 +603,12 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
     };
     std::fs::create_dir_all(&scratch).map_err(|e| Fail(format!("{}: {e}", scratch.display())))?;
     println!(
-        "Realistic models (issue 29 item 6): each cell is the command a user runs (its defaults{}), in a child process; wall and CPU seconds, the child's peak resident memory, the machine's 1-minute load average at the cell's start; cell time limit {} s. Scratch directory {}.\n",
+        "Realistic models (issue 29 item 6): each cell is the command a user runs (its defaults{}), in a child process; wall and CPU seconds, the child's peak resident memory, the machine's 1-minute load average at the cell's start; cell time limit {} s{}. Scratch directory {}.\n",
         cfg.method
             .as_ref()
             .map_or(String::new(), |m| format!(", --method {m}")),
         cfg.cell_time_limit,
+        if cfg.limit_cpu { " of CPU" } else { " (wall clock)" },
         scratch.display()
     );
     for m in &chosen {
@@ -622,7 +650,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
                     a
                 }
             };
-            let r = run_child(&exe, &args, &dir, 600.0, None)?;
+            let r = run_child(&exe, &args, &dir, 600.0, false, None)?;
             if r.status != Some(0) {
                 return Err(Fail(format!(
                     "{}: making the model failed: {}",
@@ -704,6 +732,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
                 &args,
                 &dir,
                 cfg.cell_time_limit,
+                cfg.limit_cpu,
                 Some(&dir.join(&out)),
             )?;
             cell.wall_s = Some(r.wall);
@@ -711,7 +740,11 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
             cell.peak_mib = Some(r.peak_mib);
             if r.timed_out {
                 cell.outcome = "timed out".into();
-                cell.result = format!("timed out after {} s", cfg.cell_time_limit);
+                cell.result = format!(
+                    "timed out after {} s{}",
+                    cfg.cell_time_limit,
+                    if cfg.limit_cpu { " of CPU" } else { "" }
+                );
             } else if r.status != Some(0) {
                 cell.outcome = "failed".into();
                 cell.result = r

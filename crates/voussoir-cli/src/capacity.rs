@@ -80,6 +80,14 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
             a.draw.check_2d()?;
             let facts = crate::report_inputs::facts_2d(&model);
             let st = input.structure_of(model, Some(&motion))?;
+            let opts = CapacityOptions {
+                solver: if nonassociative.is_some() {
+                    opts.solver
+                } else {
+                    input.solver_for(&st)
+                },
+                ..opts
+            };
             let r = capacity(&st, &opts)?;
             a.draw
                 .clone()
@@ -133,9 +141,9 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                     Crushing::Linear
                 },
                 solver: if nonassociative.is_some() {
-                    crate::common::iteration_solver(&a.model, &input.solver3d)
+                    crate::common::iteration_solver(&a.model, &input.solver_for(&st))
                 } else {
-                    input.solver3d
+                    input.solver_for(&st)
                 },
                 ..opts
             };

@@ -485,8 +485,11 @@ pub struct Input {
     /// `--existing-cracks`: the survey drawing and how to read it.
     pub existing_cracks: Option<(PathBuf, voussoir_io::survey::SurveyOptions)>,
     pub solver: SolverOptions,
-    /// The solver for a 3D model (interior point unless --method says otherwise).
+    /// The solver for a 3D model (the policy's 3D method, `lp::policy::default_method`,
+    /// unless --method says otherwise).
     pub solver3d: SolverOptions,
+    /// Whether --method was given (else the solver policy picks the method by the model).
+    pub method_named: bool,
     /// 3D: facets of the friction pyramid (None: the default), exact cone asked for.
     pub friction_facets: Option<usize>,
     pub exact_friction_cone: bool,
@@ -577,12 +580,13 @@ impl ModelArgs {
             solver: self.solver(),
             solver3d: SolverOptions {
                 method: if self.solver.method.is_none() {
-                    Method::Ipm
+                    voussoir::lp::policy::default_method(&voussoir::lp::policy::ProblemClass::of_dim(3))
                 } else {
                     self.solver().method
                 },
                 ..self.solver()
             },
+            method_named: self.solver.method.is_some(),
         })
     }
 
@@ -639,6 +643,13 @@ fn check_materials(friction: Option<f64>, fc: Option<f64>) -> Result<(), Fail> {
 }
 
 impl Input {
+    /// The solver options for structure `st`: with --method, that method; else the solver
+    /// policy's method for the structure's class (dimension, blocks, friction:
+    /// `voussoir::lp::policy`, docs/performance.md "Solver policy (session 11)").
+    pub fn solver_for<S: voussoir::structure::Assembly>(&self, st: &S) -> SolverOptions {
+        voussoir::lp::policy::options_for(st, &self.solver, self.method_named)
+    }
+
     /// Read a model of either dimension and apply the material overrides.
     pub fn load_any(&self) -> Result<AnyModel, Fail> {
         let mut m = self.dxf.read_any(&self.path)?.0;

@@ -63,15 +63,15 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 }
                 (Some(o), _, _) => voussoir::analysis::nonassociative::limit_nonassociative_result(
                     &st,
-                    &c.input.solver,
+                    &c.input.solver_for(&st),
                     &o,
                 )?,
                 // The canonical selection is among LP optima (the conic model's optimum is an
                 // interior point of a cone program: reported as solved).
                 (None, Some(o), Crushing::Linear) => {
-                    limit_canonical(&st, &c.input.solver, c.facets, &o)?
+                    limit_canonical(&st, &c.input.solver_for(&st), c.facets, &o)?
                 }
-                _ => limit_with(&st, &c.input.solver, c.crushing, c.facets)?,
+                _ => limit_with(&st, &c.input.solver_for(&st), c.crushing, c.facets)?,
             };
             a.draw
                 .with(&a.forces)
@@ -81,7 +81,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                         facts,
                         &st,
                         &c.input,
-                        &c.input.solver,
+                        &c.input.solver_for(&st),
                         crate::report_inputs::Laws {
                             cone: None,
                             crushing: Some(match c.crushing {
@@ -117,7 +117,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                 (Some(o), _, Crushing::Linear) => {
                     voussoir::analysis::nonassociative::limit_nonassociative_result(
                         &st,
-                        &c.input.solver3d,
+                        &c.input.solver_for(&st),
                         &o,
                     )?
                 }
@@ -126,9 +126,9 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                         .into(),
                 )),
                 (None, Some(o), Crushing::Linear) => {
-                    limit_canonical(&st, &c.input.solver3d, DEFAULT_FACETS, &o)?
+                    limit_canonical(&st, &c.input.solver_for(&st), DEFAULT_FACETS, &o)?
                 }
-                _ => limit_with(&st, &c.input.solver3d, cone, DEFAULT_FACETS)?,
+                _ => limit_with(&st, &c.input.solver_for(&st), cone, DEFAULT_FACETS)?,
             };
             a.draw
                 .with(&a.forces)
@@ -138,7 +138,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                         facts,
                         &st,
                         &c.input,
-                        &c.input.solver3d,
+                        &c.input.solver_for(&st),
                         crate::report_inputs::Laws {
                             cone: Some(crate::settle::friction_cone(&c.input, &st)),
                             crushing: None,

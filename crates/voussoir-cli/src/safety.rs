@@ -143,14 +143,14 @@ pub fn run(a: SafetyArgs) -> Result<(), Fail> {
         AnyModel::Planar(m) => {
             let facts = facts_2d(&m);
             let st = input.structure_of(m, None)?;
-            let r = safety(&st, &opts(input.solver))?;
+            let r = safety(&st, &opts(input.solver_for(&st)))?;
             if a.report.is_some() {
                 let mut i = report_inputs(
                     "safety",
                     facts,
                     &st,
                     &input,
-                    &input.solver,
+                    &input.solver_for(&st),
                     Laws::default(),
                     settings(&a),
                 );
@@ -162,14 +162,14 @@ pub fn run(a: SafetyArgs) -> Result<(), Fail> {
         AnyModel::Spatial(m) => {
             let facts = facts_3d(&m);
             let st = input.structure3d(m, None)?;
-            let r = safety(&st, &opts(input.solver3d))?;
+            let r = safety(&st, &opts(input.solver_for(&st)))?;
             if a.report.is_some() {
                 let mut i = report_inputs(
                     "safety",
                     facts,
                     &st,
                     &input,
-                    &input.solver3d,
+                    &input.solver_for(&st),
                     Laws {
                         cone: Some(crate::settle::friction_cone(&input, &st)),
                         ..Laws::default()
@@ -266,7 +266,9 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
         }
         Generated::Dome(x) => {
             if bracket.solver.method.is_none() {
-                solver.method = Method::Ipm;
+                solver.method = voussoir::lp::policy::default_method(
+                    &voussoir::lp::policy::ProblemClass::of_dim(3),
+                );
             }
             let spec = x.dome.spec();
             let make = |t: f64| {

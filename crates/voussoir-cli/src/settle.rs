@@ -102,19 +102,19 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
     ) {
         (SettlementForm::Both, Some(o), _) => settle_nonassociative(
             &st,
-            &common::iteration_solver(&a.model, &c.input.solver),
+            &common::iteration_solver(&a.model, &c.input.solver_for(&st)),
             c.crushing,
             c.facets,
             &o,
         )?,
-        (form, None, Some(o)) if plain => settle_canonical(&st, &c.input.solver, form, &o)?,
+        (form, None, Some(o)) if plain => settle_canonical(&st, &c.input.solver_for(&st), form, &o)?,
         (SettlementForm::Both, None, _) => {
-            settle_crushing(&st, &c.input.solver, c.crushing, c.facets)?
+            settle_crushing(&st, &c.input.solver_for(&st), c.crushing, c.facets)?
         }
-        (form, _, _) => settle_with(&st, &c.input.solver, form)?,
+        (form, _, _) => settle_with(&st, &c.input.solver_for(&st), form)?,
     };
     let solver = if a.crushing.non_associative_settlement().is_some() {
-        common::iteration_solver(&a.model, &c.input.solver)
+        common::iteration_solver(&a.model, &c.input.solver_for(&st))
     } else {
         c.input.solver
     };
@@ -177,7 +177,7 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
     let r = match (c.form, a.crushing.non_associative_settlement()) {
         (SettlementForm::Both, Some(o)) => settle_nonassociative(
             &st,
-            &common::iteration_solver(&a.model, &c.input.solver3d),
+            &common::iteration_solver(&a.model, &c.input.solver_for(&st)),
             Crushing::Linear,
             DEFAULT_FACETS,
             &o,
@@ -185,13 +185,13 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         // The exact friction cone: the force program with a second-order cone per frictional
         // point (Clarabel), the mechanism from its equilibrium duals.
         (SettlementForm::Both, None) if c.input.exact_friction_cone => {
-            settle_crushing(&st, &c.input.solver3d, Crushing::Conic, DEFAULT_FACETS)?
+            settle_crushing(&st, &c.input.solver_for(&st), Crushing::Conic, DEFAULT_FACETS)?
         }
-        (SettlementForm::Both, None) => settle(&st, &c.input.solver3d)?,
-        (form, _) => settle_with(&st, &c.input.solver3d, form)?,
+        (SettlementForm::Both, None) => settle(&st, &c.input.solver_for(&st))?,
+        (form, _) => settle_with(&st, &c.input.solver_for(&st), form)?,
     };
     let solver = if a.crushing.non_associative_settlement().is_some() {
-        common::iteration_solver(&a.model, &c.input.solver3d)
+        common::iteration_solver(&a.model, &c.input.solver_for(&st))
     } else {
         c.input.solver3d
     };

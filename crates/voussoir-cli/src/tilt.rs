@@ -50,9 +50,9 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                 None => format!("azimuth {az}°"),
             };
             let r = if input.exact_friction_cone {
-                voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &input.solver3d)?
+                voussoir::analysis::tilt::tilt_azimuth_exact(&st, az, &input.solver_for(&st))?
             } else {
-                voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver3d)?
+                voussoir::analysis::tilt::tilt_azimuth(&st, az, &input.solver_for(&st))?
             };
             a.draw
                 .with(&a.forces)
@@ -62,7 +62,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                         facts,
                         &st,
                         &input,
-                        &input.solver3d,
+                        &input.solver_for(&st),
                         crate::report_inputs::Laws {
                             cone: Some(crate::settle::friction_cone(&input, &st)),
                             ..Default::default()
@@ -104,7 +104,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
     a.draw.check_2d()?;
     let facts = crate::report_inputs::facts_2d(&model);
     let st = input.structure_of(model, None)?;
-    let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver)?;
+    let r = voussoir::analysis::tilt::tilt(&st, dir, &input.solver_for(&st))?;
     a.draw
         .with(&a.forces)
         .with_inputs(|| {
@@ -113,7 +113,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                 facts,
                 &st,
                 &input,
-                &input.solver,
+                &input.solver_for(&st),
                 crate::report_inputs::Laws::default(),
                 vec![(
                     "tilt towards".into(),

@@ -273,13 +273,25 @@ fn run_realistic(a: BenchArgs) -> Result<(), Fail> {
         .a;
     for (same, flag) in [
         (a.sizes == defaults.sizes, "--sizes"),
-        (a.analysis == defaults.analysis, "--analysis (use --analyses)"),
+        (
+            a.analysis == defaults.analysis,
+            "--analysis (use --analyses)",
+        ),
         (a.form == defaults.form, "--form"),
         (!a.no_presolve, "--no-presolve"),
-        (a.solver_tolerance == defaults.solver_tolerance, "--solver-tolerance"),
-        (a.time_limit.is_none(), "--time-limit (use --cell-time-limit)"),
+        (
+            a.solver_tolerance == defaults.solver_tolerance,
+            "--solver-tolerance",
+        ),
+        (
+            a.time_limit.is_none(),
+            "--time-limit (use --cell-time-limit)",
+        ),
         (a.friction_cone == defaults.friction_cone, "--friction-cone"),
-        (a.geometry_sizes == defaults.geometry_sizes, "--geometry-sizes"),
+        (
+            a.geometry_sizes == defaults.geometry_sizes,
+            "--geometry-sizes",
+        ),
     ] {
         if !same {
             return Err(Fail(format!(

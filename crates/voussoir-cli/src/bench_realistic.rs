@@ -65,7 +65,8 @@ fn s(v: &[&str]) -> Vec<String> {
 pub fn models() -> Vec<ModelDef> {
     let mut out = vec![ModelDef {
         name: "arch".into(),
-        description: "the paper's arch (gen arch: 64 voussoirs; live load on the whole span)".into(),
+        description: "the paper's arch (gen arch: 64 voussoirs; live load on the whole span)"
+            .into(),
         source: Source::Gen {
             args: s(&["arch"]),
             live: s(&["--live", "full"]),
@@ -76,13 +77,19 @@ pub fn models() -> Vec<ModelDef> {
         least_thickness: Some(s(&["arch"])),
     }];
     for (name, file, what) in [
-        ("lact3-arch", "arch_1.dxf", "LACT3 arch_1.dxf (25 voussoirs)"),
+        (
+            "lact3-arch",
+            "arch_1.dxf",
+            "LACT3 arch_1.dxf (25 voussoirs)",
+        ),
         ("lact3-portal", "Portal.dxf", "LACT3 Portal.dxf (40 blocks)"),
         ("lact3-wall", "wall.dxf", "LACT3 wall.dxf (182 bricks)"),
     ] {
         out.push(ModelDef {
             name: name.into(),
-            description: format!("{what}, tilting-table load; settle: the right half of the base 1 cm down"),
+            description: format!(
+                "{what}, tilting-table load; settle: the right half of the base 1 cm down"
+            ),
             source: Source::Dxf(file),
             flags: vec![],
             // Filled in once the drawing is imported (the base is cut at its middle).
@@ -171,7 +178,8 @@ pub fn models() -> Vec<ModelDef> {
     }
     out.push(ModelDef {
         name: "u-walls".into(),
-        description: "gen walls --plan U (bonded corners, out-of-plane load on the main wall)".into(),
+        description: "gen walls --plan U (bonded corners, out-of-plane load on the main wall)"
+            .into(),
         source: Source::Gen {
             args: s(&["walls", "--plan", "U"]),
             live: vec![],
@@ -286,8 +294,8 @@ fn run_child(
         None => Stdio::null(),
     };
     let err_path = dir.join("stderr.txt");
-    let err_file =
-        std::fs::File::create(&err_path).map_err(|e| Fail(format!("{}: {e}", err_path.display())))?;
+    let err_file = std::fs::File::create(&err_path)
+        .map_err(|e| Fail(format!("{}: {e}", err_path.display())))?;
     let t0 = Instant::now();
     let mut child = Command::new(exe)
         .args(args)
@@ -561,7 +569,10 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
             if !all.iter().any(|m| &m.name == n) {
                 return Err(Fail(format!(
                     "--models {n}: no such model (one of {})",
-                    all.iter().map(|m| m.name.as_str()).collect::<Vec<_>>().join(", ")
+                    all.iter()
+                        .map(|m| m.name.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 )));
             }
         }
@@ -589,7 +600,11 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
     let analyses: Vec<&str> = ANALYSES
         .iter()
         .copied()
-        .filter(|a| cfg.analyses.as_ref().is_none_or(|n| n.iter().any(|x| x == a)))
+        .filter(|a| {
+            cfg.analyses
+                .as_ref()
+                .is_none_or(|n| n.iter().any(|x| x == a))
+        })
         .collect();
     let lact3 = if chosen.iter().any(|m| matches!(m.source, Source::Dxf(_))) {
         Some(lact3_dir(&cfg.lact3)?)
@@ -599,7 +614,9 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
     let exe = std::env::current_exe().map_err(|e| Fail(format!("this binary's path: {e}")))?;
     let scratch = match &cfg.workdir {
         Some(d) => d.clone(),
-        None => std::env::temp_dir().join(format!("voussoir-bench-realistic-{}", std::process::id())),
+        None => {
+            std::env::temp_dir().join(format!("voussoir-bench-realistic-{}", std::process::id()))
+        }
     };
     std::fs::create_dir_all(&scratch).map_err(|e| Fail(format!("{}: {e}", scratch.display())))?;
     println!(
@@ -774,8 +791,8 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
         }
     }
     if let Some(path) = &cfg.output {
-        let json = serde_json::to_string_pretty(&cells)
-            .map_err(|e| Fail(format!("--output: {e}")))?;
+        let json =
+            serde_json::to_string_pretty(&cells).map_err(|e| Fail(format!("--output: {e}")))?;
         crate::outputs::stage(path, json.as_bytes())?;
         crate::outputs::commit()?;
     }

@@ -580,7 +580,9 @@ impl ModelArgs {
             solver: self.solver(),
             solver3d: SolverOptions {
                 method: if self.solver.method.is_none() {
-                    voussoir::lp::policy::default_method(&voussoir::lp::policy::ProblemClass::of_dim(3))
+                    voussoir::lp::policy::default_method(
+                        &voussoir::lp::policy::ProblemClass::of_dim(3),
+                    )
                 } else {
                     self.solver().method
                 },

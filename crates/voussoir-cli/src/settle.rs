@@ -107,7 +107,9 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
             c.facets,
             &o,
         )?,
-        (form, None, Some(o)) if plain => settle_canonical(&st, &c.input.solver_for(&st), form, &o)?,
+        (form, None, Some(o)) if plain => {
+            settle_canonical(&st, &c.input.solver_for(&st), form, &o)?
+        }
         (SettlementForm::Both, None, _) => {
             settle_crushing(&st, &c.input.solver_for(&st), c.crushing, c.facets)?
         }
@@ -184,9 +186,12 @@ fn run3d(a: &SettleCmdArgs, c: &SettleConfig, mut model: Model3d) -> Result<(), 
         )?,
         // The exact friction cone: the force program with a second-order cone per frictional
         // point (Clarabel), the mechanism from its equilibrium duals.
-        (SettlementForm::Both, None) if c.input.exact_friction_cone => {
-            settle_crushing(&st, &c.input.solver_for(&st), Crushing::Conic, DEFAULT_FACETS)?
-        }
+        (SettlementForm::Both, None) if c.input.exact_friction_cone => settle_crushing(
+            &st,
+            &c.input.solver_for(&st),
+            Crushing::Conic,
+            DEFAULT_FACETS,
+        )?,
         (SettlementForm::Both, None) => settle(&st, &c.input.solver_for(&st))?,
         (form, _) => settle_with(&st, &c.input.solver_for(&st), form)?,
     };

@@ -43,7 +43,12 @@ fn issue29_item6_realistic_bench_cells_are_certified_and_match_the_references() 
     // Two models × two analyses, in table order, each a row of the markdown table too.
     let got: Vec<(&str, &str)> = cells
         .iter()
-        .map(|c| (c["model"].as_str().unwrap(), c["analysis"].as_str().unwrap()))
+        .map(|c| {
+            (
+                c["model"].as_str().unwrap(),
+                c["analysis"].as_str().unwrap(),
+            )
+        })
         .collect();
     assert_eq!(
         got,
@@ -54,7 +59,10 @@ fn issue29_item6_realistic_bench_cells_are_certified_and_match_the_references() 
             ("lact3-arch", "settle")
         ]
     );
-    assert!(table.contains("| model | dim | blocks | analysis |"), "{table}");
+    assert!(
+        table.contains("| model | dim | blocks | analysis |"),
+        "{table}"
+    );
     assert_eq!(table.matches("\n| arch | 2D | 64 |").count(), 2, "{table}");
     for c in cells {
         let what = format!("{} × {}", c["model"], c["analysis"]);
@@ -65,8 +73,14 @@ fn issue29_item6_realistic_bench_cells_are_certified_and_match_the_references() 
         assert!(c["peak_mib"].as_f64().unwrap() > 1.0, "{what}");
         assert_eq!(c["dim"], 2, "{what}");
         // The method the solver layer reports; the default for 2D is a HiGHS method.
-        assert!(c["method"].as_str().is_some_and(|m| !m.is_empty()), "{what}");
-        assert!(c["command"].as_str().unwrap().starts_with("voussoir "), "{what}");
+        assert!(
+            c["method"].as_str().is_some_and(|m| !m.is_empty()),
+            "{what}"
+        );
+        assert!(
+            c["command"].as_str().unwrap().starts_with("voussoir "),
+            "{what}"
+        );
     }
     assert_eq!(cells[0]["blocks"], 64);
     assert_eq!(cells[2]["blocks"], 25);
@@ -119,7 +133,13 @@ fn issue29_item6_realistic_bench_flags_are_checked() {
     );
     refused(
         &dir,
-        &["bench", "--scenario", "realistic", "--analyses", "limit,fly"],
+        &[
+            "bench",
+            "--scenario",
+            "realistic",
+            "--analyses",
+            "limit,fly",
+        ],
         "--analyses fly: no such analysis",
     );
     refused(

@@ -81,7 +81,10 @@ fn issue29_item2_the_layer_certificate_accepts_every_ordinary_answer() {
 fn issue29_item1_the_policy_picks_by_class_and_only_without_a_named_method() {
     let st = paper_arch();
     let c = class_of(&st, Purpose::Optimise);
-    assert_eq!((c.dim, c.blocks, c.friction, c.cones), (2, 64, false, false));
+    assert_eq!(
+        (c.dim, c.blocks, c.friction, c.cones),
+        (2, 64, false, false)
+    );
     assert_eq!(default_method(&c), Method::DualSimplex);
     let named = SolverOptions {
         method: Method::Pdlp,
@@ -175,7 +178,11 @@ fn issue29_item2_vault_limit_with_ipm_no_crossover_is_certified() {
     assert!((l - 0.4346).abs() < 5e-5, "{l}");
     assert!(r.certificate.as_ref().unwrap().ok, "{}", r.message);
     if r.solver.method != Method::IpmNoCrossover {
-        assert!(r.message.contains("after ipm-no-crossover failed"), "{}", r.message);
+        assert!(
+            r.message.contains("after ipm-no-crossover failed"),
+            "{}",
+            r.message
+        );
     }
 }
 
@@ -210,6 +217,10 @@ fn issue29_item2_friction_wall_settle_with_primal_simplex_is_certified() {
     );
     assert!((w - wref).abs() <= 1e-6 * wref.abs(), "{w} against {wref}");
     if r.solver.method != Method::PrimalSimplex {
-        assert!(r.message.contains("after primal-simplex failed"), "{}", r.message);
+        assert!(
+            r.message.contains("after primal-simplex failed"),
+            "{}",
+            r.message
+        );
     }
 }

@@ -54,10 +54,7 @@ pub fn class_of<S: crate::structure::Assembly>(st: &S, purpose: Purpose) -> Prob
     ProblemClass {
         dim: if <S::D as Dim>::DOFS == 3 { 2 } else { 3 },
         blocks: st.num_blocks(),
-        friction: st
-            .contact_joints()
-            .iter()
-            .any(|j| j.law.friction.is_some()),
+        friction: st.contact_joints().iter().any(|j| j.law.friction.is_some()),
         cones: false,
         purpose,
     }
@@ -169,11 +166,7 @@ pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> 
         term(s.col_dual[j], lp.col_lower[j], lp.col_upper[j], s.x[j]);
     }
     let scale = scale.max(f64::MIN_POSITIVE);
-    let gap = ((primal - dual).abs() / scale).max(if cmax > 0.0 {
-        infeasible / cmax
-    } else {
-        0.0
-    });
+    let gap = ((primal - dual).abs() / scale).max(if cmax > 0.0 { infeasible / cmax } else { 0.0 });
     Some(LpCertificate {
         primal_violation,
         gap,
@@ -219,7 +212,10 @@ mod tests {
             };
             let s = solve(&lp, &o).unwrap();
             let c = certificate(&lp, &s).unwrap();
-            assert!(c.gap < 1e-8 && c.primal_violation < 1e-8, "{method:?} {c:?}");
+            assert!(
+                c.gap < 1e-8 && c.primal_violation < 1e-8,
+                "{method:?} {c:?}"
+            );
             assert!(check(&lp, &s).is_none());
             // Duals halved: the dual value is 1.4, the gap 1.4 / 4.2 (scale 2.8 + 1.4).
             let mut bad = s.clone();

@@ -132,7 +132,7 @@ pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> 
     {
         return None;
     }
-    let primal_violation = lp.relative_violation(&s.x);
+    let primal_violation = violation(lp, &s.x);
     // HiGHS's convention (Clarabel's duals are returned in it): c − Aᵀy = z. For a
     // minimisation the dual value is Σ y_i·(L_i if y_i ≥ 0 else U_i) + Σ z_j·(l_j or u_j
     // alike); for a maximisation the signs turn.
@@ -171,6 +171,64 @@ pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> 
         primal_violation,
         gap,
     })
+}
+
+/// The largest violation of a row or bound at `x`, relative to the size of that row's terms
+/// (or bound), with a floor of 1e-9 of the program's largest such size: a round-off value of
+/// 1e-17 below a bound of 0 is not a violation of 100 % (`LinearProgram::relative_violation`
+/// measures each entry on its own scale only).
+fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+    let mut act = vec![0.0; lp.num_rows()];
+    let mut size = vec![0.0; lp.num_rows()];
+    for (j, &xj) in x.iter().enumerate() {
+        for (i, v) in lp.column(j) {
+            act[i] += v * xj;
+            size[i] += (v * xj).abs();
+        }
+    }
+    let finite = |b: f64| if b.is_finite() { b.abs() } else { 0.0 };
+    let row_scale = |i: usize| {
+        size[i]
+            .max(finite(lp.row_lower[i]))
+            .max(finite(lp.row_upper[i]))
+    };
+    let col_scale = |j: usize| {
+        x[j].abs()
+            .max(finite(lp.col_lower[j]))
+            .max(finite(lp.col_upper[j]))
+    };
+    let floor_r = 1e-9 * (0..lp.num_rows()).map(row_scale).fold(0.0, f64::max);
+    let floor_c = 1e-9 * (0..lp.num_cols()).map(col_scale).fold(0.0, f64::max);
+    let over = |v: f64, lo: f64, hi: f64, s: f64| {
+        let d = (lo - v).max(v - hi).max(0.0);
+        if d == 0.0 {
+            0.0
+        } else if s > 0.0 {
+            d / s
+        } else {
+            f64::INFINITY
+        }
+    };
+    let rows = (0..lp.num_rows())
+        .map(|i| {
+            over(
+                act[i],
+                lp.row_lower[i],
+                lp.row_upper[i],
+                row_scale(i).max(floor_r),
+            )
+        })
+        .fold(0.0f64, f64::max);
+    (0..lp.num_cols())
+        .map(|j| {
+            over(
+                x[j],
+                lp.col_lower[j],
+                lp.col_upper[j],
+                col_scale(j).max(floor_c),
+            )
+        })
+        .fold(rows, f64::max)
 }
 
 /// Why an answer does not count (`None`: it does): an optimal point whose certificate exceeds

@@ -179,7 +179,7 @@ fn issue29_item2_vault_limit_with_ipm_no_crossover_is_certified() {
     assert!(r.certificate.as_ref().unwrap().ok, "{}", r.message);
     if r.solver.method != Method::IpmNoCrossover {
         assert!(
-            r.message.contains("after ipm-no-crossover failed"),
+            r.message.contains("after ipm-no-crossover"),
             "{}",
             r.message
         );
@@ -218,7 +218,7 @@ fn issue29_item2_friction_wall_settle_with_primal_simplex_is_certified() {
     assert!((w - wref).abs() <= 1e-6 * wref.abs(), "{w} against {wref}");
     if r.solver.method != Method::PrimalSimplex {
         assert!(
-            r.message.contains("after primal-simplex failed"),
+            r.message.contains("after primal-simplex"),
             "{}",
             r.message
         );

@@ -433,7 +433,8 @@ pub struct Input {
     /// `--existing-cracks`: the survey drawing and how to read it.
     pub existing_cracks: Option<(PathBuf, voussoir_io::survey::SurveyOptions)>,
     pub solver: SolverOptions,
-    /// The solver for a 3D model (interior point unless --method says otherwise), for the
+    /// The solver for a 3D model (the solver policy's method of a 3D model,
+    /// `voussoir::request::default_method(3)`, unless --method says otherwise), for the
     /// commands not on the request layer yet (whose requests choose it themselves).
     #[allow(dead_code)]
     pub solver3d: SolverOptions,

@@ -17,6 +17,7 @@
 
 pub mod clarabel;
 pub mod highs;
+pub mod policy;
 pub mod scale;
 
 pub use scale::Scaling;
@@ -485,7 +486,7 @@ fn check_numbers(lp: &LinearProgram) -> Result<()> {
 /// The program is solved in nondimensional form ([`scale`]); the solution is in its units.
 pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
-    with_fallback(opts, |o| solve_once(lp, o))
+    with_fallback(lp, opts, |o| solve_once(lp, o))
 }
 
 /// The methods tried, in order, when a solve with `method` fails (the backend's error, a
@@ -506,13 +507,20 @@ pub fn fallback_chain(method: Method) -> &'static [Method] {
     }
 }
 
-/// Run `solve` with each method of [`fallback_chain`] until one answers; the solution states
-/// its method and what failed before it. Only when every method fails: one line naming them.
+/// Run `solve` with each method of [`fallback_chain`] until one answers with a certified
+/// optimum ([`policy::check`]: rows satisfied and a duality gap within
+/// [`policy::CERTIFICATE_TOLERANCE`]) or a status (infeasible, unbounded); the solution states
+/// its method and what failed before it. An optimum that is not certified moves on along the
+/// chain like a failure; where no later method does better, the first such answer is returned
+/// (the analyses then report it as not certified). Only when every method fails: one line
+/// naming them.
 fn with_fallback(
+    lp: &LinearProgram,
     opts: &SolverOptions,
     mut solve: impl FnMut(&SolverOptions) -> Result<LpSolution>,
 ) -> Result<LpSolution> {
     let mut tried = Vec::new();
+    let mut uncertified: Option<(usize, LpSolution)> = None;
     for (k, &method) in fallback_chain(opts.method).iter().enumerate() {
         let o = SolverOptions {
             method,
@@ -522,11 +530,26 @@ fn with_fallback(
         match solve(&o) {
             Ok(mut s) => {
                 s.method = method;
-                s.tried = tried;
-                return Ok(s);
+                match policy::check(lp, &s) {
+                    None => {
+                        s.tried = tried;
+                        return Ok(s);
+                    }
+                    Some(why) => {
+                        tried.push(format!("{}: {why}", method.name()));
+                        if uncertified.is_none() {
+                            uncertified = Some((tried.len() - 1, s));
+                        }
+                    }
+                }
             }
             Err(e) => tried.push(format!("{}: {}", method.name(), e.to_string().trim())),
         }
+    }
+    if let Some((own, mut s)) = uncertified {
+        tried.remove(own);
+        s.tried = tried;
+        return Ok(s);
     }
     Err(Error::Solver(format!(
         "every method failed: {}",
@@ -630,7 +653,7 @@ pub fn solve_warm(
     basis: &mut Option<Basis>,
 ) -> Result<LpSolution> {
     check_numbers(lp)?;
-    with_fallback(opts, |o| solve_warm_once(lp, o, basis))
+    with_fallback(lp, opts, |o| solve_warm_once(lp, o, basis))
 }
 
 /// [`solve_warm`] with `opts.method` alone.

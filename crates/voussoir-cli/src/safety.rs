@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use voussoir::analysis::safety::{least_thickness, LeastThickness, SafetyResult};
 use voussoir::generate::RadiusAt;
-use voussoir::lp::Method;
+use voussoir::lp::policy::{ProblemClass, Purpose};
 use voussoir::request::{Analysis, AnyResult, SafetyRequest, SupportMotion};
 use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
 
@@ -230,7 +230,7 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
     let lo = bracket.lower.unwrap_or(radius / 1000.0);
     let hi = bracket.upper.unwrap_or(radius / 2.0);
     let build = BuildOptions::default();
-    // The solver: dual simplex for the 2D arch, interior point for the 3D dome (as for models).
+    // The solver: the solver policy's method of the 2D arch and of the 3D dome (as for models).
     let mut solver = bracket.solver.options();
     let (generator, found, model_json) = match &g {
         Generated::Arch(x) => {
@@ -253,7 +253,11 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
         }
         Generated::Dome(x) => {
             if bracket.solver.method.is_none() {
-                solver.method = Method::Ipm;
+                // The solver policy's method of a 3D feasibility question.
+                solver.method = voussoir::lp::policy::default_method(&ProblemClass {
+                    purpose: Purpose::Feasibility,
+                    ..ProblemClass::of_dim(3)
+                });
             }
             let spec = x.dome.spec();
             let make = |t: f64| {
@@ -321,6 +325,15 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             .collect();
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
-    let _ = writeln!(s, "{} LP solves", r.solves);
+    // The method that answered the programs, and any fallback (the JSON's `solver`).
+    let _ = writeln!(
+        s,
+        "{} LP solves ({}{})",
+        r.solves,
+        r.solver.method.name(),
+        r.solver
+            .fallback_note()
+            .map_or(String::new(), |n| format!("; {n}"))
+    );
     s
 }

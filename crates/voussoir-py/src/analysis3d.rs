@@ -26,7 +26,7 @@ use voussoir::{BuildOptions, Structure, Structure3d};
 #[pyo3(from_item_all)]
 pub struct Common3d {
     pub tolerance: Option<f64>,
-    /// None: the 3D default (interior point with crossover), as the CLI.
+    /// None: the solver policy's 3D method, as the CLI.
     pub method: Option<String>,
     pub friction: Option<f64>,
     pub compressive_strength: Option<f64>,
@@ -58,8 +58,7 @@ fn method_of(m: &str) -> Result<Method, Fail> {
 }
 
 /// The solver of a model of `dims` dimensions: `method`, else the request layer's default of
-/// the dimension ([`voussoir::request::default_method`]: dual simplex in 2D, interior point in
-/// 3D, as the CLI).
+/// the dimension ([`voussoir::request::default_method`], the solver policy's, as the CLI).
 fn solver_of(method: Option<&str>, dims: usize) -> Result<SolverOptions, Fail> {
     let method = match method {
         Some(m) => method_of(m)?,

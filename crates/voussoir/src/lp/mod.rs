@@ -322,6 +322,38 @@ impl SolverInfo {
         })
     }
 
+    /// How the programs of an analysis of many solves were solved with `opts`: the method that
+    /// answered most of them (the requested one where none was solved), and every distinct
+    /// fallback note in order of first appearance.
+    pub fn of_solves(opts: &SolverOptions, solves: &[SolveRecord]) -> SolverInfo {
+        let mut count: Vec<(Method, usize)> = Vec::new();
+        let mut tried: Vec<String> = Vec::new();
+        for s in solves {
+            match count.iter_mut().find(|(m, _)| *m == s.method) {
+                Some((_, n)) => *n += 1,
+                None => count.push((s.method, 1)),
+            }
+            for t in &s.tried {
+                if !tried.contains(t) {
+                    tried.push(t.clone());
+                }
+            }
+        }
+        // The first of the most frequent (deterministic: in order of first appearance).
+        let method = count
+            .iter()
+            .fold(None::<(Method, usize)>, |best, &(m, n)| match best {
+                Some((_, b)) if b >= n => best,
+                _ => Some((m, n)),
+            })
+            .map_or(opts.method, |(m, _)| m);
+        SolverInfo {
+            solver: method.backend().name().to_string(),
+            method,
+            tried,
+        }
+    }
+
     /// The methods tried by both of two solves (a settlement's two programs), in order.
     pub fn merged(mut self, other: &SolverInfo) -> SolverInfo {
         for t in &other.tried {
@@ -533,6 +565,7 @@ fn with_fallback(
                 match policy::check(lp, &s) {
                     None => {
                         s.tried = tried;
+                        record(method, &s.tried);
                         return Ok(s);
                     }
                     Some(why) => {
@@ -549,12 +582,52 @@ fn with_fallback(
     if let Some((own, mut s)) = uncertified {
         tried.remove(own);
         s.tried = tried;
+        record(s.method, &s.tried);
         return Ok(s);
     }
     Err(Error::Solver(format!(
         "every method failed: {}",
         tried.join("; ")
     )))
+}
+
+/// The method and fallbacks of one solve, as [`collecting`] gathers them.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SolveRecord {
+    pub method: Method,
+    /// The methods that failed before `method` answered (`method: why`).
+    pub tried: Vec<String>,
+}
+
+thread_local! {
+    static SOLVES: std::cell::RefCell<Option<Vec<SolveRecord>>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+fn record(method: Method, tried: &[String]) {
+    SOLVES.with(|c| {
+        if let Some(v) = c.borrow_mut().as_mut() {
+            v.push(SolveRecord {
+                method,
+                tried: tried.to_vec(),
+            });
+        }
+    });
+}
+
+/// Run `f`, gathering the method and fallbacks of every solve it makes on this thread (for an
+/// analysis of many programs, whose result states how they were solved:
+/// [`SolverInfo::of_solves`]). Nested calls gather for each level.
+pub fn collecting<T>(f: impl FnOnce() -> T) -> (T, Vec<SolveRecord>) {
+    let outer = SOLVES.with(|c| c.borrow_mut().replace(Vec::new()));
+    let out = f();
+    let mine = SOLVES.with(|c| c.replace(outer)).unwrap_or_default();
+    SOLVES.with(|c| {
+        if let Some(v) = c.borrow_mut().as_mut() {
+            v.extend(mine.iter().cloned());
+        }
+    });
+    (out, mine)
 }
 
 /// [`solve`] with `opts.method` alone.

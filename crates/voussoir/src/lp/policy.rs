@@ -18,6 +18,9 @@ pub enum Purpose {
     Feasibility,
     /// A stage of the canonical selection (re-optimisation over the optimal face).
     CanonicalStage,
+    /// An iterate of the non-associative friction iteration (a sequence of LPs whose solutions
+    /// must move smoothly from one iterate to the next).
+    Iteration,
 }
 
 /// The class of a program, as far as the choice of method goes.
@@ -60,46 +63,69 @@ pub fn class_of<S: crate::structure::Assembly>(st: &S, purpose: Purpose) -> Prob
     }
 }
 
-/// The solver options for structure `st` when the user named no method: `opts` with the
-/// method of [`default_method`]; with a method named, `opts` unchanged.
+/// The solver options of a program of `class`: with a method named (`named`), that method;
+/// else [`default_method`]. `base` gives the other settings (log, tolerances). An iterate of the
+/// non-associative iteration without a named method is solved to a tighter tolerance (1e-10),
+/// so that every iterate is certified.
+pub fn options(
+    class: &ProblemClass,
+    named: Option<Method>,
+    base: &super::SolverOptions,
+) -> super::SolverOptions {
+    match named {
+        Some(method) => super::SolverOptions { method, ..*base },
+        None if class.purpose == Purpose::Iteration => super::SolverOptions {
+            method: default_method(class),
+            feasibility_tolerance: base.feasibility_tolerance.min(1e-10),
+            ..*base
+        },
+        None => super::SolverOptions {
+            method: default_method(class),
+            ..*base
+        },
+    }
+}
+
+/// The solver options for structure `st` when the user named no method (`method_named`
+/// false): `opts` with the method of [`default_method`] for the structure's class; with a
+/// method named, `opts` unchanged.
 pub fn options_for<S: crate::structure::Assembly>(
     st: &S,
     opts: &super::SolverOptions,
     method_named: bool,
 ) -> super::SolverOptions {
-    if method_named {
-        return *opts;
-    }
-    super::SolverOptions {
-        method: default_method(&class_of(st, Purpose::Optimise)),
-        ..*opts
-    }
+    options(
+        &class_of(st, Purpose::Optimise),
+        method_named.then_some(opts.method),
+        opts,
+    )
 }
 
-/// The largest 2D model the dual simplex solves by default; above it HiGHS's interior point with
-/// crossover (docs/performance.md, session 11: the façade grid of 2,654 blocks, limit: dual
-/// simplex 41 CPU s, IPM 15 CPU s, Clarabel failed on it; the simplex grows as n^2.4 on these
-/// degenerate programs).
+/// The largest 2D model the dual simplex solves by default; above it HiGHS's interior point
+/// with crossover (docs/performance.md, "Solver policy (session 12)").
 pub const SIMPLEX_MAX_BLOCKS_2D: usize = 2_000;
 
-/// The method used when the user names none. The table (docs/performance.md, "Solver policy
-/// (session 11)", every row measured):
+/// The method used when the user names none: the one that measured fastest and certified in
+/// each class (docs/performance.md, "Solver policy (session 12)", every row measured on the
+/// 2-core machine):
 ///
 /// | class | method | why |
 /// |---|---|---|
 /// | cones | Clarabel | the only backend with cones |
-/// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges), fastest on small models |
-/// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 2.7× faster than the dual simplex on the 2,654-block façade, where Clarabel failed; ends on a vertex |
-/// | 3D | Clarabel | 4–6× faster than HiGHS's IPM on the vault and the 24 × 24 dome (whose dual simplex ran > 45 CPU s); HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
-/// | canonical stage | dual simplex | the stages need vertices and bases (the selection itself picks its own stage methods) |
+/// | non-associative iterate | Clarabel | centres of optimal faces: the iteration converges (docs/joint-laws.md) |
+/// | canonical stage | dual simplex | the stages need vertices and bases |
+/// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges); as fast as any on these sizes |
+/// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 80 × 40 wall (3,220 blocks): `limit` 11.8 CPU s (dual simplex > 79, Clarabel not certified: duality gap 1.0, answered by the IPM after it), `settle --raw` 6.3 (dual simplex 8.0, Clarabel 8.5 with its fallback); a vertex |
+/// | 3D | Clarabel | vault `limit` 0.13 CPU s (dual simplex 0.53, IPM 1.16), `settle` 0.13 (0.51, 0.56); dome 12 × 24 `limit` 0.30 (IPM 1.33, dual simplex > 97); `safety` within 1.3× of the fastest; HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
 ///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
-/// uncertified, the next method answers.
+/// uncertified, the next method answers, and the result says so.
 pub fn default_method(class: &ProblemClass) -> Method {
     if class.cones {
         return Method::Clarabel;
     }
     match (class.purpose, class.dim) {
+        (Purpose::Iteration, _) => Method::Clarabel,
         (Purpose::CanonicalStage, _) => Method::DualSimplex,
         (_, 3) => Method::Clarabel,
         _ if class.blocks > SIMPLEX_MAX_BLOCKS_2D => Method::Ipm,
@@ -165,7 +191,12 @@ pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> 
     for j in 0..lp.num_cols() {
         term(s.col_dual[j], lp.col_lower[j], lp.col_upper[j], s.x[j]);
     }
-    let scale = scale.max(f64::MIN_POSITIVE);
+    // An optimum of 0 (a settlement that needs no work) whose terms all vanish: the gap is
+    // measured against the largest cost times the largest value instead (measured: Clarabel's
+    // settlement of an 810-block wall, |cᵀx − D| = 1e-12 against terms of 1e-12, a "gap" of
+    // 0.77 on the terms alone).
+    let xmax = s.x.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let scale = scale.max(cmax * xmax).max(f64::MIN_POSITIVE);
     let gap = ((primal - dual).abs() / scale).max(if cmax > 0.0 { infeasible / cmax } else { 0.0 });
     Some(LpCertificate {
         primal_violation,
@@ -173,10 +204,13 @@ pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> 
     })
 }
 
-/// The largest violation of a row or bound at `x`, relative to the size of that row's terms
-/// (or bound), with a floor of 1e-9 of the program's largest such size: a round-off value of
-/// 1e-17 below a bound of 0 is not a violation of 100 % (`LinearProgram::relative_violation`
-/// measures each entry on its own scale only).
+/// The largest violation of a row or bound at `x`, relative to the program's scale: a row's
+/// violation over the largest row size (`Σ_j |a_ij x_j|` or a finite bound) of the program, a
+/// bound's over the largest column size — the scaled ∞-norm residual interior-point methods
+/// are stopped on. Measuring each row on its own scale
+/// (`LinearProgram::relative_violation`) rejects every interior-point answer with a residual
+/// of 1e-10 of the loads on a row whose terms nearly vanish (measured: Clarabel's settlements
+/// of the paper's arch, 1.8e-2; the vault's, 5.6e-2, whose analyses certify them).
 fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
     let mut act = vec![0.0; lp.num_rows()];
     let mut size = vec![0.0; lp.num_rows()];
@@ -187,18 +221,20 @@ fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
         }
     }
     let finite = |b: f64| if b.is_finite() { b.abs() } else { 0.0 };
-    let row_scale = |i: usize| {
-        size[i]
-            .max(finite(lp.row_lower[i]))
-            .max(finite(lp.row_upper[i]))
-    };
-    let col_scale = |j: usize| {
-        x[j].abs()
-            .max(finite(lp.col_lower[j]))
-            .max(finite(lp.col_upper[j]))
-    };
-    let floor_r = 1e-9 * (0..lp.num_rows()).map(row_scale).fold(0.0, f64::max);
-    let floor_c = 1e-9 * (0..lp.num_cols()).map(col_scale).fold(0.0, f64::max);
+    let row_scale = (0..lp.num_rows())
+        .map(|i| {
+            size[i]
+                .max(finite(lp.row_lower[i]))
+                .max(finite(lp.row_upper[i]))
+        })
+        .fold(0.0, f64::max);
+    let col_scale = (0..lp.num_cols())
+        .map(|j| {
+            x[j].abs()
+                .max(finite(lp.col_lower[j]))
+                .max(finite(lp.col_upper[j]))
+        })
+        .fold(0.0, f64::max);
     let over = |v: f64, lo: f64, hi: f64, s: f64| {
         let d = (lo - v).max(v - hi).max(0.0);
         if d == 0.0 {
@@ -210,24 +246,10 @@ fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
         }
     };
     let rows = (0..lp.num_rows())
-        .map(|i| {
-            over(
-                act[i],
-                lp.row_lower[i],
-                lp.row_upper[i],
-                row_scale(i).max(floor_r),
-            )
-        })
+        .map(|i| over(act[i], lp.row_lower[i], lp.row_upper[i], row_scale))
         .fold(0.0f64, f64::max);
     (0..lp.num_cols())
-        .map(|j| {
-            over(
-                x[j],
-                lp.col_lower[j],
-                lp.col_upper[j],
-                col_scale(j).max(floor_c),
-            )
-        })
+        .map(|j| over(x[j], lp.col_lower[j], lp.col_upper[j], col_scale))
         .fold(rows, f64::max)
 }
 

@@ -119,7 +119,7 @@ impl SettleRequest {
         req: &Request,
         dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
-        let solver = req.solver.options(dims);
+        let solver = req.solver.options(&super::class(st, req));
         let both = self.settlement_form == SettlementForm::Both;
         let (crushing, facets) = if dims == 3 {
             let cone = if req.model.exact_cone() {
@@ -132,7 +132,7 @@ impl SettleRequest {
             (self.crushing, self.facets())
         };
         if self.non_associative && both {
-            let solver = req.solver.iteration(dims);
+            let solver = req.solver.iteration(&super::class(st, req));
             let r = settle_nonassociative(
                 st,
                 &solver,

@@ -315,7 +315,12 @@ impl SolverInfo {
                 self.tried
                     .iter()
                     .map(|t| t.split(':').next().unwrap_or(t))
-                    .collect::<Vec<_>>()
+                    .fold(Vec::<&str>::new(), |mut v, m| {
+                        if !v.contains(&m) {
+                            v.push(m);
+                        }
+                        v
+                    })
                     .join(", "),
                 self.tried.join("; ")
             )
@@ -324,7 +329,8 @@ impl SolverInfo {
 
     /// How the programs of an analysis of many solves were solved with `opts`: the method that
     /// answered most of them (the requested one where none was solved), and every distinct
-    /// fallback note in order of first appearance.
+    /// fallback note in order of first appearance, each with the method that answered after it
+    /// (`clarabel: not certified (…) → ipm`).
     pub fn of_solves(opts: &SolverOptions, solves: &[SolveRecord]) -> SolverInfo {
         let mut count: Vec<(Method, usize)> = Vec::new();
         let mut tried: Vec<String> = Vec::new();
@@ -334,8 +340,10 @@ impl SolverInfo {
                 None => count.push((s.method, 1)),
             }
             for t in &s.tried {
-                if !tried.contains(t) {
-                    tried.push(t.clone());
+                // Which method answered after this failure (the programs may differ).
+                let t = format!("{t} → {}", s.method.name());
+                if !tried.contains(&t) {
+                    tried.push(t);
                 }
             }
         }

@@ -222,8 +222,7 @@ fn issue29_item2_dome_4x8_safety_without_ranges_with_the_default_method() {
         }),
         None,
     );
-    let AnyResult::Spatial(run) = request::run(&AnyModel::Spatial(d.clone()), &req).unwrap()
-    else {
+    let AnyResult::Spatial(run) = request::run(&AnyModel::Spatial(d.clone()), &req).unwrap() else {
         panic!("a 3D model gives a 3D result")
     };
     let default = run.output.safety().unwrap();
@@ -366,11 +365,7 @@ fn issue29_item2_friction_wall_settle_with_primal_simplex_falls_back() {
     );
     assert!((w - wref).abs() <= 1e-6 * wref.abs(), "{w} against {wref}");
     if r.solver.method != Method::PrimalSimplex {
-        assert!(
-            r.message.contains("after primal-simplex"),
-            "{}",
-            r.message
-        );
+        assert!(r.message.contains("after primal-simplex"), "{}", r.message);
         assert!(r.solver.tried[0].starts_with("primal-simplex:"));
     }
 }

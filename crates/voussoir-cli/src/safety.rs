@@ -325,15 +325,18 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             .collect();
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
-    // The method that answered the programs, and any fallback (the JSON's `solver`).
+    // The method that answered most programs, and every fallback taken, each with the method
+    // that answered after it (the JSON's `solver`).
     let _ = writeln!(
         s,
         "{} LP solves ({}{})",
         r.solves,
         r.solver.method.name(),
-        r.solver
-            .fallback_note()
-            .map_or(String::new(), |n| format!("; {n}"))
+        if r.solver.tried.is_empty() {
+            String::new()
+        } else {
+            format!("; fallbacks: {}", r.solver.tried.join("; "))
+        }
     );
     s
 }

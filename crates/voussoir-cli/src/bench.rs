@@ -63,6 +63,12 @@ pub enum BenchScenario {
     /// 3D U-shaped wall with returns on one ground slab: out-of-plane load on the main wall
     /// (limit only).
     WallReturns,
+    /// The models engineers build (the paper's arch, the LACT3 drawings, the façade, the vault,
+    /// domes, U walls) × limit, settle, capacity, safety, least-thickness, tilt, each cell the
+    /// command as a user runs it, in a child process (docs/performance.md). Alone; takes
+    /// --models, --analyses, --max-blocks, --cell-time-limit, --lact3, --workdir, --output and
+    /// --method.
+    Realistic,
 }
 
 #[derive(Args)]
@@ -99,6 +105,36 @@ pub struct BenchArgs {
     /// Also time structure building and interface detection alone (no solve) at these sizes.
     #[arg(long, value_delimiter = ',', default_value = "100000")]
     pub geometry_sizes: Vec<usize>,
+    /// --scenario realistic: the models to run, comma-separated (default: all; names in
+    /// docs/performance.md, e.g. arch,lact3-arch,facade-rb-0.5,dome-24x24).
+    #[arg(long, value_delimiter = ',')]
+    pub models: Option<Vec<String>>,
+    /// --scenario realistic: the analyses to run, comma-separated (default: limit, settle,
+    /// capacity, safety, least-thickness, tilt).
+    #[arg(long, value_delimiter = ',')]
+    pub analyses: Option<Vec<String>>,
+    /// --scenario realistic: skip (record as skipped) models with more blocks than this.
+    #[arg(long, value_name = "N")]
+    pub max_blocks: Option<usize>,
+    /// --scenario realistic: seconds allowed to each cell; a cell still running then is killed
+    /// and recorded as "timed out after S s" [default: 600].
+    #[arg(long, value_name = "S")]
+    pub cell_time_limit: Option<f64>,
+    /// --scenario realistic: --cell-time-limit counts the cell's CPU seconds instead of the
+    /// wall clock (on a machine shared with other work, the wall clock measures the others too).
+    #[arg(long)]
+    pub limit_cpu: bool,
+    /// --scenario realistic: the folder of the LACT3 drawings (arch_1.dxf, Portal.dxf, wall.dxf)
+    /// [default: crates/voussoir-io/tests/fixtures/lact3 of the repository the command runs in].
+    #[arg(long, value_name = "DIR")]
+    pub lact3: Option<std::path::PathBuf>,
+    /// --scenario realistic: where the models and results of the cells are written [default: a
+    /// new folder in the system's temporary directory].
+    #[arg(long, value_name = "DIR")]
+    pub workdir: Option<std::path::PathBuf>,
+    /// --scenario realistic: also write every cell as JSON to FILE.
+    #[arg(long, short = 'o', value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
 }
 
 impl BenchArgs {
@@ -129,6 +165,25 @@ impl BenchArgs {
 }
 
 pub fn run(a: BenchArgs) -> Result<(), Fail> {
+    if a.scenario.contains(&BenchScenario::Realistic) {
+        return run_realistic(a);
+    }
+    for (given, flag) in [
+        (a.models.is_some(), "--models"),
+        (a.analyses.is_some(), "--analyses"),
+        (a.max_blocks.is_some(), "--max-blocks"),
+        (a.cell_time_limit.is_some(), "--cell-time-limit"),
+        (a.limit_cpu, "--limit-cpu"),
+        (a.lact3.is_some(), "--lact3"),
+        (a.workdir.is_some(), "--workdir"),
+        (a.output.is_some(), "--output"),
+    ] {
+        if given {
+            return Err(Fail(format!(
+                "{flag}: applies to --scenario realistic only"
+            )));
+        }
+    }
     println!("Times in seconds; peak memory = the largest resident set of the run; gap = relative duality gap; admissibility = largest joint violation of the mechanism, relative (docs/performance.md).\n");
     print!("{}", header());
     let cfg = a.config();
@@ -144,6 +199,7 @@ pub fn run(a: BenchArgs) -> Result<(), Fail> {
             BenchScenario::Vault => Scenario::Vault,
             BenchScenario::Dome => Scenario::Dome,
             BenchScenario::WallReturns => Scenario::WallReturns,
+            BenchScenario::Realistic => unreachable!("run_realistic runs it"),
         };
         for &n in &a.sizes {
             for &analysis in analyses {
@@ -197,4 +253,71 @@ fn peak_memory_mib() -> Option<f64> {
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib / 1024.0)
+}
+
+/// `--scenario realistic` (crate::bench_realistic): alone, with its own flags; the wall
+/// benchmark's flags other than --method are refused.
+fn run_realistic(a: BenchArgs) -> Result<(), Fail> {
+    if a.scenario.len() > 1 {
+        return Err(Fail(
+            "--scenario realistic: runs alone (run the wall scenarios separately)".into(),
+        ));
+    }
+    #[derive(clap::Parser)]
+    struct Defaults {
+        #[command(flatten)]
+        a: BenchArgs,
+    }
+    let defaults = <Defaults as clap::Parser>::try_parse_from(["bench"])
+        .expect("the defaults parse")
+        .a;
+    for (same, flag) in [
+        (a.sizes == defaults.sizes, "--sizes"),
+        (
+            a.analysis == defaults.analysis,
+            "--analysis (use --analyses)",
+        ),
+        (a.form == defaults.form, "--form"),
+        (!a.no_presolve, "--no-presolve"),
+        (
+            a.solver_tolerance == defaults.solver_tolerance,
+            "--solver-tolerance",
+        ),
+        (
+            a.time_limit.is_none(),
+            "--time-limit (use --cell-time-limit)",
+        ),
+        (a.friction_cone == defaults.friction_cone, "--friction-cone"),
+        (
+            a.geometry_sizes == defaults.geometry_sizes,
+            "--geometry-sizes",
+        ),
+    ] {
+        if !same {
+            return Err(Fail(format!(
+                "{flag}: does not apply to --scenario realistic (each cell runs the command with its own defaults)"
+            )));
+        }
+    }
+    let method = match a.method {
+        BenchMethod::Auto => None,
+        m => Some(
+            m.to_possible_value()
+                .expect("a named method")
+                .get_name()
+                .to_string(),
+        ),
+    };
+    let cfg = crate::bench_realistic::Config {
+        models: a.models,
+        analyses: a.analyses,
+        max_blocks: a.max_blocks,
+        cell_time_limit: a.cell_time_limit.unwrap_or(600.0),
+        limit_cpu: a.limit_cpu,
+        method,
+        lact3: a.lact3,
+        workdir: a.workdir,
+        output: a.output,
+    };
+    crate::bench_realistic::run(&cfg).map(|_| ())
 }

@@ -185,9 +185,10 @@ pub const FRICTION_FACETS: std::ops::RangeInclusive<usize> = 3..=1024;
 #[derive(Args, Clone, Debug)]
 #[command(next_help_heading = "Solver")]
 pub struct SolverArgs {
-    /// LP method [default: dual-simplex for 2D models, ipm for 3D models (HiGHS's dual simplex
-    /// stalls in phase 1 on the 3D force programs of domes: > 120 s against 3 s at 12 courses ×
-    /// 24 segments; interior point with crossover still ends on a vertex)].
+    /// LP method [default: the solver policy's: dual-simplex for 2D models of up to 2,000
+    /// blocks, clarabel above and for 3D models (docs/performance.md, "Solver policy"); a
+    /// method that fails or answers uncertified is followed by the next of its fallback chain,
+    /// and the result says so].
     #[arg(long, value_enum, ignore_case = true)]
     pub method: Option<MethodArg>,
 }
@@ -549,10 +550,15 @@ fn solver_log() -> bool {
 }
 
 impl SolverArgs {
-    /// The solver options of these flags (dual simplex unless --method says otherwise).
+    /// The solver options of these flags, for the commands not on the request layer yet: the
+    /// solver policy's method of a 2D model (`voussoir::request::default_method(2)`) unless
+    /// --method says otherwise.
     pub fn options(&self) -> SolverOptions {
         SolverOptions {
-            method: method(self.method.unwrap_or(MethodArg::DualSimplex)),
+            method: self
+                .method
+                .map(method)
+                .unwrap_or_else(|| voussoir::request::default_method(2)),
             log: solver_log(),
             ..SolverOptions::default()
         }

@@ -2,6 +2,7 @@
 
 mod adapt_args;
 mod bench;
+mod bench_realistic;
 mod canonical;
 mod capacity;
 mod common;

@@ -265,6 +265,18 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             .collect();
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
-    let _ = writeln!(s, "{} LP solves", r.solves);
+    // The method that answered most programs, and every fallback taken, each with the method
+    // that answered after it (the JSON's `solver`).
+    let _ = writeln!(
+        s,
+        "{} LP solves ({}{})",
+        r.solves,
+        r.solver.method.name(),
+        if r.solver.tried.is_empty() {
+            String::new()
+        } else {
+            format!("; fallbacks: {}", r.solver.tried.join("; "))
+        }
+    );
     s
 }

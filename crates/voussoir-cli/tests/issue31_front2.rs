@@ -188,7 +188,16 @@ fn issue31_item5_draw3d_stages_draw_the_same_bytes() {
     run(
         &dir,
         &[
-            "gen", "vault", "--live", "full", "--depth", "1", "--rings", "3", "-o", "vault3.json",
+            "gen",
+            "vault",
+            "--live",
+            "full",
+            "--depth",
+            "1",
+            "--rings",
+            "3",
+            "-o",
+            "vault3.json",
         ],
     );
     run(
@@ -234,6 +243,9 @@ fn issue31_item5_draw3d_stages_draw_the_same_bytes() {
         let now = std::fs::read(dir.join(name)).unwrap();
         let before = std::fs::read(fixtures.join(name)).unwrap();
         assert!(now.len() > 10_000, "{name}: {} bytes", now.len());
-        assert!(now == before, "{name} differs from the drawing before the split");
+        assert!(
+            now == before,
+            "{name} differs from the drawing before the split"
+        );
     }
 }

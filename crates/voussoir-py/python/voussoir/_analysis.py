@@ -143,7 +143,7 @@ def limit(
     ``model``: a :class:`Model` or a JSON path. ``tolerance``: joint detection, relative to the
     model's size (default 1e-7). ``method``: LP method (``"dual-simplex"``, ``"primal-simplex"``,
     ``"ipm"``, ``"choose"``, ``"ipm-no-crossover"``, ``"pdlp"``, ``"clarabel"``; default: the
-    library's for the model's dimension, dual simplex in 2D). ``friction``: Coulomb μ for every
+    library's solver policy for the model, docs/performance.md). ``friction``: Coulomb μ for every
     joint (default: no sliding). ``compressive_strength``: f_c in kPa (default: infinite).
     ``crushing``: ``"linear"`` (inscribed polygon of ``facets`` sides, default 16) or
     ``"conic"`` (exact, SOCP); both need a compressive strength. ``non_associative``: friction
@@ -152,7 +152,7 @@ def limit(
     future computed there.
 
     A 3D model (JSON with ``vertices``, OBJ, PLY, :func:`voussoir.generate.vault` …) is analysed
-    as by the CLI: ``method`` defaults to ``"ipm"``; ``friction_facets`` (default 8) is the
+    as by the CLI: ``method`` defaults to the policy's (``"clarabel"``); ``friction_facets`` (default 8) is the
     number of facets of the friction pyramid, ``friction_cone="exact"`` the exact cone (SOCP);
     ``crushing`` and ``facets`` are 2D only.
 
@@ -471,7 +471,7 @@ def sweep(
     records' ``motions`` have six components ``[u, v, w, θx, θy, θz]`` (m, rad); ``angles=N``
     rotates (u, w) and (θx, θz) in the vertical x–z plane (v and θy unchanged: the 2D rotation
     of a model extruded along y); ``split`` and ``friction_facets`` as for :func:`settle`; the
-    default method is the interior point (as the CLI's in 3D); ``friction_cone="exact"`` is
+    default method is the solver policy's (as the CLI's in 3D); ``friction_cone="exact"`` is
     refused (a sweep solves the friction pyramid).
     """
     magnitudes = o.renamed("magnitudes", magnitudes, "steps", steps)
@@ -597,8 +597,8 @@ def safety(
     dead loads, its geometric safety factor (1 / the least fraction of every joint, about its
     middle, that still carries them; bisection to ``bisection_tolerance``) and, with
     ``ranges`` (the default; ``--no-ranges`` on the CLI), the range of each support reaction
-    over the admissible force fields. Other keywords as :func:`limit` (method: dual simplex in
-    2D, interior point in 3D)."""
+    over the admissible force fields. Other keywords as :func:`limit` (method: the library's
+    solver policy, docs/performance.md)."""
     m = _model(model)
     a = {"type": "safety", "bisection_tolerance": float(bisection_tolerance), "no_ranges": not ranges}
     r = _request(

@@ -17,6 +17,7 @@
 
 pub mod clarabel;
 pub mod highs;
+pub mod policy;
 pub mod scale;
 pub mod sequence;
 
@@ -315,11 +316,51 @@ impl SolverInfo {
                 self.tried
                     .iter()
                     .map(|t| t.split(':').next().unwrap_or(t))
-                    .collect::<Vec<_>>()
+                    .fold(Vec::<&str>::new(), |mut v, m| {
+                        if !v.contains(&m) {
+                            v.push(m);
+                        }
+                        v
+                    })
                     .join(", "),
                 self.tried.join("; ")
             )
         })
+    }
+
+    /// How the programs of an analysis of many solves were solved with `opts`: the method that
+    /// answered most of them (the requested one where none was solved), and every distinct
+    /// fallback note in order of first appearance, each with the method that answered after it
+    /// (`clarabel: not certified (…) → ipm`).
+    pub fn of_solves(opts: &SolverOptions, solves: &[SolveRecord]) -> SolverInfo {
+        let mut count: Vec<(Method, usize)> = Vec::new();
+        let mut tried: Vec<String> = Vec::new();
+        for s in solves {
+            match count.iter_mut().find(|(m, _)| *m == s.method) {
+                Some((_, n)) => *n += 1,
+                None => count.push((s.method, 1)),
+            }
+            for t in &s.tried {
+                // Which method answered after this failure (the programs may differ).
+                let t = format!("{t} → {}", s.method.name());
+                if !tried.contains(&t) {
+                    tried.push(t);
+                }
+            }
+        }
+        // The first of the most frequent (deterministic: in order of first appearance).
+        let method = count
+            .iter()
+            .fold(None::<(Method, usize)>, |best, &(m, n)| match best {
+                Some((_, b)) if b >= n => best,
+                _ => Some((m, n)),
+            })
+            .map_or(opts.method, |(m, _)| m);
+        SolverInfo {
+            solver: method.backend().name().to_string(),
+            method,
+            tried,
+        }
     }
 
     /// The methods tried by both of two solves (a settlement's two programs), in order.
@@ -486,7 +527,7 @@ fn check_numbers(lp: &LinearProgram) -> Result<()> {
 /// The program is solved in nondimensional form ([`scale`]); the solution is in its units.
 pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
-    with_fallback(opts, |o| solve_once(lp, o))
+    with_fallback(lp, opts, |o| solve_once(lp, o))
 }
 
 /// The methods tried, in order, when a solve with `method` fails (the backend's error, a
@@ -507,13 +548,20 @@ pub fn fallback_chain(method: Method) -> &'static [Method] {
     }
 }
 
-/// Run `solve` with each method of [`fallback_chain`] until one answers; the solution states
-/// its method and what failed before it. Only when every method fails: one line naming them.
+/// Run `solve` with each method of [`fallback_chain`] until one answers with a certified
+/// optimum ([`policy::check`]: rows satisfied and a duality gap within
+/// [`policy::CERTIFICATE_TOLERANCE`]) or a status (infeasible, unbounded); the solution states
+/// its method and what failed before it. An optimum that is not certified moves on along the
+/// chain like a failure; where no later method does better, the first such answer is returned
+/// (the analyses then report it as not certified). Only when every method fails: one line
+/// naming them.
 fn with_fallback(
+    lp: &LinearProgram,
     opts: &SolverOptions,
     mut solve: impl FnMut(&SolverOptions) -> Result<LpSolution>,
 ) -> Result<LpSolution> {
     let mut tried = Vec::new();
+    let mut uncertified: Option<(usize, LpSolution)> = None;
     for (k, &method) in fallback_chain(opts.method).iter().enumerate() {
         let o = SolverOptions {
             method,
@@ -523,16 +571,72 @@ fn with_fallback(
         match solve(&o) {
             Ok(mut s) => {
                 s.method = method;
-                s.tried = tried;
-                return Ok(s);
+                match policy::check(lp, &s) {
+                    None => {
+                        s.tried = tried;
+                        record(method, &s.tried);
+                        return Ok(s);
+                    }
+                    Some(why) => {
+                        tried.push(format!("{}: {why}", method.name()));
+                        if uncertified.is_none() {
+                            uncertified = Some((tried.len() - 1, s));
+                        }
+                    }
+                }
             }
             Err(e) => tried.push(format!("{}: {}", method.name(), e.to_string().trim())),
         }
+    }
+    if let Some((own, mut s)) = uncertified {
+        tried.remove(own);
+        s.tried = tried;
+        record(s.method, &s.tried);
+        return Ok(s);
     }
     Err(Error::Solver(format!(
         "every method failed: {}",
         tried.join("; ")
     )))
+}
+
+/// The method and fallbacks of one solve, as [`collecting`] gathers them.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SolveRecord {
+    pub method: Method,
+    /// The methods that failed before `method` answered (`method: why`).
+    pub tried: Vec<String>,
+}
+
+thread_local! {
+    static SOLVES: std::cell::RefCell<Option<Vec<SolveRecord>>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+fn record(method: Method, tried: &[String]) {
+    SOLVES.with(|c| {
+        if let Some(v) = c.borrow_mut().as_mut() {
+            v.push(SolveRecord {
+                method,
+                tried: tried.to_vec(),
+            });
+        }
+    });
+}
+
+/// Run `f`, gathering the method and fallbacks of every solve it makes on this thread (for an
+/// analysis of many programs, whose result states how they were solved:
+/// [`SolverInfo::of_solves`]). Nested calls gather for each level.
+pub fn collecting<T>(f: impl FnOnce() -> T) -> (T, Vec<SolveRecord>) {
+    let outer = SOLVES.with(|c| c.borrow_mut().replace(Vec::new()));
+    let out = f();
+    let mine = SOLVES.with(|c| c.replace(outer)).unwrap_or_default();
+    SOLVES.with(|c| {
+        if let Some(v) = c.borrow_mut().as_mut() {
+            v.extend(mine.iter().cloned());
+        }
+    });
+    (out, mine)
 }
 
 /// [`solve`] with `opts.method` alone.
@@ -631,7 +735,7 @@ pub fn solve_warm(
     basis: &mut Option<Basis>,
 ) -> Result<LpSolution> {
     check_numbers(lp)?;
-    with_fallback(opts, |o| solve_warm_once(lp, o, basis))
+    with_fallback(lp, opts, |o| solve_warm_once(lp, o, basis))
 }
 
 /// [`solve_warm`] with `opts.method` alone.

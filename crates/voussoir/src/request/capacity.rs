@@ -102,8 +102,14 @@ impl CapacityRequest {
 
     /// The analysis's options: in 3D the conic joint law of every limit analysis is the exact
     /// Coulomb cone when asked for (and the settlement that deforms the geometry the conic
-    /// settlement program); the iteration's solver for non-associative friction.
-    pub fn options(&self, req: &Request, dims: usize) -> CapacityOptions {
+    /// settlement program); the solver policy's method for the programs of `class`, the
+    /// iteration's for non-associative friction.
+    pub fn options(
+        &self,
+        req: &Request,
+        dims: usize,
+        class: &crate::lp::policy::ProblemClass,
+    ) -> CapacityOptions {
         let nonassociative = self.non_associative.then(NonAssociativeOptions::settlement);
         CapacityOptions {
             crushing: if dims == 3 {
@@ -122,9 +128,9 @@ impl CapacityRequest {
             mechanisms: !self.no_mechanisms,
             release_fixed: !self.keep_fixed,
             solver: if self.non_associative {
-                req.solver.iteration(dims)
+                req.solver.iteration(class)
             } else {
-                req.solver.options(dims)
+                req.solver.options(class)
             },
             ..CapacityOptions::default()
         }
@@ -136,7 +142,7 @@ impl CapacityRequest {
         req: &Request,
         dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
-        let opts = self.options(req, dims);
+        let opts = self.options(req, dims, &super::class(st, req));
         Ok((Output::Capacity(capacity(st, &opts)?), opts.solver))
     }
 }

@@ -166,9 +166,15 @@ impl IdentifyRequest {
         &self,
         st: &S,
         req: &Request,
-        dims: usize,
+        _dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
-        let solver = req.solver.options(dims);
+        // Identify's programs read active sets off vertex solutions: the policy's method for
+        // programs that need vertices and bases (as the canonical stages), not an interior
+        // point (Clarabel, the 3D default for optimisation, has no crossover).
+        let solver = req.solver.options(&crate::lp::policy::ProblemClass {
+            purpose: crate::lp::policy::Purpose::CanonicalStage,
+            ..super::class(st, req)
+        });
         let unknowns = self.unknowns(st, req.names)?;
         let r = identify(
             st,

@@ -148,7 +148,12 @@ pub fn least_thickness(
     let hi = req.upper.unwrap_or(radius / 2.0);
     let tol = req.bisection_tolerance * radius;
     let build = BuildOptions::default();
-    let solver = solver.options(generator.dims());
+    // A yes/no question at each step: the solver policy's method of a feasibility program of
+    // the generator's dimension.
+    let solver = solver.options(&crate::lp::policy::ProblemClass {
+        purpose: crate::lp::policy::Purpose::Feasibility,
+        ..crate::lp::policy::ProblemClass::of_dim(if generator.dims() == 3 { 3 } else { 2 })
+    });
     let found = match generator {
         Generator::Arch(a) => bisect(
             |t| {

@@ -94,7 +94,7 @@ impl LimitRequest {
         dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
         let n = req.names;
-        let solver = req.solver.options(dims);
+        let solver = req.solver.options(&super::class(st, req));
         // The conic program of the dimension: exact crushing (2D), the exact friction cone (3D).
         let (crushing, facets) = if dims == 3 {
             let cone = if req.model.exact_cone() {

@@ -52,6 +52,7 @@ use crate::analysis::safety::SafetyResult;
 use crate::analysis::tilt::TiltResult;
 use crate::analysis::{CapacityResult, LimitResult, SettlementResult};
 use crate::error::{Error, Result};
+use crate::lp::policy::{self, ProblemClass, Purpose};
 use crate::lp::{Method, SolverOptions};
 use crate::model3d::{AnyModel, Model3d};
 use crate::result::identify::IdentifyResult;
@@ -199,11 +200,12 @@ impl ModelOptions {
     }
 }
 
-/// The solver. Default: the method of the model's dimension ([`default_method`]).
+/// The solver. Default: the solver policy's method for the program's class
+/// ([`crate::lp::policy`]: dimension, size, friction, cones, analysis).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SolverRequest {
-    /// The LP method; absent: [`default_method`] of the model's dimension.
+    /// The LP method; absent: the solver policy's method ([`crate::lp::policy::default_method`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub method: Option<Method>,
     /// Print the solver's own log on stdout (diagnostics).
@@ -211,43 +213,54 @@ pub struct SolverRequest {
     pub log: bool,
 }
 
-/// The LP method when none is asked for: the dual simplex in 2D (an exact vertex: crisp
-/// mechanisms and hinges), the interior point with crossover in 3D (HiGHS's dual simplex stalls
-/// in phase 1 on the 3D force programs of domes: > 120 s against 3 s at 12 courses × 24
-/// segments; with crossover the answer is still a vertex).
+/// The LP method when none is asked for, for a model of `dims` dimensions whose size is not
+/// known: the solver policy's ([`crate::lp::policy::default_method`]). The request layer itself
+/// asks the policy with the whole class of the program ([`class`]).
 pub fn default_method(dims: usize) -> Method {
-    if dims == 3 {
-        Method::Ipm
-    } else {
-        Method::DualSimplex
+    policy::default_method(&ProblemClass::of_dim(if dims == 3 { 3 } else { 2 }))
+}
+
+/// The class of the programs `req` solves on structure `st`, for the solver policy: the
+/// dimension, blocks and friction of the structure; cones where the request asks for the exact
+/// friction cone or conic crushing; the purpose of the analysis (`safety`'s bisection is a
+/// feasibility question; the non-associative iteration a sequence of iterates).
+pub fn class<S: Assembly>(st: &S, req: &Request) -> ProblemClass {
+    let purpose = match &req.analysis {
+        Analysis::Safety(_) => Purpose::Feasibility,
+        a if joint_laws(a).is_some_and(|l| l.non_associative) => Purpose::Iteration,
+        _ => Purpose::Optimise,
+    };
+    let conic = joint_laws(&req.analysis).is_some_and(|l| l.crushing == Crushing::Conic);
+    ProblemClass {
+        cones: req.model.exact_cone() || conic,
+        ..policy::class_of(st, purpose)
     }
 }
 
 impl SolverRequest {
-    /// The solver options for a model of `dims` dimensions.
-    pub fn options(&self, dims: usize) -> SolverOptions {
-        SolverOptions {
-            method: self.method.unwrap_or_else(|| default_method(dims)),
-            log: self.log,
-            ..SolverOptions::default()
-        }
+    /// The solver options for a program of `class`: the method asked for, else the solver
+    /// policy's ([`policy::options`]).
+    pub fn options(&self, class: &ProblemClass) -> SolverOptions {
+        policy::options(
+            class,
+            self.method,
+            &SolverOptions {
+                log: self.log,
+                ..SolverOptions::default()
+            },
+        )
     }
 
-    /// The solver of a non-associative iteration: Clarabel's interior point unless a method is
-    /// asked for. Its solutions are the centres of the optimal faces, so the normal forces move
-    /// smoothly from one iterate to the next, where a simplex jumps between vertices and the
-    /// iteration wanders (measured on a 20 × 10 wall: docs/joint-laws.md). The tolerance is
-    /// tightened so that every iterate is certified.
-    pub fn iteration(&self, dims: usize) -> SolverOptions {
-        let solver = self.options(dims);
-        if self.method.is_some() {
-            return solver;
-        }
-        SolverOptions {
-            method: Method::Clarabel,
-            feasibility_tolerance: solver.feasibility_tolerance.min(1e-10),
-            ..solver
-        }
+    /// The solver of a non-associative iteration: the policy's method for iterates unless a
+    /// method is asked for (Clarabel's interior point: its solutions are the centres of the
+    /// optimal faces, so the normal forces move smoothly from one iterate to the next, where a
+    /// simplex jumps between vertices and the iteration wanders; measured on a 20 × 10 wall:
+    /// docs/joint-laws.md), to a tolerance tight enough that every iterate is certified.
+    pub fn iteration(&self, class: &ProblemClass) -> SolverOptions {
+        self.options(&ProblemClass {
+            purpose: Purpose::Iteration,
+            ..*class
+        })
     }
 }
 
@@ -723,7 +736,7 @@ fn adapted(
     let build = BuildOptions {
         tolerance: req.model.tolerance,
     };
-    let solver = req.solver.options(2);
+    let solver = req.solver.options(&class(&setup.structure, req));
     let ad = match &req.analysis {
         Analysis::Limit(r) => {
             let laws = r.laws();
@@ -772,7 +785,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             let (setup, adapt) = adapted(setup, req)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
-                    let solver = req.solver.options(2);
+                    let solver = req.solver.options(&class(&setup.structure, req));
                     let dir = t.sign_2d(req)?;
                     let r = crate::analysis::tilt::tilt(&setup.structure, dir, &solver)?;
                     (Output::Tilt(r), solver)
@@ -798,7 +811,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
-                    let solver = req.solver.options(3);
+                    let solver = req.solver.options(&class(&setup.structure, req));
                     let az = t.normalised();
                     let r = if req.model.exact_cone() {
                         crate::analysis::tilt::tilt_azimuth_exact(&setup.structure, az, &solver)?
@@ -857,8 +870,13 @@ fn solve_any<S: Assembly>(
         Analysis::Settle(r) => r.solve(st, req, dims),
         Analysis::Capacity(r) => r.solve(st, req, dims),
         Analysis::Safety(r) => {
-            let solver = req.solver.options(dims);
-            let out = crate::analysis::safety::safety(st, &r.options(solver))?;
+            let solver = req.solver.options(&class(st, req));
+            // Its many programs (bisection, reaction ranges): the result states the method
+            // that answered them and every fallback taken.
+            let (out, solves) =
+                crate::lp::collecting(|| crate::analysis::safety::safety(st, &r.options(solver)));
+            let mut out = out?;
+            out.solver = crate::lp::SolverInfo::of_solves(&solver, &solves);
             Ok((Output::Safety(out), solver))
         }
         // Tilt is dispatched by dimension in `solve` (a 2D sign, a 3D azimuth), the others in

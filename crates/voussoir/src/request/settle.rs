@@ -129,7 +129,7 @@ impl SettleRequest {
         req: &Request,
         dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
-        let solver = req.solver.options(dims);
+        let solver = req.solver.options(&super::class(st, req));
         let both = self.settlement_form == SettlementForm::Both;
         let (crushing, facets) = if dims == 3 {
             let cone = if req.model.exact_cone() {
@@ -142,7 +142,7 @@ impl SettleRequest {
             (self.crushing, self.facets())
         };
         if self.non_associative && both {
-            let solver = req.solver.iteration(dims);
+            let solver = req.solver.iteration(&super::class(st, req));
             // In 2D (unless `raw`) the canonical mechanism of the last iterate's program
             // (least crack area; analysis::canonical_friction), as for Heyman's rules.
             let r = if dims == 2 && !self.raw && crushing == Crushing::Linear {

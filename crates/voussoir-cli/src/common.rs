@@ -558,7 +558,7 @@ impl SolverArgs {
             method: self
                 .method
                 .map(method)
-                .unwrap_or_else(|| voussoir::request::default_method(2)),
+                .unwrap_or(SolverOptions::default().method),
             log: solver_log(),
             ..SolverOptions::default()
         }

@@ -92,11 +92,11 @@ fn open_joints(result: &Value) -> Vec<(u64, f64)> {
 /// The crack table's rows against the result: one row per joint that is not closed, its width
 /// (mm, 4 significant digits) the largest opening × 1000, its length (mm) `length_mm`.
 fn check_cracks(html: &str, result: &Value, dim: usize, length_mm: f64) {
-    let (rows, _) = table_after(html, "<h3>Cracks");
+    let (rows, _) = table_after(html, "<h3>Cracked joints");
     let open = open_joints(result);
     assert!(open.len() >= 3, "a settlement mechanism opens 3 hinges");
     assert_eq!(rows.len(), open.len(), "one row per cracked joint");
-    let head = &html[html.find("<h3>Cracks").unwrap()..];
+    let head = &html[html.find("<h3>Cracked joints").unwrap()..];
     let head = &head[..head.find("</thead>").unwrap()];
     assert!(
         head.contains("<th>width (mm)</th><th>length (mm)</th>"),

@@ -49,12 +49,11 @@ fn issue31_item1_one_run_for_2d_and_3d() {
     let r3 = request::run(&spatial, &req).unwrap();
     assert!((lambda(&r2) - 0.4).abs() < 1e-6, "2D λ = {}", lambda(&r2));
     assert!((lambda(&r3) - 0.4).abs() < 1e-6, "3D λ = {}", lambda(&r3));
-    // The default solver of each dimension, the solver policy's (`lp::policy`): dual simplex
-    // for a small 2D model, Clarabel in 3D.
+    // The default solver of each dimension: dual simplex in 2D, interior point in 3D.
     match (&r2, &r3) {
         (AnyResult::Planar(a), AnyResult::Spatial(b)) => {
             assert_eq!(a.solver.method, Method::DualSimplex);
-            assert_eq!(b.solver.method, Method::Clarabel);
+            assert_eq!(b.solver.method, Method::Ipm);
         }
         _ => panic!("dimension lost"),
     }

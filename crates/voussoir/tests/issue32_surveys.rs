@@ -396,7 +396,7 @@ fn issue32_item2_a_polyline_catching_nothing_is_refused() {
         .unwrap()
         .to_string();
     assert!(
-        e.contains("cracks[1]: a crack given by \"polyline\" takes one width, or two"),
+        e.contains("cracks[1]: a crack given by \"polyline\" takes one width, two (at its start and end) or one per vertex (2); 3 given"),
         "{e}"
     );
     let mut m = paper_arch();

@@ -307,13 +307,27 @@ fn an_interior_point_stopped_short_is_cleaned_up_by_crossover() {
         cleanup: false,
         ..SolverOptions::default()
     };
+    // Without the cleanup pass the loose interior point fails the solver layer's own
+    // certificate (issue 29: an uncertified optimum is never the answer) and the next method
+    // of the fallback chain answers, certified, saying what was tried.
     let raw = limit(&st, &loose).unwrap();
     let c = raw.certificate.expect("a collapse has a certificate");
-    assert!(
-        !c.ok,
-        "the loose interior point should fail its certificate: {c:?}"
+    assert!(c.ok, "{c:?} {}", raw.message);
+    assert_ne!(
+        raw.solver.method,
+        Method::Clarabel,
+        "{:?}",
+        raw.solver.tried
     );
-    assert!(raw.message.starts_with("NOT CERTIFIED"), "{}", raw.message);
+    assert!(
+        raw.solver
+            .tried
+            .iter()
+            .any(|t| t.starts_with("clarabel: not certified")),
+        "{:?}",
+        raw.solver.tried
+    );
+    assert!((raw.load_multiplier.unwrap() - exact).abs() <= 1e-9);
     let r = limit(
         &st,
         &SolverOptions {
@@ -326,7 +340,13 @@ fn an_interior_point_stopped_short_is_cleaned_up_by_crossover() {
     assert!(c.ok, "{c:?} {}", r.message);
     let l = r.load_multiplier.unwrap();
     assert!((l - exact).abs() <= 1e-9, "{l} against {exact}");
-    assert!(r.message.contains("cleaned up"), "{}", r.message);
+    // The cleanup pass, or (where the solver layer's certificate rejects the loose point
+    // first) the next method of the fallback chain, says how the answer was obtained.
+    assert!(
+        r.message.contains("cleaned up") || r.message.contains("after clarabel failed"),
+        "{}",
+        r.message
+    );
     assert!(!r.message.contains("NOT CERTIFIED"), "{}", r.message);
 }
 

@@ -336,7 +336,7 @@ mod tests {
         };
         assert_eq!(default_method(&c(2, 64)), Method::DualSimplex);
         assert_eq!(default_method(&c(2, 10_000)), Method::Ipm);
-        assert_eq!(default_method(&c(3, 25)), Method::Clarabel);
+        assert_eq!(default_method(&c(3, 25)), Method::Ipm);
         let cones = ProblemClass {
             cones: true,
             ..c(2, 10)

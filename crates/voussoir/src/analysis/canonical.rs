@@ -132,8 +132,8 @@ pub fn tributary_weights<S: Assembly>(st: &S, map: &KinematicMap) -> Vec<f64> {
 }
 
 /// Deterministic weights in ±[0.5, 1.5] (splitmix64): the generic linear functional of the
-/// uniqueness test.
-fn generic_functional(n: usize) -> Vec<f64> {
+/// uniqueness test (and of the frictional selection's tie-break, `canonical_friction`).
+pub(crate) fn generic_functional(n: usize) -> Vec<f64> {
     let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
     (0..n)
         .map(|_| {
@@ -244,7 +244,7 @@ fn trace(what: &str, t0: std::time::Instant) {
     }
 }
 
-fn max_abs(v: &[f64]) -> f64 {
+pub(crate) fn max_abs(v: &[f64]) -> f64 {
     v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
 

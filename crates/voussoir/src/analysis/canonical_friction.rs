@@ -61,27 +61,7 @@ fn vertex_options(opts: &SolverOptions) -> SolverOptions {
     }
 }
 
-/// Deterministic weights in ±[0.5, 1.5] (splitmix64): the generic linear functional of the
-/// tie-break (the same construction as the associative selection's).
-fn generic_functional(n: usize) -> Vec<f64> {
-    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
-    (0..n)
-        .map(|_| {
-            state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = state;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^= z >> 31;
-            let u = (z >> 11) as f64 / (1u64 << 53) as f64;
-            let sign = if z & 1 == 0 { 1.0 } else { -1.0 };
-            sign * (0.5 + u)
-        })
-        .collect()
-}
-
-fn max_abs(v: &[f64]) -> f64 {
-    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
-}
+use super::canonical::{generic_functional, max_abs};
 
 /// The crack area with slips, `Σ w_k (o_k + |s_k|)` over points without a gap that are not
 /// bilateral, of mechanism `d` (support motions scaled by `support_scale`); round-off (below

@@ -8,14 +8,14 @@
 
 use crate::draw::MotionUnits;
 use crate::IoError;
-use voussoir::analysis::tilt::TiltResult;
-use voussoir::analysis::{CapacityResult, LimitResult, LimitStatus, SettlementResult};
 use voussoir::dim::Three;
 use voussoir::lp::SolverInfo;
 use voussoir::result::spatial::{SpatialMotion, SpatialShapes};
+use voussoir::result::TiltResult;
 use voussoir::result::{
     BlockMotion, BodyName, FrictionIteration, Hinge, JointResult, JointState, Reaction, ThrustPoint,
 };
+use voussoir::result::{CapacityResult, LimitResult, LimitStatus, SettlementResult};
 
 /// A 3D result that can be written to VTK or drawn: a limit or a settlement result.
 pub trait Result3d {

@@ -6,11 +6,9 @@ use super::plot::{plot, Mark, Plot, PlotSpec, Series, SERIES_COLOURS};
 use super::report::{model_summary, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
-use voussoir::analysis::capacity::{
-    CapacityResult, CapacityStatus, SettlementUnit, SupportDirection,
-};
 use voussoir::dim::{Three, Two};
 use voussoir::result::{BlockMotion, Spatial};
+use voussoir::result::{CapacityResult, CapacityStatus, SettlementUnit, SupportDirection};
 
 /// Largest deviation from the least-squares line, relative to λ(0), up to which λ(s) is called
 /// linear and its fit is shown (5 %: within the scatter engineers accept for a straight-line

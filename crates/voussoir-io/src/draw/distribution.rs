@@ -5,7 +5,7 @@
 use super::plot::{plot, Mark, Plot, PlotSpec, Series};
 use super::report::{Report, ReportOptions};
 use super::svg::{fmt_fixed, human};
-use voussoir::sweep::{capacity_summary, CapacitySummary, SweepRecord};
+use voussoir::result::sweep::{capacity_summary, CapacitySummary, SweepRecord};
 
 /// λ after the settlement of every record that has a finite one, sorted.
 pub fn capacity_values(records: &[SweepRecord]) -> Vec<f64> {

@@ -35,14 +35,14 @@ pub use scene::{draw, DrawOptions, Drawing, Frame, MotionUnits, PressurePoints, 
 use crate::draw3d::{draw3d, Draw3dOptions, View};
 use crate::result3d::{Figure3d, Result3d};
 use crate::IoError;
-use voussoir::analysis::safety::SafetyResult;
-use voussoir::analysis::tilt::TiltResult;
-use voussoir::analysis::{CapacityResult, IncrementalResult, LimitResult, SettlementResult};
 use voussoir::dim::Three;
 use voussoir::model3d::AnyModel;
 use voussoir::result::identify::IdentifyResult;
 use voussoir::result::spatial::SpatialShapes;
 use voussoir::result::Geometry;
+use voussoir::result::SafetyResult;
+use voussoir::result::TiltResult;
+use voussoir::result::{CapacityResult, IncrementalResult, LimitResult, SettlementResult};
 use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
 
 /// Zoom used for PNG output: 1.5 device pixels per SVG pixel.

@@ -7,8 +7,8 @@
 use super::scene::{draw, DrawOptions, Scene};
 use super::svg::{esc, fmt_fixed, human};
 use std::fmt::Write as _;
-use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
 use voussoir::result::{BodyName, Geometry, JointResult, JointState};
+use voussoir::result::{LimitResult, LimitStatus, SettlementResult};
 
 /// One item of a report section.
 #[derive(Clone, Debug, PartialEq)]

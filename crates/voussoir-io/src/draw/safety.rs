@@ -8,7 +8,7 @@ use super::plot::Axis;
 use super::report::{Report, ReportOptions};
 use super::svg::{esc, fmt_fixed, human, num, text_width, FONT};
 use std::fmt::Write as _;
-use voussoir::analysis::safety::SafetyResult;
+use voussoir::result::SafetyResult;
 
 /// The default title of the figure.
 pub fn safety_title(r: &SafetyResult) -> String {

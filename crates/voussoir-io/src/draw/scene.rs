@@ -13,11 +13,11 @@ use super::legend::Entry;
 use super::svg::{esc, fmt_fixed, human, nice, num};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use voussoir::analysis::{LimitResult, LimitStatus, SettlementResult};
 use voussoir::geometry::{area_centroid, RigidMotion};
 use voussoir::result::{
     BlockMotion, BodyName, Crack, Geometry, Hinge, JointResult, JointState, ThrustPoint,
 };
+use voussoir::result::{LimitResult, LimitStatus, SettlementResult};
 
 /// What the block motions of a scene mean.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

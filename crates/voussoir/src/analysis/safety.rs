@@ -300,38 +300,6 @@ pub enum RangeSolve {
     Independent,
 }
 
-/// The reaction ranges and what they cost.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ReactionRanges {
-    pub ranges: Vec<AdmissibleReactionRange>,
-    /// LP solves.
-    pub solves: usize,
-    /// Of those, started from the basis of the one before ([`lp::sequence`]).
-    pub warm: usize,
-    /// Warm solves that failed or did not certify and were solved again from scratch.
-    pub restarts: usize,
-    /// Endpoints given by statics without a program of their own (one support: the total
-    /// load; two supports: the other support's optimum).
-    pub from_statics: usize,
-    /// The largest relative primal violation, dual violation and duality gap of the
-    /// endpoints' certificates ([`lp::sequence::certify`]).
-    pub worst: lp::sequence::Certificate,
-    /// Endpoints certified unbounded by a ray ([`lp::sequence::certify_ray`]).
-    pub unbounded: usize,
-    /// Recession programs solved to find those rays (one ray certifies every endpoint it
-    /// improves).
-    pub ray_programs: usize,
-    /// The largest relative violation of the recession cone by the rays used.
-    pub worst_ray: f64,
-}
-
-impl ReactionRanges {
-    /// Every endpoint certified ([`lp::sequence::CERTIFICATE_TOLERANCE`]).
-    pub fn certified(&self) -> bool {
-        self.worst.ok() && self.worst_ray <= lp::sequence::CERTIFICATE_TOLERANCE
-    }
-}
-
 /// The range of every force component of every support's reaction over the statically
 /// admissible states, and the LP solves spent ([`reaction_ranges_by`] with
 /// [`RangeSolve::Sequence`]).

@@ -7,9 +7,8 @@ use crate::analysis::safety::least_thickness as bisect;
 use crate::error::Result;
 use crate::generate::{ArchSpec, RadiusAt};
 use crate::generate3d::DomeSpec;
-use crate::lp::SolverInfo;
 use crate::model3d::AnyModel;
-use crate::result::safety::LeastThickness;
+pub use crate::result::safety::LeastThicknessResult;
 use crate::{BuildOptions, Structure, Structure3d};
 use serde::{Deserialize, Serialize};
 
@@ -82,20 +81,6 @@ impl Default for LeastThicknessRequest {
             bisection_tolerance: 1e-6,
         }
     }
-}
-
-/// What the least-thickness analysis reports (`voussoir least-thickness --json`).
-#[derive(Clone, Debug, Serialize)]
-pub struct LeastThicknessResult {
-    pub generator: &'static str,
-    /// The least thickness (m) at which the structure stands, and the bracket.
-    #[serde(flatten)]
-    pub found: LeastThickness,
-    /// The radius of the centreline at the least thickness (m), and thickness / that radius
-    /// (Milankovitch's t/R = 0.1075 for a semicircular arch, Heyman's 0.042 for a hemisphere).
-    pub centreline_radius: f64,
-    pub thickness_over_radius: f64,
-    pub solver: SolverInfo,
 }
 
 /// The result and the model at the least thickness.

@@ -1,5 +1,6 @@
 //! Typed results: one submodule per analysis ([`limit`], [`settlement`], [`capacity`],
-//! [`incremental`], [`tilt`], [`nonassociative`]) over the pieces they share here — block
+//! [`incremental`], [`tilt`], [`nonassociative`], [`safety`] with least thickness, [`identify`],
+//! [`sweep`], [`canonical`]) over the pieces they share here — block
 //! motions, joints with their points, hinges, the thrust line and support reactions. Every
 //! result serialises to the JSON the CLI prints. Drawings and other front ends read results
 //! from this module only, never from the algorithms in [`crate::analysis`].
@@ -13,6 +14,7 @@ pub mod limit;
 pub mod nonassociative;
 pub mod safety;
 pub mod settlement;
+pub mod sweep;
 pub mod tilt;
 
 pub use canonical::*;
@@ -23,6 +25,7 @@ pub use limit::*;
 pub use nonassociative::*;
 pub use safety::*;
 pub use settlement::*;
+pub use sweep::*;
 pub use tilt::*;
 
 pub mod spatial;

@@ -2,7 +2,7 @@
 //! its dead loads, with what geometric margin, and between which extreme states its support
 //! reactions can move.
 
-use crate::lp::SolverInfo;
+use crate::lp::{self, SolverInfo};
 use serde::{Deserialize, Serialize};
 
 /// The range of one component of a support's reaction over the statically admissible states.
@@ -70,4 +70,51 @@ pub struct LeastThickness {
     pub tolerance: f64,
     /// Bisection steps (one equilibrium LP each, after the two ends).
     pub steps: usize,
+}
+
+/// What the least-thickness analysis reports (`voussoir least-thickness --json`;
+/// [`crate::request::least_thickness`]).
+#[derive(Clone, Debug, Serialize)]
+pub struct LeastThicknessResult {
+    pub generator: &'static str,
+    /// The least thickness (m) at which the structure stands, and the bracket.
+    #[serde(flatten)]
+    pub found: LeastThickness,
+    /// The radius of the centreline at the least thickness (m), and thickness / that radius
+    /// (Milankovitch's t/R = 0.1075 for a semicircular arch, Heyman's 0.042 for a hemisphere).
+    pub centreline_radius: f64,
+    pub thickness_over_radius: f64,
+    pub solver: SolverInfo,
+}
+
+/// The reaction ranges and what they cost ([`crate::analysis::safety::reaction_ranges_by`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReactionRanges {
+    pub ranges: Vec<AdmissibleReactionRange>,
+    /// LP solves.
+    pub solves: usize,
+    /// Of those, started from the basis of the one before ([`lp::sequence`]).
+    pub warm: usize,
+    /// Warm solves that failed or did not certify and were solved again from scratch.
+    pub restarts: usize,
+    /// Endpoints given by statics without a program of their own (one support: the total
+    /// load; two supports: the other support's optimum).
+    pub from_statics: usize,
+    /// The largest relative primal violation, dual violation and duality gap of the
+    /// endpoints' certificates ([`lp::sequence::certify`]).
+    pub worst: lp::sequence::Certificate,
+    /// Endpoints certified unbounded by a ray ([`lp::sequence::certify_ray`]).
+    pub unbounded: usize,
+    /// Recession programs solved to find those rays (one ray certifies every endpoint it
+    /// improves).
+    pub ray_programs: usize,
+    /// The largest relative violation of the recession cone by the rays used.
+    pub worst_ray: f64,
+}
+
+impl ReactionRanges {
+    /// Every endpoint certified ([`lp::sequence::CERTIFICATE_TOLERANCE`]).
+    pub fn certified(&self) -> bool {
+        self.worst.ok() && self.worst_ray <= lp::sequence::CERTIFICATE_TOLERANCE
+    }
 }

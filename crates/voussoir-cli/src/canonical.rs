@@ -3,7 +3,7 @@
 
 use clap::Args;
 use std::fmt::Write as _;
-use voussoir::analysis::canonical::{Canonical, Selection};
+use voussoir::analysis::canonical::{Canonical, ForceSelection, Selection};
 use voussoir::result::Spatial;
 
 #[derive(Args, Clone, Debug)]
@@ -65,6 +65,12 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
         m.crack_area, m.crack_area_solver
     );
     if let Some(f) = &c.forces {
+        if f.selected_by == ForceSelection::Admissible {
+            let _ = writeln!(
+                s,
+                "canonical forces: the least-energy program did not end optimal: an admissible field of the set below is reported (not the least-energy one, nor unique)"
+            );
+        }
         match (f.least_friction, f.friction) {
             (Some(l), _) => {
                 let _ = writeln!(

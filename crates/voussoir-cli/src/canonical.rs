@@ -3,7 +3,7 @@
 
 use clap::Args;
 use std::fmt::Write as _;
-use voussoir::analysis::canonical::{Canonical, Selection};
+use voussoir::analysis::canonical::{Canonical, ForceSelection, Selection};
 use voussoir::result::Spatial;
 
 #[derive(Args, Clone, Debug)]
@@ -65,23 +65,27 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
         m.crack_area, m.crack_area_solver
     );
     if let Some(f) = &c.forces {
+        // What fixed the field: the least energy, or (that program not optimal) admissibility.
+        let crit = match f.selected_by {
+            ForceSelection::LeastEnergy => "least complementary energy",
+            ForceSelection::Admissible => {
+                "an admissible field (the least-energy program did not end optimal: not the least-energy field, nor unique)"
+            }
+        };
         match (f.least_friction, f.friction) {
             (Some(l), _) => {
                 let _ = writeln!(
                     s,
-                    "canonical forces: least complementary energy, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}"
+                    "canonical forces: {crit}, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}"
                 );
             }
             (None, None) if f.physical => {
-                let _ = writeln!(
-                    s,
-                    "canonical forces: least complementary energy, open points unloaded"
-                );
+                let _ = writeln!(s, "canonical forces: {crit}, open points unloaded");
             }
             _ => {
                 let _ = writeln!(
                     s,
-                    "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); least complementary energy",
+                    "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); {crit}",
                     f.largest_open_force
                 );
             }

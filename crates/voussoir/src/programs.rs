@@ -24,6 +24,7 @@
 //! | a dead-load ray (no λ in equilibrium) | — | [`dead_load_ray_program`] |
 //! | equilibrium under dead loads alone (does it stand; geometric safety factor) | safe theorem | [`equilibrium_program`] |
 //! | least / largest reaction component over admissible states (thrust range) | safe theorem | [`reaction_extreme_program`] |
+//! | the optimal force fields with open points unloaded, Coulomb at μ (canonical forces) | — | [`physical_force_program`] |
 //!
 //! Every analysis, the benchmark and the sweeps call these builders; nothing else assembles a
 //! program of the paper.

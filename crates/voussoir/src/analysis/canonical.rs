@@ -501,33 +501,47 @@ pub fn canonical_forces<S: Assembly>(
         l.friction.is_none()
             && !(map.joint_start[j]..map.joint_start[j + 1]).all(|k| map.bilateral[k])
     });
+    // The last admissible field found at the μ finally imposed (a program's feasible point): the
+    // reported field if the energy QP does not end optimal.
+    let mut admissible: Option<(Option<f64>, bool, Vec<f64>)> = None;
     // Feasibility at μ (None: the model's own laws), with a warm basis shared by all μ.
     let mut basis: Option<Basis> = None;
-    let mut feasible =
-        |mu: Option<f64>, basis: &mut Option<Basis>, relaxed: bool| -> Result<bool> {
-            let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
-            // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
-            Ok(stages
-                .solve(&fp.lp, basis)
-                .is_ok_and(|s| s.status == LpStatus::Optimal))
-        };
+    let feasible = |stages: &mut Stages,
+                    mu: Option<f64>,
+                    basis: &mut Option<Basis>,
+                    relaxed: bool,
+                    admissible: &mut Option<(Option<f64>, bool, Vec<f64>)>|
+     -> Result<bool> {
+        let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+        // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
+        match stages.solve(&fp.lp, basis) {
+            Ok(s) if s.status == LpStatus::Optimal => {
+                *admissible = Some((mu, relaxed, s.x));
+                Ok(true)
+            }
+            _ => Ok(false),
+        }
+    };
     // Without a physical optimal field under the model's own laws (open points unloaded),
     // there is nothing to select from: the solver's forces stand.
     let mut relaxed = false;
-    if !feasible(None, &mut None, false)? {
+    if !feasible(&mut stages, None, &mut None, false, &mut admissible)? {
         relaxed = true;
-        if !feasible(None, &mut None, true)? {
+        if !feasible(&mut stages, None, &mut None, true, &mut admissible)? {
             return Ok(None);
         }
     }
+    // The least μ: bisection on LP feasibility (the least μ is the least value of a largest
+    // ratio |p_t|/p_n over a polyhedron, a generalised fractional program: no single LP gives
+    // it, docs/canonical.md). The admissible field at the upper bracket is kept.
     let (least, mu) = if needs_mu {
-        if feasible(Some(0.0), &mut basis, relaxed)? {
+        if feasible(&mut stages, Some(0.0), &mut basis, relaxed, &mut admissible)? {
             (Some(0.0), Some(0.0))
         } else {
             let (mut lo, mut hi) = (0.0, 0.5);
             let mut found = false;
             while hi <= MAX_FRICTION {
-                if feasible(Some(hi), &mut basis, relaxed)? {
+                if feasible(&mut stages, Some(hi), &mut basis, relaxed, &mut admissible)? {
                     found = true;
                     break;
                 }
@@ -535,14 +549,17 @@ pub fn canonical_forces<S: Assembly>(
                 hi *= 4.0;
             }
             if found {
+                let mut at_hi = admissible.clone();
                 while hi - lo > copts.friction_precision * hi {
                     let mid = 0.5 * (lo + hi);
-                    if feasible(Some(mid), &mut basis, relaxed)? {
+                    if feasible(&mut stages, Some(mid), &mut basis, relaxed, &mut admissible)? {
                         hi = mid;
+                        at_hi = admissible.clone();
                     } else {
                         lo = mid;
                     }
                 }
+                admissible = at_hi;
                 (Some(hi), Some(hi))
             } else {
                 (None, None)
@@ -551,6 +568,10 @@ pub fn canonical_forces<S: Assembly>(
     } else {
         (None, None)
     };
+    // The admissible field kept for the fallback must be one of the set finally used.
+    let admissible = admissible
+        .filter(|(m, r, _)| *m == mu && *r == relaxed)
+        .map(|(_, _, x)| x);
     let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
     // Relaxed: shear at open points costs 10³ times the energy (pushed off them where the
     // optimal set allows).
@@ -564,18 +585,27 @@ pub fn canonical_forces<S: Assembly>(
     let t0 = std::time::Instant::now();
     let qs = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
     trace("energy QP", t0);
-    let Ok(mut qs) = qs else {
-        return Ok(None);
+    let (mut x, selected_by) = match qs {
+        Ok(qs) if qs.status == LpStatus::Optimal => (qs.x, ForceSelection::LeastEnergy),
+        other => {
+            if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+                eprintln!(
+                    "trace: energy QP not optimal ({:?}): the admissible field stands",
+                    other.map(|q| q.status)
+                );
+            }
+            match admissible {
+                Some(x) if x.len() == fp.lp.num_cols() => (x, ForceSelection::Admissible),
+                _ => return Ok(None),
+            }
+        }
     };
-    if qs.status != LpStatus::Optimal {
-        return Ok(None);
-    }
     // An interior-point solution within its tolerance of the bounds: on them (open points carry
     // exactly nothing, compression is never negative).
-    for (j, x) in qs.x.iter_mut().enumerate() {
+    for (j, x) in x.iter_mut().enumerate() {
         *x = x.clamp(fp.lp.col_lower[j], fp.lp.col_upper[j]);
     }
-    let (pn, pt) = fp.forces(&qs.x);
+    let (pn, pt) = fp.forces(&x);
     // Checks: forces at open points, friction excess.
     let nt = map.tangents_per_point;
     let mut largest_open_force = 0.0f64;
@@ -636,7 +666,7 @@ pub fn canonical_forces<S: Assembly>(
                     let a = rstages.solve(&lp, &mut b)?;
                     lp.maximise = true;
                     let z = rstages.solve(&lp, &mut b)?;
-                    let here = value_of(&coeff[s][i], &qs.x);
+                    let here = value_of(&coeff[s][i], &x);
                     lo[i] = if a.status == LpStatus::Optimal {
                         value_of(&coeff[s][i], &a.x).min(here)
                     } else {
@@ -671,6 +701,7 @@ pub fn canonical_forces<S: Assembly>(
         CanonicalForces {
             least_friction: least,
             friction: mu,
+            selected_by,
             physical: !relaxed,
             largest_open_force,
             largest_friction_excess: excess.max(0.0),

@@ -62,6 +62,11 @@ pub struct CanonicalForces<D: Spatial = Two> {
     /// The μ imposed on those joints in the reported field (`least_friction` up to the
     /// bisection's precision); `null` when none was imposed.
     pub friction: Option<f64>,
+    /// What fixed the reported field: `least_energy` (the least complementary energy), or
+    /// `admissible` when the energy QP did not end optimal and the admissible field of the
+    /// last feasibility program at the imposed μ stands instead.
+    #[serde(default)]
+    pub selected_by: ForceSelection,
     /// Whether the open points carry nothing at all. False when every optimal field needs
     /// shear at some open points (Heyman's no-sliding rule holds at open joints too, and a
     /// mechanism may lean on it): their normal force is still zero, their shear is kept as
@@ -76,6 +81,19 @@ pub struct CanonicalForces<D: Spatial = Two> {
     pub reaction_ranges: Vec<ReactionRange<D>>,
     /// Programs solved for the selection.
     pub solves: usize,
+}
+
+/// What fixed the canonical force field among the admissible ones.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ForceSelection {
+    /// The least complementary energy (unique).
+    #[default]
+    LeastEnergy,
+    /// The energy QP did not end optimal: an admissible field (the solution of the feasibility
+    /// program at the imposed μ), physical by the same rules but not the least-energy one, nor
+    /// unique.
+    Admissible,
 }
 
 /// The canonical selection of a result.

@@ -1,0 +1,112 @@
+//! Issue 30, item 2, the must-shows on the paper's façade (`gen facade`, the right half
+//! settling 20 cm: `settle --profile uniform:11,22,-0.2`), and the Hausdorff distance used to
+//! compare crack polylines.
+//!
+//! The façade runs solve LPs of thousands of blocks; those that take more than a few minutes
+//! in a release build are `#[ignore]`d with their measured time, and their numbers are in
+//! docs/cracks.md ("The paper's façade: adapted").
+
+use voussoir::analysis::adapt::{hausdorff_polylines, settle_adapt, AdaptOptions};
+use voussoir::analysis::settlement::settle;
+use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
+use voussoir::lp::SolverOptions;
+use voussoir::model::{Model, Point};
+use voussoir::settlement_input::{apply_profile, Profile};
+use voussoir::{BuildOptions, Structure};
+
+/// The Hausdorff distance by hand: two segments, a V and its chord, a point and a segment.
+#[test]
+fn issue30_item2_hausdorff_distance_of_polylines_by_hand() {
+    // Two parallel segments 1 m apart, the second 2 m longer to the right: from its right
+    // end (5, 1) the nearest point of the first is its end (3, 0), √(2² + 1²) = √5 away;
+    // every point of the first is 1 m from the second.
+    let a = [[0.0, 0.0], [3.0, 0.0]];
+    let b = [[0.0, 1.0], [5.0, 1.0]];
+    assert!((hausdorff_polylines(&a, &b) - 5f64.sqrt()).abs() < 1e-8);
+    assert_eq!(hausdorff_polylines(&a, &b), hausdorff_polylines(&b, &a));
+    // A V of apex (2, 2) over its chord from (0, 0) to (4, 0): both ends of the chord lie on
+    // the V, but the chord's middle (2, 0) is √2 from it (nearest points (1, 1) and (3, 1)),
+    // a distance reached inside a segment, not at a vertex; the V's apex is 2 from the chord.
+    // The Hausdorff distance is the larger, 2.
+    let v = [[0.0, 0.0], [2.0, 2.0], [4.0, 0.0]];
+    let chord = [[0.0, 0.0], [4.0, 0.0]];
+    assert!((hausdorff_polylines(&chord, &v) - 2.0).abs() < 1e-8);
+    // Lower the apex to (2, 0.5): the apex is 0.5 from the chord; from the chord's middle
+    // (2, 0) the side from (0, 0) to (2, 0.5) is |2·0 − 0.5·2|/√(2² + 0.5²) = 1/√4.25 ≈ 0.485
+    // away (its foot inside the side), less: the distance is the apex's, 0.5.
+    let flat = [[0.0, 0.0], [2.0, 0.5], [4.0, 0.0]];
+    assert!((hausdorff_polylines(&chord, &flat) - 0.5).abs() < 1e-8);
+    // The same polyline traversed backwards: 0.
+    let back: Vec<Point> = v.iter().rev().copied().collect();
+    assert!(hausdorff_polylines(&v, &back) < 1e-12);
+    // A point against a segment: its distance to the segment's far end, √(4² + 1²).
+    assert!((hausdorff_polylines(&[[0.0, 1.0]], &chord) - 17f64.sqrt()).abs() < 1e-12);
+    // An empty polyline is infinitely far.
+    assert!(hausdorff_polylines(&[], &chord).is_infinite());
+}
+
+/// The façade meshed with `element` (m) and `mesh`, the right half settling 20 cm.
+fn settling_facade(element: f64, mesh: FacadeMesh) -> Model {
+    let mut m = facade(&bondeno(element, mesh)).unwrap();
+    apply_profile(
+        &mut m,
+        &Profile::Uniform {
+            x0: 11.0,
+            x1: 22.0,
+            v: -0.2,
+        },
+    )
+    .unwrap();
+    m
+}
+
+/// The work of the dead loads (the solver's own vertex, certified) and the longest crack.
+fn solve(m: &Model) -> (f64, Vec<Point>) {
+    let st = Structure::new(m, BuildOptions::default()).unwrap();
+    solve_structure(&st)
+}
+
+fn solve_structure(st: &Structure) -> (f64, Vec<Point>) {
+    let r = settle(st, &SolverOptions::default()).unwrap();
+    assert!(r.certificate.as_ref().is_some_and(|c| c.ok));
+    let longest = r
+        .cracks
+        .iter()
+        .max_by(|a, b| a.length.total_cmp(&b.length))
+        .map(|c| c.points.clone())
+        .unwrap_or_default();
+    (r.work_dead_loads.unwrap(), longest)
+}
+
+/// Adapted with the default settings: the work of the adapted mesh (certified) and its longest
+/// crack; the iterations' works never decrease and are all certified.
+fn adapted(m: &Model) -> (f64, Vec<Point>) {
+    let ad = settle_adapt(
+        m,
+        BuildOptions::default(),
+        &SolverOptions::default(),
+        &AdaptOptions::default(),
+    )
+    .unwrap();
+    let its = &ad.record.iterations;
+    for w in its.windows(2) {
+        assert!(w[1].value >= w[0].value * (1.0 - 1e-7), "{its:?}");
+    }
+    assert!(its.iter().all(|i| i.certified), "{its:?}");
+    let (w, longest) = solve_structure(&ad.structure);
+    assert!((w - its.last().unwrap().value).abs() <= 1e-7 * w);
+    (w, longest)
+}
+
+/// Convergence: the adapted 1.0 m grid reaches the 0.25 m grid's work within 2 % (or goes
+/// beyond it). The time (10× less) is measured, not asserted: docs/cracks.md.
+#[test]
+#[ignore = "the 0.25 m grid's solve alone takes 136 s of CPU (release, load 1-2 on 2 cores)"]
+fn issue30_item2_facade_adapted_coarse_grid_reaches_the_finest_grid() {
+    let (fine, _) = solve(&settling_facade(0.25, FacadeMesh::Grid));
+    let coarse = settling_facade(1.0, FacadeMesh::Grid);
+    let (w0, _) = solve(&coarse);
+    let (w, _) = adapted(&coarse);
+    assert!(w >= w0 * (1.0 - 1e-7), "adapted {w} below unadapted {w0}");
+    assert!(w >= 0.98 * fine, "adapted 1.0 m grid {w} vs 0.25 m grid {fine}");
+}

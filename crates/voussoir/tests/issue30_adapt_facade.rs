@@ -153,3 +153,37 @@ fn issue30_item2_facade_adapted_1m_grid_passes_the_half_metre_grid() {
         "adapted {w}, unadapted {w0}, 0.5 m grid {half}"
     );
 }
+
+/// Regression (this session): the adaptation stopped as converged after one iteration whose
+/// change was below the tolerance, although the next iteration's new lines raised the work by
+/// 3.3 % (the 0.5 m grid: 369.66, 370.96 (+0.35 %), 383.10, 384.60, 384.93 kN·m). Converged
+/// now takes two small iterations in a row.
+#[test]
+#[ignore = "238 s of CPU in a release build (load 9 on 2 cores: 26 min wall)"]
+fn issue30_item2_adapt_does_not_stop_after_one_small_step() {
+    let m = settling_facade(0.5, FacadeMesh::Grid);
+    let (w0, _) = solve(&m);
+    let o = AdaptOptions::default();
+    let ad = settle_adapt(&m, BuildOptions::default(), &SolverOptions::default(), &o).unwrap();
+    let its = &ad.record.iterations;
+    let change = (its[1].value - its[0].value) / its[1].value;
+    assert!(change < o.tolerance, "{its:?}");
+    assert!(its.len() > 2, "stopped after one small step: {its:?}");
+    assert!(its.last().unwrap().value > 1.03 * w0, "{its:?}");
+}
+
+/// The must-show's works: the façade at 0.5 m adapted from the grid and from triangles, within
+/// 2 % of each other and neither below either unadapted mesh. (The longest cracks are not
+/// within 1 m of each other: docs/cracks.md.)
+#[test]
+#[ignore = "the two adapted runs take about 240 s and TRIANGLES_CPU s of CPU (release)"]
+fn issue30_item2_facade_adapted_from_grid_and_triangles_agree_in_work() {
+    let grid = settling_facade(0.5, FacadeMesh::Grid);
+    let tri = settling_facade(0.5, FacadeMesh::Triangles);
+    let (g0, _) = solve(&grid);
+    let (t0, _) = solve(&tri);
+    let (g, _) = adapted(&grid);
+    let (t, _) = adapted(&tri);
+    assert!((g - t).abs() <= 0.02 * g.max(t), "grid {g}, triangles {t}");
+    assert!(g.min(t) >= g0.max(t0) * (1.0 - 1e-7), "{g} {t} vs {g0} {t0}");
+}

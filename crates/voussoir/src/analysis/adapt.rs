@@ -22,7 +22,8 @@
 //!    the motion LP by Clarabel, its optimal value only); a move is kept only if it improves
 //!    the objective. Lines of earlier iterations keep their positions.
 //! 5. Solve the best geometry in full (certified) and repeat from 2 until the relative change
-//!    of the objective between iterations is below `tolerance`, or `iterations` are done.
+//!    of the objective is below `tolerance` in two iterations in a row, or no new crack line
+//!    appears, or `iterations` are done.
 //!
 //! The search trials solve the settlement's motion LP only (or the limit analysis); each
 //! iteration's reported result is the full analysis with its certificate. The library does no
@@ -60,7 +61,8 @@ pub enum Objective {
 pub struct AdaptOptions {
     /// Largest number of adaptation iterations (after the unadapted solve).
     pub iterations: usize,
-    /// Converged when the relative change of the objective between two iterations is below this.
+    /// Converged when the relative change of the objective is below this in two iterations in a
+    /// row.
     pub tolerance: f64,
     /// Largest number of new crack lines taken from one iteration's cracks.
     pub lines_per_iteration: usize,
@@ -108,7 +110,8 @@ pub struct AdaptRecord {
     /// One sentence: what was done.
     pub method: String,
     pub objective: Objective,
-    /// The relative change of the last iteration was below `tolerance`.
+    /// The relative change of the last two iterations was below `tolerance` (or no new crack
+    /// line appeared).
     pub converged: bool,
     pub tolerance: f64,
     pub iterations: Vec<AdaptIteration>,
@@ -281,6 +284,7 @@ where
     let mut cracks = ev.cracks;
     let mut value = v0;
     let mut converged = false;
+    let mut small = 0usize;
     let reach = o.reach * region.size;
     for it in 1..=o.iterations {
         let new = region.lines_from_cracks(&cracks, &lines, o.lines_per_iteration);
@@ -341,7 +345,11 @@ where
         current = (m, st);
         cracks = ev.cracks;
         value = v;
-        if change < o.tolerance {
+        // Converged after two iterations in a row below the tolerance: one small step says
+        // little, as the next iteration's new lines can still raise the objective (the 0.5 m
+        // façade grid: +0.35 %, then +3.3 %; docs/cracks.md).
+        small = if change < o.tolerance { small + 1 } else { 0 };
+        if small >= 2 {
             converged = true;
             break;
         }

@@ -176,7 +176,7 @@ fn issue30_item2_adapt_does_not_stop_after_one_small_step() {
 /// 2 % of each other and neither below either unadapted mesh. (The longest cracks are not
 /// within 1 m of each other: docs/cracks.md.)
 #[test]
-#[ignore = "the two adapted runs take about 240 s and TRIANGLES_CPU s of CPU (release)"]
+#[ignore = "never completed in this session: the grid's adapted run takes 238 s of CPU, the triangles' did not finish in more than 540 s of CPU (load 7-10)"]
 fn issue30_item2_facade_adapted_from_grid_and_triangles_agree_in_work() {
     let grid = settling_facade(0.5, FacadeMesh::Grid);
     let tri = settling_facade(0.5, FacadeMesh::Triangles);

@@ -185,5 +185,8 @@ fn issue30_item2_facade_adapted_from_grid_and_triangles_agree_in_work() {
     let (g, _) = adapted(&grid);
     let (t, _) = adapted(&tri);
     assert!((g - t).abs() <= 0.02 * g.max(t), "grid {g}, triangles {t}");
-    assert!(g.min(t) >= g0.max(t0) * (1.0 - 1e-7), "{g} {t} vs {g0} {t0}");
+    assert!(
+        g.min(t) >= g0.max(t0) * (1.0 - 1e-7),
+        "{g} {t} vs {g0} {t0}"
+    );
 }

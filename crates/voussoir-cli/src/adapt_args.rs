@@ -11,15 +11,15 @@ pub struct AdaptArgs {
     /// Mesh-independent cracks: cut straight crack lines into the mesh along the cracks found
     /// and move their ends along the wall's outline (golden-section search) to the position that
     /// maximises the work of the dead loads (settle) or minimises λ (limit); iterate until the
-    /// relative change is below --adapt-tol. 2D models whose blocks tile one outline
+    /// relative change is below --adapt-tol twice in a row. 2D models whose blocks tile one outline
     /// (docs/cracks.md). The result is the analysis of the adapted mesh plus an `adapt` record.
     #[arg(long)]
     pub adapt: bool,
     /// Largest number of adaptation iterations [default: 4].
     #[arg(long, value_name = "N")]
     pub adapt_iterations: Option<usize>,
-    /// Converged when the work (λ) changes by less than this fraction between two iterations
-    /// [default: 0.005].
+    /// Converged when the work (λ) changes by less than this fraction in two iterations in a
+    /// row [default: 0.005].
     #[arg(long, value_name = "TOL")]
     pub adapt_tol: Option<f64>,
 }

@@ -36,24 +36,14 @@ use crate::geometry::{
 };
 use crate::lp::{self, LpStatus, SolverOptions};
 use crate::model::{Block, Load, Model, Point};
+pub use crate::result::adapt::{AdaptIteration, AdaptRecord, Adapted, Objective};
 use crate::result::cracks::Crack;
 use crate::result::BodyName;
 use crate::structure::{BuildOptions, Structure};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::single::SingleFloatOverlay;
-use serde::{Deserialize, Serialize};
 use std::time::Instant;
-
-/// What the adaptation optimises.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Objective {
-    /// The work of the dead loads of a settlement (maximised, as by the paper's program).
-    SettlementWork,
-    /// The collapse load multiplier λ (minimised).
-    LoadMultiplier,
-}
 
 /// Settings of the adaptation.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -84,41 +74,6 @@ impl Default for AdaptOptions {
     }
 }
 
-/// One iteration of the adaptation (0: the model as given).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct AdaptIteration {
-    pub iteration: usize,
-    /// Blocks of the mesh solved.
-    pub blocks: usize,
-    /// Crack lines inserted.
-    pub lines: usize,
-    /// Work of the dead loads (kN·m) or load multiplier λ of the full solve.
-    pub value: f64,
-    /// Whether that solve is certified (duality gap within tolerance).
-    pub certified: bool,
-    /// Search solves of this iteration.
-    pub evaluations: usize,
-    /// Wall-clock seconds from the start of the adaptation to the end of this iteration (in the
-    /// summary only: the JSON stays byte-identical for the same input).
-    #[serde(skip)]
-    pub time: f64,
-}
-
-/// The record of an adaptation (the `adapt` field of an adapted result).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct AdaptRecord {
-    /// One sentence: what was done.
-    pub method: String,
-    pub objective: Objective,
-    /// The relative change of the last two iterations was below `tolerance` (or no new crack
-    /// line appeared).
-    pub converged: bool,
-    pub tolerance: f64,
-    pub iterations: Vec<AdaptIteration>,
-    /// The crack lines inserted, each from one point of the outline to another (m).
-    pub lines: Vec<[Point; 2]>,
-}
-
 /// An adapted model: the mesh with its crack lines cut in, its structure and the record.
 #[derive(Clone, Debug)]
 pub struct Adaptation {
@@ -135,15 +90,6 @@ pub struct Evaluation {
     /// The cracks (full solves only).
     pub cracks: Vec<Crack>,
     pub certified: bool,
-}
-
-/// A result together with its adaptation record (serialised as the result's fields plus
-/// `adapt`).
-#[derive(Serialize)]
-pub struct Adapted<'a, R: Serialize> {
-    #[serde(flatten)]
-    pub result: &'a R,
-    pub adapt: &'a AdaptRecord,
 }
 
 /// Why `--adapt` cannot be applied to `model`, if it cannot: loads tied to block edges and

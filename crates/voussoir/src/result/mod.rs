@@ -5,6 +5,7 @@
 //! result serialises to the JSON the CLI prints. Drawings and other front ends read results
 //! from this module only, never from the algorithms in [`crate::analysis`].
 
+pub mod adapt;
 pub mod canonical;
 pub mod capacity;
 pub mod cracks;
@@ -17,6 +18,7 @@ pub mod settlement;
 pub mod sweep;
 pub mod tilt;
 
+pub use adapt::{AdaptIteration, AdaptRecord, Adapted, Objective};
 pub use canonical::*;
 pub use capacity::*;
 pub use cracks::{Crack, Crack3d, CrackEnd, CrackFront, CrackGeometry, CrackText};

@@ -142,3 +142,40 @@ fn issue30_item4_cracks_state_their_chord_and_the_summary_the_longest_slope() {
         assert!(line.contains(&format!("slope {:.3}", rise / run)), "{line}");
     }
 }
+
+#[test]
+fn issue30_item4_drawing_says_which_hairlines_it_leaves_out() {
+    let (_, r, svg) = friction_wall("hairlines");
+    let f = |v: &serde_json::Value| v.as_f64().unwrap();
+    let widths: Vec<f64> = r["cracks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| f(&c["max_opening"]))
+        .collect();
+    let widest = widths.iter().fold(0.0f64, |m, w| m.max(*w));
+    // The drawing's threshold (docs/drawing.md): cracks narrower than 1 % of the widest.
+    let left: Vec<f64> = widths
+        .iter()
+        .copied()
+        .filter(|w| *w < 0.01 * widest)
+        .collect();
+    assert!(!left.is_empty(), "the wall has hairline cracks");
+    let most = left.iter().fold(0.0f64, |m, w| m.max(*w));
+    assert!(most < 0.01 * widest);
+    let want = format!(
+        "{} hairline cracks narrower than 1 % of the widest not drawn (the widest of them {:.3} mm)",
+        left.len(),
+        most * 1e3
+    );
+    assert!(svg.contains(&want), "the drawing should say {want:?}");
+    // The crack lines drawn are the others.
+    let lines = svg
+        .split("<g class=\"crack-lines\"")
+        .nth(1)
+        .and_then(|g| g.split("</g>").next())
+        .unwrap_or("")
+        .matches("<polyline")
+        .count();
+    assert_eq!(lines + left.len(), widths.len());
+}

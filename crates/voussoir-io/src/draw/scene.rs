@@ -663,11 +663,14 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         scene.joints.iter().map(|j| (j.id, j)).collect();
     let ar = Arrows::new(scene, opts, &mo, &joint_by_id);
     let visible = layers::visible_hinges(scene, opts, &mo.b, &joint_by_id);
-    let info = if opts.hinges {
+    let mut info = if opts.hinges {
         hinge_info(&scene.info, hinged_joints(scene.hinges), visible.len())
     } else {
         scene.info.clone()
     };
+    if opts.cracks {
+        info.extend(hairline_info(scene));
+    }
     let lay = Layout::new(scene, &info, opts, &mo, &ar);
     let b = &mo.b;
     let has_motion = mo.has_motion;
@@ -985,6 +988,44 @@ fn hinge_info(info: &[String], listed: usize, drawn: usize) -> Vec<String> {
             line.clone()
         })
         .collect()
+}
+
+/// The line that says which cracks the drawing leaves out: those narrower than [`HAIRLINE`] of
+/// the widest (the summary and the JSON list them), how many and the widest of them (mm for a
+/// settlement, relative to the widest crack for a collapse mechanism).
+fn hairline_info(scene: &Scene) -> Option<String> {
+    let widest = scene
+        .cracks
+        .iter()
+        .fold(0.0f64, |m, c| m.max(c.max_opening));
+    let left: Vec<f64> = scene
+        .cracks
+        .iter()
+        .map(|c| c.max_opening)
+        .filter(|w| !(*w >= HAIRLINE * widest))
+        .collect();
+    if left.is_empty() || !(widest > 0.0) {
+        return None;
+    }
+    let most = left.iter().fold(0.0f64, |m, w| m.max(*w));
+    let pct = HAIRLINE * 100.0;
+    let (n, s) = (left.len(), if left.len() == 1 { "" } else { "s" });
+    Some(if scene.units == MotionUnits::Metres {
+        format!(
+            "{n} hairline crack{s} narrower than {pct} % of the widest not drawn (the widest of them {})",
+            voussoir_io_opening(most)
+        )
+    } else {
+        format!(
+            "{n} hairline crack{s} narrower than {pct} % of the widest not drawn (relative opening at most {most_rel:.4})",
+            most_rel = most / widest
+        )
+    })
+}
+
+/// An opening in mm as the summaries write it.
+fn voussoir_io_opening(w: f64) -> String {
+    voussoir::lengths::Length::Opening.show(w)
 }
 
 /// The number of hinged joints among `hinges` (a joint's hinge points counted once, as the

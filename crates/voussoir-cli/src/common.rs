@@ -803,6 +803,30 @@ pub fn cracks_section<C: CrackText>(
             cracks.len() - CRACK_LINES
         );
     }
+    // 2D: the longest crack's chord, how steeply it climbs as a whole (first of equal lengths).
+    let mut longest: Option<(usize, (f64, f64, f64))> = None;
+    for (i, c) in cracks.iter().enumerate() {
+        if let Some(ch) = c.chord() {
+            if longest.is_none_or(|(_, l)| ch.0 > l.0 * (1.0 + 1e-9)) {
+                longest = Some((i, ch));
+            }
+        }
+    }
+    if let Some((i, (len, rise, run))) = longest {
+        let slope = if run > 0.0 {
+            format!("slope {:.3}", rise / run)
+        } else {
+            "vertical".to_string()
+        };
+        let _ = writeln!(
+            s,
+            "  longest: crack {}, {} long; its ends rise {} over {} ({slope})",
+            i + 1,
+            Length::Position.show(len),
+            Length::Position.show(rise),
+            Length::Position.show(run)
+        );
+    }
     s
 }
 

@@ -662,7 +662,16 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
     let joint_by_id: BTreeMap<usize, &JointResult> =
         scene.joints.iter().map(|j| (j.id, j)).collect();
     let ar = Arrows::new(scene, opts, &mo, &joint_by_id);
-    let lay = Layout::new(scene, opts, &mo, &ar);
+    let visible = layers::visible_hinges(scene, opts, &mo.b, &joint_by_id);
+    let mut info = if opts.hinges {
+        hinge_info(&scene.info, hinged_joints(scene.hinges), visible.len())
+    } else {
+        scene.info.clone()
+    };
+    if opts.cracks {
+        info.extend(hairline_info(scene));
+    }
+    let lay = Layout::new(scene, &info, opts, &mo, &ar);
     let b = &mo.b;
     let has_motion = mo.has_motion;
     let interactive = opts.interactive && has_motion;
@@ -695,7 +704,7 @@ pub fn draw(scene: &Scene, opts: &DrawOptions) -> Drawing {
         p.arrows(&mut o, "contact-forces", FORCE, &centred, head);
     }
     let drew_thrust = p.thrust(&mut o);
-    let n_hinges = p.hinges(&mut o, &lines);
+    let n_hinges = p.hinges(&mut o, &visible);
 
     if b.bodies.is_empty() {
         lay.page.nothing_to_draw(&mut o, lay.draw_h);
@@ -885,7 +894,7 @@ struct Layout {
 }
 
 impl Layout {
-    fn new(scene: &Scene, opts: &DrawOptions, mo: &Motion, ar: &Arrows) -> Layout {
+    fn new(scene: &Scene, info: &[String], opts: &DrawOptions, mo: &Motion, ar: &Arrows) -> Layout {
         let b = &mo.b;
         let has_motion = mo.has_motion;
         // Bounding box of everything drawn, in world units.
@@ -913,7 +922,7 @@ impl Layout {
         }
         let (bw, bh) = ((bb.0[2] - bb.0[0]).max(1e-9), (bb.0[3] - bb.0[1]).max(1e-9));
 
-        let page = Page::new(opts.width, opts.max_height, 760.0, &scene.info);
+        let page = Page::new(opts.width, opts.max_height, 760.0, info);
         let (width, max_h, margin, title_h) = (page.width, page.max_height, MARGIN, page.title_h);
         let k = ((width - 2.0 * margin) / bw).min(max_h / bh);
         // The legend's height: the entries that may be drawn (a superset of those drawn),
@@ -952,6 +961,71 @@ impl Layout {
             height,
         }
     }
+}
+
+/// The info lines with their count of hinges (`listed`: "93 hinges", the result's hinged
+/// joints) made the count of hinge dots drawn (`drawn`) where the two differ: "4 hinges drawn
+/// of 93 hinged joints" (the others are bends of crack lines or ends of hairlines, which the
+/// drawing does not mark; [`layers::visible_hinges`]).
+fn hinge_info(info: &[String], listed: usize, drawn: usize) -> Vec<String> {
+    let from = plural(listed, "hinge");
+    let to = format!("{} drawn of {listed} hinged joints", plural(drawn, "hinge"));
+    info.iter()
+        .map(|line| {
+            if drawn == listed {
+                return line.clone();
+            }
+            let mut at = 0;
+            while let Some(k) = line[at..].find(&from).map(|k| k + at) {
+                let end = k + from.len();
+                let before = line[..k].chars().next_back();
+                let after = line[end..].chars().next();
+                if before.is_none_or(|c| c == ' ') && after.is_none_or(|c| c == ' ' || c == ',') {
+                    return format!("{}{to}{}", &line[..k], &line[end..]);
+                }
+                at = end;
+            }
+            line.clone()
+        })
+        .collect()
+}
+
+/// The line that says which cracks the drawing leaves out: those narrower than [`HAIRLINE`] of
+/// the widest (the summary and the JSON list them), how many and the widest of them (mm for a
+/// settlement, relative to the widest crack for a collapse mechanism).
+fn hairline_info(scene: &Scene) -> Option<String> {
+    let widest = scene
+        .cracks
+        .iter()
+        .fold(0.0f64, |m, c| m.max(c.max_opening));
+    let left: Vec<f64> = scene
+        .cracks
+        .iter()
+        .map(|c| c.max_opening)
+        .filter(|w| !(*w >= HAIRLINE * widest))
+        .collect();
+    if left.is_empty() || !(widest > 0.0) {
+        return None;
+    }
+    let most = left.iter().fold(0.0f64, |m, w| m.max(*w));
+    let pct = HAIRLINE * 100.0;
+    let (n, s) = (left.len(), if left.len() == 1 { "" } else { "s" });
+    Some(if scene.units == MotionUnits::Metres {
+        format!(
+            "{n} hairline crack{s} narrower than {pct} % of the widest not drawn (the widest of them {})",
+            voussoir_io_opening(most)
+        )
+    } else {
+        format!(
+            "{n} hairline crack{s} narrower than {pct} % of the widest not drawn (relative opening at most {most_rel:.4})",
+            most_rel = most / widest
+        )
+    })
+}
+
+/// An opening in mm as the summaries write it.
+fn voussoir_io_opening(w: f64) -> String {
+    voussoir::lengths::Length::Opening.show(w)
 }
 
 /// The number of hinged joints among `hinges` (a joint's hinge points counted once, as the

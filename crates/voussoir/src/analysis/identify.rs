@@ -80,7 +80,7 @@ pub struct Crack {
     #[serde(alias = "openings")]
     pub opening: Width,
     /// The derived fields of a result's crack record (`length`, `max_opening`, `joints`,
-    /// `faces`, `start`, `end`, `closed_loop`), so that a result's `cracks` can be given as
+    /// `faces`, `start`, `end`, `closed_loop`, `rise`, `run`), so that a result's `cracks` can be given as
     /// they are written: read, not used — `points` and `openings` carry the observation.
     #[serde(default, skip_serializing)]
     pub length: Option<serde_json::Value>,
@@ -96,6 +96,10 @@ pub struct Crack {
     pub end: Option<serde_json::Value>,
     #[serde(default, skip_serializing)]
     pub closed_loop: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub rise: Option<serde_json::Value>,
+    #[serde(default, skip_serializing)]
+    pub run: Option<serde_json::Value>,
 
     /// Measurement tolerance of this crack, in the same unit as its width; default: the file's.
     #[serde(default, skip_serializing_if = "Option::is_none")]

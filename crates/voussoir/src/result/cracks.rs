@@ -68,6 +68,21 @@ pub struct Crack {
     /// are then the same.
     #[serde(default, skip_serializing_if = "is_false")]
     pub closed_loop: bool,
+    /// The chord between the polyline's end points (m): `rise` = |Δy|, `run` = |Δx|. Its
+    /// slope `rise / run` is how steeply the crack climbs as a whole (a stepped crack through
+    /// a running bond of units `L × h` climbs at most `h / (L/2)` per step); 0 and 0 for a
+    /// closed loop.
+    #[serde(default)]
+    pub rise: f64,
+    #[serde(default)]
+    pub run: f64,
+}
+
+impl Crack {
+    /// The chord's slope `rise / run` (None for a vertical chord or a closed loop).
+    pub fn slope(&self) -> Option<f64> {
+        (self.run > 0.0).then(|| self.rise / self.run)
+    }
 }
 
 fn is_false(b: &bool) -> bool {
@@ -545,7 +560,14 @@ fn build(
         joints,
         faces,
         closed_loop,
+        rise: 0.0,
+        run: 0.0,
     };
+    if !closed_loop {
+        let (a, b) = (crack.points[0], crack.points[n - 1]);
+        crack.rise = (b[1] - a[1]).abs();
+        crack.run = (b[0] - a[0]).abs();
+    }
     // From the wider end to the narrower one (ties: from the lower-left end).
     let largest = max_opening;
     let (ws, we) = (
@@ -828,6 +850,10 @@ pub trait CrackText {
     /// without, the opening relative to `largest` (a collapse mechanism, whose amplitude is
     /// arbitrary).
     fn describe(&self, widths: bool, largest: f64) -> String;
+    /// A 2D crack's length and the rise and run of its chord (m); None in 3D.
+    fn chord(&self) -> Option<(f64, f64, f64)> {
+        None
+    }
 }
 
 /// A width in mm (the summaries' unit for openings, [`crate::lengths`]; "< 0.001 mm" below
@@ -870,6 +896,9 @@ fn body_text(b: &BodyName) -> String {
 impl CrackText for Crack {
     fn max_opening(&self) -> f64 {
         self.max_opening
+    }
+    fn chord(&self) -> Option<(f64, f64, f64)> {
+        (!self.closed_loop).then_some((self.length, self.rise, self.run))
     }
     fn describe(&self, widths: bool, largest: f64) -> String {
         let n = self.joints.len();

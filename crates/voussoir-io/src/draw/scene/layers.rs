@@ -34,12 +34,61 @@ pub(super) struct Painter<'a> {
     interactive: bool,
 }
 
-/// What the crack-line layer drew, and the points the hinge layer leaves out: closed points
-/// a crack runs through (bends of the crack) and the ends of a settlement's hairlines.
+/// What the crack-line layer drew.
 pub(super) struct CrackLines {
     pub(super) drawn: usize,
-    interior: Vec<[f64; 2]>,
-    hairline_tips: Vec<[f64; 2]>,
+}
+
+/// The hinges a drawing shows, each with the body it moves with: every hinge of the scene but
+/// a closed point a crack runs through (a bend of that crack, not a hinge) and the points of a
+/// settlement's hairlines (cracks narrower than [`HAIRLINE`] of the widest, left out of the
+/// drawing with their hinges; a collapse mechanism's hinges are all drawn: each is part of the
+/// mechanism). The drawing's title counts these, so that its count is the dots drawn.
+pub(super) fn visible_hinges(
+    scene: &Scene,
+    opts: &DrawOptions,
+    b: &Bodies,
+    joint_by_id: &BTreeMap<usize, &JointResult>,
+) -> Vec<(usize, [f64; 2])> {
+    let mut out = Vec::new();
+    if !(opts.hinges && !scene.hinges.is_empty()) {
+        return out;
+    }
+    let mut skip: Vec<[f64; 2]> = Vec::new();
+    if opts.cracks && !scene.cracks.is_empty() {
+        let widest = scene
+            .cracks
+            .iter()
+            .fold(0.0f64, |m, c| m.max(c.max_opening));
+        for c in scene.cracks {
+            if c.points.len() > 2 {
+                skip.extend_from_slice(&c.points[1..c.points.len() - 1]);
+            }
+            if !(c.max_opening >= HAIRLINE * widest) && scene.units == MotionUnits::Metres {
+                skip.extend(c.points.iter().copied());
+            }
+        }
+    }
+    let tol = 1e-9 * b.size;
+    for h in scene.hinges {
+        if !h.x.is_finite() || !h.y.is_finite() {
+            continue;
+        }
+        if skip.iter().any(|p| (p[0] - h.x).hypot(p[1] - h.y) <= tol) {
+            continue;
+        }
+        // The hinge moves with body a of its joint; results without joints (capacity
+        // curves) use the block nearest to the hinge.
+        let a = match joint_by_id.get(&h.joint).and_then(|j| b.body_of(&j.a)) {
+            Some(a) => a,
+            None => match nearest_block(b, [h.x, h.y]) {
+                Some(a) => a,
+                None => continue,
+            },
+        };
+        out.push((a, [h.x, h.y]));
+    }
+    out
 }
 
 impl<'a> Painter<'a> {
@@ -252,11 +301,7 @@ impl<'a> Painter<'a> {
     /// they lie on; the first ten numbered as in the summaries.
     pub(super) fn crack_lines(&self, o: &mut String) -> CrackLines {
         let scene = self.scene;
-        let mut out = CrackLines {
-            drawn: 0,
-            interior: Vec::new(),
-            hairline_tips: Vec::new(),
-        };
+        let mut out = CrackLines { drawn: 0 };
         if !(self.opts.cracks && !scene.cracks.is_empty()) {
             return out;
         }
@@ -271,16 +316,8 @@ impl<'a> Painter<'a> {
             .fold(0.0f64, |m, c| m.max(c.max_opening));
         let fs = 11.0;
         for (n, c) in scene.cracks.iter().enumerate() {
-            if c.points.len() > 2 {
-                out.interior
-                    .extend_from_slice(&c.points[1..c.points.len() - 1]);
-            }
             if !(c.max_opening >= HAIRLINE * widest) {
-                // A settlement's hairline is left out with its hinges (a collapse mechanism's
-                // hinges are all drawn: each is part of the mechanism).
-                if scene.units == MotionUnits::Metres {
-                    out.hairline_tips.extend(c.points.iter().copied());
-                }
+                // Left out with its hinges (visible_hinges).
                 continue;
             }
             let on: Vec<&JointResult> = c
@@ -508,44 +545,18 @@ impl<'a> Painter<'a> {
         })
     }
 
-    /// The hinges, on top; a closed point a crack runs through is a bend of that crack, not a
-    /// hinge, and the hinges of a settlement's hairlines are left out with them. Returns how
-    /// many were drawn.
-    pub(super) fn hinges(&self, o: &mut String, cracks: &CrackLines) -> usize {
-        let (scene, b) = (self.scene, self.b);
-        let mut n_hinges = 0;
-        if !(self.opts.hinges && !scene.hinges.is_empty()) {
-            return n_hinges;
+    /// The hinges, on top: those of [`visible_hinges`]. Returns how many were drawn.
+    pub(super) fn hinges(&self, o: &mut String, visible: &[(usize, [f64; 2])]) -> usize {
+        if !(self.opts.hinges && !self.scene.hinges.is_empty()) {
+            return 0;
         }
         let _ = writeln!(
             o,
             "<g class=\"hinges\" fill=\"{HINGE}\" stroke=\"#ffffff\" stroke-width=\"{}\">",
             num((self.hinge_r * 0.3).clamp(0.8, 1.5))
         );
-        for h in scene.hinges {
-            if !h.x.is_finite() || !h.y.is_finite() {
-                continue;
-            }
-            let tol = 1e-9 * b.size;
-            if cracks
-                .interior
-                .iter()
-                .chain(&cracks.hairline_tips)
-                .any(|p| (p[0] - h.x).hypot(p[1] - h.y) <= tol)
-            {
-                continue;
-            }
-            // The hinge moves with body a of its joint; results without joints (capacity
-            // curves) use the block nearest to the hinge.
-            let a = match self.joint_by_id.get(&h.joint).and_then(|j| b.body_of(&j.a)) {
-                Some(a) => a,
-                None => match nearest_block(b, [h.x, h.y]) {
-                    Some(a) => a,
-                    None => continue,
-                },
-            };
-            let (p, data) = self.at(a, [h.x, h.y]);
-            n_hinges += 1;
+        for &(a, q) in visible {
+            let (p, data) = self.at(a, q);
             let _ = write!(
                 o,
                 "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
@@ -559,6 +570,6 @@ impl<'a> Painter<'a> {
             o.push_str("/>\n");
         }
         o.push_str("</g>\n");
-        n_hinges
+        visible.len()
     }
 }

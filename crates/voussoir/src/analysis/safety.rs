@@ -80,8 +80,23 @@ fn stands_on(map: &KinematicMap, dead: &[f64], solver: &SolverOptions) -> Result
     Ok(feasible(sol.status))
 }
 
+/// The simplex iterations a warm run of a sequence may take before the program is solved
+/// otherwise: as many as the program has rows (at least 1,000). On the 24 × 24 dome (3,318
+/// rows) the warm runs that answered took 1,000–2,700 iterations; one ran for minutes.
+fn warm_limit(lp: &lp::LinearProgram) -> usize {
+    lp.num_rows().max(1000)
+}
+
 /// Largest relative violation of an equilibrium state that still counts as one (round-off).
 const DECISION_TOLERANCE: f64 = 1e-9;
+
+/// With the environment variable `VOUSSOIR_TRACE` set: one line per program on stderr (what,
+/// how it was answered, the time since `t0`).
+fn trace(what: std::fmt::Arguments, t0: std::time::Instant) {
+    if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        eprintln!("trace: safety {what} {:.3} s", t0.elapsed().as_secs_f64());
+    }
+}
 
 /// The joints of `st` with every point moved towards its joint's centre: `x → c + f·(x − c)`,
 /// `c` the mean of the joint's points. In 2D the lever arms of the crushing domain and the
@@ -142,6 +157,8 @@ pub struct Decisions {
     /// Decisions taken again by the dual simplex from scratch (their first answer could not
     /// be checked: [`Decisions::stands`]).
     pub redecided: usize,
+    /// A warm run has failed: later decisions go to the elastic program directly.
+    warm_failed: bool,
 }
 
 impl Decisions {
@@ -152,6 +169,7 @@ impl Decisions {
             solves: 0,
             warm: 0,
             redecided: 0,
+            warm_failed: false,
         }
     }
 
@@ -163,18 +181,45 @@ impl Decisions {
         if !fp.cones.is_empty() {
             return stands_on(map, dead, &self.solver);
         }
-        let seq = match &mut self.sequence {
-            Some(seq) => {
-                seq.replace(fp.lp.clone())?;
-                seq
+        // The warm run (the first program: the requested method), until one fails: then
+        // every later decision goes to the elastic program directly (on the 24 × 24 dome the
+        // warm dual simplex reached its iteration limit on 15 of 17 later decisions).
+        let sol = if self.warm_failed {
+            None
+        } else {
+            let seq = match &mut self.sequence {
+                Some(seq) => {
+                    seq.replace(fp.lp.clone())?;
+                    seq
+                }
+                None => {
+                    let mut seq = lp::sequence::Sequence::new(fp.lp.clone(), &self.solver)?;
+                    seq.limit_warm_iterations(Some(warm_limit(&fp.lp)));
+                    self.sequence.insert(seq)
+                }
+            };
+            let before = seq.stats.warm;
+            let t0 = std::time::Instant::now();
+            let sol = seq.try_solve();
+            self.warm += seq.stats.warm - before;
+            trace(
+                format_args!(
+                    "decision {} ({} rows, {} columns): {:?} by {:?} ({} warm, {:?} iterations)",
+                    self.solves,
+                    fp.lp.num_rows(),
+                    fp.lp.num_cols(),
+                    sol.as_ref().map(|s| s.status),
+                    sol.as_ref().map(|s| s.method.name()),
+                    seq.stats.warm - before,
+                    sol.as_ref().map(|s| s.iterations)
+                ),
+                t0,
+            );
+            if sol.is_none() && self.solves > 1 {
+                self.warm_failed = true;
             }
-            None => self
-                .sequence
-                .insert(lp::sequence::Sequence::new(fp.lp.clone(), &self.solver)?),
+            sol
         };
-        let before = seq.stats.warm;
-        let sol = seq.solve()?;
-        self.warm += seq.stats.warm - before;
         // Each decision exact, either way: "stands" with an equilibrium state checked on the
         // program itself (largest relative violation ≤ DECISION_TOLERANCE, whatever the
         // method); "does not stand" as the dual simplex says it (its proof of infeasibility is
@@ -182,28 +227,42 @@ impl Decisions {
         // "infeasible" from another method (an interior point, the primal simplex) — is
         // decided again by the elastic program (`lp::sequence::decide_feasibility`: the least
         // total violation, certified by its duals, a Farkas certificate where it is positive).
-        let checked = match sol.status {
-            LpStatus::Infeasible => sol.method == lp::Method::DualSimplex,
-            _ => {
-                sol.x.len() == fp.lp.num_cols()
-                    && fp.lp.relative_violation(&sol.x) <= DECISION_TOLERANCE
+        if let Some(sol) = &sol {
+            let checked = match sol.status {
+                LpStatus::Infeasible => sol.method == lp::Method::DualSimplex,
+                _ => {
+                    sol.x.len() == fp.lp.num_cols()
+                        && fp.lp.relative_violation(&sol.x) <= DECISION_TOLERANCE
+                }
+            };
+            if checked {
+                return Ok(feasible(sol.status));
             }
-        };
-        if checked {
-            return Ok(feasible(sol.status));
         }
         // The elastic program decides, with a certificate either way; where even that does
         // not certify, the dual simplex from scratch.
         self.solves += 1;
         self.redecided += 1;
-        // Clarabel first (an interior point without crossover: seconds on the 24 × 24 dome,
-        // where HiGHS's simplex stalls in phase 1), then the requested method.
-        for method in [lp::Method::Clarabel, self.solver.method] {
+        // Interior points without crossover, each alone (no fallback chain) and certified by
+        // its duals: Clarabel's (2 s on the 24 × 24 dome's elastic programs), then HiGHS's
+        // (9 s). Crossover and HiGHS's simplex stalled for minutes on them (phase 1).
+        for method in [lp::Method::Clarabel, lp::Method::IpmNoCrossover] {
             let o = SolverOptions {
                 method,
                 ..self.solver
             };
-            if let Some(d) = lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)? {
+            let t0 = std::time::Instant::now();
+            let d = lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)?;
+            trace(
+                format_args!(
+                    "decision {}: elastic program by {}: {:?}",
+                    self.solves,
+                    method.name(),
+                    d.as_ref().map(|d| (d.feasible, d.violation))
+                ),
+                t0,
+            );
+            if let Some(d) = d {
                 return Ok(d.feasible);
             }
         }
@@ -224,6 +283,18 @@ pub fn least_joint_fraction<S: Assembly>(
     tolerance: f64,
     solver: &SolverOptions,
 ) -> Result<(Option<f64>, usize)> {
+    let (f, solves, _) = bisect_fraction(st, tolerance, solver)?;
+    Ok((f, solves))
+}
+
+/// [`least_joint_fraction`], and the basis of its first program (the structure as given, a
+/// feasible vertex where it stands and the method leaves one), which starts the reaction
+/// ranges' sequence: the same constraints, another objective.
+fn bisect_fraction<S: Assembly>(
+    st: &S,
+    tolerance: f64,
+    solver: &SolverOptions,
+) -> Result<(Option<f64>, usize, Option<lp::Basis>)> {
     if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
         return Err(Error::Request(format!(
             "tolerance {tolerance}: the bisection on the joint fraction needs 0 < tolerance < 1"
@@ -233,21 +304,29 @@ pub fn least_joint_fraction<S: Assembly>(
     let dead = st.load_vector(false);
     let mut d = Decisions::new(solver);
     if !d.stands(&base, &dead)? {
-        return Ok((None, d.solves));
+        return Ok((None, d.solves, None));
     }
-    if d.stands(&shrunk_map(st, &base, 0.0), &dead)? {
-        return Ok((Some(0.0), d.solves));
-    }
+    let start = d.sequence.as_ref().and_then(|s| s.basis().cloned());
+    // f = 0 (every joint a point at its centre) is decided only where the bisection needs it:
+    // feasibility only grows with f, so one fraction at which it does not stand proves that
+    // it does not stand at 0. The program at f = 0 is the most degenerate of all (on the
+    // 24 × 24 dome every method stalled or failed to certify it for minutes), and most
+    // structures are decided at f = 1/2.
     let (mut lo, mut hi) = (0.0, 1.0);
+    let mut fell = false;
     while hi - lo > tolerance {
         let mid = 0.5 * (lo + hi);
         if d.stands(&shrunk_map(st, &base, mid), &dead)? {
             hi = mid;
         } else {
             lo = mid;
+            fell = true;
         }
     }
-    Ok((Some(hi), d.solves))
+    if !fell && d.stands(&shrunk_map(st, &base, 0.0), &dead)? {
+        return Ok((Some(0.0), d.solves, start));
+    }
+    Ok((Some(hi), d.solves, start))
 }
 
 /// Coefficients of the force components of each support's reaction in the point forces:
@@ -330,6 +409,17 @@ pub fn reaction_ranges_by<S: Assembly>(
     solver: &SolverOptions,
     how: RangeSolve,
 ) -> Result<ReactionRanges> {
+    ranges_from(st, solver, how, None)
+}
+
+/// [`reaction_ranges_by`], the sequence starting from `start` where given (a feasible basis of
+/// the equilibrium program: the first decision of [`safety`]'s bisection).
+fn ranges_from<S: Assembly>(
+    st: &S,
+    solver: &SolverOptions,
+    how: RangeSolve,
+    start: Option<lp::Basis>,
+) -> Result<ReactionRanges> {
     let map = KinematicMap::new(st);
     let dead = st.load_vector(false);
     let coefficients = reaction_coefficients(st, &map);
@@ -378,19 +468,33 @@ pub fn reaction_ranges_by<S: Assembly>(
         worst_ray: 0.0,
     };
     let mut sequence = match how {
-        RangeSolve::Sequence => Some(lp::sequence::Sequence::new(base.lp.clone(), solver)?),
+        RangeSolve::Sequence => {
+            let mut seq = lp::sequence::Sequence::new(base.lp.clone(), solver)?;
+            seq.limit_warm_iterations(Some(warm_limit(&base.lp)));
+            // A feasible vertex of these constraints (the bisection's first program): the
+            // first endpoint goes on from it with the primal simplex.
+            if let Some(b) = start {
+                seq.start_from(b);
+            }
+            Some(seq)
+        }
         RangeSolve::Independent => None,
     };
     // ends[s][c] = (min, max)
     let mut ends: Vec<Vec<[Option<f64>; 2]>> = vec![vec![[None, None]; n]; supports];
-    // Rays found so far ([`lp::sequence::certify_ray`]), the recession program's sequence and
-    // a feasible point (a ray certifies unboundedness from one).
-    let mut rays: Vec<Vec<f64>> = Vec::new();
+    // Rays found so far with their violation of the recession cone (a property of the
+    // constraints, measured once: [`lp::sequence::ray_violation`]), the recession program's
+    // sequence and a feasible point (a ray certifies unboundedness from one).
+    let mut rays: Vec<(Vec<f64>, f64)> = Vec::new();
     let mut ray_sequence: Option<lp::sequence::Sequence> = None;
     let mut feasible_point: Option<Vec<f64>> = None;
+    let certified = |program: &lp::LinearProgram, sol: &LpSolution| {
+        sol.status == LpStatus::Optimal
+            && lp::sequence::certify(program, sol).is_some_and(|c| c.ok())
+    };
     for (s, comps) in coefficients.iter().enumerate() {
         // The vertical component first: bounded where the structure stands, so the first
-        // program (solved from scratch) has an optimum for the later ones to start from.
+        // program has an optimum for the later ones to start from.
         for c in std::iter::once(n - 1).chain(0..n - 1) {
             let (cn, ct) = &comps[c];
             if statics && supports == 1 {
@@ -419,19 +523,25 @@ pub fn reaction_ranges_by<S: Assembly>(
                     }
                     None => programs::reaction_extreme_program(&map, &dead, cn, ct, direction).lp,
                 };
+                let t0 = std::time::Instant::now();
+                let side = format!(
+                    "{} {} {}",
+                    st.support_name(s),
+                    labels[c],
+                    if e == 0 { "min" } else { "max" }
+                );
                 // A ray found for an earlier endpoint that improves this one: unbounded, no
                 // program.
-                if let Some(cert) = rays
-                    .iter()
-                    .map(|d| lp::sequence::certify_ray(&program, d))
-                    .find(|c| c.ok())
-                {
+                if let Some(&(_, v)) = rays.iter().find(|(d, _)| {
+                    lp::sequence::ray_decrease(&program, d) >= lp::sequence::RAY_DECREASE
+                }) {
                     out.unbounded += 1;
-                    out.worst_ray = out.worst_ray.max(cert.violation);
+                    out.worst_ray = out.worst_ray.max(v);
                     ends[s][c][e] = None;
+                    trace(format_args!("range {side}: unbounded by a kept ray"), t0);
                     continue;
                 }
-                let tried = match &mut sequence {
+                let mut tried = match &mut sequence {
                     Some(seq) => {
                         seq.set_objective(&cost, direction)?;
                         seq.try_solve()
@@ -439,88 +549,208 @@ pub fn reaction_ranges_by<S: Assembly>(
                     None => lp::solve(&program, solver).ok(),
                 };
                 out.solves += 1;
-                let certified = |sol: &LpSolution| {
-                    sol.status == LpStatus::Optimal
-                        && lp::sequence::certify(&program, sol).is_some_and(|c| c.ok())
-                };
-                let sol = match tried {
-                    Some(sol) if certified(&sol) || sol.status == LpStatus::Infeasible => sol,
-                    Some(sol) if sol.status == LpStatus::Optimal => {
-                        // An optimum that does not certify (a solver's "optimal" whose duals
-                        // do not bound it) is decided again by the dual simplex from scratch.
-                        out.solves += 1;
-                        let o = SolverOptions {
-                            method: lp::Method::DualSimplex,
-                            ..*solver
-                        };
-                        lp::solve(&program, &o)?
+                trace(
+                    format_args!(
+                        "range {side}: {:?} by {:?} ({:?} iterations)",
+                        tried.as_ref().map(|t| t.status),
+                        tried.as_ref().map(|t| t.method.name()),
+                        tried.as_ref().map(|t| t.iterations)
+                    ),
+                    t0,
+                );
+                // "Unbounded": HiGHS's own primal ray, checked on the program. Where it gives
+                // none that certifies, the run is repeated once in a new instance from the
+                // last optimal basis (the warm primal simplex once called a vertical reaction
+                // of the 24 × 24 dome unbounded: it is bounded by the weight).
+                let mut ray: Option<(Vec<f64>, f64)> = None;
+                for attempt in 0..2 {
+                    if !matches!(&tried, Some(t) if t.status == LpStatus::Unbounded) {
+                        break;
                     }
-                    _ => {
-                        // Unbounded, or a failure (an unbounded program fails in some methods
-                        // rather than saying so): the recession program decides. A ray is a
-                        // certificate of unboundedness given a feasible point.
-                        out.solves += 1;
-                        out.ray_programs += 1;
-                        let ray_seq = match &mut ray_sequence {
-                            Some(r) => r,
-                            None => ray_sequence.insert(lp::sequence::Sequence::new(
+                    let Some(seq) = sequence.as_mut() else {
+                        break;
+                    };
+                    if let Some(d) = seq.last_ray() {
+                        let cert = lp::sequence::certify_ray(&program, d);
+                        trace(format_args!("range {side}: HiGHS's ray {cert:?}"), t0);
+                        if cert.ok() {
+                            ray = Some((d.to_vec(), cert.violation));
+                            break;
+                        }
+                    }
+                    if attempt == 1 || !seq.restart_from_optimal() {
+                        break;
+                    }
+                    tried = seq.try_solve();
+                    out.solves += 1;
+                    trace(
+                        format_args!(
+                            "range {side}: again from the last optimal basis: {:?}",
+                            tried.as_ref().map(|t| t.status)
+                        ),
+                        t0,
+                    );
+                }
+                // What the warm runs settled: a certified optimum or "infeasible", or an
+                // optimum that did not certify (the side is bounded: decided again below).
+                let mut sol: Option<LpSolution> = None;
+                let mut bounded = false;
+                match tried {
+                    Some(t) if certified(&program, &t) || t.status == LpStatus::Infeasible => {
+                        sol = Some(t)
+                    }
+                    Some(t) if t.status == LpStatus::Optimal => bounded = true,
+                    _ => {}
+                }
+                if sol.is_none() && ray.is_none() && !bounded {
+                    // Unbounded without a ray, or a failure (an unbounded program fails in some
+                    // methods rather than saying so): the recession program decides, first by
+                    // Clarabel (a ray need not be a vertex; 1–2 s on the 24 × 24 dome where
+                    // HiGHS took 4–14 s): a certified ray, or a certified optimum along which
+                    // nothing improves — no ray, the side is bounded.
+                    out.solves += 1;
+                    out.ray_programs += 1;
+                    let rp = {
+                        let mut r = lp::sequence::recession_program(&base.lp);
+                        r.cost.copy_from_slice(&cost);
+                        r.maximise = direction == Direction::Maximise;
+                        r
+                    };
+                    let o = SolverOptions {
+                        method: lp::Method::Clarabel,
+                        ..*solver
+                    };
+                    if let Ok(d) = lp::solve(&rp, &o) {
+                        let opt = certified(&rp, &d);
+                        let cert = opt.then(|| lp::sequence::certify_ray(&program, &d.x));
+                        trace(
+                            format_args!(
+                                "range {side}: recession program by {} certified {opt}, ray {cert:?}",
+                                d.method.name()
+                            ),
+                            t0,
+                        );
+                        match cert {
+                            Some(c) if c.ok() => ray = Some((d.x, c.violation)),
+                            Some(c) if c.decrease < lp::sequence::RAY_DECREASE => bounded = true,
+                            _ => {}
+                        }
+                    }
+                }
+                if sol.is_none() && ray.is_none() && !bounded {
+                    // The HiGHS sequence of recession programs (warm primal simplex).
+                    out.solves += 1;
+                    out.ray_programs += 1;
+                    let ray_seq = match &mut ray_sequence {
+                        Some(r) => r,
+                        None => {
+                            let mut r = lp::sequence::Sequence::new(
                                 lp::sequence::recession_program(&base.lp),
                                 solver,
-                            )?),
-                        };
-                        ray_seq.set_objective(&cost, direction)?;
-                        let d = ray_seq.solve()?;
-                        let cert = (d.status == LpStatus::Optimal)
-                            .then(|| lp::sequence::certify_ray(&program, &d.x));
-                        if let Some(cert) = cert.filter(|c| c.ok()) {
-                            if feasible_point.is_none() {
-                                // The ray needs a feasible point to start from.
-                                out.solves += 1;
-                                let mut p = program.clone();
-                                p.cost.iter_mut().for_each(|v| *v = 0.0);
-                                let f = lp::solve(
-                                    &p,
-                                    &SolverOptions {
-                                        method: lp::Method::DualSimplex,
-                                        ..*solver
-                                    },
-                                )?;
-                                if f.status != LpStatus::Optimal
-                                    || p.relative_violation(&f.x)
-                                        > lp::sequence::CERTIFICATE_TOLERANCE
-                                {
-                                    return Err(Error::Request(
-                                        "the structure does not stand: its reactions have no range"
-                                            .into(),
-                                    ));
-                                }
-                                feasible_point = Some(f.x);
-                            }
-                            out.unbounded += 1;
-                            out.worst_ray = out.worst_ray.max(cert.violation);
-                            rays.push(d.x);
-                            ends[s][c][e] = None;
-                            continue;
+                            )?;
+                            r.limit_warm_iterations(Some(warm_limit(&base.lp)));
+                            ray_sequence.insert(r)
                         }
-                        // No ray: the endpoint is bounded, and the program is solved from
-                        // scratch along the fallback chain, then by the dual simplex.
+                    };
+                    ray_seq.set_objective(&cost, direction)?;
+                    let d = ray_seq.solve()?;
+                    let cert = (d.status == LpStatus::Optimal)
+                        .then(|| lp::sequence::certify_ray(&program, &d.x));
+                    trace(
+                        format_args!(
+                            "range {side}: recession program {:?} by {}, ray {:?}",
+                            d.status,
+                            d.method.name(),
+                            cert
+                        ),
+                        t0,
+                    );
+                    if let Some(cert) = cert.filter(|c| c.ok()) {
+                        ray = Some((d.x, cert.violation));
+                    }
+                }
+                if let Some((d, violation)) = ray {
+                    if feasible_point.is_none() {
+                        // The ray needs a feasible point to start from.
                         out.solves += 1;
-                        let sol = match &mut sequence {
-                            Some(seq) => seq.solve_cold().ok(),
-                            None => None,
-                        };
-                        match sol {
-                            Some(sol) if certified(&sol) => sol,
-                            _ => {
-                                let o = SolverOptions {
-                                    method: lp::Method::DualSimplex,
-                                    ..*solver
-                                };
-                                lp::solve(&program, &o)?
+                        let mut p = program.clone();
+                        p.cost.iter_mut().for_each(|v| *v = 0.0);
+                        let f = lp::solve(
+                            &p,
+                            &SolverOptions {
+                                method: lp::Method::DualSimplex,
+                                ..*solver
+                            },
+                        )?;
+                        if f.status != LpStatus::Optimal
+                            || p.relative_violation(&f.x) > lp::sequence::CERTIFICATE_TOLERANCE
+                        {
+                            return Err(Error::Request(
+                                "the structure does not stand: its reactions have no range".into(),
+                            ));
+                        }
+                        feasible_point = Some(f.x);
+                    }
+                    out.unbounded += 1;
+                    out.worst_ray = out.worst_ray.max(violation);
+                    ends[s][c][e] = None;
+                    trace(format_args!("range {side}: unbounded, ray certified"), t0);
+                    // Kept for later sides, and its opposite where that is a ray too (a
+                    // self-equilibrated shear: no normal force along it).
+                    let opposite: Vec<f64> = d.iter().map(|v| -v).collect();
+                    let back = lp::sequence::ray_violation(&base.lp, &opposite);
+                    rays.push((d, violation));
+                    if back <= lp::sequence::CERTIFICATE_TOLERANCE {
+                        rays.push((opposite, back));
+                    }
+                    continue;
+                }
+                let sol = match sol {
+                    Some(sol) => sol,
+                    None => {
+                        // Bounded, and the warm runs did not certify it: from scratch by
+                        // interior points (certified by their duals, no vertex needed):
+                        // Clarabel's, HiGHS's without crossover; then by the dual simplex.
+                        if let Some(seq) = sequence.as_mut() {
+                            seq.restart_from_optimal();
+                        }
+                        let mut last = None;
+                        for method in [
+                            lp::Method::Clarabel,
+                            lp::Method::IpmNoCrossover,
+                            lp::Method::DualSimplex,
+                        ] {
+                            out.solves += 1;
+                            let o = SolverOptions { method, ..*solver };
+                            let got = lp::solve(&program, &o);
+                            trace(
+                                format_args!(
+                                    "range {side}: from scratch by {}: {:?}",
+                                    method.name(),
+                                    got.as_ref().map(|g| (g.status, certified(&program, g)))
+                                ),
+                                t0,
+                            );
+                            match got {
+                                Ok(g) if certified(&program, &g) => {
+                                    last = Some(Ok(g));
+                                    break;
+                                }
+                                other => last = Some(other),
                             }
                         }
+                        last.expect("two methods tried")?
                     }
                 };
+                trace(
+                    format_args!(
+                        "range {side}: {:?} {} by {}",
+                        sol.status,
+                        sol.objective,
+                        sol.method.name()
+                    ),
+                    t0,
+                );
                 ends[s][c][e] = match sol.status {
                     LpStatus::Optimal => {
                         let cert = lp::sequence::certify(&program, &sol).ok_or_else(|| {
@@ -583,13 +813,13 @@ pub fn reaction_ranges_by<S: Assembly>(
 /// The safety assessment of `st`: whether it stands, its geometric safety factor and the
 /// ranges of its support reactions.
 pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult> {
-    let (fraction, mut solves) = least_joint_fraction(st, opts.tolerance, &opts.solver)?;
+    let (fraction, mut solves, start) = bisect_fraction(st, opts.tolerance, &opts.solver)?;
     let stands = fraction.is_some();
     let factor = fraction.and_then(|f| (f > 0.0).then_some(1.0 / f));
     let reactions = if stands && opts.reactions {
-        let (r, n) = reaction_ranges(st, &opts.solver)?;
-        solves += n;
-        r
+        let r = ranges_from(st, &opts.solver, RangeSolve::Sequence, start)?;
+        solves += r.solves;
+        r.ranges
     } else {
         vec![]
     };

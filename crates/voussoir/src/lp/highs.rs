@@ -383,6 +383,8 @@ pub struct Persistent {
     /// Whether bounds changed since the last run (the dual simplex then restarts; after a
     /// change of costs alone, the primal simplex).
     bounds_changed: bool,
+    /// Simplex iterations allowed to a run from a kept basis (`None`: HiGHS's own limit).
+    warm_limit: Option<usize>,
 }
 
 impl Persistent {
@@ -402,7 +404,14 @@ impl Persistent {
             warm: false,
             method: o.method,
             bounds_changed: false,
+            warm_limit: None,
         })
+    }
+
+    /// Stop a run from a kept basis after `n` simplex iterations (it then fails, and the
+    /// caller goes on otherwise): a warm start is worth it only when it is short.
+    pub fn limit_warm_iterations(&mut self, n: Option<usize>) {
+        self.warm_limit = n;
     }
 
     /// Whether the next run starts from a kept basis.
@@ -432,6 +441,21 @@ impl Persistent {
             self.bounds_changed = dual;
         }
         Ok(())
+    }
+
+    /// The primal ray HiGHS holds after a run that ended "unbounded" (a direction along which
+    /// the objective decreases without end), in the instance's own (scaled) columns; `None`
+    /// where it has none. Call it only after an unbounded run: otherwise HiGHS would solve
+    /// another program to look for one.
+    pub fn primal_ray(&mut self) -> Option<Vec<f64>> {
+        let mut has = 0 as highs_sys::HighsInt;
+        let mut ray = vec![0.0; self.cols];
+        // SAFETY: the live instance owned by `self.model`; `ray` has num_col entries.
+        let ok = unsafe {
+            highs_sys::Highs_getPrimalRay(self.model.as_mut_ptr(), &mut has, ray.as_mut_ptr())
+        };
+        (ok != highs_sys::kHighsStatusError && has != 0 && ray.iter().all(|v| v.is_finite()))
+            .then_some(ray)
     }
 
     fn check(&self, what: &str, status: i32) -> Result<()> {
@@ -523,6 +547,10 @@ impl Persistent {
             (true, true) => Method::DualSimplex,
         };
         if self.warm {
+            let limit = self
+                .warm_limit
+                .map_or(i32::MAX, |n| n.min(i32::MAX as usize) as i32);
+            opt(&mut self.model, "simplex_iteration_limit", limit)?;
             opt(
                 &mut self.model,
                 "simplex_strategy",

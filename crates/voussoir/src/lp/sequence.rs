@@ -57,6 +57,12 @@ impl Certificate {
 /// solution without duals). HiGHS's and Clarabel's convention: `c − Aᵀy − z = 0` in the
 /// program's own sense.
 pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
+    certify_with_bound(lp, s).map(|(c, _)| c)
+}
+
+/// [`certify`], and the dual bound the duals give (the objective value no feasible point of
+/// `lp` can beat where the duals are feasible), in the program's own sense.
+fn certify_with_bound(lp: &LinearProgram, s: &LpSolution) -> Option<(Certificate, f64)> {
     let (n, m) = (lp.num_cols(), lp.num_rows());
     if s.status != LpStatus::Optimal || s.x.len() != n || s.row_dual.len() != m {
         return None;
@@ -137,11 +143,14 @@ pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
     } else {
         0.0
     };
-    Some(Certificate {
-        primal: primal_violation(lp, &s.x),
-        dual,
-        gap: if gap.is_nan() { f64::INFINITY } else { gap },
-    })
+    Some((
+        Certificate {
+            primal: primal_violation(lp, &s.x),
+            dual,
+            gap: if gap.is_nan() { f64::INFINITY } else { gap },
+        },
+        sigma * dual_bound,
+    ))
 }
 
 /// The least relative decrease of the objective along a ray that certifies an unbounded
@@ -197,6 +206,17 @@ pub fn certify_ray(lp: &LinearProgram, d: &[f64]) -> RayCertificate {
             decrease: 0.0,
         };
     }
+    RayCertificate {
+        violation: ray_violation(lp, d),
+        decrease: ray_decrease(lp, d),
+    }
+}
+
+/// How much the objective of `lp` improves along `d` ([`RayCertificate::decrease`]).
+pub fn ray_decrease(lp: &LinearProgram, d: &[f64]) -> f64 {
+    if d.len() != lp.num_cols() || d.iter().any(|v| !v.is_finite()) {
+        return 0.0;
+    }
     let sigma = if lp.maximise { -1.0 } else { 1.0 };
     // Relative to the objective's size times the ray's (not to `Σ |c_j d_j|`: a ray whose
     // entries on the objective's columns are round-off, 1e-16, would improve it by 100 %).
@@ -207,10 +227,27 @@ pub fn certify_ray(lp: &LinearProgram, d: &[f64]) -> RayCertificate {
         dmax = dmax.max(v.abs());
     }
     let size = c1 * dmax;
-    RayCertificate {
-        violation: primal_violation(&recession_program(lp), d),
-        decrease: if size > 0.0 { -cd / size } else { 0.0 },
+    if size > 0.0 {
+        -cd / size
+    } else {
+        0.0
     }
+}
+
+/// How far `d` is from a recession direction of `lp` ([`RayCertificate::violation`]: the
+/// largest relative violation of the rows and bounds of [`recession_program`], computed without
+/// building it). It depends on the matrix and the bounds only, not on the objective, so a ray
+/// kept for a sequence of objectives is measured once.
+pub fn ray_violation(lp: &LinearProgram, d: &[f64]) -> f64 {
+    let rec = |b: f64| if b.is_finite() { 0.0 } else { b };
+    violation_with(lp, d, rec, |b, lo| {
+        let r = rec(b);
+        if lo {
+            r.max(-1.0)
+        } else {
+            r.min(1.0)
+        }
+    })
 }
 
 /// The elastic program of `lp`: its objective dropped, every row with a bound given a pair
@@ -229,6 +266,14 @@ pub fn elastic_program(lp: &LinearProgram) -> LinearProgram {
     e
 }
 
+/// The least total violation, relative to the largest finite row bound, up to which
+/// [`decide_feasibility`] calls a program feasible (an interior point's resolution).
+pub const FEASIBLE_RESOLUTION: f64 = 1e-7;
+
+/// The least violation that [`decide_feasibility`]'s dual bound must exceed, relative to the
+/// largest finite row bound, to call a program infeasible.
+pub const INFEASIBLE_MARGIN: f64 = 1e-6;
+
 /// A decision of feasibility with its certificate, either way ([`decide_feasibility`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FeasibilityDecision {
@@ -243,18 +288,25 @@ pub struct FeasibilityDecision {
 }
 
 /// Decide whether `lp` (its objective ignored) is feasible, with a certificate either way: the
-/// elastic program ([`elastic_program`]) solved with `opts` and certified. Its least total
-/// violation, relative to the largest finite row bound, above `tolerance` is infeasibility —
-/// certified by the elastic program's duals —, at most `tolerance` feasibility, with the
-/// point that attains it. `None` where the elastic program's optimum does not certify.
+/// elastic program ([`elastic_program`]) solved with `opts`. Feasible: its point holds the
+/// elastic rows (primal certificate) with a least total violation, relative to the largest
+/// finite row bound, of at most `tolerance.max(FEASIBLE_RESOLUTION)`. Infeasible: its duals are
+/// dual feasible (dual certificate) and bound that violation from below by more than
+/// `tolerance.max(INFEASIBLE_MARGIN)` (a Farkas certificate). `None` in between, where neither
+/// half certifies, or where the method fails: `opts.method` alone is run, without its
+/// fallback chain (the caller chains methods; a chain that ended in HiGHS's simplex stalled for
+/// minutes in phase 1 on the 24 × 24 dome's elastic programs).
 pub fn decide_feasibility(
     lp: &LinearProgram,
     opts: &SolverOptions,
     tolerance: f64,
 ) -> Result<Option<FeasibilityDecision>> {
     let e = elastic_program(lp);
-    let s = super::solve(&e, opts)?;
-    let Some(certificate) = certify(&e, &s).filter(|c| c.ok()) else {
+    super::check_numbers(&e)?;
+    let Ok(s) = super::solve_once(&e, opts) else {
+        return Ok(None);
+    };
+    let Some((certificate, bound)) = certify_with_bound(&e, &s) else {
         return Ok(None);
     };
     let scale = lp
@@ -270,8 +322,39 @@ pub fn decide_feasibility(
     } else {
         0.0
     };
-    Ok(Some(FeasibilityDecision {
-        feasible: violation <= tolerance,
+    // Each side needs only its half of the certificate: "feasible" a point (the elastic
+    // program's, its rows held) whose total violation is within the tolerance; "infeasible"
+    // duals that are dual feasible and bound the least violation above the tolerance (a
+    // Farkas certificate). Near the threshold the optimum is 0 or nearly so, and a duality
+    // gap between two vanishing numbers says nothing (it failed to certify on the 24 × 24
+    // dome where both sides were decided).
+    let relative = |v: f64| {
+        if scale > 0.0 {
+            v / scale
+        } else if v > 0.0 {
+            f64::INFINITY
+        } else {
+            0.0
+        }
+    };
+    // An interior point resolves the least violation to about 1e-8 of the largest load
+    // (Clarabel's elastic optimum of a feasible 24 × 24 dome program: 4e-8–7e-8), and its
+    // duals bound it only to that resolution: "feasible" within FEASIBLE_RESOLUTION,
+    // "infeasible" only with a bound INFEASIBLE_MARGIN above 0 (a bound of 1e-9 with duals
+    // certified to 1e-7 once declared a feasible program infeasible); in between, undecided.
+    let decided = if certificate.primal <= CERTIFICATE_TOLERANCE
+        && violation <= tolerance.max(FEASIBLE_RESOLUTION)
+    {
+        Some(true)
+    } else if certificate.dual <= CERTIFICATE_TOLERANCE
+        && relative(bound) > tolerance.max(INFEASIBLE_MARGIN)
+    {
+        Some(false)
+    } else {
+        None
+    };
+    Ok(decided.map(|feasible| FeasibilityDecision {
+        feasible,
         violation,
         certificate,
     }))
@@ -279,6 +362,17 @@ pub fn decide_feasibility(
 
 /// [`Certificate::primal`].
 fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+    violation_with(lp, x, |b| b, |b, _| b)
+}
+
+/// [`primal_violation`] of `x` on `lp` with its row bounds mapped by `row` and its column
+/// bounds by `col` (`true` for a lower bound).
+fn violation_with(
+    lp: &LinearProgram,
+    x: &[f64],
+    row: impl Fn(f64) -> f64,
+    col: impl Fn(f64, bool) -> f64,
+) -> f64 {
     if x.len() != lp.num_cols() {
         return f64::INFINITY;
     }
@@ -293,28 +387,16 @@ fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
     }
     let rows: Vec<(f64, f64)> = (0..lp.num_rows())
         .map(|i| {
-            let d = (lp.row_lower[i] - act[i])
-                .max(act[i] - lp.row_upper[i])
-                .max(0.0);
-            (
-                d,
-                size[i]
-                    .max(finite(lp.row_lower[i]))
-                    .max(finite(lp.row_upper[i])),
-            )
+            let (lo, hi) = (row(lp.row_lower[i]), row(lp.row_upper[i]));
+            let d = (lo - act[i]).max(act[i] - hi).max(0.0);
+            (d, size[i].max(finite(lo)).max(finite(hi)))
         })
         .collect();
     let cols: Vec<(f64, f64)> = (0..lp.num_cols())
         .map(|j| {
-            let d = (lp.col_lower[j] - x[j])
-                .max(x[j] - lp.col_upper[j])
-                .max(0.0);
-            (
-                d,
-                x[j].abs()
-                    .max(finite(lp.col_lower[j]))
-                    .max(finite(lp.col_upper[j])),
-            )
+            let (lo, hi) = (col(lp.col_lower[j], true), col(lp.col_upper[j], false));
+            let d = (lo - x[j]).max(x[j] - hi).max(0.0);
+            (d, x[j].abs().max(finite(lo)).max(finite(hi)))
         })
         .collect();
     let floor = 1e-3 * rows.iter().fold(0.0f64, |m, r| m.max(r.1));
@@ -363,8 +445,16 @@ pub struct Sequence {
     basis: Option<Basis>,
     /// The basis the last solve ended with.
     last_basis: Option<Basis>,
+    /// The basis of the last certified optimum (a warm run that fails or ends elsewhere starts
+    /// again from it).
+    optimal_basis: Option<Basis>,
+    /// The primal ray of the last run, where it ended "unbounded" and HiGHS gave one (in the
+    /// user's units).
+    ray: Option<Vec<f64>>,
     costs_changed: bool,
     bounds_changed: bool,
+    /// Simplex iterations allowed to a warm run ([`Sequence::limit_warm_iterations`]).
+    warm_limit: Option<usize>,
     /// Whether the next solve starts with the dual simplex from a handed-over basis (the
     /// program was replaced or its bounds changed), rather than the primal simplex (only the
     /// objective changed).
@@ -405,8 +495,11 @@ impl Sequence {
             session: None,
             basis: None,
             last_basis: None,
+            optimal_basis: None,
+            ray: None,
             costs_changed: false,
             bounds_changed: false,
+            warm_limit: None,
             dual_start: true,
             stats: SequenceStats::default(),
         })
@@ -415,6 +508,56 @@ impl Sequence {
     /// The current program.
     pub fn program(&self) -> &LinearProgram {
         &self.lp
+    }
+
+    /// Let a run from a kept basis take at most `n` simplex iterations; one that needs more
+    /// counts as a failed warm run (the program is then solved otherwise: [`Sequence::solve`]).
+    /// On the 24 × 24 dome a warm dual simplex of the bisection ran for minutes where the ones
+    /// before it took 1,800 iterations.
+    pub fn limit_warm_iterations(&mut self, n: Option<usize>) {
+        self.warm_limit = n;
+        if let Some(s) = &mut self.session {
+            s.limit_warm_iterations(n);
+        }
+    }
+
+    /// The basis the last solve ended with, if it left one.
+    pub fn basis(&self) -> Option<&Basis> {
+        self.last_basis.as_ref()
+    }
+
+    /// Start the next run from `b`, a basis of this program that is primal feasible (the
+    /// optimum of another objective over the same constraints: an earlier sequence's), with
+    /// the primal simplex, in place of the requested method from scratch.
+    pub fn start_from(&mut self, b: Basis) {
+        if b.cols.len() == self.lp.num_cols() && b.rows.len() == self.lp.num_rows() {
+            self.session = None;
+            self.basis = Some(b.clone());
+            self.last_basis = Some(b.clone());
+            self.optimal_basis = Some(b);
+            self.dual_start = false;
+        }
+    }
+
+    /// Drop the solver instance; the next run starts a new one from the basis of the last
+    /// certified optimum with the primal simplex (after a warm run that ended "unbounded"
+    /// without a ray to show for it: a fresh factorisation of a basis known to be good).
+    /// `false` where there is no such basis.
+    pub fn restart_from_optimal(&mut self) -> bool {
+        let Some(b) = self.optimal_basis.clone() else {
+            return false;
+        };
+        self.session = None;
+        self.basis = Some(b);
+        self.dual_start = false;
+        self.stats.restarts += 1;
+        true
+    }
+
+    /// The primal ray of the last run, where it ended "unbounded" and HiGHS gave one: a
+    /// candidate certificate of unboundedness, to be checked ([`certify_ray`]).
+    pub fn last_ray(&self) -> Option<&[f64]> {
+        self.ray.as_deref()
     }
 
     /// Replace the whole program by `lp` (another matrix: a bisection on geometry). Where it
@@ -426,6 +569,7 @@ impl Sequence {
         // (`Sequence::new` below starts with the dual simplex from the basis handed over.)
         *self = Sequence {
             stats: self.stats,
+            warm_limit: self.warm_limit,
             ..Sequence::new(lp, &self.opts)?
         };
         self.basis = last;
@@ -519,6 +663,7 @@ impl Sequence {
             }
             None => {
                 let mut session = Persistent::new(&p, &self.opts)?;
+                session.limit_warm_iterations(self.warm_limit);
                 if let Some(b) = self.basis.take() {
                     session.set_basis(&b.adapted(&p), self.dual_start)?;
                 }
@@ -529,9 +674,18 @@ impl Sequence {
         self.bounds_changed = false;
         let session = self.session.as_mut().expect("made above");
         let warm = session.is_warm();
+        self.ray = None;
         let solved = session.run()?;
         self.stats.warm += usize::from(warm);
         self.last_basis = solved.basis;
+        if solved.solution.status == LpStatus::Unbounded {
+            self.ray = session.primal_ray().map(|mut d| {
+                if let Some(sc) = &scaling {
+                    d.iter_mut().zip(&sc.col).for_each(|(v, c)| *v *= c);
+                }
+                d
+            });
+        }
         let mut s = solved.solution;
         if self.lp.maximise && s.status == LpStatus::Optimal {
             s.objective = -s.objective;
@@ -590,7 +744,10 @@ impl Sequence {
         if !self.keeps_basis() {
             return None;
         }
-        let good = self.last_basis.clone();
+        let good = self
+            .optimal_basis
+            .clone()
+            .or_else(|| self.last_basis.clone());
         for attempt in 0..2 {
             match self.run_session() {
                 Ok(s) if s.status != LpStatus::Optimal => {
@@ -599,6 +756,7 @@ impl Sequence {
                 }
                 Ok(s) if certify(&self.lp, &s).is_some_and(|c| c.ok()) => {
                     self.stats.iterations += s.iterations;
+                    self.optimal_basis = self.last_basis.clone();
                     return Some(s);
                 }
                 _ => {
@@ -623,6 +781,9 @@ impl Sequence {
         self.stats.iterations += s.iterations;
         self.session = None;
         self.basis = basis.clone();
+        if s.status == LpStatus::Optimal && certify(&self.lp, &s).is_some_and(|c| c.ok()) {
+            self.optimal_basis = basis.clone();
+        }
         self.last_basis = basis;
         self.costs_changed = false;
         self.bounds_changed = false;

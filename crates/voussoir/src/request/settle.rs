@@ -12,7 +12,7 @@ use crate::structure::Assembly;
 use serde::{Deserialize, Serialize};
 
 /// Options of a settlement analysis. Defaults: both LPs, the inscribed crushing polygon of 16
-/// facets, associative friction, the canonical selection in 2D (docs/canonical.md) with the
+/// facets, associative friction, the canonical selection (docs/canonical.md) with the
 /// reaction ranges on models of at most 500 blocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -103,17 +103,19 @@ impl SettleRequest {
         Ok(())
     }
 
-    /// Whether the canonical selection runs: in 2D, unless `raw`, with the default joint laws
-    /// (joint laws beyond the defaults — exact crushing, other facet counts — are solved as
-    /// such; the non-associative iteration has its own selection in 2D unless `raw`,
-    /// `analysis::canonical_friction`). In 3D the solver's own solution (the canonical selection
-    /// is not yet fast enough on 3D models; docs/canonical.md).
-    pub fn canonical(&self, dims: usize) -> bool {
-        dims == 2
-            && !self.raw
+    /// Whether the canonical selection runs: unless `raw`, with the default joint laws (joint
+    /// laws beyond the defaults — exact crushing, other facet counts in 2D, the exact friction
+    /// cone in 3D, whose optimum is an interior point of a cone program — are solved as such;
+    /// the non-associative iteration has its own selection in 2D unless `raw`,
+    /// `analysis::canonical_friction`). In 2D and 3D alike (docs/canonical.md).
+    pub fn canonical(&self, req: &Request, dims: usize) -> bool {
+        !self.raw
             && !self.non_associative
-            && self.crushing == Crushing::Linear
-            && self.facets() == DEFAULT_FACETS
+            && if dims == 3 {
+                !req.model.exact_cone()
+            } else {
+                self.crushing == Crushing::Linear && self.facets() == DEFAULT_FACETS
+            }
     }
 
     fn facets(&self) -> usize {
@@ -165,7 +167,7 @@ impl SettleRequest {
             };
             return Ok((Output::Settlement(r), solver));
         }
-        let r = if self.canonical(dims) {
+        let r = if self.canonical(req, dims) {
             settle_canonical(
                 st,
                 &solver,

@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 
 /// Options of a settlement analysis. Defaults: both LPs, the inscribed crushing polygon of 16
 /// facets, associative friction, the canonical selection (docs/canonical.md) with the
-/// reaction ranges on models of at most 500 blocks.
+/// reaction ranges on 2D models of at most 500 blocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SettleRequest {
@@ -30,8 +30,8 @@ pub struct SettleRequest {
     /// Report the solver's own optimum instead of the canonical selection.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub raw: bool,
-    /// The ranges of the support reactions of the canonical selection — absent: on models of
-    /// at most 500 blocks; true: always; false: never.
+    /// The ranges of the support reactions of the canonical selection — absent: on 2D models
+    /// of at most 500 blocks (not in 3D); true: always; false: never.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ranges: Option<bool>,
     /// Mesh-independent cracks (2D): crack lines cut into the mesh and moved to their optimal
@@ -154,7 +154,7 @@ impl SettleRequest {
                     crushing,
                     facets,
                     &NonAssociativeOptions::settlement(),
-                    &canonical_options(self.ranges),
+                    &canonical_options(self.ranges, dims),
                 )?
             } else {
                 settle_nonassociative(
@@ -172,7 +172,7 @@ impl SettleRequest {
                 st,
                 &solver,
                 self.settlement_form,
-                &canonical_options(self.ranges),
+                &canonical_options(self.ranges, dims),
             )?
         } else if both && (dims == 2 || crushing == Crushing::Conic) {
             settle_crushing(st, &solver, crushing, facets)?

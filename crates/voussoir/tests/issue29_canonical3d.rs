@@ -183,3 +183,36 @@ fn issue29_item5_readme_dome_default_settle_is_canonical_with_every_method() {
     // Only the settled quarter parts from the rest: a mechanism with hinged joints.
     assert!(w0 > 0.0);
 }
+
+/// The flags of the selection are honoured or refused: the reaction ranges asked for where the
+/// selection does not run (`raw`, the exact friction cone), and the canonical limit of a cone
+/// program, are refused in one line naming the fields.
+#[test]
+fn issue29_item5_selection_flags_refused_where_it_does_not_run() {
+    let m = AnyModel::Spatial(vault(&ArchSpec::default(), 1.0, 1, Bond::Stack).unwrap());
+    let err = |json: &str| -> String {
+        let req = Request::from_json(json).unwrap();
+        match request::run(&m, &req) {
+            Ok(_) => panic!("{json}: accepted"),
+            Err(e) => e.to_string(),
+        }
+    };
+    let e = err(
+        r#"{"motion": {"move": ["right=1cm,0,0"]}, "analysis": {"type": "settle", "raw": true, "ranges": true}}"#,
+    );
+    assert!(e.contains("ranges") && e.contains("raw"), "{e}");
+    let e = err(
+        r#"{"model": {"friction": 0.6, "friction_cone": "exact"}, "motion": {"move": ["right=1cm,0,0"]}, "analysis": {"type": "settle", "ranges": true}}"#,
+    );
+    assert!(
+        e.contains("ranges") && e.contains("friction_cone=exact"),
+        "{e}"
+    );
+    let e = err(
+        r#"{"model": {"friction": 0.6, "friction_cone": "exact"}, "analysis": {"type": "limit", "canonical": true}}"#,
+    );
+    assert!(
+        e.contains("canonical") && e.contains("friction_cone=exact"),
+        "{e}"
+    );
+}

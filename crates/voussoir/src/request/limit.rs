@@ -72,6 +72,23 @@ impl LimitRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
+        let conic = if dims == 3 {
+            req.model.exact_cone()
+        } else {
+            self.crushing == Crushing::Conic
+        };
+        if self.canonical && conic && !self.non_associative {
+            // A cone program's optimum is an interior point: no vertex to select among.
+            return invalid(format!(
+                "{} selects among the optima of an LP, not of the cone program of {}",
+                n.name("canonical"),
+                if dims == 3 {
+                    n.given("friction_cone", "exact")
+                } else {
+                    n.given("crushing", "conic")
+                }
+            ));
+        }
         if dims == 3 && self.laws().strength_given() {
             return invalid(format!(
                 "{} and {} describe finite compressive strength, which is modelled in 2D only (3D: {} for the exact friction cone)",

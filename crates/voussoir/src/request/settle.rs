@@ -93,6 +93,21 @@ impl SettleRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
+        if self.ranges == Some(true) && !self.non_associative && !self.canonical(req, dims) {
+            // The ranges are a stage of the canonical selection: without it they would be
+            // silently left out.
+            let why = if self.raw {
+                n.name("raw")
+            } else if dims == 3 {
+                n.given("friction_cone", "exact")
+            } else {
+                format!("{} or {}", n.name("crushing"), n.name("facets"))
+            };
+            return invalid(format!(
+                "{} applies to the canonical selection, which {why} leaves out",
+                n.name("ranges")
+            ));
+        }
         if dims == 3 && self.laws().strength_given() {
             return invalid(format!(
                 "{} and {} describe finite compressive strength, which is modelled in 2D only",

@@ -10,18 +10,19 @@ use voussoir::result::Spatial;
 #[command(next_help_heading = "Canonical solution")]
 pub struct CanonicalArgs {
     /// Report the solver's own optimal solution (a vertex with simplex, an interior point with
-    /// clarabel) instead of the canonical one: faster, but when the optimum is not unique the
-    /// crack pattern and the forces depend on --method (docs/canonical.md). With
-    /// --non-associative: the last iterate's own mechanism instead of the least crack area
-    /// among the optima of its program.
+    /// clarabel) instead of the canonical one (the default in 2D and 3D): faster, but when the
+    /// optimum is not unique the crack pattern and the forces depend on --method
+    /// (docs/canonical.md). With --non-associative (2D): the last iterate's own mechanism
+    /// instead of the least crack area among the optima of its program.
     #[arg(long)]
     pub raw: bool,
     /// Skip the ranges of the support reactions over the optimal force fields (2 LPs per
-    /// reaction component of every loaded support; computed by default on models of at most
-    /// 500 blocks).
+    /// reaction component of every loaded support; computed by default on 2D models of at most
+    /// 500 blocks, not on 3D models).
     #[arg(long, conflicts_with = "ranges")]
     pub no_ranges: bool,
-    /// Compute the reaction ranges whatever the model's size.
+    /// Compute the reaction ranges whatever the model's size and dimension (in 3D: minutes on
+    /// a model of a few hundred blocks).
     #[arg(long)]
     pub ranges: bool,
 }

@@ -147,7 +147,11 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                         },
                         vec![(
                             "mechanism selection".into(),
-                            "the solver's own optimum (3D)".into(),
+                            if r.canonical.is_some() {
+                                "canonical (docs/canonical.md)".into()
+                            } else {
+                                "the solver's own optimum".into()
+                            },
                         )],
                     )
                 })

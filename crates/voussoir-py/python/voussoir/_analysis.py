@@ -215,15 +215,16 @@ def settle(
 
     As the CLI, the result is the canonical one (docs/canonical.md): the least-crack mechanism
     among the optimal ones and the physical forces of least complementary energy, with the
-    ranges of the support reactions over the optimal force fields on models of at most 500
-    blocks. ``raw=True`` reports the solver's own optimal solution instead (``--raw``);
+    ranges of the support reactions over the optimal force fields on 2D models of at most 500
+    blocks (not in 3D). ``raw=True`` reports the solver's own optimal solution instead (``--raw``);
     ``ranges=True``/``False`` computes the reaction ranges always/never (``--ranges`` /
     ``--no-ranges``). Other keywords as :func:`limit`.
 
     3D models: ``move={"left": (u, v, w)}`` or ``(u, v, w, θx, θy, θz)`` (w up; rotations in
     degrees, right-handed about the support's centroid), or the CLI's ``"left=0,0,-5mm"``;
     ``profile`` in the CLI's syntax; ``split``: the CLI's ``--split NAME@X[,X…]``. The result is
-    the solver's own optimal solution (as the CLI's in 3D); ``friction_facets`` and
+    the canonical one, as in 2D, without the reaction ranges unless ``ranges=True`` (the
+    solver's own with ``raw=True`` or ``friction_cone="exact"``); ``friction_facets`` and
     ``friction_cone`` as for :func:`limit`.
     """
     m = _model(model)

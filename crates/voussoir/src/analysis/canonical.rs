@@ -159,8 +159,10 @@ struct Stages {
 impl Stages {
     fn new(opts: &SolverOptions) -> Stages {
         // A cost change keeps a basis primal feasible: primal simplex continues from it. After an
-        // interior-point method the stages run on the dual simplex too: the tie-break is a
-        // vertex, which an interior point only approaches.
+        // interior-point method the stages run on the simplex too (the tie-break is a vertex,
+        // which an interior point only approaches): from a basis (the one HiGHS's interior
+        // point leaves after crossover, or a previous stage's) by the primal simplex, without
+        // one (Clarabel, no crossover) by the dual simplex ([`Stages::solve_inner`]).
         let method = if opts.method.is_simplex() {
             Method::PrimalSimplex
         } else {
@@ -189,7 +191,7 @@ impl Stages {
             eprintln!(
                 "trace: stage solve {} {:?} rows {} cols {} warm {} -> {:?} {:.3} s it {:?}",
                 self.solves,
-                self.opts.method,
+                r.as_ref().map_or(self.opts.method, |s| s.method),
                 lp.num_rows(),
                 lp.num_cols(),
                 warm,
@@ -229,7 +231,18 @@ impl Stages {
         // Keep the last basis when a solve ends without one (infeasible): it still starts the
         // next program of the same shape.
         let keep = basis.clone();
-        let s = lp::solve_warm(lp, &self.opts, basis)?;
+        // Every program of a selection differs from the one before by its costs, by rows held
+        // at values the previous solution satisfies and by guard rows (basic): a basis stays
+        // primal feasible, and the primal simplex continues from it.
+        let o = if basis.is_some() && self.opts.method == Method::DualSimplex {
+            SolverOptions {
+                method: Method::PrimalSimplex,
+                ..self.opts
+            }
+        } else {
+            self.opts
+        };
+        let s = lp::solve_warm(lp, &o, basis)?;
         if basis.is_none() {
             *basis = keep;
         }
@@ -805,7 +818,9 @@ pub fn settle_canonical<S: Assembly>(
         mechanism: d,
         pn,
         pt,
-        solver: opts.info(),
+        // The method that solved the motion program (after any fallback), as the solver's own
+        // settlement reports it.
+        solver: primal.solver_info(),
     };
     let mut r = settlement::settlement_result_checked(st, &map, &s);
     r.canonical = mech.map(|mechanism| Canonical { mechanism, forces });

@@ -223,18 +223,27 @@ impl Backend for Highs {
                 method: o.method,
                 tried: Vec::new(),
             };
-            let basis = if o.method.is_simplex() {
+            // The final basis: the simplex's, and the one HiGHS's interior point leaves after
+            // crossover (a vertex: the next program of the same shape starts from it,
+            // `analysis::canonical`). Only a basis HiGHS calls valid (none without crossover).
+            let basis = if o.method.is_simplex() || matches!(o.method, Method::Ipm | Method::Choose)
+            {
                 let mut cs = vec![0i32; lp.num_cols()];
                 let mut rs = vec![0i32; lp.num_rows()];
+                let mut valid = 0 as highs_sys::HighsInt;
                 // SAFETY: as above; HiGHS fills exactly num_col and num_row entries.
                 let got = unsafe {
                     let mut m: highs::Model = solved.into();
-                    highs_sys::Highs_getBasis(m.as_mut_ptr(), cs.as_mut_ptr(), rs.as_mut_ptr())
+                    let p = m.as_mut_ptr();
+                    highs_sys::Highs_getIntInfoValue(p, c"basis_validity".as_ptr(), &mut valid);
+                    highs_sys::Highs_getBasis(p, cs.as_mut_ptr(), rs.as_mut_ptr())
                 };
-                (got != highs_sys::kHighsStatusError).then(|| Basis {
-                    cols: cs.into_iter().map(from_highs).collect(),
-                    rows: rs.into_iter().map(from_highs).collect(),
-                })
+                (got != highs_sys::kHighsStatusError
+                    && valid == highs_sys::kHighsBasisValidityValid)
+                    .then(|| Basis {
+                        cols: cs.into_iter().map(from_highs).collect(),
+                        rows: rs.into_iter().map(from_highs).collect(),
+                    })
             } else {
                 None
             };

@@ -28,8 +28,8 @@ pub struct LimitRequest {
     /// solver's own optimum.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub canonical: bool,
-    /// With `canonical`: the ranges of the support reactions — absent: on models of at most
-    /// 500 blocks; true: always; false: never.
+    /// With `canonical`: the ranges of the support reactions — absent: on 2D models of at most
+    /// 500 blocks (not in 3D); true: always; false: never.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ranges: Option<bool>,
     /// Mesh-independent cracks (2D): crack lines cut into the mesh and moved to their optimal
@@ -72,6 +72,23 @@ impl LimitRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
+        let conic = if dims == 3 {
+            req.model.exact_cone()
+        } else {
+            self.crushing == Crushing::Conic
+        };
+        if self.canonical && conic && !self.non_associative {
+            // A cone program's optimum is an interior point: no vertex to select among.
+            return invalid(format!(
+                "{} selects among the optima of an LP, not of the cone program of {}",
+                n.name("canonical"),
+                if dims == 3 {
+                    n.given("friction_cone", "exact")
+                } else {
+                    n.given("crushing", "conic")
+                }
+            ));
+        }
         if dims == 3 && self.laws().strength_given() {
             return invalid(format!(
                 "{} and {} describe finite compressive strength, which is modelled in 2D only (3D: {} for the exact friction cone)",
@@ -129,13 +146,13 @@ impl LimitRequest {
                     st,
                     &solver,
                     &NonAssociativeOptions::default(),
-                    &canonical_options(self.ranges),
+                    &canonical_options(self.ranges, dims),
                 )?
             } else {
                 limit_nonassociative_result(st, &solver, &NonAssociativeOptions::default())?
             }
         } else if self.canonical && crushing == Crushing::Linear {
-            limit_canonical(st, &solver, facets, &canonical_options(self.ranges))?
+            limit_canonical(st, &solver, facets, &canonical_options(self.ranges, dims))?
         } else {
             limit_with(st, &solver, crushing, facets)?
         };

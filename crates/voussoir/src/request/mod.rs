@@ -321,12 +321,14 @@ impl JointLaws {
     }
 }
 
-/// The reaction ranges of a canonical selection: `None` on models of at most 500 blocks,
-/// `Some(true)` always, `Some(false)` never.
-fn canonical_options(ranges: Option<bool>) -> CanonicalOptions {
+/// The reaction ranges of a canonical selection: `None` on 2D models of at most 500 blocks
+/// (never in 3D: 2 programs per component of six per support, each a full solve of the 3D force
+/// program — 42 CPU s on the README's 192-block vault where the rest of the selection takes 2;
+/// docs/canonical.md), `Some(true)` always, `Some(false)` never.
+fn canonical_options(ranges: Option<bool>, dims: usize) -> CanonicalOptions {
     let d = CanonicalOptions::default();
     CanonicalOptions {
-        reaction_ranges: ranges != Some(false),
+        reaction_ranges: ranges.unwrap_or(dims == 2),
         ranges_max_blocks: if ranges == Some(true) {
             usize::MAX
         } else {

@@ -12,8 +12,8 @@ use crate::structure::Assembly;
 use serde::{Deserialize, Serialize};
 
 /// Options of a settlement analysis. Defaults: both LPs, the inscribed crushing polygon of 16
-/// facets, associative friction, the canonical selection in 2D (docs/canonical.md) with the
-/// reaction ranges on models of at most 500 blocks.
+/// facets, associative friction, the canonical selection (docs/canonical.md) with the
+/// reaction ranges on 2D models of at most 500 blocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SettleRequest {
@@ -30,8 +30,8 @@ pub struct SettleRequest {
     /// Report the solver's own optimum instead of the canonical selection.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub raw: bool,
-    /// The ranges of the support reactions of the canonical selection — absent: on models of
-    /// at most 500 blocks; true: always; false: never.
+    /// The ranges of the support reactions of the canonical selection — absent: on 2D models
+    /// of at most 500 blocks (not in 3D); true: always; false: never.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ranges: Option<bool>,
     /// Mesh-independent cracks (2D): crack lines cut into the mesh and moved to their optimal
@@ -93,6 +93,21 @@ impl SettleRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
+        if self.ranges == Some(true) && !self.non_associative && !self.canonical(req, dims) {
+            // The ranges are a stage of the canonical selection: without it they would be
+            // silently left out.
+            let why = if self.raw {
+                n.name("raw")
+            } else if dims == 3 {
+                n.given("friction_cone", "exact")
+            } else {
+                format!("{} or {}", n.name("crushing"), n.name("facets"))
+            };
+            return invalid(format!(
+                "{} applies to the canonical selection, which {why} leaves out",
+                n.name("ranges")
+            ));
+        }
         if dims == 3 && self.laws().strength_given() {
             return invalid(format!(
                 "{} and {} describe finite compressive strength, which is modelled in 2D only",
@@ -103,17 +118,19 @@ impl SettleRequest {
         Ok(())
     }
 
-    /// Whether the canonical selection runs: in 2D, unless `raw`, with the default joint laws
-    /// (joint laws beyond the defaults — exact crushing, other facet counts — are solved as
-    /// such; the non-associative iteration has its own selection in 2D unless `raw`,
-    /// `analysis::canonical_friction`). In 3D the solver's own solution (the canonical selection
-    /// is not yet fast enough on 3D models; docs/canonical.md).
-    pub fn canonical(&self, dims: usize) -> bool {
-        dims == 2
-            && !self.raw
+    /// Whether the canonical selection runs: unless `raw`, with the default joint laws (joint
+    /// laws beyond the defaults — exact crushing, other facet counts in 2D, the exact friction
+    /// cone in 3D, whose optimum is an interior point of a cone program — are solved as such;
+    /// the non-associative iteration has its own selection in 2D unless `raw`,
+    /// `analysis::canonical_friction`). In 2D and 3D alike (docs/canonical.md).
+    pub fn canonical(&self, req: &Request, dims: usize) -> bool {
+        !self.raw
             && !self.non_associative
-            && self.crushing == Crushing::Linear
-            && self.facets() == DEFAULT_FACETS
+            && if dims == 3 {
+                !req.model.exact_cone()
+            } else {
+                self.crushing == Crushing::Linear && self.facets() == DEFAULT_FACETS
+            }
     }
 
     fn facets(&self) -> usize {
@@ -152,7 +169,7 @@ impl SettleRequest {
                     crushing,
                     facets,
                     &NonAssociativeOptions::settlement(),
-                    &canonical_options(self.ranges),
+                    &canonical_options(self.ranges, dims),
                 )?
             } else {
                 settle_nonassociative(
@@ -165,12 +182,12 @@ impl SettleRequest {
             };
             return Ok((Output::Settlement(r), solver));
         }
-        let r = if self.canonical(dims) {
+        let r = if self.canonical(req, dims) {
             settle_canonical(
                 st,
                 &solver,
                 self.settlement_form,
-                &canonical_options(self.ranges),
+                &canonical_options(self.ranges, dims),
             )?
         } else if both && (dims == 2 || crushing == Crushing::Conic) {
             settle_crushing(st, &solver, crushing, facets)?

@@ -585,7 +585,7 @@ pub fn canonical_forces<S: Assembly>(
     let admissible = admissible
         .filter(|(m, r, _)| *m == mu && *r == relaxed)
         .map(|(_, _, x)| x);
-    let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+    let mut fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
     // Relaxed: shear at open points costs 10³ times the energy (pushed off them where the
     // optimal set allows).
     let w: Vec<f64> = weights
@@ -596,8 +596,36 @@ pub fn canonical_forces<S: Assembly>(
     let p = programs::force_energy_quadratic(&fp, &w);
     let mut solves = stages.solves + 1;
     let t0 = std::time::Instant::now();
-    let qs = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
+    let mut qs = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
     trace("energy QP", t0);
+    // At the least μ itself the admissible set can be too thin for the interior point (the
+    // LACT3 portal: "infeasible" at the μ its bisection had just found feasible). Once more at
+    // μ widened by ten times the bisection's precision; the field then holds |shear| ≤ μ'·normal
+    // with that μ' (reported as `friction`; `least_friction` stays the bisection's).
+    let mut mu = mu;
+    if needs_mu && !matches!(&qs, Ok(q) if q.status == LpStatus::Optimal) {
+        if let Some(m) = mu.filter(|m| *m > 0.0) {
+            let wider = m * (1.0 + 10.0 * copts.friction_precision);
+            let fp2 = programs::physical_force_program(
+                map,
+                &build,
+                value,
+                tol,
+                open,
+                Some(wider),
+                relaxed,
+            );
+            let p2 = programs::force_energy_quadratic(&fp2, &w);
+            solves += 1;
+            let q2 = lp::solve_quadratic(&fp2.lp, &p2, &copts_lp);
+            trace("energy QP at a wider μ", t0);
+            if matches!(&q2, Ok(q) if q.status == LpStatus::Optimal) {
+                qs = q2;
+                fp = fp2;
+                mu = Some(wider);
+            }
+        }
+    }
     let (mut x, selected_by) = match qs {
         Ok(qs) if qs.status == LpStatus::Optimal => (qs.x, ForceSelection::LeastEnergy),
         other => {

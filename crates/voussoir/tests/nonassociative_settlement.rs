@@ -164,7 +164,7 @@ fn friction_wall_over_a_settling_end_cracks_along_the_bond_without_dilatancy() {
 /// settlement the associative law has dilated the cracked part apart (no equilibrium at all),
 /// while without dilatancy the wall still carries a horizontal load, less than before.
 #[test]
-#[ignore = "session 12 regression, open: since the solver layer re-solves uncertified optima (issue 29, lp::with_fallback), 11 of 17 friction iterations of this curve do not converge and the last step's λ is 0 at 0.9855 cm (the result says so in its warnings); before, the iteration wandered at 0.40-0.42. Recorded in the closing note of issue 29"]
+#[ignore = "open since session 12 (issue 29): 11 of 17 friction iterations of this curve do not converge and the last step's λ is 0 at 0.9855 cm (the result says so in its warnings). Session 13 found and fixed one cause — HiGHS's answers to the equilibrated limit programs held tension of 0.13 kN against 21 kN and were rejected (lp::as_written_if_better now solves them as written, certified) — but the iteration still does not settle; before session 12 it wandered at 0.40-0.42 on those uncertified answers"]
 fn capacity_with_non_associative_friction_keeps_a_settled_wall_together() {
     use voussoir::analysis::capacity::{capacity, CapacityOptions};
     use voussoir::generate::LiveLoad;

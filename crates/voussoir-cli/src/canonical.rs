@@ -25,6 +25,13 @@ pub struct CanonicalArgs {
     /// a model of a few hundred blocks).
     #[arg(long)]
     pub ranges: bool,
+    /// Relative precision REL of the least friction coefficient μ that an optimal force field
+    /// needs on the joints without friction of their own (a bisection; default 0.05: the field
+    /// is selected at a μ within 5 % of the least). Finer precision costs programs at μ just
+    /// short of the least, the costly ones: 1e-4 took 89 s instead of 13 s on a 3,200-block
+    /// wall (docs/canonical.md).
+    #[arg(long, value_name = "REL")]
+    pub least_friction_precision: Option<f64>,
 }
 
 /// `limit`'s flags: the canonical selection is opt-in there (docs/canonical.md: on a symmetric
@@ -42,6 +49,13 @@ pub struct LimitCanonicalArgs {
     /// With --canonical: skip the ranges of the support reactions.
     #[arg(long)]
     pub no_ranges: bool,
+    /// With --canonical: relative precision REL of the least friction coefficient μ that an optimal force field
+    /// needs on the joints without friction of their own (a bisection; default 0.05: the field
+    /// is selected at a μ within 5 % of the least). Finer precision costs programs at μ just
+    /// short of the least, the costly ones: 1e-4 took 89 s instead of 13 s on a 3,200-block
+    /// wall (docs/canonical.md).
+    #[arg(long, value_name = "REL")]
+    pub least_friction_precision: Option<f64>,
 }
 
 /// The summary lines of a canonical selection.
@@ -75,9 +89,17 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
         };
         match (f.least_friction, f.friction) {
             (Some(l), _) => {
+                let prec = f
+                    .friction_precision
+                    .map(|p| {
+                        let pc = format!("{:.4}", 100.0 * p);
+                        let pc = pc.trim_end_matches('0').trim_end_matches('.');
+                        format!(" (to {pc} %)")
+                    })
+                    .unwrap_or_default();
                 let _ = writeln!(
                     s,
-                    "canonical forces: {crit}, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}"
+                    "canonical forces: {crit}, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}{prec}"
                 );
             }
             (None, None) if f.physical => {

@@ -42,6 +42,7 @@ impl LimitArgs {
             facets: self.crushing.facets,
             non_associative: self.crushing.non_associative,
             canonical: self.canonical.canonical,
+            least_friction_precision: self.canonical.least_friction_precision,
             ranges: self.canonical.no_ranges.then_some(false),
             adapt: self.adapt.options()?,
         };

@@ -48,6 +48,7 @@ impl SettleCmdArgs {
             facets: self.crushing.facets,
             non_associative: self.crushing.non_associative,
             raw: self.canonical.raw,
+            least_friction_precision: self.canonical.least_friction_precision,
             ranges: match (self.canonical.ranges, self.canonical.no_ranges) {
                 (true, _) => Some(true),
                 (_, true) => Some(false),

@@ -50,6 +50,7 @@ fn issue29_item5_least_friction_equals_a_bisection() {
         SettlementForm::Both,
         &CanonicalOptions {
             reaction_ranges: false,
+            friction_precision: 1e-4,
             ..CanonicalOptions::default()
         },
     )

@@ -30,6 +30,11 @@ use crate::structure::Assembly;
 /// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
 pub const MAX_FRICTION: f64 = 100.0;
 
+/// Default relative precision of the least friction coefficient: 5 %. At 1e-4 the 3,200-block
+/// stack-bond wall's bisection took 18 programs and 89 s, most of it in programs at a μ just
+/// short of the least (up to 20 s each); at 5 % it takes 8 programs and 13 s.
+pub const FRICTION_PRECISION: f64 = 0.05;
+
 /// Pivots allowed to each warm-started program of the early uniqueness test
 /// ([`canonical_mechanism`]); beyond them the optimal face is taken as not obviously a point and
 /// the test is left to the end.
@@ -46,7 +51,9 @@ pub struct CanonicalOptions {
     /// Relative size (of the largest motion component) below which two mechanisms are the
     /// same and a face is a single point.
     pub point_tolerance: f64,
-    /// Relative precision of the least friction coefficient (bisection).
+    /// Relative precision of the least friction coefficient (bisection; default
+    /// [`FRICTION_PRECISION`]). Each halving costs a feasibility program, and the programs at
+    /// a μ just short of the least are the costly ones (docs/canonical.md).
     pub friction_precision: f64,
     /// Compute the ranges of the support reactions (2 LPs per reaction component of every
     /// support that is not entirely open).
@@ -64,7 +71,7 @@ impl Default for CanonicalOptions {
             tolerance: 1e-9,
             dual_threshold: 1e-9,
             point_tolerance: 1e-6,
-            friction_precision: 1e-4,
+            friction_precision: FRICTION_PRECISION,
             reaction_ranges: true,
             forces: true,
             ranges_max_blocks: 500,
@@ -370,8 +377,9 @@ pub fn canonical_mechanism(
     // A unique optimum, tested first where it is likely (the solver's mechanism is of least
     // crack area): the extremes of `r·y` on the optimal face, warm-started from the stage-2
     // vertex by primal simplex and capped at UNIQUE_PIVOTS pivots each. On a point they take a
-    // few pivots (the façade in running bond at 0.5 m: 0–7); where the cap is reached the test
-    // is left to the end, as below.
+    // few pivots (the façade in running bond at 0.5 m: 0–7); where the cap is reached the
+    // fallback chain's answer is used (the 3,200-block wall: 466 dual simplex iterations, where
+    // the extremes of both faces from scratch took 27 s).
     let mut face1_spread: Option<f64> = None;
     if !changed2 {
         let mut lp = face1.clone();
@@ -383,12 +391,12 @@ pub fn canonical_mechanism(
             iteration_limit: Some(UNIQUE_PIVOTS),
             ..saved
         };
+        // An optimum counts whichever method of the fallback chain reached it (the primal
+        // simplex within its cap, or the next method after it): the chain has spent that time
+        // already, and its answer is certified like any other (lp::policy).
         let capped = |s: &Result<lp::LpSolution>| {
-            s.as_ref().is_ok_and(|s| {
-                s.status == LpStatus::Optimal
-                    && s.method == Method::PrimalSimplex
-                    && s.tried.is_empty()
-            })
+            s.as_ref()
+                .is_ok_and(|s| s.status == LpStatus::Optimal && !s.reduced_accuracy)
         };
         let lo = st.solve(&lp, &mut b);
         if capped(&lo) {
@@ -524,37 +532,86 @@ pub fn canonical_forces<S: Assembly>(
                     basis: &mut Option<Basis>,
                     relaxed: bool,
                     admissible: &mut Option<(Option<f64>, bool, Vec<f64>)>|
-     -> Result<bool> {
+     -> Result<Option<f64>> {
         let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
         // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
         match stages.solve(&fp.lp, basis) {
             Ok(s) if s.status == LpStatus::Optimal => {
+                // In 2D the field's own largest |p_t|/p_n (with the tolerance of
+                // `friction_demand` below) is an admissible μ too, often well below the one
+                // imposed; in 3D the rows are the pyramid's facets, not |p_t|, so μ stands.
+                let mut ratio = mu.unwrap_or(f64::INFINITY);
+                if let (1, Some(_)) = (map.tangents_per_point, mu) {
+                    let (pn, pt) = fp.forces(&s.x);
+                    let eps = 1e-8 * max_abs(&pn).max(max_abs(&pt));
+                    let mut r = 0.0f64;
+                    for k in 0..map.num_points() {
+                        let law = &map.laws[map.points[k].joint];
+                        if law.friction.is_some() || map.bilateral[k] || (relaxed && open[k]) {
+                            continue;
+                        }
+                        if pt[k].abs() > eps {
+                            r = r.max(if pn[k] > 0.0 {
+                                (pt[k].abs() - eps) / pn[k]
+                            } else {
+                                f64::INFINITY
+                            });
+                        }
+                    }
+                    ratio = ratio.min(r);
+                }
                 *admissible = Some((mu, relaxed, s.x));
-                Ok(true)
+                Ok(Some(ratio))
             }
-            _ => Ok(false),
+            _ => Ok(None),
         }
     };
-    // Without a physical optimal field under the model's own laws (open points unloaded),
-    // there is nothing to select from: the solver's forces stand.
-    let mut relaxed = false;
-    if !feasible(&mut stages, None, &mut None, false, &mut admissible)? {
-        relaxed = true;
-        if !feasible(&mut stages, None, &mut None, true, &mut admissible)? {
-            return Ok(None);
+    // The energy QP over the optimal fields at μ (relaxed: shear allowed at open points, at 10³
+    // times the energy).
+    let energy_qp = |mu: Option<f64>, relaxed: bool| {
+        let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
+        let w: Vec<f64> = weights
+            .iter()
+            .zip(open)
+            .map(|(&w, &o)| if relaxed && o { w * 1e-3 } else { w })
+            .collect();
+        let p = programs::force_energy_quadratic(&fp, &w);
+        let t0 = std::time::Instant::now();
+        let q = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
+        trace("energy QP", t0);
+        (fp, q)
+    };
+    let optimal = |q: &Result<lp::LpSolution>| matches!(q, Ok(q) if q.status == LpStatus::Optimal);
+    let mut solves;
+    let (least, mu, relaxed, fp, qs);
+    let precision = copts.friction_precision;
+    {
+        // Without a physical optimal field under the model's own laws (open points unloaded),
+        // there is nothing to select from: the solver's forces stand.
+        let mut rel = false;
+        if feasible(&mut stages, None, &mut None, false, &mut admissible)?.is_none() {
+            rel = true;
+            if feasible(&mut stages, None, &mut None, true, &mut admissible)?.is_none() {
+                return Ok(None);
+            }
         }
-    }
-    // The least μ: bisection on LP feasibility (the least μ is the least value of a largest
-    // ratio |p_t|/p_n over a polyhedron, a generalised fractional program: no single LP gives
-    // it, docs/canonical.md). The admissible field at the upper bracket is kept.
-    let (least, mu) = if needs_mu {
-        if feasible(&mut stages, Some(0.0), &mut basis, relaxed, &mut admissible)? {
+        // The least μ: bisection on LP feasibility (the least μ is the least value of a
+        // largest ratio |p_t|/p_n over a polyhedron, a generalised fractional program: no
+        // single LP gives it, docs/canonical.md). The admissible field at the upper bracket
+        // is kept.
+        let (l, m) = if !needs_mu {
+            (None, None)
+        } else if feasible(&mut stages, Some(0.0), &mut basis, rel, &mut admissible)?.is_some() {
             (Some(0.0), Some(0.0))
         } else {
+            // `hi` the least μ imposed on a feasible program, `least` the least admissible μ
+            // shown (a feasible field's own largest ratio, ≤ hi), `lo` one shown inadmissible.
             let (mut lo, mut hi) = (0.0, 0.5);
+            let mut least = f64::INFINITY;
             let mut found = false;
             while hi <= MAX_FRICTION {
-                if feasible(&mut stages, Some(hi), &mut basis, relaxed, &mut admissible)? {
+                if let Some(r) = feasible(&mut stages, Some(hi), &mut basis, rel, &mut admissible)? {
+                    least = r;
                     found = true;
                     break;
                 }
@@ -563,69 +620,48 @@ pub fn canonical_forces<S: Assembly>(
             }
             if found {
                 let mut at_hi = admissible.clone();
-                while hi - lo > copts.friction_precision * hi {
-                    let mid = 0.5 * (lo + hi);
-                    if feasible(&mut stages, Some(mid), &mut basis, relaxed, &mut admissible)? {
+                while least - lo > precision * least {
+                    let mid = 0.5 * (lo + least);
+                    if let Some(r) =
+                        feasible(&mut stages, Some(mid), &mut basis, rel, &mut admissible)?
+                    {
                         hi = mid;
+                        least = least.min(r);
                         at_hi = admissible.clone();
                     } else {
                         lo = mid;
                     }
                 }
                 admissible = at_hi;
-                (Some(hi), Some(hi))
+                (Some(least), Some(hi))
             } else {
                 (None, None)
             }
+        };
+        let (mut f, mut q) = energy_qp(m, rel);
+        solves = stages.solves + 1;
+        // At the least μ itself the admissible set can be too thin for the interior point
+        // (the LACT3 portal: "infeasible" at the μ its bisection had just found feasible).
+        // Once more at μ widened by the bisection's precision (at least 1e-3); the field then holds
+        // |shear| ≤ μ'·normal with that μ' (reported as `friction`; `least_friction` stays
+        // the bisection's).
+        let mut m = m;
+        if !optimal(&q) {
+            if let Some(mm) = m.filter(|m| *m > 0.0) {
+                let wider = mm * (1.0 + precision.max(1e-3));
+                let (f2, q2) = energy_qp(Some(wider), rel);
+                solves += 1;
+                if optimal(&q2) {
+                    (f, q, m) = (f2, q2, Some(wider));
+                }
+            }
         }
-    } else {
-        (None, None)
-    };
+        (least, mu, relaxed, fp, qs) = (l, m, rel, f, q);
+    }
     // The admissible field kept for the fallback must be one of the set finally used.
     let admissible = admissible
         .filter(|(m, r, _)| *m == mu && *r == relaxed)
         .map(|(_, _, x)| x);
-    let mut fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
-    // Relaxed: shear at open points costs 10³ times the energy (pushed off them where the
-    // optimal set allows).
-    let w: Vec<f64> = weights
-        .iter()
-        .zip(open)
-        .map(|(&w, &o)| if relaxed && o { w * 1e-3 } else { w })
-        .collect();
-    let p = programs::force_energy_quadratic(&fp, &w);
-    let mut solves = stages.solves + 1;
-    let t0 = std::time::Instant::now();
-    let mut qs = lp::solve_quadratic(&fp.lp, &p, &copts_lp);
-    trace("energy QP", t0);
-    // At the least μ itself the admissible set can be too thin for the interior point (the
-    // LACT3 portal: "infeasible" at the μ its bisection had just found feasible). Once more at
-    // μ widened by ten times the bisection's precision; the field then holds |shear| ≤ μ'·normal
-    // with that μ' (reported as `friction`; `least_friction` stays the bisection's).
-    let mut mu = mu;
-    if needs_mu && !matches!(&qs, Ok(q) if q.status == LpStatus::Optimal) {
-        if let Some(m) = mu.filter(|m| *m > 0.0) {
-            let wider = m * (1.0 + 10.0 * copts.friction_precision);
-            let fp2 = programs::physical_force_program(
-                map,
-                &build,
-                value,
-                tol,
-                open,
-                Some(wider),
-                relaxed,
-            );
-            let p2 = programs::force_energy_quadratic(&fp2, &w);
-            solves += 1;
-            let q2 = lp::solve_quadratic(&fp2.lp, &p2, &copts_lp);
-            trace("energy QP at a wider μ", t0);
-            if matches!(&q2, Ok(q) if q.status == LpStatus::Optimal) {
-                qs = q2;
-                fp = fp2;
-                mu = Some(wider);
-            }
-        }
-    }
     let (mut x, selected_by) = match qs {
         Ok(qs) if qs.status == LpStatus::Optimal => (qs.x, ForceSelection::LeastEnergy),
         other => {
@@ -651,12 +687,25 @@ pub fn canonical_forces<S: Assembly>(
     let nt = map.tangents_per_point;
     let mut largest_open_force = 0.0f64;
     let mut excess = 0.0f64;
+    // The friction the reported field needs on the joints without friction of their own: the
+    // least μ with |p_t| ≤ μ·p_n + ε at every point, ε = 1e-8 of the largest force (the energy
+    // QP's tolerance: without it, shears of 1e-9 of the largest force at points carrying
+    // 1e-11 of it read as μ ≈ 150 on the 3,200-block wall).
+    let fscale = max_abs(&pn).max(max_abs(&pt)).max(1e-300);
+    let eps = 1e-8 * fscale;
+    let mut demand: Option<f64> = None;
     for k in 0..map.num_points() {
         let shear = (0..nt).map(|m| pt[k * nt + m].powi(2)).sum::<f64>().sqrt();
         if open[k] {
             largest_open_force = largest_open_force.max(pn[k].abs()).max(shear);
         }
         let law = &map.laws[map.points[k].joint];
+        if needs_mu && law.friction.is_none() && !map.bilateral[k] && !open[k] {
+            let d = demand.get_or_insert(0.0);
+            if shear > eps && pn[k] > 0.0 {
+                *d = d.max((shear - eps) / pn[k]);
+            }
+        }
         if !map.bilateral[k] && !(relaxed && open[k]) {
             let m = law.friction.or(mu);
             if let Some(m) = m {
@@ -692,7 +741,6 @@ pub fn canonical_forces<S: Assembly>(
             entries.iter().map(|&(c, v)| v * x[c]).sum()
         };
         let centres = st.contact_bodies().supports;
-        let fscale = max_abs(&pn).max(max_abs(&pt)).max(1e-300);
         let mut rstages = Stages::new(opts);
         let mut b = basis.clone();
         for s in 0..ns {
@@ -741,7 +789,9 @@ pub fn canonical_forces<S: Assembly>(
         pt,
         CanonicalForces {
             least_friction: least,
+            friction_precision: least.map(|_| precision),
             friction: mu,
+            friction_demand: demand,
             selected_by,
             physical: !relaxed,
             largest_open_force,

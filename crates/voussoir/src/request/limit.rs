@@ -32,6 +32,10 @@ pub struct LimitRequest {
     /// 500 blocks (not in 3D); true: always; false: never.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ranges: Option<bool>,
+    /// With the canonical selection: the relative precision of the least friction coefficient
+    /// of the joints without friction of their own (a bisection; default 0.05, in (0, 1)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub least_friction_precision: Option<f64>,
     /// Mesh-independent cracks (2D): crack lines cut into the mesh and moved to their optimal
     /// position before the analysis runs on the adapted mesh (docs/cracks.md).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -50,6 +54,7 @@ impl LimitRequest {
 
     pub(super) fn validate(&self, req: &Request) -> Result<()> {
         let n = req.names;
+        super::check_friction_precision(n, self.least_friction_precision)?;
         if let (Some(r), false) = (self.ranges, self.canonical) {
             // The ranges are a stage of the canonical selection: without it they would be
             // silently ignored.
@@ -65,6 +70,24 @@ impl LimitRequest {
             };
             return invalid(format!(
                 "{flag} applies to the canonical selection: add {canonical} (limit reports the solver's own optimum by default)"
+            ));
+        }
+        if self.least_friction_precision.is_some() && !self.canonical {
+            return invalid(format!(
+                "{} applies to the canonical selection: add {} (limit reports the solver's own optimum by default)",
+                n.name("least_friction_precision"),
+                match n {
+                    super::Names::Keywords => n.given("canonical", "True"),
+                    super::Names::Fields => n.given("canonical", true),
+                    super::Names::Flags => n.name("canonical"),
+                }
+            ));
+        }
+        if self.least_friction_precision.is_some() && self.non_associative {
+            return invalid(format!(
+                "{} is not computed with {} (the forces are the friction iteration's)",
+                n.name("least_friction_precision"),
+                n.name("non_associative")
             ));
         }
         self.laws().validate(req.names)
@@ -146,13 +169,13 @@ impl LimitRequest {
                     st,
                     &solver,
                     &NonAssociativeOptions::default(),
-                    &canonical_options(self.ranges, dims),
+                    &canonical_options(self.ranges, self.least_friction_precision, dims),
                 )?
             } else {
                 limit_nonassociative_result(st, &solver, &NonAssociativeOptions::default())?
             }
         } else if self.canonical && crushing == Crushing::Linear {
-            limit_canonical(st, &solver, facets, &canonical_options(self.ranges, dims))?
+            limit_canonical(st, &solver, facets, &canonical_options(self.ranges, self.least_friction_precision, dims))?
         } else {
             limit_with(st, &solver, crushing, facets)?
         };

@@ -321,13 +321,31 @@ impl JointLaws {
     }
 }
 
+/// A relative precision of the least friction coefficient: in (0, 1).
+fn check_friction_precision(n: Names, p: Option<f64>) -> Result<()> {
+    match p {
+        Some(p) if !(p > 0.0 && p < 1.0) => invalid(format!(
+            "{} must be a relative precision in (0, 1) (e.g. 1e-4), not {p}",
+            n.name("least_friction_precision")
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// The reaction ranges of a canonical selection: `None` on 2D models of at most 500 blocks
 /// (never in 3D: 2 programs per component of six per support, each a full solve of the 3D force
 /// program — 42 CPU s on the README's 192-block vault where the rest of the selection takes 2;
 /// docs/canonical.md), `Some(true)` always, `Some(false)` never.
-fn canonical_options(ranges: Option<bool>, dims: usize) -> CanonicalOptions {
+/// `friction_precision`: the relative precision of the least friction coefficient (default
+/// [`crate::analysis::canonical::FRICTION_PRECISION`]).
+fn canonical_options(
+    ranges: Option<bool>,
+    friction_precision: Option<f64>,
+    dims: usize,
+) -> CanonicalOptions {
     let d = CanonicalOptions::default();
     CanonicalOptions {
+        friction_precision: friction_precision.unwrap_or(d.friction_precision),
         reaction_ranges: ranges.unwrap_or(dims == 2),
         ranges_max_blocks: if ranges == Some(true) {
             usize::MAX

@@ -34,6 +34,10 @@ pub struct SettleRequest {
     /// of at most 500 blocks (not in 3D); true: always; false: never.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ranges: Option<bool>,
+    /// With the canonical selection: the relative precision of the least friction coefficient
+    /// of the joints without friction of their own (a bisection; default 0.05, in (0, 1)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub least_friction_precision: Option<f64>,
     /// Mesh-independent cracks (2D): crack lines cut into the mesh and moved to their optimal
     /// position before the analysis runs on the adapted mesh (docs/cracks.md).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -52,6 +56,7 @@ impl SettleRequest {
 
     pub(super) fn validate(&self, req: &Request) -> Result<()> {
         let n = req.names;
+        super::check_friction_precision(n, self.least_friction_precision)?;
         self.laws().validate(n)?;
         if (self.laws().strength_given() || self.non_associative)
             && self.settlement_form != SettlementForm::Both
@@ -69,6 +74,13 @@ impl SettleRequest {
             return invalid(format!(
                 "{} is not computed with {} (the forces are the friction iteration's)",
                 n.name("ranges"),
+                n.name("non_associative")
+            ));
+        }
+        if self.non_associative && self.least_friction_precision.is_some() {
+            return invalid(format!(
+                "{} is not computed with {} (the forces are the friction iteration's)",
+                n.name("least_friction_precision"),
                 n.name("non_associative")
             ));
         }
@@ -106,6 +118,19 @@ impl SettleRequest {
             return invalid(format!(
                 "{} applies to the canonical selection, which {why} leaves out",
                 n.name("ranges")
+            ));
+        }
+        if self.least_friction_precision.is_some() && !self.non_associative && !self.canonical(req, dims) {
+            let why = if self.raw {
+                n.name("raw")
+            } else if dims == 3 {
+                n.given("friction_cone", "exact")
+            } else {
+                format!("{} or {}", n.name("crushing"), n.name("facets"))
+            };
+            return invalid(format!(
+                "{} applies to the canonical selection, which {why} leaves out",
+                n.name("least_friction_precision")
             ));
         }
         if dims == 3 && self.laws().strength_given() {
@@ -169,7 +194,7 @@ impl SettleRequest {
                     crushing,
                     facets,
                     &NonAssociativeOptions::settlement(),
-                    &canonical_options(self.ranges, dims),
+                    &canonical_options(self.ranges, self.least_friction_precision, dims),
                 )?
             } else {
                 settle_nonassociative(
@@ -187,7 +212,7 @@ impl SettleRequest {
                 st,
                 &solver,
                 self.settlement_form,
-                &canonical_options(self.ranges, dims),
+                &canonical_options(self.ranges, self.least_friction_precision, dims),
             )?
         } else if both && (dims == 2 || crushing == Crushing::Conic) {
             settle_crushing(st, &solver, crushing, facets)?

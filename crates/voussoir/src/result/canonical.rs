@@ -56,12 +56,24 @@ pub struct ReactionRange<D: Spatial = Two> {
 #[serde(bound = "")]
 pub struct CanonicalForces<D: Spatial = Two> {
     /// The least friction coefficient μ for which an optimal field with unloaded open points
-    /// has `|p_t| ≤ μ p_n` at every point of the joints without friction of their own (`null`
-    /// when every joint has its own friction, or when no finite μ admits one).
+    /// has `|p_t| ≤ μ p_n` at every point of the joints without friction of their own, from
+    /// above to the relative precision `friction_precision`: an optimal field needs no more,
+    /// and none admits `least_friction · (1 − friction_precision)` (`null` when every joint has
+    /// its own friction, or when no μ ≤ 100 admits one).
     pub least_friction: Option<f64>,
-    /// The μ imposed on those joints in the reported field (`least_friction` up to the
-    /// bisection's precision); `null` when none was imposed.
+    /// The relative precision of `least_friction` (the request's `least_friction_precision`,
+    /// default 0.05).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction_precision: Option<f64>,
+    /// The μ imposed on those joints in the reported field: the least one the bisection tried
+    /// and found admissible (`least_friction` up to the bisection's precision); `null` when
+    /// none was imposed.
     pub friction: Option<f64>,
+    /// The largest `|p_t|/p_n` of the reported field on the joints without friction of their
+    /// own: the friction coefficient this field needs (at least `least_friction`); `null` when
+    /// every joint has its own friction.
+    #[serde(default)]
+    pub friction_demand: Option<f64>,
     /// What fixed the reported field: `least_energy` (the least complementary energy), or
     /// `admissible` when the energy QP did not end optimal and the admissible field of the
     /// last feasibility program at the imposed μ stands instead.

@@ -92,7 +92,15 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
                 let prec = f
                     .friction_precision
                     .map(|p| {
-                        let pc = format!("{:.4}", 100.0 * p);
+                        if p >= 1.0 - 1e-12 {
+                            return " (an admissible μ: no smaller one was shown inadmissible)"
+                                .to_string();
+                        }
+                        let pc = if p >= 0.01 {
+                            format!("{:.1}", 100.0 * p)
+                        } else {
+                            format!("{:.4}", 100.0 * p)
+                        };
                         let pc = pc.trim_end_matches('0').trim_end_matches('.');
                         format!(" (to {pc} %)")
                     })

@@ -133,6 +133,7 @@ def limit(
     non_associative: bool = False,
     canonical: bool = False,
     ranges: Optional[bool] = None,
+    least_friction_precision: Optional[float] = None,
     friction_facets: Optional[int] = None,
     friction_cone: Optional[str] = None,
     executor=None,
@@ -148,8 +149,10 @@ def limit(
     ``crushing``: ``"linear"`` (inscribed polygon of ``facets`` sides, default 16) or
     ``"conic"`` (exact, SOCP); both need a compressive strength. ``non_associative``: friction
     without dilatancy (``--non-associative``). ``canonical``: the canonical mechanism and forces
-    (``--canonical``), ``ranges=False`` without the reaction ranges. ``executor``: return a
-    future computed there.
+    (``--canonical``), ``ranges=False`` without the reaction ranges,
+    ``least_friction_precision``: the relative precision of the least friction coefficient the
+    canonical forces report (default 0.05; ``--least-friction-precision``). ``executor``: return
+    a future computed there.
 
     A 3D model (JSON with ``vertices``, OBJ, PLY, :func:`voussoir.generate.vault` …) is analysed
     as by the CLI: ``method`` defaults to the policy's (``"clarabel"``); ``friction_facets`` (default 8) is the
@@ -164,7 +167,14 @@ def limit(
     m = _model(model)
     if m.dim == 3:
         c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
-        return a3.run("limit", m._json, c3, {"crushing": crushing, "facets": facets}, executor)
+        a = {"crushing": crushing, "facets": facets}
+        if canonical:
+            a["canonical"] = True
+        if ranges is not None:
+            a["ranges"] = bool(ranges)
+        if least_friction_precision is not None:
+            a["least_friction_precision"] = float(least_friction_precision)
+        return a3.run("limit", m._json, c3, a, executor)
     if friction_facets is not None or friction_cone is not None:
         _planar(m, "limit", friction_facets, friction_cone)
     a = {"type": "limit", **o.laws(crushing, facets, non_associative)}
@@ -172,6 +182,8 @@ def limit(
         a["canonical"] = True
     if ranges is not None:
         a["ranges"] = bool(ranges)
+    if least_friction_precision is not None:
+        a["least_friction_precision"] = float(least_friction_precision)
     r = o.request(
         a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength,
@@ -195,6 +207,7 @@ def settle(
     non_associative: bool = False,
     raw: bool = False,
     ranges: Optional[bool] = None,
+    least_friction_precision: Optional[float] = None,
     split: Union[str, Iterable[str], None] = None,
     friction_facets: Optional[int] = None,
     friction_cone: Optional[str] = None,
@@ -218,7 +231,8 @@ def settle(
     ranges of the support reactions over the optimal force fields on 2D models of at most 500
     blocks (not in 3D). ``raw=True`` reports the solver's own optimal solution instead (``--raw``);
     ``ranges=True``/``False`` computes the reaction ranges always/never (``--ranges`` /
-    ``--no-ranges``). Other keywords as :func:`limit`.
+    ``--no-ranges``); ``least_friction_precision`` as for :func:`limit`. Other keywords as
+    :func:`limit`.
 
     3D models: ``move={"left": (u, v, w)}`` or ``(u, v, w, θx, θy, θz)`` (w up; rotations in
     degrees, right-handed about the support's centroid), or the CLI's ``"left=0,0,-5mm"``;
@@ -235,6 +249,8 @@ def settle(
         )
         form = o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS)
         analysis = {"settlement_form": form, "raw": bool(raw), "ranges": ranges}
+        if least_friction_precision is not None:
+            analysis["least_friction_precision"] = float(least_friction_precision)
         return a3.run("settle", m._json, c3, analysis, executor)
     if split is not None:
         raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
@@ -249,6 +265,8 @@ def settle(
         a["raw"] = True
     if ranges is not None:
         a["ranges"] = bool(ranges)
+    if least_friction_precision is not None:
+        a["least_friction_precision"] = float(least_friction_precision)
     r = o.request(
         a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile),

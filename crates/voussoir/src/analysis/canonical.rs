@@ -35,10 +35,30 @@ pub const MAX_FRICTION: f64 = 100.0;
 /// short of the least (up to 20 s each); at 5 % it takes 8 programs and 13 s.
 pub const FRICTION_PRECISION: f64 = 0.05;
 
-/// Pivots allowed to each warm-started program of the early uniqueness test
-/// ([`canonical_mechanism`]); beyond them the optimal face is taken as not obviously a point and
-/// the test is left to the end.
-const UNIQUE_PIVOTS: usize = 500;
+/// Pivots allowed to the primal simplex in each warm-started program of the early uniqueness
+/// test ([`canonical_mechanism`]; default of [`CanonicalOptions::unique_pivots`]); beyond them
+/// the solver layer's fallback chain answers.
+pub const UNIQUE_PIVOTS: usize = 500;
+
+/// The answer of one feasibility program of the force stage.
+enum Trial {
+    /// An optimal field exists; with the least μ it admits (its largest |p_t|/p_n in 2D, the μ
+    /// imposed in 3D; infinite without one).
+    Admissible(f64),
+    /// None exists (the solver's certificate).
+    Inadmissible,
+    /// The solver did not decide.
+    Undecided,
+}
+
+impl Trial {
+    fn ratio(&self) -> Option<f64> {
+        match self {
+            Trial::Admissible(r) => Some(*r),
+            _ => None,
+        }
+    }
+}
 
 /// Settings of the canonical selection.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,6 +80,9 @@ pub struct CanonicalOptions {
     pub reaction_ranges: bool,
     /// Select the canonical force field (and the least friction).
     pub forces: bool,
+    /// Pivots allowed to the primal simplex in each program of the early uniqueness test
+    /// (default [`UNIQUE_PIVOTS`]).
+    pub unique_pivots: usize,
     /// Reaction ranges only for models of at most this many blocks (each range LP is a full
     /// solve; on the 1,889-block façade, 132 of them take many minutes).
     pub ranges_max_blocks: usize,
@@ -72,6 +95,7 @@ impl Default for CanonicalOptions {
             dual_threshold: 1e-9,
             point_tolerance: 1e-6,
             friction_precision: FRICTION_PRECISION,
+            unique_pivots: UNIQUE_PIVOTS,
             reaction_ranges: true,
             forces: true,
             ranges_max_blocks: 500,
@@ -196,7 +220,7 @@ impl Stages {
         let r = self.solve_inner(lp, basis);
         if std::env::var_os("VOUSSOIR_TRACE").is_some() {
             eprintln!(
-                "trace: stage solve {} {:?} rows {} cols {} warm {} -> {:?} {:.3} s it {:?}",
+                "trace: stage solve {} {:?} rows {} cols {} warm {} -> {:?} {:.3} s it {:?} tried {:?}",
                 self.solves,
                 r.as_ref().map_or(self.opts.method, |s| s.method),
                 lp.num_rows(),
@@ -204,7 +228,33 @@ impl Stages {
                 warm,
                 r.as_ref().map(|s| s.status),
                 t0.elapsed().as_secs_f64(),
-                r.as_ref().map(|s| s.iterations)
+                r.as_ref().map(|s| s.iterations),
+                r.as_ref().map(|s| &s.tried)
+            );
+        }
+        r
+    }
+
+    /// Solve with the stages' method alone, without the solver layer's fallback chain (the
+    /// bisection's trials: one that Clarabel does not decide is left undecided); `decision`:
+    /// the status is the answer ([`SolverOptions::decision`]).
+    fn solve_single(&mut self, lp: &LinearProgram, decision: bool) -> Result<lp::LpSolution> {
+        self.solves += 1;
+        let t0 = std::time::Instant::now();
+        let o = SolverOptions {
+            decision,
+            ..self.opts
+        };
+        let r = lp::solve_without_fallback(lp, &o);
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!(
+                "trace: stage solve {} {:?} (no fallback) rows {} cols {} -> {:?} {:.3} s",
+                self.solves,
+                self.opts.method,
+                lp.num_rows(),
+                lp.num_cols(),
+                r.as_ref().map(|s| s.status),
+                t0.elapsed().as_secs_f64(),
             );
         }
         r
@@ -388,7 +438,7 @@ pub fn canonical_mechanism(
         let saved = st.opts;
         st.opts = SolverOptions {
             method: Method::PrimalSimplex,
-            iteration_limit: Some(UNIQUE_PIVOTS),
+            iteration_limit: Some(copts.unique_pivots),
             ..saved
         };
         // An optimum counts whichever method of the fallback chain reached it (the primal
@@ -532,10 +582,21 @@ pub fn canonical_forces<S: Assembly>(
                     basis: &mut Option<Basis>,
                     relaxed: bool,
                     admissible: &mut Option<(Option<f64>, bool, Vec<f64>)>|
-     -> Result<Option<f64>> {
+     -> Result<Trial> {
         let fp = programs::physical_force_program(map, &build, value, tol, open, mu, relaxed);
-        // A solver that reaches no conclusion counts as infeasible (that μ is not imposed).
-        match stages.solve(&fp.lp, basis) {
+        // The bisection's trials (μ > 0) go to Clarabel alone: one it does not decide is left
+        // undecided (HiGHS's interior point took 45–70 s to decide each of two such trials on
+        // the façade in running bond, where Clarabel decides the others in 1–8 s). The other
+        // programs go along the fallback chain; one that reaches no conclusion there counts as
+        // infeasible (that μ is not imposed).
+        let single = mu.is_some_and(|m| m > 0.0);
+        let solved = if single {
+            stages.solve_single(&fp.lp, true)
+        } else {
+            stages.solve(&fp.lp, basis)
+        };
+        match solved {
+            Ok(s) if s.status == LpStatus::Infeasible => Ok(Trial::Inadmissible),
             Ok(s) if s.status == LpStatus::Optimal => {
                 // In 2D the field's own largest |p_t|/p_n (with the tolerance of
                 // `friction_demand` below) is an admissible μ too, often well below the one
@@ -561,9 +622,10 @@ pub fn canonical_forces<S: Assembly>(
                     ratio = ratio.min(r);
                 }
                 *admissible = Some((mu, relaxed, s.x));
-                Ok(Some(ratio))
+                Ok(Trial::Admissible(ratio))
             }
-            _ => Ok(None),
+            _ if single => Ok(Trial::Undecided),
+            _ => Ok(Trial::Inadmissible),
         }
     };
     // The energy QP over the optimal fields at μ (relaxed: shear allowed at open points, at 10³
@@ -584,14 +646,15 @@ pub fn canonical_forces<S: Assembly>(
     let optimal = |q: &Result<lp::LpSolution>| matches!(q, Ok(q) if q.status == LpStatus::Optimal);
     let mut solves;
     let (least, mu, relaxed, fp, qs);
+    let precision_shown: Option<f64>;
     let precision = copts.friction_precision;
     {
         // Without a physical optimal field under the model's own laws (open points unloaded),
         // there is nothing to select from: the solver's forces stand.
         let mut rel = false;
-        if feasible(&mut stages, None, &mut None, false, &mut admissible)?.is_none() {
+        if feasible(&mut stages, None, &mut None, false, &mut admissible)?.ratio().is_none() {
             rel = true;
-            if feasible(&mut stages, None, &mut None, true, &mut admissible)?.is_none() {
+            if feasible(&mut stages, None, &mut None, true, &mut admissible)?.ratio().is_none() {
                 return Ok(None);
             }
         }
@@ -599,21 +662,32 @@ pub fn canonical_forces<S: Assembly>(
         // largest ratio |p_t|/p_n over a polyhedron, a generalised fractional program: no
         // single LP gives it, docs/canonical.md). The admissible field at the upper bracket
         // is kept.
+        // `shown`: the largest μ shown inadmissible (the precision the result states is
+        // measured from it; an undecided trial moves `lo` but not `shown`).
+        let mut shown = 0.0f64;
         let (l, m) = if !needs_mu {
             (None, None)
-        } else if feasible(&mut stages, Some(0.0), &mut basis, rel, &mut admissible)?.is_some() {
+        } else if feasible(&mut stages, Some(0.0), &mut basis, rel, &mut admissible)?
+            .ratio()
+            .is_some()
+        {
             (Some(0.0), Some(0.0))
         } else {
             // `hi` the least μ imposed on a feasible program, `least` the least admissible μ
-            // shown (a feasible field's own largest ratio, ≤ hi), `lo` one shown inadmissible.
+            // shown (a feasible field's own largest ratio, ≤ hi), `lo` the largest μ not
+            // shown admissible.
             let (mut lo, mut hi) = (0.0, 0.5);
             let mut least = f64::INFINITY;
             let mut found = false;
             while hi <= MAX_FRICTION {
-                if let Some(r) = feasible(&mut stages, Some(hi), &mut basis, rel, &mut admissible)? {
-                    least = r;
-                    found = true;
-                    break;
+                match feasible(&mut stages, Some(hi), &mut basis, rel, &mut admissible)? {
+                    Trial::Admissible(r) => {
+                        least = r;
+                        found = true;
+                        break;
+                    }
+                    Trial::Inadmissible => shown = hi,
+                    Trial::Undecided => {}
                 }
                 lo = hi;
                 hi *= 4.0;
@@ -622,14 +696,17 @@ pub fn canonical_forces<S: Assembly>(
                 let mut at_hi = admissible.clone();
                 while least - lo > precision * least {
                     let mid = 0.5 * (lo + least);
-                    if let Some(r) =
-                        feasible(&mut stages, Some(mid), &mut basis, rel, &mut admissible)?
-                    {
-                        hi = mid;
-                        least = least.min(r);
-                        at_hi = admissible.clone();
-                    } else {
-                        lo = mid;
+                    match feasible(&mut stages, Some(mid), &mut basis, rel, &mut admissible)? {
+                        Trial::Admissible(r) => {
+                            hi = mid;
+                            least = least.min(r);
+                            at_hi = admissible.clone();
+                        }
+                        Trial::Inadmissible => {
+                            shown = mid;
+                            lo = mid;
+                        }
+                        Trial::Undecided => lo = mid,
                     }
                 }
                 admissible = at_hi;
@@ -638,6 +715,7 @@ pub fn canonical_forces<S: Assembly>(
                 (None, None)
             }
         };
+        precision_shown = l.map(|l| if l > 0.0 { (1.0 - shown / l).max(0.0) } else { 0.0 });
         let (mut f, mut q) = energy_qp(m, rel);
         solves = stages.solves + 1;
         // At the least μ itself the admissible set can be too thin for the interior point
@@ -646,7 +724,7 @@ pub fn canonical_forces<S: Assembly>(
         // |shear| ≤ μ'·normal with that μ' (reported as `friction`; `least_friction` stays
         // the bisection's).
         let mut m = m;
-        if !optimal(&q) {
+        if matches!(&q, Ok(q) if q.status == LpStatus::Infeasible) {
             if let Some(mm) = m.filter(|m| *m > 0.0) {
                 let wider = mm * (1.0 + precision.max(1e-3));
                 let (f2, q2) = energy_qp(Some(wider), rel);
@@ -789,7 +867,7 @@ pub fn canonical_forces<S: Assembly>(
         pt,
         CanonicalForces {
             least_friction: least,
-            friction_precision: least.map(|_| precision),
+            friction_precision: precision_shown,
             friction: mu,
             friction_demand: demand,
             selected_by,

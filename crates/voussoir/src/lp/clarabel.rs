@@ -28,7 +28,7 @@ impl Backend for Clarabel {
         let solution = if cones.is_empty() && o.presolve && presolve_pays(lp) {
             solve_presolved(lp, o)?
         } else {
-            solve_clarabel(lp, cones, o, large(lp, cones))?
+            solve_clarabel(lp, cones, o, large(lp, cones) && !o.decision)?
         };
         Ok(Solved {
             solution,

@@ -265,6 +265,12 @@ pub struct SolverOptions {
     /// [`fallback_chain`] run with their own limits (diagnostics, and the test that a backend
     /// failure is recovered).
     pub iteration_limit: Option<usize>,
+    /// The program is a yes/no question whose status is the answer (a trial of a bisection),
+    /// not an optimum whose duals are read: Clarabel keeps its default regularisation and
+    /// tolerance on large programs instead of the tighter ones of [`clarabel`] (with those,
+    /// two trials of the least-μ bisection on the façade in running bond ended in Clarabel's
+    /// numerical stop, where the defaults decide them in 6 s). Off by default.
+    pub decision: bool,
 }
 
 impl Default for SolverOptions {
@@ -278,6 +284,7 @@ impl Default for SolverOptions {
             log: false,
             cleanup: true,
             iteration_limit: None,
+            decision: false,
         }
     }
 }
@@ -528,6 +535,15 @@ fn check_numbers(lp: &LinearProgram) -> Result<()> {
 pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
     with_fallback(lp, opts, |o| solve_once(lp, o))
+}
+
+/// [`solve`] with `opts.method` alone, without the fallback chain: for a program whose failure
+/// the caller can afford (the trials of the canonical selection's least-μ bisection, where a
+/// trial that Clarabel cannot decide costs a minute on HiGHS's interior point and is better
+/// left undecided).
+pub fn solve_without_fallback(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    solve_once(lp, opts)
 }
 
 /// The methods tried, in order, when a solve with `method` fails (the backend's error, a
@@ -853,7 +869,38 @@ pub fn solve_quadratic(
     } else {
         &clarabel::Clarabel
     };
-    Ok(backend.solve_quadratic(lp, quadratic, opts)?.solution)
+    // Nondimensional, as every LP ([`scale`]): `x = C x̃`, so each quadratic coefficient takes
+    // the product of its two columns' factors and the objective's factor σ. Without a linear
+    // cost σ makes the largest quadratic coefficient about one (the minimiser does not depend
+    // on it). As written, the canonical force stage's energy QP on the façade in running bond
+    // (2,672 blocks, forces of thousands of kN) stopped at Clarabel's iteration limit after
+    // 27 s; nondimensional it ends optimal in 5.6 s.
+    match Scaling::needed(lp, &[]) {
+        None => Ok(backend.solve_quadratic(lp, quadratic, opts)?.solution),
+        Some(mut sc) => {
+            if lp.cost.iter().all(|&c| c == 0.0) {
+                let top = quadratic
+                    .iter()
+                    .fold(0.0f64, |m, &(i, j, v)| m.max((v * sc.col[i] * sc.col[j]).abs()));
+                sc.objective = if top > 0.0 && top.is_finite() {
+                    2f64.powi(-(top.log2().round() as i32))
+                } else {
+                    1.0
+                };
+            }
+            let slp = sc.apply(lp);
+            let sq: Vec<(usize, usize, f64)> = quadratic
+                .iter()
+                .map(|&(i, j, v)| (i, j, v * sc.objective * sc.col[i] * sc.col[j]))
+                .collect();
+            let solved = backend.solve_quadratic(&slp, &sq, opts)?.solution;
+            Ok(if solved.status == LpStatus::Optimal {
+                sc.unscale(solved)
+            } else {
+                solved
+            })
+        }
+    }
 }
 
 /// The backend that solves cone programs under `opts`.

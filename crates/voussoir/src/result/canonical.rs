@@ -61,8 +61,10 @@ pub struct CanonicalForces<D: Spatial = Two> {
     /// and none admits `least_friction · (1 − friction_precision)` (`null` when every joint has
     /// its own friction, or when no μ ≤ 100 admits one).
     pub least_friction: Option<f64>,
-    /// The relative precision of `least_friction` (the request's `least_friction_precision`,
-    /// default 0.05).
+    /// The relative precision to which `least_friction` is shown to be the least: `1 − lo /
+    /// least_friction`, `lo` the largest μ a program showed inadmissible. At most the request's
+    /// `least_friction_precision` (default 0.05) when every trial of the bisection was decided;
+    /// more where Clarabel left one undecided; 0 when the least is 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction_precision: Option<f64>,
     /// The μ imposed on those joints in the reported field: the least one the bisection tried

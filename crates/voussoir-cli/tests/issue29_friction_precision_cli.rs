@@ -65,10 +65,15 @@ fn issue29_item5_least_friction_precision_refused_where_it_does_not_apply() {
         a.extend(["-o", "r.json"]);
         a
     };
-    for bad in ["0", "1", "-0.1", "NaN"] {
+    for bad in [
+        "--least-friction-precision=0",
+        "--least-friction-precision=1",
+        "--least-friction-precision=-0.1",
+        "--least-friction-precision=NaN",
+    ] {
         refused(
             &d,
-            &with(&["--least-friction-precision", bad]),
+            &with(&[bad]),
             "--least-friction-precision must be a relative precision in (0, 1)",
         );
     }

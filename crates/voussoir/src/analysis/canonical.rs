@@ -241,8 +241,11 @@ impl Stages {
     fn solve_single(&mut self, lp: &LinearProgram, decision: bool) -> Result<lp::LpSolution> {
         self.solves += 1;
         let t0 = std::time::Instant::now();
+        // Without a chain behind it, the trial runs to Clarabel's own limit (an iteration
+        // limit is the requested method's, SolverOptions::iteration_limit).
         let o = SolverOptions {
             decision,
+            iteration_limit: None,
             ..self.opts
         };
         let r = lp::solve_without_fallback(lp, &o);

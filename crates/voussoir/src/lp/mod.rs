@@ -645,34 +645,61 @@ fn solve_once(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     Ok(match Scaling::needed(lp, &[]) {
         None => backend.solve(lp, &[], opts, None)?.solution,
         Some(s) => match backend.solve(&s.apply(lp), &[], opts, None) {
-            Ok(solved) => as_written_if_better(lp, s.unscale(solved.solution), || {
-                backend.solve(lp, &[], opts, None).map(|r| r.solution)
-            }),
+            Ok(solved) => {
+                as_written_if_better(lp, s.unscale(solved.solution), || {
+                    backend.solve(lp, &[], opts, None).map(|r| r.solution)
+                })
+                .0
+            }
             // The equilibrated program refused: once more as written.
             Err(_) => backend.solve(lp, &[], opts, None)?.solution,
         },
     })
 }
 
-/// The solution of the equilibrated program, or — where it does not certify on the program as
-/// written ([`policy::check`]) — the program solved as written, if that one certifies. The
-/// backend's tolerances act on the equilibrated numbers: a column scaled by 2^36 (a contact
-/// force whose entries are of round-off size) carries its 1e-7 to a bound violation of 1e-3
-/// of the largest force in the user's program. Measured: the non-associative capacity curve of
-/// a settled 5 × 8 wall (`tests/nonassociative_settlement.rs`), normal forces of −0.13 kN
-/// against 21 kN from HiGHS's dual simplex on the equilibrated limit program; as written,
-/// every one of its programs certifies.
-fn as_written_if_better(
+/// Which of its two answers [`as_written_if_better`] returned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Answer {
+    /// The equilibrated program's (the program as written was not solved, or did no better).
+    Scaled,
+    /// The program's as written: a certified optimum where the equilibrated one was not.
+    AsWritten,
+}
+
+/// The solution of the equilibrated program (`scaled`, already in the user's units), or —
+/// where it is not a certified optimum of the program as written ([`policy::check`]) — the
+/// program solved as written (`as_written`, called only then), if that one is a certified
+/// optimum; with which of the two it is, so that the caller keeps the basis that goes with it.
+///
+/// The backend's tolerances act on the equilibrated numbers: a column scaled by 2^36 (a
+/// contact force whose entries are of round-off size) carries its 1e-7 to a bound violation of
+/// 1e-3 of the largest force in the user's program. Measured on the non-associative capacity
+/// curve of a settled 5 × 8 wall (`tests/nonassociative_settlement.rs`): normal forces of
+/// −0.13 kN against 21 kN from HiGHS's dual simplex, and Clarabel stopping at reduced accuracy
+/// (row violation 7.5e-4) on the equilibrated limit program at 1 cm; as written, every one of
+/// its programs certifies. A status is not taken on trust either: on that program at 1 cm
+/// HiGHS's dual simplex and interior point both said "infeasible" after equilibration, where
+/// the program as written has a certified optimum (the curve then fell to a false zero at
+/// 0.9855 cm). So an infeasible or unbounded answer is checked as written too, and a certified
+/// optimum — a proof of feasibility and of a bound — replaces it; where the program as written
+/// gives the same status, or nothing certified, the equilibrated answer stands.
+pub fn as_written_if_better(
     lp: &LinearProgram,
     scaled: LpSolution,
     as_written: impl FnOnce() -> Result<LpSolution>,
-) -> LpSolution {
-    if scaled.status != LpStatus::Optimal || policy::check(lp, &scaled).is_none() {
-        return scaled;
+) -> (LpSolution, Answer) {
+    let settled = match scaled.status {
+        LpStatus::Optimal => policy::check(lp, &scaled).is_none(),
+        LpStatus::Infeasible | LpStatus::Unbounded => false,
+    };
+    if settled {
+        return (scaled, Answer::Scaled);
     }
     match as_written() {
-        Ok(s) if s.status == LpStatus::Optimal && policy::check(lp, &s).is_none() => s,
-        _ => scaled,
+        Ok(s) if s.status == LpStatus::Optimal && policy::check(lp, &s).is_none() => {
+            (s, Answer::AsWritten)
+        }
+        _ => (scaled, Answer::Scaled),
     }
 }
 
@@ -792,14 +819,14 @@ fn solve_warm_once(
         None => solved.solution,
         Some(s) => {
             let mut again = None;
-            let sol = as_written_if_better(lp, s.unscale(solved.solution), || {
+            let (sol, answer) = as_written_if_better(lp, s.unscale(solved.solution), || {
                 let r = backend.solve(lp, &[], opts, None)?;
                 again = Some(r.basis);
                 Ok(r.solution)
             });
             // The basis goes with the solution returned.
-            if let Some(b) = again.filter(|_| policy::check(lp, &sol).is_none()) {
-                *basis = b;
+            if answer == Answer::AsWritten {
+                *basis = again.flatten();
             }
             sol
         }

@@ -67,7 +67,10 @@ fn check(d: &Path, model: &str, method: &str) -> (String, serde_json::Value) {
         }
         // Clarabel only with a reason when another method was asked for.
         if m == "clarabel" && method != "clarabel" {
-            assert!(why.contains("by design: ") || why.contains("fallback"), "{text}");
+            assert!(
+                why.contains("by design: ") || why.contains("fallback"),
+                "{text}"
+            );
         }
     }
     let answered = v["answered"].as_array().unwrap();
@@ -101,7 +104,14 @@ fn issue29_item3_safety_states_which_method_answered_each_kind_of_program() {
     run(
         &d,
         &[
-            "gen", "dome", "--courses", "4", "--segments", "8", "-o", "dome.json",
+            "gen",
+            "dome",
+            "--courses",
+            "4",
+            "--segments",
+            "8",
+            "-o",
+            "dome.json",
         ],
     );
     run(&d, &["gen", "arch", "-o", "arch.json"]);
@@ -129,7 +139,10 @@ fn issue29_item3_safety_states_which_method_answered_each_kind_of_program() {
         v_ipm["least_joint_fraction"].as_f64().unwrap(),
     );
     assert!((f - f_ipm).abs() <= 1e-6, "{f} vs {f_ipm}");
-    assert!(text_ipm.contains("  bisection: 1 by ipm (certified)"), "{text_ipm}");
+    assert!(
+        text_ipm.contains("  bisection: 1 by ipm (certified)"),
+        "{text_ipm}"
+    );
 
     // The paper's arch (2D) by the dual simplex: no Clarabel at all.
     let (text, v) = check(&d, "arch.json", "dual-simplex");

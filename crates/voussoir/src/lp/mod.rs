@@ -377,7 +377,10 @@ impl SolverInfo {
             };
             let outcome = s.outcome.words();
             match out.iter_mut().find(|a| {
-                a.programs == programs && a.method == s.method && a.why == why && a.outcome == outcome
+                a.programs == programs
+                    && a.method == s.method
+                    && a.why == why
+                    && a.outcome == outcome
             }) {
                 Some(a) => a.answers += 1,
                 None => out.push(ProgramAnswers {
@@ -391,8 +394,10 @@ impl SolverInfo {
         }
         // Each kind's lines together, kinds in order of first appearance.
         let first = |p: &str| out.iter().position(|a| a.programs == p).unwrap_or(0);
-        let mut keyed: Vec<(usize, ProgramAnswers)> =
-            out.iter().map(|a| (first(&a.programs), a.clone())).collect();
+        let mut keyed: Vec<(usize, ProgramAnswers)> = out
+            .iter()
+            .map(|a| (first(&a.programs), a.clone()))
+            .collect();
         keyed.sort_by_key(|(k, _)| *k);
         keyed.into_iter().map(|(_, a)| a).collect()
     }

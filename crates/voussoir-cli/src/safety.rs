@@ -265,8 +265,9 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             .collect();
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
-    // The method that answered most programs, and every fallback taken, each with the method
-    // that answered after it (the JSON's `solver`).
+    // The method that stands for the run (the one asked for where it answered), every
+    // fallback taken, then which method answered each kind of program and why where it is
+    // not the one asked for (the JSON's `solver` and `answered`).
     let _ = writeln!(
         s,
         "{} LP solves ({}{})",
@@ -278,5 +279,16 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             format!("; fallbacks: {}", r.solver.tried.join("; "))
         }
     );
+    for a in &r.answered {
+        let _ = writeln!(
+            s,
+            "  {}: {} by {} ({}{})",
+            a.programs,
+            a.answers,
+            a.method.name(),
+            a.outcome,
+            a.why.as_ref().map_or(String::new(), |w| format!("; {w}"))
+        );
+    }
     s
 }

@@ -31,6 +31,8 @@
 //! [`discretize::KinematicMap`] → [`programs`] (force and motion LPs) → [`lp`] (HiGHS) →
 //! [`analysis`] → [`result`].
 
+#[macro_use]
+mod crack_fields;
 pub mod analysis;
 pub mod bench;
 pub mod dim;

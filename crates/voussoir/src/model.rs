@@ -75,52 +75,36 @@ pub fn length_unit_of(what: &str, field: &str, name: Option<&str>) -> Result<f64
     }
 }
 
-/// A crack measured in the structure as it stands. Exactly one of `at` (the nearest
-/// collocation point of any joint: the surveyor's coordinates, in m), `joint` (a joint id:
-/// widths at its points in order, start then end, or one width for all of them) and
-/// `polyline` (a crack line as drawn: every joint point within `snap` of it, default a quarter
-/// of the point's joint length; one width, or two at its start and end, interpolated along it).
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ExistingCrack {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub at: Option<[f64; 2]>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub joint: Option<usize>,
-    /// A crack line `[[x, y], …]` (m).
-    #[serde(default, alias = "points", skip_serializing_if = "Option::is_none")]
-    pub polyline: Option<Vec<[f64; 2]>>,
-    /// Catch distance of a `polyline` (m); default a quarter of each point's joint length.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub snap: Option<f64>,
-    /// Width (≥ 0), in `units`.
-    #[serde(alias = "openings")]
-    pub opening: Width,
-    /// The derived fields of a result's crack record (`length`, `max_opening`, `joints`,
-    /// `faces`, `start`, `end`, `closed_loop`, `rise`, `run`), so that a result's `cracks` can be given as
-    /// they are written: read, not used — `points` and `openings` carry the observation.
-    #[serde(default, skip_serializing)]
-    pub length: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub max_opening: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub joints: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub faces: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub start: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub end: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub closed_loop: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub rise: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub run: Option<serde_json::Value>,
-
-    /// Unit of the width: `"m"` (default), `"cm"` or `"mm"`. Coordinates stay in metres.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub units: Option<String>,
+crack_record! {
+    /// A crack measured in the structure as it stands. Exactly one of `at` (the nearest
+    /// collocation point of any joint: the surveyor's coordinates, in m), `joint` (a joint id:
+    /// widths at its points in order, start then end, or one width for all of them) and
+    /// `polyline` (a crack line as drawn: every joint point within `snap` of it, default a quarter
+    /// of the point's joint length; one width, or two at its start and end, interpolated along it).
+    #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct ExistingCrack {
+        {
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub at: Option<[f64; 2]>,
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub joint: Option<usize>,
+            /// A crack line `[[x, y], …]` (m).
+            #[serde(default, alias = "points", skip_serializing_if = "Option::is_none")]
+            pub polyline: Option<Vec<[f64; 2]>>,
+            /// Catch distance of a `polyline` (m); default a quarter of each point's joint length.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub snap: Option<f64>,
+            /// Width (≥ 0), in `units`.
+            #[serde(alias = "openings")]
+            pub opening: Width,
+        }
+        {
+            /// Unit of the width: `"m"` (default), `"cm"` or `"mm"`. Coordinates stay in metres.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub units: Option<String>,
+        }
+    }
 }
 
 /// Material of a block.

@@ -58,55 +58,39 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-4;
 
 pub use crate::model::Width;
 
-/// One observed crack. Exactly one of `at` (the nearest collocation point of any joint: the
-/// surveyor's coordinates, `[x, y]` in 2D, `[x, y, z]` in 3D), `joint` (a joint id: widths at its points in order, start then
-/// end, or one width for all of them) and `polyline` (a crack line as drawn: every joint point
-/// within `snap` of it, default a quarter of that point's joint length; one width, or two at
-/// its start and end, interpolated along it). A width of 0 says "observed closed here".
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Crack {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub at: Option<Vec<f64>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub joint: Option<usize>,
-    /// A crack line `[[x, y], …]`, in the file's `coordinate_units` (2D models).
-    #[serde(default, alias = "points", skip_serializing_if = "Option::is_none")]
-    pub polyline: Option<Vec<[f64; 2]>>,
-    /// Catch distance of a `polyline`, in the file's `coordinate_units`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub snap: Option<f64>,
-    /// Width, ≥ 0, in `units` (this crack's, else the file's; default m).
-    #[serde(alias = "openings")]
-    pub opening: Width,
-    /// The derived fields of a result's crack record (`length`, `max_opening`, `joints`,
-    /// `faces`, `start`, `end`, `closed_loop`, `rise`, `run`), so that a result's `cracks` can be given as
-    /// they are written: read, not used — `points` and `openings` carry the observation.
-    #[serde(default, skip_serializing)]
-    pub length: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub max_opening: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub joints: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub faces: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub start: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub end: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub closed_loop: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub rise: Option<serde_json::Value>,
-    #[serde(default, skip_serializing)]
-    pub run: Option<serde_json::Value>,
-
-    /// Measurement tolerance of this crack, in the same unit as its width; default: the file's.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub tolerance: Option<f64>,
-    /// Unit of this crack's width and tolerance: `"m"`, `"cm"` or `"mm"` (default: the file's).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub units: Option<String>,
+crack_record! {
+    /// One observed crack. Exactly one of `at` (the nearest collocation point of any joint: the
+    /// surveyor's coordinates, `[x, y]` in 2D, `[x, y, z]` in 3D), `joint` (a joint id: widths at its points in order, start then
+    /// end, or one width for all of them) and `polyline` (a crack line as drawn: every joint point
+    /// within `snap` of it, default a quarter of that point's joint length; one width, or two at
+    /// its start and end, interpolated along it). A width of 0 says "observed closed here".
+    #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct Crack {
+        {
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub at: Option<Vec<f64>>,
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub joint: Option<usize>,
+            /// A crack line `[[x, y], …]`, in the file's `coordinate_units` (2D models).
+            #[serde(default, alias = "points", skip_serializing_if = "Option::is_none")]
+            pub polyline: Option<Vec<[f64; 2]>>,
+            /// Catch distance of a `polyline`, in the file's `coordinate_units`.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub snap: Option<f64>,
+            /// Width, ≥ 0, in `units` (this crack's, else the file's; default m).
+            #[serde(alias = "openings")]
+            pub opening: Width,
+        }
+        {
+            /// Measurement tolerance of this crack, in the same unit as its width; default: the file's.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub tolerance: Option<f64>,
+            /// Unit of this crack's width and tolerance: `"m"`, `"cm"` or `"mm"` (default: the file's).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub units: Option<String>,
+        }
+    }
 }
 
 /// Where nothing was observed (plaster, not surveyed): a joint, or every joint point inside an

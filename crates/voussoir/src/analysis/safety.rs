@@ -75,6 +75,7 @@ fn stands_on(map: &KinematicMap, dead: &[f64], solver: &SolverOptions) -> Result
             method: lp::Method::DualSimplex,
             ..*solver
         };
+        let _kind = lp::ProgramKind::set("bisection", LAST_RESORT);
         return Ok(feasible(fp.solve(&o)?.status));
     }
     Ok(feasible(sol.status))
@@ -97,6 +98,15 @@ fn trace(what: std::fmt::Arguments, t0: std::time::Instant) {
         eprintln!("trace: safety {what} {:.3} s", t0.elapsed().as_secs_f64());
     }
 }
+
+/// Why the kinds of program that go to methods of their own do so, as the result states it
+/// ([`lp::ProgramKind`]; docs/safety.md).
+const ELASTIC_DESIGN: &str = "interior points without crossover decide them, Clarabel first; HiGHS's simplex stalled for minutes on them";
+const LAST_RESORT: &str = "the dual simplex from scratch decides what no other answer did";
+const RAYS: &str = "rays of unbounded reactions";
+const RAYS_DESIGN: &str =
+    "Clarabel first on the recession programs: a ray need not be a vertex, and it was faster";
+const SCRATCH_DESIGN: &str = "an end that the warm runs did not certify goes to interior points certified by their duals, Clarabel first";
 
 /// The joints of `st` with every point moved towards its joint's centre: `x → c + f·(x − c)`,
 /// `c` the mean of the joint's points. In 2D the lever arms of the crushing domain and the
@@ -246,6 +256,7 @@ impl Decisions {
         // Interior points without crossover, each alone (no fallback chain) and certified by
         // its duals: Clarabel's (2 s on the 24 × 24 dome's elastic programs), then HiGHS's
         // (9 s). Crossover and HiGHS's simplex stalled for minutes on them (phase 1).
+        let kind = lp::ProgramKind::set("elastic decisions", ELASTIC_DESIGN);
         for method in [lp::Method::Clarabel, lp::Method::IpmNoCrossover] {
             let o = SolverOptions {
                 method,
@@ -266,6 +277,8 @@ impl Decisions {
                 return Ok(d.feasible);
             }
         }
+        drop(kind);
+        let _kind = lp::ProgramKind::set("bisection", LAST_RESORT);
         self.solves += 1;
         let o = SolverOptions {
             method: lp::Method::DualSimplex,
@@ -620,6 +633,7 @@ fn ranges_from<S: Assembly>(
                         method: lp::Method::Clarabel,
                         ..*solver
                     };
+                    let _kind = lp::ProgramKind::set(RAYS, RAYS_DESIGN);
                     if let Ok(d) = lp::solve(&rp, &o) {
                         let opt = certified(&rp, &d);
                         let cert = opt.then(|| lp::sequence::certify_ray(&program, &d.x));
@@ -653,6 +667,7 @@ fn ranges_from<S: Assembly>(
                         }
                     };
                     ray_seq.set_objective(&cost, direction)?;
+                    let _kind = lp::ProgramKind::set(RAYS, "");
                     let d = ray_seq.solve()?;
                     let cert = (d.status == LpStatus::Optimal)
                         .then(|| lp::sequence::certify_ray(&program, &d.x));
@@ -675,6 +690,10 @@ fn ranges_from<S: Assembly>(
                         out.solves += 1;
                         let mut p = program.clone();
                         p.cost.iter_mut().for_each(|v| *v = 0.0);
+                        let _kind = lp::ProgramKind::set(
+                            "a ray's starting point",
+                            "the dual simplex finds the admissible state a ray starts from",
+                        );
                         let f = lp::solve(
                             &p,
                             &SolverOptions {
@@ -715,6 +734,8 @@ fn ranges_from<S: Assembly>(
                             seq.restart_from_optimal();
                         }
                         let mut last = None;
+                        let _kind =
+                            lp::ProgramKind::set("reaction ranges from scratch", SCRATCH_DESIGN);
                         for method in [
                             lp::Method::Clarabel,
                             lp::Method::IpmNoCrossover,
@@ -813,10 +834,13 @@ fn ranges_from<S: Assembly>(
 /// The safety assessment of `st`: whether it stands, its geometric safety factor and the
 /// ranges of its support reactions.
 pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult> {
+    let kind = lp::ProgramKind::set("bisection", "");
     let (fraction, mut solves, start) = bisect_fraction(st, opts.tolerance, &opts.solver)?;
+    drop(kind);
     let stands = fraction.is_some();
     let factor = fraction.and_then(|f| (f > 0.0).then_some(1.0 / f));
     let reactions = if stands && opts.reactions {
+        let _kind = lp::ProgramKind::set("reaction ranges", "");
         let r = ranges_from(st, &opts.solver, RangeSolve::Sequence, start)?;
         solves += r.solves;
         r.ranges
@@ -842,6 +866,7 @@ pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult>
         tolerance: opts.tolerance,
         reactions,
         solves,
+        answered: vec![],
     })
 }
 

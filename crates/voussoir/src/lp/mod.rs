@@ -312,6 +312,25 @@ pub struct SolverInfo {
     pub tried: Vec<String>,
 }
 
+/// The answers of one method to one kind of program, in an analysis of many programs
+/// ([`SolverInfo::by_programs`]).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ProgramAnswers {
+    /// The kind of program (`bisection`, `reaction ranges`, `elastic decisions`, …).
+    pub programs: String,
+    pub method: Method,
+    /// Programs of that kind the method answered with that outcome.
+    pub answers: usize,
+    /// `certified` (an optimum certified on the program as written, or a feasibility decided
+    /// with its certificate), `not certified` (the analysis then solves the program otherwise:
+    /// the next line of the same kind), `infeasible` or `unbounded`.
+    pub outcome: String,
+    /// Why a method other than the one asked for answered them: a warm start from the
+    /// previous program's basis, a fallback, or the kind's design; absent for the method asked.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub why: Option<String>,
+}
+
 impl SolverInfo {
     /// One sentence on how the answer was obtained when the requested method failed
     /// ("dual-simplex, after ipm: HiGHS run failed: Error"), or `None`.
@@ -335,10 +354,66 @@ impl SolverInfo {
         })
     }
 
-    /// How the programs of an analysis of many solves were solved with `opts`: the method that
-    /// answered most of them (the requested one where none was solved), and every distinct
-    /// fallback note in order of first appearance, each with the method that answered after it
-    /// (`clarabel: not certified (…) → ipm`).
+    /// Which method answered each kind of program ([`ProgramKind`]), in order of first
+    /// appearance: per kind and method, the answers and why the method is not the one asked
+    /// for, where it is not (a warm run from the previous basis, a fallback, or the kind's
+    /// design).
+    pub fn by_programs(opts: &SolverOptions, solves: &[SolveRecord]) -> Vec<ProgramAnswers> {
+        let mut out: Vec<ProgramAnswers> = Vec::new();
+        for s in solves {
+            let why = if s.method == opts.method {
+                None
+            } else if !s.tried.is_empty() {
+                let failed: Vec<&str> = s
+                    .tried
+                    .iter()
+                    .map(|t| t.split(':').next().unwrap_or(t))
+                    .collect();
+                Some(format!("fallback after {} failed", failed.join(", ")))
+            } else if s.warm {
+                Some("warm start from the previous program's basis".to_string())
+            } else if !s.design.is_empty() {
+                Some(format!("by design: {}", s.design))
+            } else {
+                None
+            };
+            let programs = if s.programs.is_empty() {
+                "programs"
+            } else {
+                s.programs
+            };
+            let outcome = s.outcome.words();
+            match out.iter_mut().find(|a| {
+                a.programs == programs
+                    && a.method == s.method
+                    && a.why == why
+                    && a.outcome == outcome
+            }) {
+                Some(a) => a.answers += 1,
+                None => out.push(ProgramAnswers {
+                    programs: programs.to_string(),
+                    method: s.method,
+                    answers: 1,
+                    outcome: outcome.to_string(),
+                    why,
+                }),
+            }
+        }
+        // Each kind's lines together, kinds in order of first appearance.
+        let first = |p: &str| out.iter().position(|a| a.programs == p).unwrap_or(0);
+        let mut keyed: Vec<(usize, ProgramAnswers)> = out
+            .iter()
+            .map(|a| (first(&a.programs), a.clone()))
+            .collect();
+        keyed.sort_by_key(|(k, _)| *k);
+        keyed.into_iter().map(|(_, a)| a).collect()
+    }
+
+    /// How the programs of an analysis of many solves were solved with `opts`: the requested
+    /// method where it answered any of them, else the one that answered most (the requested
+    /// one where none was solved), and every distinct fallback note in order of first
+    /// appearance, each with the method that answered after it (`clarabel: not certified (…)
+    /// → ipm`). [`SolverInfo::by_programs`] tells which method answered which programs.
     pub fn of_solves(opts: &SolverOptions, solves: &[SolveRecord]) -> SolverInfo {
         let mut count: Vec<(Method, usize)> = Vec::new();
         let mut tried: Vec<String> = Vec::new();
@@ -355,9 +430,12 @@ impl SolverInfo {
                 }
             }
         }
-        // The first of the most frequent (deterministic: in order of first appearance).
+        // The requested method where it answered; else the first of the most frequent
+        // (deterministic: in order of first appearance).
+        let asked = count.iter().any(|(m, _)| *m == opts.method);
         let method = count
             .iter()
+            .filter(|_| !asked)
             .fold(None::<(Method, usize)>, |best, &(m, n)| match best {
                 Some((_, b)) if b >= n => best,
                 _ => Some((m, n)),
@@ -590,7 +668,7 @@ fn with_fallback(
                 match policy::check(lp, &s) {
                     None => {
                         s.tried = tried;
-                        record(method, &s.tried);
+                        record(lp, &s);
                         return Ok(s);
                     }
                     Some(why) => {
@@ -607,7 +685,7 @@ fn with_fallback(
     if let Some((own, mut s)) = uncertified {
         tried.remove(own);
         s.tried = tried;
-        record(s.method, &s.tried);
+        record(lp, &s);
         return Ok(s);
     }
     Err(Error::Solver(format!(
@@ -622,22 +700,114 @@ pub struct SolveRecord {
     pub method: Method,
     /// The methods that failed before `method` answered (`method: why`).
     pub tried: Vec<String>,
+    /// The kind of program ([`ProgramKind`]; "" outside one).
+    pub programs: &'static str,
+    /// Why that kind of program goes to a method of its own, where it does ([`ProgramKind`]).
+    pub design: &'static str,
+    /// A warm run from the basis of the program before ([`sequence::Sequence`]).
+    pub warm: bool,
+    pub outcome: Outcome,
 }
 
 thread_local! {
     static SOLVES: std::cell::RefCell<Option<Vec<SolveRecord>>> =
         const { std::cell::RefCell::new(None) };
+    static KIND: std::cell::Cell<(&'static str, &'static str)> =
+        const { std::cell::Cell::new(("", "")) };
 }
 
-fn record(method: Method, tried: &[String]) {
+/// Record the answer `s` to `lp` of the fallback chain for [`collecting`].
+fn record(lp: &LinearProgram, s: &LpSolution) {
+    record_run(s.method, &s.tried, false, || Outcome::of(lp, s));
+}
+
+/// Record one answer for [`collecting`]: `method` answered (after `tried` failed), warm or not,
+/// with its `outcome` (evaluated only while collecting).
+pub(crate) fn record_run(
+    method: Method,
+    tried: &[String],
+    warm: bool,
+    outcome: impl FnOnce() -> Outcome,
+) {
     SOLVES.with(|c| {
         if let Some(v) = c.borrow_mut().as_mut() {
+            let (programs, design) = KIND.with(|k| k.get());
             v.push(SolveRecord {
                 method,
                 tried: tried.to_vec(),
+                programs,
+                design,
+                warm,
+                outcome: outcome(),
             });
         }
     });
+}
+
+/// What one answer was, as [`collecting`] records it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// An optimum certified on the program as written ([`sequence::certify`]: primal and dual
+    /// feasibility and the duality gap), or a feasibility decided with its certificate
+    /// ([`sequence::decide_feasibility`]).
+    Certified,
+    /// An optimum that does not certify (the analysis then solves the program otherwise).
+    NotCertified,
+    Infeasible,
+    Unbounded,
+}
+
+impl Outcome {
+    fn of(lp: &LinearProgram, s: &LpSolution) -> Outcome {
+        match s.status {
+            LpStatus::Infeasible => Outcome::Infeasible,
+            LpStatus::Unbounded => Outcome::Unbounded,
+            // A feasibility program (no objective): any point that holds its rows is an
+            // optimum, certified by the primal half alone.
+            LpStatus::Optimal if lp.cost.iter().all(|&c| c == 0.0) => {
+                match sequence::certify(lp, s) {
+                    Some(c) if c.primal <= sequence::CERTIFICATE_TOLERANCE => Outcome::Certified,
+                    _ => Outcome::NotCertified,
+                }
+            }
+            LpStatus::Optimal if sequence::certify(lp, s).is_some_and(|c| c.ok()) => {
+                Outcome::Certified
+            }
+            LpStatus::Optimal => Outcome::NotCertified,
+        }
+    }
+
+    /// As the summaries print it.
+    pub fn words(self) -> &'static str {
+        match self {
+            Outcome::Certified => "certified",
+            Outcome::NotCertified => "not certified",
+            Outcome::Infeasible => "infeasible",
+            Outcome::Unbounded => "unbounded",
+        }
+    }
+}
+
+/// The kind of program the solves on this thread answer while it lives (for an analysis of
+/// many programs that states which method answered each kind: [`SolverInfo::by_programs`]),
+/// with the reason where that kind goes to a method of its own by design (empty: the method
+/// asked for). Dropping it restores the kind before.
+pub struct ProgramKind {
+    before: (&'static str, &'static str),
+}
+
+impl ProgramKind {
+    pub fn set(programs: &'static str, design: &'static str) -> ProgramKind {
+        ProgramKind {
+            before: KIND.with(|k| k.replace((programs, design))),
+        }
+    }
+}
+
+impl Drop for ProgramKind {
+    fn drop(&mut self) {
+        KIND.with(|k| k.set(self.before));
+    }
 }
 
 /// Run `f`, gathering the method and fallbacks of every solve it makes on this thread (for an
@@ -661,34 +831,61 @@ fn solve_once(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     Ok(match Scaling::needed(lp, &[]) {
         None => backend.solve(lp, &[], opts, None)?.solution,
         Some(s) => match backend.solve(&s.apply(lp), &[], opts, None) {
-            Ok(solved) => as_written_if_better(lp, s.unscale(solved.solution), || {
-                backend.solve(lp, &[], opts, None).map(|r| r.solution)
-            }),
+            Ok(solved) => {
+                as_written_if_better(lp, s.unscale(solved.solution), || {
+                    backend.solve(lp, &[], opts, None).map(|r| r.solution)
+                })
+                .0
+            }
             // The equilibrated program refused: once more as written.
             Err(_) => backend.solve(lp, &[], opts, None)?.solution,
         },
     })
 }
 
-/// The solution of the equilibrated program, or — where it does not certify on the program as
-/// written ([`policy::check`]) — the program solved as written, if that one certifies. The
-/// backend's tolerances act on the equilibrated numbers: a column scaled by 2^36 (a contact
-/// force whose entries are of round-off size) carries its 1e-7 to a bound violation of 1e-3
-/// of the largest force in the user's program. Measured: the non-associative capacity curve of
-/// a settled 5 × 8 wall (`tests/nonassociative_settlement.rs`), normal forces of −0.13 kN
-/// against 21 kN from HiGHS's dual simplex on the equilibrated limit program; as written,
-/// every one of its programs certifies.
-fn as_written_if_better(
+/// Which of its two answers [`as_written_if_better`] returned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Answer {
+    /// The equilibrated program's (the program as written was not solved, or did no better).
+    Scaled,
+    /// The program's as written: a certified optimum where the equilibrated one was not.
+    AsWritten,
+}
+
+/// The solution of the equilibrated program (`scaled`, already in the user's units), or —
+/// where it is not a certified optimum of the program as written ([`policy::check`]) — the
+/// program solved as written (`as_written`, called only then), if that one is a certified
+/// optimum; with which of the two it is, so that the caller keeps the basis that goes with it.
+///
+/// The backend's tolerances act on the equilibrated numbers: a column scaled by 2^36 (a
+/// contact force whose entries are of round-off size) carries its 1e-7 to a bound violation of
+/// 1e-3 of the largest force in the user's program. Measured on the non-associative capacity
+/// curve of a settled 5 × 8 wall (`tests/nonassociative_settlement.rs`): normal forces of
+/// −0.13 kN against 21 kN from HiGHS's dual simplex, and Clarabel stopping at reduced accuracy
+/// (row violation 7.5e-4) on the equilibrated limit program at 1 cm; as written, every one of
+/// its programs certifies. A status is not taken on trust either: on that program at 1 cm
+/// HiGHS's dual simplex and interior point both said "infeasible" after equilibration, where
+/// the program as written has a certified optimum (the curve then fell to a false zero at
+/// 0.9855 cm). So an infeasible or unbounded answer is checked as written too, and a certified
+/// optimum — a proof of feasibility and of a bound — replaces it; where the program as written
+/// gives the same status, or nothing certified, the equilibrated answer stands.
+pub fn as_written_if_better(
     lp: &LinearProgram,
     scaled: LpSolution,
     as_written: impl FnOnce() -> Result<LpSolution>,
-) -> LpSolution {
-    if scaled.status != LpStatus::Optimal || policy::check(lp, &scaled).is_none() {
-        return scaled;
+) -> (LpSolution, Answer) {
+    let settled = match scaled.status {
+        LpStatus::Optimal => policy::check(lp, &scaled).is_none(),
+        LpStatus::Infeasible | LpStatus::Unbounded => false,
+    };
+    if settled {
+        return (scaled, Answer::Scaled);
     }
     match as_written() {
-        Ok(s) if s.status == LpStatus::Optimal && policy::check(lp, &s).is_none() => s,
-        _ => scaled,
+        Ok(s) if s.status == LpStatus::Optimal && policy::check(lp, &s).is_none() => {
+            (s, Answer::AsWritten)
+        }
+        _ => (scaled, Answer::Scaled),
     }
 }
 
@@ -808,14 +1005,14 @@ fn solve_warm_once(
         None => solved.solution,
         Some(s) => {
             let mut again = None;
-            let sol = as_written_if_better(lp, s.unscale(solved.solution), || {
+            let (sol, answer) = as_written_if_better(lp, s.unscale(solved.solution), || {
                 let r = backend.solve(lp, &[], opts, None)?;
                 again = Some(r.basis);
                 Ok(r.solution)
             });
             // The basis goes with the solution returned.
-            if let Some(b) = again.filter(|_| policy::check(lp, &sol).is_none()) {
-                *basis = b;
+            if answer == Answer::AsWritten {
+                *basis = again.flatten();
             }
             sol
         }

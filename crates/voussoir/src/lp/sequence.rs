@@ -359,6 +359,9 @@ pub fn decide_feasibility(
     } else {
         None
     };
+    if decided.is_some() {
+        super::record_run(opts.method, &[], false, || super::Outcome::Certified);
+    }
     Ok(decided.map(|feasible| FeasibilityDecision {
         feasible,
         violation,
@@ -755,14 +758,23 @@ impl Sequence {
             .clone()
             .or_else(|| self.last_basis.clone());
         for attempt in 0..2 {
+            let before = self.stats.warm;
             match self.run_session() {
                 Ok(s) if s.status != LpStatus::Optimal => {
                     self.stats.iterations += s.iterations;
+                    let o = if s.status == LpStatus::Infeasible {
+                        super::Outcome::Infeasible
+                    } else {
+                        super::Outcome::Unbounded
+                    };
+                    super::record_run(s.method, &[], self.stats.warm > before, || o);
                     return Some(s);
                 }
                 Ok(s) if certify(&self.lp, &s).is_some_and(|c| c.ok()) => {
                     self.stats.iterations += s.iterations;
                     self.optimal_basis = self.last_basis.clone();
+                    let warm = self.stats.warm > before;
+                    super::record_run(s.method, &[], warm, || super::Outcome::Certified);
                     return Some(s);
                 }
                 _ => {

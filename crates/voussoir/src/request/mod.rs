@@ -897,6 +897,7 @@ fn solve_any<S: Assembly>(
                 crate::lp::collecting(|| crate::analysis::safety::safety(st, &r.options(solver)));
             let mut out = out?;
             out.solver = crate::lp::SolverInfo::of_solves(&solver, &solves);
+            out.answered = crate::lp::SolverInfo::by_programs(&solver, &solves);
             Ok((Output::Safety(out), solver))
         }
         // Tilt is dispatched by dimension in `solve` (a 2D sign, a 3D azimuth), the others in

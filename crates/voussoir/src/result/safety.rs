@@ -57,6 +57,11 @@ pub struct SafetyResult {
     pub reactions: Vec<AdmissibleReactionRange>,
     /// LP solves spent.
     pub solves: usize,
+    /// Which method answered each kind of program, and why where it is not the one asked for
+    /// (a warm start, a fallback, or a kind that goes to a method of its own by design:
+    /// docs/safety.md); empty (and not written) where it was not gathered.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub answered: Vec<lp::ProgramAnswers>,
 }
 
 /// A least thickness found by bisection on a generator's thickness.

@@ -500,6 +500,38 @@ pub fn decide_feasibility(
     }))
 }
 
+/// Whether `lp` (its objective ignored) is feasible by one run of `opts.method` alone on the
+/// program itself (its zero-objective form, no elastic slacks; Clarabel answers it on the
+/// 24 × 24 dome in 0.3–0.5 s where the elastic program takes 0.7–1 s): `Some` decision
+/// "feasible" where its point holds `lp` as written to `tolerance` (largest relative violation,
+/// [`LinearProgram::relative_violation`], the check of every "stands"); `None` otherwise — this
+/// never decides "infeasible" (the caller goes on to the elastic program).
+pub fn decide_directly(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    tolerance: f64,
+) -> Result<Option<FeasibilityDecision>> {
+    let mut zero = lp.clone();
+    zero.cost.iter_mut().for_each(|c| *c = 0.0);
+    zero.maximise = false;
+    let Ok(s) = solve_alone(&zero, opts) else {
+        return Ok(None);
+    };
+    if s.status != LpStatus::Optimal || s.x.len() != lp.num_cols() {
+        return Ok(None);
+    }
+    let v = lp.relative_violation(&s.x);
+    Ok((v <= tolerance).then_some(FeasibilityDecision {
+        feasible: true,
+        violation: v,
+        certificate: Certificate {
+            primal: v,
+            dual: 0.0,
+            gap: 0.0,
+        },
+    }))
+}
+
 /// [`Certificate::primal`].
 fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
     violation_with(lp, x, |b| b, |b, _| b)

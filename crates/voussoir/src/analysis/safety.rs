@@ -283,7 +283,11 @@ impl Decisions {
                 format_args!(
                     "decision {}: {} by {}: {:?}",
                     self.solves,
-                    if step == 1 { "the program itself" } else { "elastic program" },
+                    if step == 1 {
+                        "the program itself"
+                    } else {
+                        "elastic program"
+                    },
                     method.name(),
                     d.as_ref().map(|d| (d.feasible, d.violation))
                 ),

@@ -406,10 +406,7 @@ impl QuasiDefinite {
             colptr.push(rowval.len());
         }
         let k = CscMatrix::new(n, n, colptr, rowval, nzval);
-        let settings = QDLDLSettingsBuilder::default()
-            .Dsigns(signs)
-            .build()
-            .ok()?;
+        let settings = QDLDLSettingsBuilder::default().Dsigns(signs).build().ok()?;
         QDLDLFactorisation::new(&k, Some(settings))
             .ok()
             .map(|factor| QuasiDefinite { factor })

@@ -334,7 +334,9 @@ impl Lineality {
             col.push((nf + r, -LINEALITY_DELTA));
             upper.push(col);
         }
-        let signs: Vec<i8> = (0..nf + rows).map(|k| if k < nf { 1 } else { -1 }).collect();
+        let signs: Vec<i8> = (0..nf + rows)
+            .map(|k| if k < nf { 1 } else { -1 })
+            .collect();
         let factor = super::clarabel::QuasiDefinite::new(&upper, signs)?;
         Some(Lineality {
             free,
@@ -349,7 +351,11 @@ impl Lineality {
     /// onto the lineality space, as a vector of the program's columns (0 off the free ones).
     pub fn project(&mut self, cost: &[f64]) -> Vec<f64> {
         let nf = self.free.len();
-        let c: Vec<f64> = self.free.iter().map(|&j| cost.get(j).copied().unwrap_or(0.0)).collect();
+        let c: Vec<f64> = self
+            .free
+            .iter()
+            .map(|&j| cost.get(j).copied().unwrap_or(0.0))
+            .collect();
         let mut d = vec![0.0; nf];
         let mut y = vec![0.0; self.rows];
         // Residual of `[I Aᵀ; A 0][d; y] = [c; 0]`, solved with the regularised factor and

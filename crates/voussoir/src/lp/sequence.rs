@@ -294,9 +294,9 @@ impl Lineality {
         // Rows with a bound, numbered 0.. in order; each scaled to a largest free entry of 1.
         let mut position = vec![usize::MAX; lp.num_rows()];
         let mut rows = 0;
-        for i in 0..lp.num_rows() {
+        for (i, p) in position.iter_mut().enumerate() {
             if lp.row_lower[i].is_finite() || lp.row_upper[i].is_finite() {
-                position[i] = rows;
+                *p = rows;
                 rows += 1;
             }
         }

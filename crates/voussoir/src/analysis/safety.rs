@@ -364,7 +364,7 @@ fn bisect_fraction<S: Assembly>(
 /// `[support][component] → (c_n per point, c_t per point and tangent)`, so that the component
 /// is `c_n·p_n + c_t·p_t` (the force of the support on the structure, as in
 /// [`crate::result::reactions`]).
-pub fn reaction_coefficients<S: Assembly>(
+fn reaction_coefficients<S: Assembly>(
     st: &S,
     map: &KinematicMap,
 ) -> Vec<Vec<(Vec<f64>, Vec<f64>)>> {

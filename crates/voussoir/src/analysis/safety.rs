@@ -88,6 +88,15 @@ fn warm_limit(lp: &lp::LinearProgram) -> usize {
     lp.num_rows().max(1000)
 }
 
+/// The simplex iterations a warm run of a bisection may take before the decision goes to the
+/// elastic program ([`Decisions::stands`]): an eighth of the program's rows, at least 500. A
+/// warm run pays only while it is shorter than the elastic program by Clarabel: on the
+/// 24 × 24 dome (3,318 rows) the warm dual simplex took 1,770–1,895 iterations (3.5–4.2 s)
+/// where Clarabel decides in 1 s, about 400 iterations' time.
+fn decision_warm_limit(lp: &lp::LinearProgram) -> usize {
+    (lp.num_rows() / 8).max(500)
+}
+
 /// Largest relative violation of an equilibrium state that still counts as one (round-off).
 const DECISION_TOLERANCE: f64 = 1e-9;
 
@@ -204,7 +213,7 @@ impl Decisions {
                 }
                 None => {
                     let mut seq = lp::sequence::Sequence::new(fp.lp.clone(), &self.solver)?;
-                    seq.limit_warm_iterations(Some(warm_limit(&fp.lp)));
+                    seq.limit_warm_iterations(Some(decision_warm_limit(&fp.lp)));
                     self.sequence.insert(seq)
                 }
             };
@@ -257,17 +266,39 @@ impl Decisions {
         // its duals: Clarabel's (2 s on the 24 × 24 dome's elastic programs), then HiGHS's
         // (9 s). Crossover and HiGHS's simplex stalled for minutes on them (phase 1).
         let kind = lp::ProgramKind::set("elastic decisions", ELASTIC_DESIGN);
-        for method in [lp::Method::Clarabel, lp::Method::IpmNoCrossover] {
+        // Where Clarabel's elastic program leaves the decision open (on the 24 × 24 dome two
+        // feasible programs just above the least fraction: least violation between 1e-7 and
+        // 1e-6, the interior point's resolution; HiGHS's interior point took 5 s each), Clarabel
+        // on the equilibrium program itself decides "stands" where its point holds the
+        // program to DECISION_TOLERANCE (`lp::sequence::decide_directly`: 0.3–0.5 s, never
+        // "does not stand"); then HiGHS's interior point on the elastic program.
+        for (step, method) in [
+            lp::Method::Clarabel,
+            lp::Method::Clarabel,
+            lp::Method::IpmNoCrossover,
+        ]
+        .into_iter()
+        .enumerate()
+        {
             let o = SolverOptions {
                 method,
                 ..self.solver
             };
             let t0 = std::time::Instant::now();
-            let d = lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)?;
+            let d = if step == 1 {
+                lp::sequence::decide_directly(&fp.lp, &o, DECISION_TOLERANCE)?
+            } else {
+                lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)?
+            };
             trace(
                 format_args!(
-                    "decision {}: elastic program by {}: {:?}",
+                    "decision {}: {} by {}: {:?}",
                     self.solves,
+                    if step == 1 {
+                        "the program itself"
+                    } else {
+                        "elastic program"
+                    },
                     method.name(),
                     d.as_ref().map(|d| (d.feasible, d.violation))
                 ),
@@ -478,6 +509,7 @@ fn ranges_from<S: Assembly>(
         },
         unbounded: 0,
         ray_programs: 0,
+        lineality_rays: 0,
         worst_ray: 0.0,
     };
     let mut sequence = match how {
@@ -501,6 +533,9 @@ fn ranges_from<S: Assembly>(
     let mut rays: Vec<(Vec<f64>, f64)> = Vec::new();
     let mut ray_sequence: Option<lp::sequence::Sequence> = None;
     let mut feasible_point: Option<Vec<f64>> = None;
+    // The projection onto the free columns' lineality space (made at the first side that
+    // needs it; `Some(None)` where the program has none).
+    let mut lineality: Option<Option<lp::sequence::Lineality>> = None;
     let certified = |program: &lp::LinearProgram, sol: &LpSolution| {
         sol.status == LpStatus::Optimal
             && lp::sequence::certify(program, sol).is_some_and(|c| c.ok())
@@ -554,28 +589,54 @@ fn ranges_from<S: Assembly>(
                     trace(format_args!("range {side}: unbounded by a kept ray"), t0);
                     continue;
                 }
-                let mut tried = match &mut sequence {
-                    Some(seq) => {
-                        seq.set_objective(&cost, direction)?;
-                        seq.try_solve()
+                // A ray along the free columns, both ways, without a program: the objective
+                // projected onto their lineality space (one factorisation for every side; on
+                // the 24 × 24 dome the self-equilibrated shear that makes every horizontal
+                // side unbounded). Where the side is bounded the projection is round-off and
+                // the certificate refuses it.
+                let mut lineality_ray = None;
+                if sequence.is_some() {
+                    let l = lineality.get_or_insert_with(|| lp::sequence::Lineality::new(&base.lp));
+                    if let Some(l) = l.as_mut() {
+                        let mut d = l.project(&cost);
+                        if direction == Direction::Minimise {
+                            d.iter_mut().for_each(|v| *v = -*v);
+                        }
+                        let cert = lp::sequence::certify_ray(&program, &d);
+                        if cert.ok() {
+                            trace(format_args!("range {side}: lineality ray {cert:?}"), t0);
+                            out.lineality_rays += 1;
+                            lineality_ray = Some((d, cert.violation));
+                        }
                     }
-                    None => lp::solve(&program, solver).ok(),
+                }
+                let mut tried = if lineality_ray.is_some() {
+                    None
+                } else {
+                    let tried = match &mut sequence {
+                        Some(seq) => {
+                            seq.set_objective(&cost, direction)?;
+                            seq.try_solve()
+                        }
+                        None => lp::solve(&program, solver).ok(),
+                    };
+                    out.solves += 1;
+                    trace(
+                        format_args!(
+                            "range {side}: {:?} by {:?} ({:?} iterations)",
+                            tried.as_ref().map(|t| t.status),
+                            tried.as_ref().map(|t| t.method.name()),
+                            tried.as_ref().map(|t| t.iterations)
+                        ),
+                        t0,
+                    );
+                    tried
                 };
-                out.solves += 1;
-                trace(
-                    format_args!(
-                        "range {side}: {:?} by {:?} ({:?} iterations)",
-                        tried.as_ref().map(|t| t.status),
-                        tried.as_ref().map(|t| t.method.name()),
-                        tried.as_ref().map(|t| t.iterations)
-                    ),
-                    t0,
-                );
                 // "Unbounded": HiGHS's own primal ray, checked on the program. Where it gives
                 // none that certifies, the run is repeated once in a new instance from the
                 // last optimal basis (the warm primal simplex once called a vertical reaction
                 // of the 24 × 24 dome unbounded: it is bounded by the weight).
-                let mut ray: Option<(Vec<f64>, f64)> = None;
+                let mut ray: Option<(Vec<f64>, f64)> = lineality_ray;
                 for attempt in 0..2 {
                     if !matches!(&tried, Some(t) if t.status == LpStatus::Unbounded) {
                         break;
@@ -629,25 +690,31 @@ fn ranges_from<S: Assembly>(
                         r.maximise = direction == Direction::Maximise;
                         r
                     };
+                    // Clarabel alone (its fallback chain went on to HiGHS's interior point,
+                    // 9–12 s on the 24 × 24 dome), and its point checked as a ray whether or
+                    // not its optimum certifies: a ray needs only to be a recession direction
+                    // that improves the objective ([`lp::sequence::certify_ray`]); "bounded"
+                    // needs the certified optimum.
                     let o = SolverOptions {
                         method: lp::Method::Clarabel,
                         ..*solver
                     };
                     let _kind = lp::ProgramKind::set(RAYS, RAYS_DESIGN);
-                    if let Ok(d) = lp::solve(&rp, &o) {
+                    if let Ok(d) = lp::solve_without_fallback(&rp, &o) {
                         let opt = certified(&rp, &d);
-                        let cert = opt.then(|| lp::sequence::certify_ray(&program, &d.x));
+                        let cert = lp::sequence::certify_ray(&program, &d.x);
                         trace(
                             format_args!(
-                                "range {side}: recession program by {} certified {opt}, ray {cert:?}",
-                                d.method.name()
+                                "range {side}: recession program by {} ({:?}) certified {opt}, ray {cert:?}",
+                                d.method.name(),
+                                d.status
                             ),
                             t0,
                         );
-                        match cert {
-                            Some(c) if c.ok() => ray = Some((d.x, c.violation)),
-                            Some(c) if c.decrease < lp::sequence::RAY_DECREASE => bounded = true,
-                            _ => {}
+                        if cert.ok() {
+                            ray = Some((d.x, cert.violation));
+                        } else if opt && cert.decrease < lp::sequence::RAY_DECREASE {
+                            bounded = true;
                         }
                     }
                 }

@@ -376,3 +376,46 @@ fn solve_clarabel_with_cones(
         tried: Vec::new(),
     })
 }
+
+/// A sparse `LDLᵀ` factorisation of a symmetric quasi-definite matrix (Clarabel's QDLDL, with
+/// its AMD ordering), for [`super::sequence::Lineality`]: the projection onto the null space of
+/// a program's free columns, factorised once and applied to many objectives.
+pub struct QuasiDefinite {
+    factor: clarabel::qdldl::QDLDLFactorisation<f64>,
+}
+
+impl QuasiDefinite {
+    /// The factorisation of the `n × n` matrix whose upper triangle is given by columns
+    /// (`upper[j]`: `(row, value)` with `row ≤ j`, sorted by row, the diagonal included), with
+    /// the signs (+1 or −1) of its pivots. `None` where QDLDL refuses it.
+    pub fn new(upper: &[Vec<(usize, f64)>], signs: Vec<i8>) -> Option<QuasiDefinite> {
+        use clarabel::algebra::CscMatrix;
+        use clarabel::qdldl::{QDLDLFactorisation, QDLDLSettingsBuilder};
+        let n = upper.len();
+        if signs.len() != n {
+            return None;
+        }
+        let mut colptr = Vec::with_capacity(n + 1);
+        let (mut rowval, mut nzval) = (Vec::new(), Vec::new());
+        colptr.push(0);
+        for col in upper {
+            for &(i, v) in col {
+                rowval.push(i);
+                nzval.push(v);
+            }
+            colptr.push(rowval.len());
+        }
+        let k = CscMatrix::new(n, n, colptr, rowval, nzval);
+        let settings = QDLDLSettingsBuilder::default().Dsigns(signs).build().ok()?;
+        QDLDLFactorisation::new(&k, Some(settings))
+            .ok()
+            .map(|factor| QuasiDefinite { factor })
+    }
+
+    /// Solve in place (`b` becomes the solution).
+    pub fn solve(&mut self, b: &mut [f64]) {
+        if b.len() == self.factor.D.len() {
+            self.factor.solve(b);
+        }
+    }
+}

@@ -615,13 +615,16 @@ pub fn solve(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     with_fallback(lp, opts, |o| solve_once(lp, o))
 }
 
-/// [`solve`] with `opts.method` alone, without the fallback chain: for a program whose failure
-/// the caller can afford (the trials of the canonical selection's least-μ bisection, where a
-/// trial that Clarabel cannot decide costs a minute on HiGHS's interior point and is better
-/// left undecided).
+/// [`solve`] with `opts.method` alone, without the fallback chain (equilibrated where it needs
+/// it, as every solve): for a caller that has its own next step where the method fails — the
+/// trials of the canonical selection's least-μ bisection (a trial Clarabel cannot decide cost a
+/// minute on HiGHS's interior point and is better left undecided), `safety`'s recession
+/// programs and direct decisions.
 pub fn solve_without_fallback(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     check_numbers(lp)?;
-    solve_once(lp, opts)
+    let s = solve_once(lp, opts)?;
+    record(lp, &s);
+    Ok(s)
 }
 
 /// The methods tried, in order, when a solve with `method` fails (the backend's error, a

@@ -250,6 +250,139 @@ pub fn ray_violation(lp: &LinearProgram, d: &[f64]) -> f64 {
     })
 }
 
+/// The directions along the program's free columns that keep every row with a bound as it
+/// is — `d` with `d_j = 0` on every column with a finite bound and `A_i d = 0` on every row
+/// with a finite bound: rays of the program both ways (a lineality space of its recession
+/// cone; in the force programs of no-sliding joints, self-equilibrated shear) — and the
+/// projection of an objective onto them, factorised once for many objectives.
+///
+/// The projection `d = P c` of a cost vector `c` (on the free columns) is the least-squares
+/// solution of `min ‖d − c‖²` subject to `A_F d = 0`, from the quasi-definite system
+/// `[I A_Fᵀ; A_F −δI]` (rows scaled to a largest entry of 1, `δ` = 1e-8, four steps of
+/// iterative refinement on the system with `δ = 0`). Where `c` has a component in that space,
+/// `cᵀd = ‖d‖² > 0`: `−d` decreases the objective without end and `d` increases it, each
+/// certified by [`certify_ray`] as any ray. Where it has none (a bounded side) `d` is
+/// round-off, and the certificate refuses it.
+pub struct Lineality {
+    /// The free columns of the program.
+    free: Vec<usize>,
+    /// Per free column: its entries on the rows with a bound, `(row position, scaled value)`.
+    entries: Vec<Vec<(usize, f64)>>,
+    /// The rows with a bound.
+    rows: usize,
+    columns: usize,
+    factor: super::clarabel::QuasiDefinite,
+}
+
+impl Lineality {
+    /// The factorisation for `lp`; `None` where it has no free column or the factorisation is
+    /// refused.
+    pub fn new(lp: &LinearProgram) -> Option<Lineality> {
+        let free: Vec<usize> = (0..lp.num_cols())
+            .filter(|&j| lp.col_lower[j] == f64::NEG_INFINITY && lp.col_upper[j] == f64::INFINITY)
+            .collect();
+        if free.is_empty() {
+            return None;
+        }
+        // Rows with a bound, numbered 0.. in order; each scaled to a largest free entry of 1.
+        let mut position = vec![usize::MAX; lp.num_rows()];
+        let mut rows = 0;
+        for (i, p) in position.iter_mut().enumerate() {
+            if lp.row_lower[i].is_finite() || lp.row_upper[i].is_finite() {
+                *p = rows;
+                rows += 1;
+            }
+        }
+        let mut largest = vec![0.0f64; rows];
+        for &j in &free {
+            for (i, v) in lp.column(j) {
+                if position[i] != usize::MAX {
+                    largest[position[i]] = largest[position[i]].max(v.abs());
+                }
+            }
+        }
+        let entries: Vec<Vec<(usize, f64)>> = free
+            .iter()
+            .map(|&j| {
+                let mut e: Vec<(usize, f64)> = lp
+                    .column(j)
+                    .filter(|&(i, v)| position[i] != usize::MAX && v != 0.0)
+                    .map(|(i, v)| (position[i], v / largest[position[i]]))
+                    .collect();
+                e.sort_by_key(|&(r, _)| r);
+                e
+            })
+            .collect();
+        let nf = free.len();
+        // The upper triangle by columns: the identity on the free columns, then per row its
+        // free entries above the diagonal −δ.
+        let mut upper: Vec<Vec<(usize, f64)>> = (0..nf).map(|k| vec![(k, 1.0)]).collect();
+        let mut by_row: Vec<Vec<(usize, f64)>> = vec![Vec::new(); rows];
+        for (k, e) in entries.iter().enumerate() {
+            for &(r, v) in e {
+                by_row[r].push((k, v));
+            }
+        }
+        for (r, mut col) in by_row.into_iter().enumerate() {
+            col.push((nf + r, -LINEALITY_DELTA));
+            upper.push(col);
+        }
+        let signs: Vec<i8> = (0..nf + rows)
+            .map(|k| if k < nf { 1 } else { -1 })
+            .collect();
+        let factor = super::clarabel::QuasiDefinite::new(&upper, signs)?;
+        Some(Lineality {
+            free,
+            entries,
+            rows,
+            columns: lp.num_cols(),
+            factor,
+        })
+    }
+
+    /// `P c`: the projection of the cost vector `cost` (one entry per column of the program)
+    /// onto the lineality space, as a vector of the program's columns (0 off the free ones).
+    pub fn project(&mut self, cost: &[f64]) -> Vec<f64> {
+        let nf = self.free.len();
+        let c: Vec<f64> = self
+            .free
+            .iter()
+            .map(|&j| cost.get(j).copied().unwrap_or(0.0))
+            .collect();
+        let mut d = vec![0.0; nf];
+        let mut y = vec![0.0; self.rows];
+        // Residual of `[I Aᵀ; A 0][d; y] = [c; 0]`, solved with the regularised factor and
+        // refined.
+        for _ in 0..4 {
+            let mut r = vec![0.0; nf + self.rows];
+            for k in 0..nf {
+                let mut aty = 0.0;
+                for &(i, v) in &self.entries[k] {
+                    aty += v * y[i];
+                    r[nf + i] -= v * d[k];
+                }
+                r[k] = c[k] - d[k] - aty;
+            }
+            self.factor.solve(&mut r);
+            for k in 0..nf {
+                d[k] += r[k];
+            }
+            for i in 0..self.rows {
+                y[i] += r[nf + i];
+            }
+        }
+        let mut out = vec![0.0; self.columns];
+        for (k, &j) in self.free.iter().enumerate() {
+            out[j] = d[k];
+        }
+        out
+    }
+}
+
+/// The regularisation of [`Lineality`]'s quasi-definite system (rows scaled to a largest entry
+/// of 1); the iterative refinement removes its effect.
+const LINEALITY_DELTA: f64 = 1e-8;
+
 /// The elastic program of `lp`: its objective dropped, every row with a bound given a pair
 /// of slacks `s⁺ − s⁻` (each ≥ 0, cost 1), so that it is always feasible and its optimum is the
 /// least total violation of `lp`'s rows (its columns' bounds are kept).
@@ -366,6 +499,38 @@ pub fn decide_feasibility(
         feasible,
         violation,
         certificate,
+    }))
+}
+
+/// Whether `lp` (its objective ignored) is feasible by one run of `opts.method` alone on the
+/// program itself (its zero-objective form, no elastic slacks; Clarabel answers it on the
+/// 24 × 24 dome in 0.3–0.5 s where the elastic program takes 0.7–1 s): `Some` decision
+/// "feasible" where its point holds `lp` as written to `tolerance` (largest relative violation,
+/// [`LinearProgram::relative_violation`], the check of every "stands"); `None` otherwise — this
+/// never decides "infeasible" (the caller goes on to the elastic program).
+pub fn decide_directly(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    tolerance: f64,
+) -> Result<Option<FeasibilityDecision>> {
+    let mut zero = lp.clone();
+    zero.cost.iter_mut().for_each(|c| *c = 0.0);
+    zero.maximise = false;
+    let Ok(s) = super::solve_without_fallback(&zero, opts) else {
+        return Ok(None);
+    };
+    if s.status != LpStatus::Optimal || s.x.len() != lp.num_cols() {
+        return Ok(None);
+    }
+    let v = lp.relative_violation(&s.x);
+    Ok((v <= tolerance).then_some(FeasibilityDecision {
+        feasible: true,
+        violation: v,
+        certificate: Certificate {
+            primal: v,
+            dual: 0.0,
+            gap: 0.0,
+        },
     }))
 }
 

@@ -113,6 +113,9 @@ pub struct ReactionRanges {
     /// Recession programs solved to find those rays (one ray certifies every endpoint it
     /// improves).
     pub ray_programs: usize,
+    /// Endpoints certified unbounded by a ray along the free columns, found without a program
+    /// (the objective projected onto their lineality space: [`lp::sequence::Lineality`]).
+    pub lineality_rays: usize,
     /// The largest relative violation of the recession cone by the rays used.
     pub worst_ray: f64,
 }

@@ -4,6 +4,8 @@
 //! energy QP does not end optimal (the admissible field of the bisection stands, and
 //! `selected_by` says so instead of the solver's forces coming back silently).
 
+mod support;
+use support::readme_wall;
 use voussoir::analysis::canonical::{
     limit_canonical, settle_canonical, CanonicalOptions, ForceSelection,
 };
@@ -11,7 +13,6 @@ use voussoir::analysis::limit::DEFAULT_FACETS;
 use voussoir::analysis::settlement::SettlementForm;
 use voussoir::generate::{wall, LiveLoad, WallSpec};
 use voussoir::lp::SolverOptions;
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
 
 /// One block `b × h` on its foundation, with a horizontal live load equal to its weight.
@@ -64,26 +65,6 @@ fn issue29_item5_least_friction_of_a_tipping_block_is_b_over_h() {
     }
 }
 
-/// The README's wall (`gen wall --courses 8 --units 10 --unit 0.4,0.2`, `uniform:2.8,4.0,-0.01`).
-fn readme_wall() -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 8,
-        units: 10,
-        unit: [0.4, 0.2],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 2.8,
-            x1: 4.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
-}
 
 /// With an iteration limit of 1 the energy QP (Clarabel, no fallback chain: the only backend
 /// with quadratic objectives) stops at its limit; the feasibility programs of the bisection fall
@@ -128,7 +109,10 @@ fn issue29_item5_energy_qp_failure_keeps_an_admissible_field_and_says_so() {
                 "{p:?}"
             );
         }
-        assert!(p.shear_force.abs() <= f.friction.unwrap() * p.normal_force + 1e-6, "{p:?}");
+        assert!(
+            p.shear_force.abs() <= f.friction.unwrap() * p.normal_force + 1e-6,
+            "{p:?}"
+        );
         carried += p.normal_force.abs();
     }
     assert!(carried > 1.0, "a field, not zeros");

@@ -8,37 +8,14 @@
 //! * The early uniqueness test keeps the answer the fallback chain gives once the primal
 //!   simplex reaches its pivot cap, instead of solving both faces' extremes from scratch.
 
+mod support;
+use support::{least_friction_by_bisection, readme_wall};
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions, Selection};
 use voussoir::analysis::settlement::{settle, SettlementForm};
-use voussoir::discretize::KinematicMap;
-use voussoir::generate::{wall, WallSpec};
-use voussoir::lp::{self, LpStatus, Method, SolverOptions};
+use voussoir::lp::SolverOptions;
 use voussoir::outline_mesh::{mesh_wall, Foundation, MeshKind, MeshOptions, Outline};
-use voussoir::programs;
 use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
-
-/// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
-/// `settle --profile uniform:2.8,4.0,-0.01`.
-fn readme_wall() -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 8,
-        units: 10,
-        unit: [0.4, 0.2],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 2.8,
-            x1: 4.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
-}
 
 #[test]
 fn issue29_item5_least_friction_to_its_precision_against_a_bisection() {
@@ -63,7 +40,10 @@ fn issue29_item5_least_friction_to_its_precision_against_a_bisection() {
         assert!(shown > 0.0 && shown <= precision, "{shown}");
         let least = f.least_friction.expect("a least friction coefficient");
         let imposed = f.friction.expect("the μ imposed");
-        assert!(imposed >= least, "imposed {imposed} below the least {least}");
+        assert!(
+            imposed >= least,
+            "imposed {imposed} below the least {least}"
+        );
         // The reported field: open points unloaded, |shear| ≤ μ·normal with the imposed μ, and
         // the friction it needs (`friction_demand`) is at most that μ.
         let demand = f.friction_demand.expect("a friction demand");
@@ -80,43 +60,7 @@ fn issue29_item5_least_friction_to_its_precision_against_a_bisection() {
             );
         }
         // The reference: the least μ by an independent bisection on [0, 8] to 1e-6.
-        let jumps: Vec<f64> = r
-            .joints
-            .iter()
-            .flat_map(|j| j.points.iter().map(|p| p.opening))
-            .collect();
-        let jbig = jumps.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-        let open: Vec<bool> = jumps.iter().map(|&o| o > 1e-7 * jbig).collect();
-        let map = KinematicMap::new(&st);
-        let dead = st.load_vector(false);
-        let work = r.work_dead_loads.unwrap();
-        let clarabel = SolverOptions {
-            method: Method::Clarabel,
-            feasibility_tolerance: 1e-10,
-            ..SolverOptions::default()
-        };
-        let admissible = |m: f64| {
-            let fp = programs::physical_force_program(
-                &map,
-                |k: &KinematicMap| programs::settlement_force_program(k, &dead),
-                work,
-                1e-9,
-                &open,
-                Some(m),
-                false,
-            );
-            lp::solve(&fp.lp, &clarabel).is_ok_and(|s| s.status == LpStatus::Optimal)
-        };
-        assert!(!admissible(0.0) && admissible(8.0));
-        let (mut lo, mut hi) = (0.0, 8.0);
-        while hi - lo > 1e-6 * hi {
-            let mid = 0.5 * (lo + hi);
-            if admissible(mid) {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
+        let hi = least_friction_by_bisection(&st, &r);
         println!("precision {precision}: least μ {least} (imposed {imposed}), reference {hi}");
         // From above, within the precision (and the solvers' tolerance).
         assert!(least >= hi * (1.0 - 1e-5), "least μ {least} below {hi}");

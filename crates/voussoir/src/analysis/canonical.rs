@@ -655,9 +655,15 @@ pub fn canonical_forces<S: Assembly>(
         // Without a physical optimal field under the model's own laws (open points unloaded),
         // there is nothing to select from: the solver's forces stand.
         let mut rel = false;
-        if feasible(&mut stages, None, &mut None, false, &mut admissible)?.ratio().is_none() {
+        if feasible(&mut stages, None, &mut None, false, &mut admissible)?
+            .ratio()
+            .is_none()
+        {
             rel = true;
-            if feasible(&mut stages, None, &mut None, true, &mut admissible)?.ratio().is_none() {
+            if feasible(&mut stages, None, &mut None, true, &mut admissible)?
+                .ratio()
+                .is_none()
+            {
                 return Ok(None);
             }
         }
@@ -718,7 +724,13 @@ pub fn canonical_forces<S: Assembly>(
                 (None, None)
             }
         };
-        precision_shown = l.map(|l| if l > 0.0 { (1.0 - shown / l).max(0.0) } else { 0.0 });
+        precision_shown = l.map(|l| {
+            if l > 0.0 {
+                (1.0 - shown / l).max(0.0)
+            } else {
+                0.0
+            }
+        });
         let (mut f, mut q) = energy_qp(m, rel);
         solves = stages.solves + 1;
         // At the least μ itself the admissible set can be too thin for the interior point
@@ -774,11 +786,9 @@ pub fn canonical_forces<S: Assembly>(
         rows.max(cols) <= 1e-7 * scale
     };
     let qs = match qs {
-        Ok(q) if q.status == LpStatus::Optimal && !holds(&q.x) => {
-            Err(crate::error::Error::Solver(
-                "the energy QP's point does not hold the force program to 1e-7".into(),
-            ))
-        }
+        Ok(q) if q.status == LpStatus::Optimal && !holds(&q.x) => Err(crate::error::Error::Solver(
+            "the energy QP's point does not hold the force program to 1e-7".into(),
+        )),
         other => other,
     };
     let (mut x, selected_by) = match qs {

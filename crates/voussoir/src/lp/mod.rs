@@ -1079,9 +1079,9 @@ pub fn solve_quadratic(
         None => Ok(backend.solve_quadratic(lp, quadratic, opts)?.solution),
         Some(mut sc) => {
             if lp.cost.iter().all(|&c| c == 0.0) {
-                let top = quadratic
-                    .iter()
-                    .fold(0.0f64, |m, &(i, j, v)| m.max((v * sc.col[i] * sc.col[j]).abs()));
+                let top = quadratic.iter().fold(0.0f64, |m, &(i, j, v)| {
+                    m.max((v * sc.col[i] * sc.col[j]).abs())
+                });
                 sc.objective = if top > 0.0 && top.is_finite() {
                     2f64.powi(-(top.log2().round() as i32))
                 } else {

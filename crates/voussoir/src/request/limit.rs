@@ -175,7 +175,12 @@ impl LimitRequest {
                 limit_nonassociative_result(st, &solver, &NonAssociativeOptions::default())?
             }
         } else if self.canonical && crushing == Crushing::Linear {
-            limit_canonical(st, &solver, facets, &canonical_options(self.ranges, self.least_friction_precision, dims))?
+            limit_canonical(
+                st,
+                &solver,
+                facets,
+                &canonical_options(self.ranges, self.least_friction_precision, dims),
+            )?
         } else {
             limit_with(st, &solver, crushing, facets)?
         };

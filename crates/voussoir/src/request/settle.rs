@@ -105,9 +105,16 @@ impl SettleRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
-        if self.ranges == Some(true) && !self.non_associative && !self.canonical(req, dims) {
-            // The ranges are a stage of the canonical selection: without it they would be
-            // silently left out.
+        // The ranges and the least μ's precision belong to the canonical selection: without it
+        // they would be silently left out.
+        let stage = if self.ranges == Some(true) {
+            Some("ranges")
+        } else if self.least_friction_precision.is_some() {
+            Some("least_friction_precision")
+        } else {
+            None
+        };
+        if let (Some(flag), false) = (stage, self.non_associative || self.canonical(req, dims)) {
             let why = if self.raw {
                 n.name("raw")
             } else if dims == 3 {
@@ -117,20 +124,7 @@ impl SettleRequest {
             };
             return invalid(format!(
                 "{} applies to the canonical selection, which {why} leaves out",
-                n.name("ranges")
-            ));
-        }
-        if self.least_friction_precision.is_some() && !self.non_associative && !self.canonical(req, dims) {
-            let why = if self.raw {
-                n.name("raw")
-            } else if dims == 3 {
-                n.given("friction_cone", "exact")
-            } else {
-                format!("{} or {}", n.name("crushing"), n.name("facets"))
-            };
-            return invalid(format!(
-                "{} applies to the canonical selection, which {why} leaves out",
-                n.name("least_friction_precision")
+                n.name(flag)
             ));
         }
         if dims == 3 && self.laws().strength_given() {

@@ -1,0 +1,79 @@
+//! Shared by the library's integration tests (`mod support;`): the README's models and the
+//! independent references more than one test file checks against.
+#![allow(dead_code)]
+
+use voussoir::analysis::SettlementResult;
+use voussoir::discretize::KinematicMap;
+use voussoir::generate::{wall, WallSpec};
+use voussoir::lp::{self, LpStatus, Method, SolverOptions};
+use voussoir::programs;
+use voussoir::settlement_input::{apply_profile, Profile};
+use voussoir::{BuildOptions, Structure};
+
+/// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
+/// `settle --profile uniform:2.8,4.0,-0.01`.
+pub fn readme_wall() -> Structure {
+    let mut m = wall(&WallSpec {
+        courses: 8,
+        units: 10,
+        unit: [0.4, 0.2],
+        ..WallSpec::default()
+    })
+    .unwrap();
+    apply_profile(
+        &mut m,
+        &Profile::Uniform {
+            x0: 2.8,
+            x1: 4.0,
+            v: -0.01,
+        },
+    )
+    .unwrap();
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+/// The least friction coefficient μ for which an optimal force field of the settlement `r`
+/// of `st` with the points open in its mechanism unloaded satisfies `|p_t| ≤ μ p_n`: an
+/// independent bisection on [0, 8] to 1e-6 (relative), written out on the public programs
+/// (Clarabel feasibility of each μ).
+pub fn least_friction_by_bisection(st: &Structure, r: &SettlementResult) -> f64 {
+    let jumps: Vec<f64> = r
+        .joints
+        .iter()
+        .flat_map(|j| j.points.iter().map(|p| p.opening))
+        .collect();
+    let big = jumps.iter().fold(0.0f64, |m, o| m.max(o.abs()));
+    let open: Vec<bool> = jumps.iter().map(|&o| o > 1e-7 * big).collect();
+    let map = KinematicMap::new(st);
+    assert_eq!(open.len(), map.num_points());
+    let dead = st.load_vector(false);
+    let work = r.work_dead_loads.unwrap();
+    let clarabel = SolverOptions {
+        method: Method::Clarabel,
+        feasibility_tolerance: 1e-10,
+        ..SolverOptions::default()
+    };
+    let admissible = |m: f64| {
+        let fp = programs::physical_force_program(
+            &map,
+            |k: &KinematicMap| programs::settlement_force_program(k, &dead),
+            work,
+            1e-9,
+            &open,
+            Some(m),
+            false,
+        );
+        lp::solve(&fp.lp, &clarabel).is_ok_and(|s| s.status == LpStatus::Optimal)
+    };
+    assert!(!admissible(0.0) && admissible(8.0));
+    let (mut lo, mut hi) = (0.0, 8.0);
+    while hi - lo > 1e-6 * hi {
+        let mid = 0.5 * (lo + hi);
+        if admissible(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}

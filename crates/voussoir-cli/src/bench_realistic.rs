@@ -809,8 +809,18 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
                     }
                 }
             }
+            // `safety` and `tilt` take --friction but refuse --non-associative (associative
+            // friction only): they run the model's μ associatively and the result says so,
+            // rather than a cell that fails on the flag.
+            let associative_only =
+                matches!(a, "safety" | "tilt") && m.flags.iter().any(|f| f == "--non-associative");
             if a != "least-thickness" {
-                args.extend(m.flags.iter().cloned());
+                args.extend(
+                    m.flags
+                        .iter()
+                        .filter(|f| !(associative_only && *f == "--non-associative"))
+                        .cloned(),
+                );
             }
             if let Some(method) = &cfg.method {
                 args.extend(["--method".to_string(), method.clone()]);
@@ -857,6 +867,12 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
                     Some(v) => {
                         cell.outcome = "ok".into();
                         read_result(a, &v, &mut cell);
+                        if associative_only {
+                            cell.result = format!(
+                                "associative μ (`{a}` has no --non-associative): {}",
+                                cell.result
+                            );
+                        }
                     }
                     None => {
                         cell.outcome = "failed".into();

@@ -86,3 +86,50 @@ fn issue29_item6_bench_reads_safetys_answered_programs() {
         }
     }
 }
+
+/// The μ = 0.6 non-associative façades: `safety` and `tilt` take --friction but refuse
+/// --non-associative, so the benchmark's cells failed on the flag ("error: --non-associative does
+/// not apply to `voussoir tilt`") instead of measuring. They now run μ = 0.6 associatively and
+/// say so. A one-second cell limit keeps the test short: the cell may time out, but it must not
+/// fail, and the command run is the one recorded.
+#[test]
+fn issue29_item6_bench_runs_tilt_of_a_non_associative_model_associatively() {
+    let dir = tmpdir("issue29-bench2", "tilt-mu");
+    run(
+        &dir,
+        &[
+            "bench",
+            "--scenario",
+            "realistic",
+            "--models",
+            "facade-grid-0.5-mu0.6",
+            "--analyses",
+            "limit,tilt",
+            "--cell-time-limit",
+            "1",
+            "--workdir",
+            "cells",
+            "-o",
+            "cells.json",
+        ],
+    );
+    let cells = json(&std::fs::read_to_string(dir.join("cells.json")).unwrap());
+    let cells = cells.as_array().unwrap();
+    assert_eq!(cells.len(), 2);
+    let (limit, tilt) = (&cells[0], &cells[1]);
+    assert_eq!(limit["analysis"], "limit");
+    assert_eq!(tilt["analysis"], "tilt");
+    // limit keeps the non-associative law; tilt gets the same μ without the flag it refuses.
+    let lc = limit["command"].as_str().unwrap();
+    assert!(lc.contains("--friction 0.6") && lc.contains("--non-associative"), "{lc}");
+    let tc = tilt["command"].as_str().unwrap();
+    assert!(tc.contains("--friction 0.6"), "{tc}");
+    assert!(!tc.contains("--non-associative"), "{tc}");
+    assert_ne!(tilt["outcome"], "failed", "{tilt}");
+    if tilt["outcome"] == "ok" {
+        assert!(
+            tilt["result"].as_str().unwrap().starts_with("associative μ"),
+            "{tilt}"
+        );
+    }
+}

@@ -548,7 +548,10 @@ fn read_result(analysis: &str, v: &Value, cell: &mut Cell) {
             num(&r["thickness"]).unwrap_or("—".into()),
             r["steps"]
         ),
-        "tilt" => format!("{} °", num(&v["tilt_angle"]).unwrap_or("—".into())),
+        // No angle: the nested limit analysis says why (e.g. no equilibrium under the dead loads).
+        "tilt" => num(&v["tilt_angle"])
+            .map(|a| format!("{a} °"))
+            .unwrap_or_else(|| format!("no angle: {}", r["message"].as_str().unwrap_or("—"))),
         _ => String::new(),
     };
 }

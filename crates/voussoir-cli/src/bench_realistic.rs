@@ -216,13 +216,72 @@ pub struct Cell {
     pub gap: Option<f64>,
     pub admissibility: Option<f64>,
     /// The certificate's verdict where the command reports one; `None` where it reports none.
+    /// An analysis of many programs (`safety`) reports, per kind of program and method, how its
+    /// programs were answered (`answered`): the verdict is then whether every program was
+    /// answered certified or decided (infeasible, unbounded), a `not certified` answer counting
+    /// as re-solved by the next line of the same kind ([`answered_certified`]).
     pub certified: Option<bool>,
+    /// The command's `answered` lines (kind of program, method, answers, outcome, why), where it
+    /// reports them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub programs: Vec<ProgramLine>,
     /// The key number: λ (limit), the dead loads' work (settle), λ at the largest settlement
     /// (capacity), the geometric safety factor (safety), the thickness (least-thickness), the
     /// tilt angle in degrees (tilt).
     pub value: Option<f64>,
     /// The key number in words, or the error line.
     pub result: String,
+}
+
+/// One line of a command's `answered`: one method's answers to one kind of program.
+#[derive(Clone, Debug, Serialize)]
+pub struct ProgramLine {
+    pub programs: String,
+    pub method: String,
+    pub answers: u64,
+    pub outcome: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub why: Option<String>,
+}
+
+/// The command's `answered` lines, or none where it reports none.
+fn program_lines(v: &Value) -> Vec<ProgramLine> {
+    v["answered"].as_array().map_or(vec![], |a| {
+        a.iter()
+            .map(|l| ProgramLine {
+                programs: l["programs"].as_str().unwrap_or("").to_string(),
+                method: l["method"].as_str().unwrap_or("").to_string(),
+                answers: l["answers"].as_u64().unwrap_or(0),
+                outcome: l["outcome"].as_str().unwrap_or("").to_string(),
+                why: l["why"].as_str().map(str::to_string),
+            })
+            .collect()
+    })
+}
+
+/// Whether every program of an analysis of many programs was answered with a certificate:
+/// each line `certified`, `infeasible` or `unbounded` (a decision with its certificate), and
+/// every `not certified` answer re-solved by a later decided line of the same kind. An unknown
+/// outcome, or a `not certified` answer no later line of its kind covers, is not certified.
+pub fn answered_certified(lines: &[ProgramLine]) -> bool {
+    let mut pending: Vec<(&str, u64)> = vec![];
+    for l in lines {
+        let at = match pending.iter().position(|(k, _)| *k == l.programs) {
+            Some(i) => i,
+            None => {
+                pending.push((&l.programs, 0));
+                pending.len() - 1
+            }
+        };
+        match l.outcome.as_str() {
+            "not certified" => pending[at].1 += l.answers,
+            "certified" | "infeasible" | "unbounded" => {
+                pending[at].1 = pending[at].1.saturating_sub(l.answers)
+            }
+            _ => return false,
+        }
+    }
+    pending.iter().all(|(_, n)| *n == 0)
 }
 
 /// Benchmark settings.
@@ -425,6 +484,10 @@ fn read_result(analysis: &str, v: &Value, cell: &mut Cell) {
         cell.admissibility = c["admissibility"].as_f64();
         cell.certified = c["ok"].as_bool();
     }
+    cell.programs = program_lines(r);
+    if !cell.programs.is_empty() && cell.certified.is_none() {
+        cell.certified = Some(answered_certified(&cell.programs));
+    }
     let num = |x: &Value| x.as_f64().map(|f| format!("{f:.6}"));
     cell.value = match analysis {
         "limit" => r["load_multiplier"].as_f64(),
@@ -485,7 +548,10 @@ fn read_result(analysis: &str, v: &Value, cell: &mut Cell) {
             num(&r["thickness"]).unwrap_or("—".into()),
             r["steps"]
         ),
-        "tilt" => format!("{} °", num(&v["tilt_angle"]).unwrap_or("—".into())),
+        // No angle: the nested limit analysis says why (e.g. no equilibrium under the dead loads).
+        "tilt" => num(&v["tilt_angle"])
+            .map(|a| format!("{a} °"))
+            .unwrap_or_else(|| format!("no angle: {}", r["message"].as_str().unwrap_or("—"))),
         _ => String::new(),
     };
 }
@@ -507,6 +573,7 @@ fn na(m: &ModelDef, dim: u8, blocks: usize, analysis: &str, why: &str) -> Cell {
         gap: None,
         admissibility: None,
         certified: None,
+        programs: vec![],
         value: None,
         result: why.into(),
     }
@@ -532,6 +599,20 @@ pub fn row(c: &Cell) -> String {
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
+    };
+    // Kinds of program answered by another method than the one reported (e.g. safety's
+    // reaction ranges by primal simplex, warm-started): named after it, once per kind and method.
+    let mut others: Vec<String> = vec![];
+    for l in &c.programs {
+        let s = format!("{}: {}", l.programs, l.method);
+        if Some(&l.method) != c.method.as_ref() && !others.contains(&s) {
+            others.push(s);
+        }
+    }
+    let method = if others.is_empty() {
+        method
+    } else {
+        format!("{method}; {}", others.join("; "))
     };
     let certified = match (c.outcome.as_str(), c.certified) {
         ("ok", Some(true)) => "yes".to_string(),
@@ -731,8 +812,18 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
                     }
                 }
             }
+            // `safety` and `tilt` take --friction but refuse --non-associative (associative
+            // friction only): they run the model's μ associatively and the result says so,
+            // rather than a cell that fails on the flag.
+            let associative_only =
+                matches!(a, "safety" | "tilt") && m.flags.iter().any(|f| f == "--non-associative");
             if a != "least-thickness" {
-                args.extend(m.flags.iter().cloned());
+                args.extend(
+                    m.flags
+                        .iter()
+                        .filter(|f| !(associative_only && *f == "--non-associative"))
+                        .cloned(),
+                );
             }
             if let Some(method) = &cfg.method {
                 args.extend(["--method".to_string(), method.clone()]);
@@ -779,6 +870,12 @@ pub fn run(cfg: &Config) -> Result<Vec<Cell>, Fail> {
                     Some(v) => {
                         cell.outcome = "ok".into();
                         read_result(a, &v, &mut cell);
+                        if associative_only {
+                            cell.result = format!(
+                                "associative μ (`{a}` has no --non-associative): {}",
+                                cell.result
+                            );
+                        }
                     }
                     None => {
                         cell.outcome = "failed".into();

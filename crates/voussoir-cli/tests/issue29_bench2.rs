@@ -121,14 +121,20 @@ fn issue29_item6_bench_runs_tilt_of_a_non_associative_model_associatively() {
     assert_eq!(tilt["analysis"], "tilt");
     // limit keeps the non-associative law; tilt gets the same μ without the flag it refuses.
     let lc = limit["command"].as_str().unwrap();
-    assert!(lc.contains("--friction 0.6") && lc.contains("--non-associative"), "{lc}");
+    assert!(
+        lc.contains("--friction 0.6") && lc.contains("--non-associative"),
+        "{lc}"
+    );
     let tc = tilt["command"].as_str().unwrap();
     assert!(tc.contains("--friction 0.6"), "{tc}");
     assert!(!tc.contains("--non-associative"), "{tc}");
     assert_ne!(tilt["outcome"], "failed", "{tilt}");
     if tilt["outcome"] == "ok" {
         assert!(
-            tilt["result"].as_str().unwrap().starts_with("associative μ"),
+            tilt["result"]
+                .as_str()
+                .unwrap()
+                .starts_with("associative μ"),
             "{tilt}"
         );
     }

@@ -13,7 +13,15 @@ fn readme_wall(dir: &std::path::Path) {
     run(
         dir,
         &[
-            "gen", "wall", "--courses", "8", "--units", "10", "--unit", "0.4,0.2", "-o",
+            "gen",
+            "wall",
+            "--courses",
+            "8",
+            "--units",
+            "10",
+            "--unit",
+            "0.4,0.2",
+            "-o",
             "wall.json",
         ],
     );

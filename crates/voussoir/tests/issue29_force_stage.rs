@@ -65,7 +65,6 @@ fn issue29_item5_least_friction_of_a_tipping_block_is_b_over_h() {
     }
 }
 
-
 /// With an iteration limit of 1 the energy QP (Clarabel, no fallback chain: the only backend
 /// with quadratic objectives) stops at its limit; the feasibility programs of the bisection fall
 /// back along the solver layer's chain and answer. The reported field is then the admissible

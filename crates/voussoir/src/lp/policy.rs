@@ -105,6 +105,13 @@ pub fn options_for<S: crate::structure::Assembly>(
 /// with crossover (docs/performance.md, "Solver policy (session 12)").
 pub const SIMPLEX_MAX_BLOCKS_2D: usize = 2_000;
 
+/// The largest 2D model with frictional joints the dual simplex solves by default; above it
+/// HiGHS's interior point with crossover (docs/performance.md, "Frictional 2D programs
+/// (session 15)"): every Coulomb point adds two rows, on which the simplex pivots for minutes
+/// (a 60 × 30 wall, 1,815 blocks, μ = 0.6: `settle --raw` 349.5 CPU s, against 68.8 with the
+/// interior point and 49.1 with Clarabel). At 205 blocks the two take about a second each.
+pub const FRICTION_SIMPLEX_MAX_BLOCKS_2D: usize = 300;
+
 /// The method used when the user names none: the one that measured fastest and certified in
 /// each class (docs/performance.md, "Solver policy (session 12)", every row measured on the
 /// 2-core machine):
@@ -114,6 +121,7 @@ pub const SIMPLEX_MAX_BLOCKS_2D: usize = 2_000;
 /// | cones | Clarabel | the only backend with cones |
 /// | non-associative iterate | Clarabel | centres of optimal faces: the iteration converges (docs/joint-laws.md) |
 /// | canonical stage | dual simplex | the stages need vertices and bases |
+/// | 2D with friction, > 300 blocks (optimisations) | HiGHS IPM + crossover | 30 × 20 wall (610 blocks), μ = 0.6: `limit` 8.5 CPU s (dual simplex 34.9, Clarabel 0.7), `settle --raw` 7.1 (21.4, Clarabel 8.1 not certified: gap 2.2e-6); 60 × 30 wall: `settle --raw` 68.8 (349.5, 49.1); a vertex, certified |
 /// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges); as fast as any on these sizes |
 /// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 80 × 40 wall (3,220 blocks): `limit` 11.8 CPU s (dual simplex > 79, Clarabel not certified: duality gap 1.0, answered by the IPM after it), `settle --raw` 6.3 (dual simplex 8.0, Clarabel 8.5 with its fallback); a vertex |
 /// | 3D | HiGHS IPM + crossover (a vertex; Clarabel measured faster, see below) | vault `limit` 0.13 CPU s (dual simplex 0.53, IPM 1.16), `settle` 0.13 (0.51, 0.56); dome 12 × 24 `limit` 0.30 (IPM 1.33, dual simplex > 97); `safety` within 1.3× of the fastest; HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
@@ -135,6 +143,11 @@ pub fn default_method(class: &ProblemClass) -> Method {
         // crossover, followed by the fallback chain where it fails (docs/performance.md).
         (_, 3) => Method::Ipm,
         _ if class.blocks > SIMPLEX_MAX_BLOCKS_2D => Method::Ipm,
+        (Purpose::Optimise, _)
+            if class.friction && class.blocks > FRICTION_SIMPLEX_MAX_BLOCKS_2D =>
+        {
+            Method::Ipm
+        }
         _ => Method::DualSimplex,
     }
 }

@@ -973,10 +973,12 @@ pub fn settle_canonical<S: Assembly>(
     let t0 = std::time::Instant::now();
     let mut found = canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)?;
     trace("mechanism", t0);
-    if found.is_none() && !opts.method.is_simplex() {
+    if found.is_none() && primal.method.is_interior() {
         // The interior point's duals did not fix the optimal face (its solution is optimal
         // only to the solver's tolerance): cross over to a vertex with the dual simplex, as
-        // HiGHS's crossover would, and select from there.
+        // HiGHS's crossover would, and select from there. (Not after a vertex: its duals are
+        // exact, and the dual simplex would find the same face again; on the 30 × 20 wall
+        // with μ = 0.6 that second pass took 81 s to reach the same dead end.)
         let vo = SolverOptions {
             method: Method::DualSimplex,
             ..*opts
@@ -1031,6 +1033,14 @@ pub fn settle_canonical<S: Assembly>(
         solver: primal.solver_info(),
     };
     let mut r = settlement::settlement_result_checked(st, &map, &s);
+    if mech.is_none() {
+        // Said, not silent: the default analysis asked for the canonical mechanism.
+        r.message = format!(
+            "{}; the canonical selection was not reached (its least-crack face could not be \
+             solved): the solver's own mechanism is reported, which may depend on the method",
+            r.message
+        );
+    }
     r.canonical = mech.map(|mechanism| Canonical { mechanism, forces });
     Ok(r)
 }

@@ -412,7 +412,10 @@ fn recertify<D: crate::result::Spatial>(
         return Ok(r);
     }
     let chain = lp::fallback_chain(opts.method);
-    let from = chain.iter().position(|&m| m == s.solver.method).unwrap_or(0);
+    let from = chain
+        .iter()
+        .position(|&m| m == s.solver.method)
+        .unwrap_or(0);
     let why = match &r.certificate {
         Some(c) if c.relative_gap > GAP_TOLERANCE => format!(
             "{}: the settlement's duality gap {:.1e} exceeds {GAP_TOLERANCE:.0e}",

@@ -262,5 +262,21 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         "{} LP solves, {} simplex iterations",
         r.solves, r.iterations
     );
+    // Each step's certificate (the JSON's `certificate` per step and summed up).
+    if let Some(c) = &r.certificate {
+        if c.ok {
+            let _ = writeln!(
+                s,
+                "certificates: every step certified ({} of {}; largest gap {:.1e}, admissibility {:.1e})",
+                c.certified, c.steps, c.gap, c.admissibility
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "certificates: NOT every step certified ({} of {}; uncertified steps {:?}; largest gap {:.1e}, admissibility {:.1e})",
+                c.certified, c.steps, c.uncertified_steps, c.gap, c.admissibility
+            );
+        }
+    }
     s
 }

@@ -1,0 +1,151 @@
+//! Issue #29 items 3 and 6 through the binary (helper h-cap, session 15): `capacity` reports
+//! each step's certificate and the curve's summary (JSON and text), `least-thickness` its
+//! decisions (`answered`), and every step of the LACT3 wall's capacity is certified (a warm
+//! "locked" between two steps without equilibrium is decided again).
+
+use std::path::{Path, PathBuf};
+
+mod common;
+use common::{json, run};
+
+fn tmpdir(name: &str) -> PathBuf {
+    common::tmpdir("i29capcert", name)
+}
+
+fn lact3_wall(dir: &Path) -> String {
+    let dxf =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../voussoir-io/tests/fixtures/lact3/wall.dxf");
+    let out = dir.join("wall.json");
+    run(
+        dir,
+        &[
+            "import",
+            dxf.to_str().unwrap(),
+            "--units",
+            "mm",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+    );
+    out.display().to_string()
+}
+
+#[test]
+fn issue29_item3_capacity_text_and_json_certificates() {
+    let dir = tmpdir("arch");
+    let m = dir.join("arch.json");
+    run(
+        &dir,
+        &["gen", "arch", "--live", "full", "-o", m.to_str().unwrap()],
+    );
+    let args = [
+        "capacity",
+        m.to_str().unwrap(),
+        "--steps",
+        "4",
+        "--move",
+        "right=0.01,-0.005",
+    ];
+    let text = run(&dir, &args);
+    assert!(
+        text.contains("certificates: every step certified (5 of 5; largest gap"),
+        "{text}"
+    );
+    let mut a = args.to_vec();
+    a.push("--json");
+    let v = json(&run(&dir, &a));
+    let c = &v["certificate"];
+    assert_eq!(c["steps"], 5);
+    assert_eq!(c["certified"], 5);
+    assert_eq!(c["ok"], true);
+    assert!(c["gap"].as_f64().unwrap() <= 1e-6);
+    for p in v["curve"].as_array().unwrap() {
+        assert_eq!(p["certificate"]["kind"], "multiplier");
+        assert_eq!(p["certificate"]["ok"], true);
+    }
+    // λ at no settlement: the paper's 0.434645 (Fig 7), the same as `limit`.
+    let l0 = v["curve"][0]["load_multiplier"].as_f64().unwrap();
+    assert!((l0 - 0.434645).abs() < 1e-6, "{l0}");
+}
+
+#[test]
+fn issue29_item2a_lact3_wall_capacity_steps_certified_no_equilibrium() {
+    let dir = tmpdir("wall");
+    let m = lact3_wall(&dir);
+    let v = json(&run(
+        &dir,
+        &[
+            "capacity",
+            &m,
+            "--steps",
+            "20",
+            "--split",
+            "base@1.25",
+            "--move",
+            "base@1=0,-0.01",
+            "--json",
+        ],
+    ));
+    let curve = v["curve"].as_array().unwrap();
+    assert_eq!(curve.len(), 21);
+    // s = 0: the plain limit analysis (λ = 0.400765, session 14's table), certified.
+    assert!((curve[0]["load_multiplier"].as_f64().unwrap() - 0.400765).abs() < 1e-6);
+    // Every step certified, whatever its answer: a multiplier by its mechanism, "no
+    // equilibrium" by the elastic program's Farkas certificate (a positive least violation).
+    // The warm simplex once said "locked" at 0.25 cm between two infeasible programs: a
+    // locked step must not stand between steps without equilibrium.
+    for p in &curve[1..] {
+        let c = &p["certificate"];
+        assert_eq!(c["ok"], true, "{p}");
+        if p["status"] == "no_equilibrium" {
+            assert_eq!(c["kind"], "no_equilibrium");
+            assert!(c["violation"].as_f64().unwrap() > 1e-6);
+        }
+    }
+    for w in curve.windows(3) {
+        assert!(
+            !(w[1]["status"] == "locked"
+                && w[0]["status"] == "no_equilibrium"
+                && w[2]["status"] == "no_equilibrium"),
+            "{w:?}"
+        );
+    }
+    assert_eq!(v["certificate"]["ok"], true);
+    assert_eq!(v["certificate"]["certified"], 21);
+}
+
+#[test]
+fn issue29_item3_least_thickness_reports_its_decisions() {
+    let dir = tmpdir("lt");
+    let text = run(
+        &dir,
+        &["least-thickness", "arch", "--bisection-tolerance", "1e-4"],
+    );
+    assert!(
+        text.contains(
+            "decisions: every one certified (an equilibrium state, or a certificate of infeasibility)"
+        ),
+        "{text}"
+    );
+    let v = json(&run(
+        &dir,
+        &[
+            "least-thickness",
+            "arch",
+            "--bisection-tolerance",
+            "1e-4",
+            "--json",
+        ],
+    ));
+    assert_eq!(v["certified"], true);
+    let n: u64 = v["answered"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["answers"].as_u64().unwrap())
+        .sum();
+    assert_eq!(n, v["steps"].as_u64().unwrap() + 2);
+    // Milankovitch's t/R = 0.1075 within 1 %.
+    let tr = v["thickness_over_radius"].as_f64().unwrap();
+    assert!((tr - 0.1075).abs() < 0.01 * 0.1075, "{tr}");
+}

@@ -149,3 +149,80 @@ fn issue29_item3_least_thickness_reports_its_decisions() {
     let tr = v["thickness_over_radius"].as_f64().unwrap();
     assert!((tr - 0.1075).abs() < 0.01 * 0.1075, "{tr}");
 }
+
+#[test]
+fn issue29_item1_vault_capacity_default_is_the_dual_simplex_and_agrees_with_clarabel() {
+    // The README's vault (192 blocks), the benchmark's motion: the solver policy's method of a
+    // 3D capacity curve is the dual simplex (warm from step to step); every step's λ equals
+    // the dual simplex's, and an interior point's (Clarabel, an independent method), to 1e-6.
+    let dir = tmpdir("vault");
+    let m = dir.join("vault.json");
+    run(
+        &dir,
+        &[
+            "gen",
+            "vault",
+            "--live",
+            "full",
+            "--depth",
+            "1",
+            "--rings",
+            "3",
+            "-o",
+            m.to_str().unwrap(),
+        ],
+    );
+    let curve = |method: Option<&str>| {
+        let mut a = vec![
+            "capacity",
+            m.to_str().unwrap(),
+            "--steps",
+            "20",
+            "--move",
+            "right=0.01,0,-0.005",
+            "--json",
+        ];
+        if let Some(x) = method {
+            a.extend(["--method", x]);
+        }
+        json(&run(&dir, &a))
+    };
+    let (d, ds, cl) = (
+        curve(None),
+        curve(Some("dual-simplex")),
+        curve(Some("clarabel")),
+    );
+    assert_eq!(d["solver"]["method"], "dual-simplex");
+    assert!(d["answered"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|a| a["method"] == "dual-simplex"));
+    assert_eq!(d["certificate"]["ok"], true);
+    let lam = |v: &serde_json::Value| -> Vec<f64> {
+        v["curve"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p["load_multiplier"].as_f64().unwrap())
+            .collect()
+    };
+    let (a, b, c) = (lam(&d), lam(&ds), lam(&cl));
+    assert_eq!(a.len(), 21);
+    for i in 0..21 {
+        assert!(
+            (a[i] - b[i]).abs() <= 1e-6 * b[i].abs(),
+            "step {i}: {} {}",
+            a[i],
+            b[i]
+        );
+        assert!(
+            (a[i] - c[i]).abs() <= 1e-6 * c[i].abs(),
+            "step {i}: {} {}",
+            a[i],
+            c[i]
+        );
+    }
+    // The vault's λ at no settlement is the paper arch's (a vault of arches, full-span load).
+    assert!((a[0] - 0.434645).abs() < 1e-6, "{}", a[0]);
+}

@@ -144,6 +144,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         ));
     }
     check_facets(opts.facets)?;
+    let kind = lp::ProgramKind::set("settlement", "");
     let path = SettlementPath::with_laws(
         st,
         &opts.solver,
@@ -151,6 +152,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         opts.facets,
         opts.nonassociative,
     )?;
+    drop(kind);
     let smax = path.max_settlement;
     let direction: Vec<SupportDirection> = (0..path.unit.num_supports())
         .filter(|&k| path.unit.support_motion(k).iter().any(|&x| x != 0.0))
@@ -168,6 +170,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             direction,
             curve: vec![],
             certificate: None,
+            answered: vec![],
             zero_capacity_settlement: None,
             existing_cracks_closed_at: None,
             linear_fit: None,
@@ -381,6 +384,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         direction,
         curve,
         certificate,
+        answered: vec![],
         zero_capacity_settlement: zero,
         existing_cracks_closed_at: closed_at,
         linear_fit,

@@ -205,6 +205,10 @@ pub struct CapacityResult<D: Spatial = Two> {
     /// The certificates of the curve's steps, summed up (absent when there is no curve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub certificate: Option<CapacityCertificate>,
+    /// Which method answered each kind of program, as `safety` reports it (the request layer
+    /// gathers it; empty, and not written, where it was not gathered).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub answered: Vec<crate::lp::ProgramAnswers>,
     /// The settlement at which λ reaches 0 (`null` if λ does not change sign in the range).
     pub zero_capacity_settlement: Option<f64>,
     /// The settlement at which the last point of the model's existing cracks closes (to the

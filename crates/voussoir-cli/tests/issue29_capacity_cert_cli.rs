@@ -226,3 +226,62 @@ fn issue29_item1_vault_capacity_default_is_the_dual_simplex_and_agrees_with_clar
     // The vault's λ at no settlement is the paper arch's (a vault of arches, full-span load).
     assert!((a[0] - 0.434645).abs() < 1e-6, "{}", a[0]);
 }
+
+#[test]
+fn issue29_item3_lact3_portal_uncertified_warm_steps_solved_again() {
+    // The LACT3 portal, the right half of its base 1 cm down: the warm dual simplex stopped
+    // short at 0.4 and 0.45 cm (gap 6e-7, 6e-6; the curve was "not certified"). Those steps
+    // are solved again from scratch: every step certified, and each λ equal to the curve
+    // solved cold (every step from scratch: `--cold`) to 1e-6 (the certificates' tolerance).
+    let dir = tmpdir("portal");
+    let dxf = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../voussoir-io/tests/fixtures/lact3/Portal.dxf");
+    let m = dir.join("portal.json");
+    run(
+        &dir,
+        &[
+            "import",
+            dxf.to_str().unwrap(),
+            "--units",
+            "mm",
+            "-o",
+            m.to_str().unwrap(),
+        ],
+    );
+    let curve = |cold: bool| {
+        let mut a = vec![
+            "capacity",
+            m.to_str().unwrap(),
+            "--steps",
+            "20",
+            "--split",
+            "base@1.25",
+            "--move",
+            "base@1=0,-0.01",
+            "--json",
+        ];
+        if cold {
+            a.push("--cold");
+        }
+        json(&run(&dir, &a))
+    };
+    let (warm, cold) = (curve(false), curve(true));
+    assert_eq!(warm["certificate"]["ok"], true, "{}", warm["certificate"]);
+    assert_eq!(warm["certificate"]["certified"], 21);
+    let (a, b) = (
+        warm["curve"].as_array().unwrap(),
+        cold["curve"].as_array().unwrap(),
+    );
+    // Compared where both are a collapse (λ ≥ 0): at 0.05–0.35 cm (no equilibrium, λ < 0)
+    // the warm program (open points kept as columns fixed at zero) and the cold one give
+    // different negative multipliers (−0.425 against −0.385 at 0.05 cm), each certified by its
+    // own mechanism: found in session 15, not resolved (docs/performance.md).
+    for (p, q) in a.iter().zip(b) {
+        if p["status"] != "collapse" || q["status"] != "collapse" {
+            continue;
+        }
+        if let (Some(x), Some(y)) = (p["load_multiplier"].as_f64(), q["load_multiplier"].as_f64()) {
+            assert!((x - y).abs() <= 1e-6 * y.abs().max(1e-3), "{x} {y}");
+        }
+    }
+}

@@ -262,5 +262,30 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         "{} LP solves, {} simplex iterations",
         r.solves, r.iterations
     );
+    // Each step's certificate (the JSON's `certificate` per step and summed up); the numbers
+    // as 2.7×10^-13 (a summary prints no bare e-notation).
+    let sci = |x: f64| format!("{x:.1e}").replacen('e', "×10^", 1);
+    if let Some(c) = &r.certificate {
+        if c.ok {
+            let _ = writeln!(
+                s,
+                "certificates: every step certified ({} of {}; largest gap {}, admissibility {})",
+                c.certified,
+                c.steps,
+                sci(c.gap),
+                sci(c.admissibility)
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "certificates: NOT every step certified ({} of {}; uncertified steps {:?}; largest gap {}, admissibility {})",
+                c.certified,
+                c.steps,
+                c.uncertified_steps,
+                sci(c.gap),
+                sci(c.admissibility)
+            );
+        }
+    }
     s
 }

@@ -235,6 +235,28 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
             r.found.below,
             r.found.steps
         ));
+        // How each decision was answered (the JSON's `answered`), as `safety` prints it.
+        let mut s = format!(
+            "decisions: {} ({})\n",
+            if r.certified {
+                "every one certified (an equilibrium state, or a certificate of infeasibility)"
+            } else {
+                "NOT every one certified"
+            },
+            r.solver.method.name()
+        );
+        for a in &r.answered {
+            let _ = writeln!(
+                s,
+                "  {}: {} by {} ({}{})",
+                a.programs,
+                a.answers,
+                a.method.name(),
+                a.outcome,
+                a.why.as_ref().map_or(String::new(), |w| format!("; {w}"))
+            );
+        }
+        crate::common::out(&s);
     }
     Ok(())
 }

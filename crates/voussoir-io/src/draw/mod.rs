@@ -189,18 +189,19 @@ pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
             Saved::Limit(parse(v, "limit result")?)
         });
     }
-    if has("status") && has("geometry") && (has("work_reactions") || has("certificate")) {
-        return Ok(if three {
-            Saved::Settlement3d(parse(v, "3D settlement result")?)
-        } else {
-            Saved::Settlement(parse(v, "settlement result")?)
-        });
-    }
+    // A capacity result before a settlement's: it carries a `certificate` too (its steps').
     if has("status") && has("geometry") && has("curve") && has("zero_capacity_settlement") {
         return Ok(if three {
             Saved::Capacity3d(parse(v, "3D capacity result")?)
         } else {
             Saved::Capacity(parse(v, "capacity result")?)
+        });
+    }
+    if has("status") && has("geometry") && (has("work_reactions") || has("certificate")) {
+        return Ok(if three {
+            Saved::Settlement3d(parse(v, "3D settlement result")?)
+        } else {
+            Saved::Settlement(parse(v, "settlement result")?)
         });
     }
     if has("status") && has("curve") && has("peak_load_multiplier") {

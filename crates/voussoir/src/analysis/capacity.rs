@@ -46,12 +46,15 @@
 //! What that saves is measured in `docs/capacity.md`.
 
 pub use crate::analysis::laws::closing_joints;
-use crate::analysis::limit::{check_facets, Crushing, LimitSolution, LimitStatus, DEFAULT_FACETS};
+use crate::analysis::limit::{
+    check_facets, multiplier_certificate, Crushing, LimitSolution, LimitStatus, DEFAULT_FACETS,
+};
 use crate::analysis::paths::{SettlementPath, WarmLimit};
 use crate::analysis::settlement::SettlementStatus;
 use crate::discretize::KinematicMap;
 use crate::error::{Error, Result};
-use crate::lp::SolverOptions;
+use crate::lp::{self, SolverOptions};
+use crate::programs;
 use crate::reporting::report;
 pub use crate::result::capacity::*;
 use crate::structure::Assembly;
@@ -141,6 +144,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         ));
     }
     check_facets(opts.facets)?;
+    let kind = lp::ProgramKind::set("settlement", "");
     let path = SettlementPath::with_laws(
         st,
         &opts.solver,
@@ -148,6 +152,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         opts.facets,
         opts.nonassociative,
     )?;
+    drop(kind);
     let smax = path.max_settlement;
     let direction: Vec<SupportDirection> = (0..path.unit.num_supports())
         .filter(|&k| path.unit.support_motion(k).iter().any(|&x| x != 0.0))
@@ -164,6 +169,8 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             max_settlement: smax,
             direction,
             curve: vec![],
+            certificate: None,
+            answered: vec![],
             zero_capacity_settlement: None,
             existing_cracks_closed_at: None,
             linear_fit: None,
@@ -224,7 +231,44 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
         // columns, same options, no starting basis), so λ(0) is the plain limit analysis
         // exactly, and its basis starts the next step.
-        let sol = warm.solve(&dst, &map)?;
+        let mut sol = warm.solve(&dst, &map)?;
+        let mut certificate = step_certificate(&dst, &map, &sol, opts)?;
+        // A multiplier whose certificate does not hold (the warm simplex stopped short: the
+        // LACT3 portal's steps at 0.4 and 0.45 cm, gap 6e-7 and 6e-6) is solved again from
+        // scratch, by the method asked for and then by Clarabel; the first certified answer
+        // stands, else the warm one with its certificate (not certified).
+        if certificate
+            .as_ref()
+            .is_some_and(|c| !c.ok && c.kind == StepCertificateKind::Multiplier)
+        {
+            let _kind = lp::ProgramKind::set(
+                "steps re-solved",
+                "a step whose certificate did not hold, solved again from scratch",
+            );
+            for method in [opts.solver.method, lp::Method::Clarabel] {
+                let o = SolverOptions {
+                    method,
+                    ..opts.solver
+                };
+                let again = crate::analysis::limit::solve_limit(&dst, &map, &o)?;
+                let c = step_certificate(&dst, &map, &again, opts)?;
+                if c.as_ref().is_some_and(|c| c.ok) {
+                    sol = again;
+                    certificate = c;
+                    break;
+                }
+            }
+        }
+        // A "locked" step (the program unbounded) that the elastic program proves to have no
+        // equilibrium at any λ: the warm simplex's status was wrong (HiGHS's dual simplex, warm,
+        // reported `lact3-wall`'s program at 0.25 cm unbounded between two infeasible ones).
+        if sol.status == LimitStatus::Locked
+            && certificate
+                .as_ref()
+                .is_some_and(|c| c.ok && c.kind == StepCertificateKind::NoEquilibrium)
+        {
+            sol.status = LimitStatus::NoEquilibrium;
+        }
         values.push(signed_lambda(&sol));
         let closing = closing_joints(&dst, &map, &sol.mechanism);
         let hinges = if sol.mechanism.is_empty() {
@@ -247,8 +291,10 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             closing_joints: closing,
             hinges,
             existing_cracks_open: cracks_open,
+            certificate,
         });
     }
+    let certificate = Some(summarise(&curve));
 
     // Zero-capacity settlement: first sign change of λ on the curve, refined.
     let mut zero = None;
@@ -341,6 +387,15 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     {
         message.push_str("; some existing cracks stay open over the whole range");
     }
+    if let Some(c) = certificate.as_ref().filter(|c| !c.ok) {
+        message = format!(
+            "NOT CERTIFIED at {} of {} steps (largest gap {:.1e}, admissibility {:.1e}): {message}",
+            c.steps - c.certified,
+            c.steps,
+            c.gap,
+            c.admissibility
+        );
+    }
     if invalid > 0 {
         message.push_str(&format!(
             "; WARNING: at {invalid} of {} settlements the collapse mechanism closes cracks opened by the settlement, so limit analysis is not valid there (use the incremental analysis)",
@@ -354,6 +409,8 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         max_settlement: smax,
         direction,
         curve,
+        certificate,
+        answered: vec![],
         zero_capacity_settlement: zero,
         existing_cracks_closed_at: closed_at,
         linear_fit,
@@ -365,6 +422,101 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         iterations,
         geometry: st.shapes(),
     })
+}
+
+/// The certificate of one step's answer: λ and its mechanism ([`multiplier_certificate`], as
+/// `limit` reports it) where the program has a multiplier; where it has none at any λ (no
+/// equilibrium), the infeasibility decided again by the elastic program with its Farkas
+/// certificate ([`lp::sequence::decide_feasibility`]; Clarabel, then the dual simplex). `None`
+/// for the laws without one (cohesion, crushing, non-associative friction). A locked step (the
+/// program unbounded) is decided the same way: where it has no equilibrium at all, the
+/// certificate says so and the caller corrects the status; where it has one, no certificate
+/// (its ray of unbounded λ is not computed).
+fn step_certificate<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    sol: &LimitSolution,
+    opts: &CapacityOptions,
+) -> Result<Option<StepCertificate>> {
+    if opts.nonassociative.is_some() || opts.crushing == Crushing::Conic {
+        return Ok(None);
+    }
+    if sol.lambda.is_some() {
+        return Ok(
+            multiplier_certificate(st, map, sol).map(|c| StepCertificate {
+                kind: StepCertificateKind::Multiplier,
+                gap: Some(c.gap),
+                admissibility: Some(c.admissibility),
+                violation: None,
+                ok: c.ok,
+            }),
+        );
+    }
+    if !matches!(sol.status, LimitStatus::NoEquilibrium | LimitStatus::Locked) {
+        return Ok(None);
+    }
+    let locked = sol.status == LimitStatus::Locked;
+    let (dead, live) = (st.load_vector(false), st.load_vector(true));
+    let fp = programs::limit_force_program(map, &dead, &live);
+    if !fp.cones.is_empty() {
+        return Ok(None);
+    }
+    let _kind = lp::ProgramKind::set(
+        "no-equilibrium certificates",
+        "the elastic program decides with a certificate either way, Clarabel first",
+    );
+    for method in [lp::Method::Clarabel, lp::Method::DualSimplex] {
+        let o = SolverOptions {
+            method,
+            ..opts.solver
+        };
+        if let Some(d) = lp::sequence::decide_feasibility(&fp.lp, &o, 0.0)? {
+            // Locked and feasible: the certificate would be a ray of unbounded λ (not
+            // computed here): no certificate.
+            if locked && d.feasible {
+                return Ok(None);
+            }
+            return Ok(Some(StepCertificate {
+                kind: StepCertificateKind::NoEquilibrium,
+                gap: None,
+                admissibility: None,
+                violation: Some(d.violation),
+                // Decided infeasible, as the step says; a feasible decision contradicts it.
+                ok: !d.feasible,
+            }));
+        }
+    }
+    Ok(Some(StepCertificate {
+        kind: StepCertificateKind::NoEquilibrium,
+        gap: None,
+        admissibility: None,
+        violation: None,
+        ok: false,
+    }))
+}
+
+/// The steps' certificates summed up.
+fn summarise<D: crate::result::Spatial>(curve: &[CapacityPoint<D>]) -> CapacityCertificate {
+    let mut c = CapacityCertificate {
+        steps: curve.len(),
+        certified: 0,
+        uncertified_steps: vec![],
+        gap: 0.0,
+        admissibility: 0.0,
+        ok: true,
+    };
+    for (i, p) in curve.iter().enumerate() {
+        match &p.certificate {
+            Some(s) if s.ok => c.certified += 1,
+            _ => c.uncertified_steps.push(i),
+        }
+        if let Some(s) = &p.certificate {
+            c.gap = c.gap.max(s.gap.unwrap_or(0.0));
+            c.admissibility = c.admissibility.max(s.admissibility.unwrap_or(0.0));
+        }
+    }
+    c.ok = c.uncertified_steps.is_empty();
+    c
 }
 
 /// Root of `f` in `[a, b]` with `f(a) > 0 ≥ f(b)` (values may be ±∞), to `tol` in x: Illinois

@@ -360,6 +360,35 @@ pub fn limit<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<LimitResult<S:
     Ok(limit_result(st, &map, &s))
 }
 
+/// The certificate of the multiplier `s.lambda` of a solved limit program on `st` (a
+/// collapse, or a negative λ whose mechanism the dead loads drive: the same strong duality),
+/// as [`limit_result`] reports it; `None` without a multiplier and a mechanism, or for joint
+/// laws whose kinematic multiplier has more terms than the dead loads' work. For the analyses
+/// that solve many limit programs (capacity).
+pub fn multiplier_certificate<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    s: &LimitSolution,
+) -> Option<LimitCertificate> {
+    s.lambda?;
+    let (dead, live) = (st.load_vector(false), st.load_vector(true));
+    let (wd, wl) = load_works(&s.mechanism, &dead, &live);
+    let unit = crate::scale::lambda_unit(map.dofs_per_block, &dead, &live);
+    let as_collapse = LimitSolution {
+        status: LimitStatus::Collapse,
+        lambda: s.lambda,
+        mechanism: s.mechanism.clone(),
+        pn: vec![],
+        pt: vec![],
+        iterations: 0,
+        solver: s.solver.clone(),
+        least: None,
+        note: String::new(),
+        reduced_accuracy: false,
+    };
+    limit_certificate(map, &as_collapse, wd, wl, unit)
+}
+
 /// The certificate of a collapse multiplier ([`LimitCertificate`]): for the joint laws whose
 /// kinematic multiplier is `−F_D·d` alone (no cohesion, no crushing, no fixed shear
 /// capacities), the static λ against it and the mechanism's admissibility.

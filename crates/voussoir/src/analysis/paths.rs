@@ -90,6 +90,7 @@ impl WarmLimit {
         let sol = if self.hot && !map.has_joint_laws() {
             let (dead, live) = load_vectors(st)?;
             let fp = programs::limit_force_program_fixed_topology(map, &dead, &live);
+            let _kind = lp::ProgramKind::set("steps", "");
             let sol = lp::solve_warm(&fp.lp, &self.solver, &mut self.basis)?;
             limit_solution(map, &fp, &live, &sol, self.solver.info())
         } else {

@@ -331,6 +331,30 @@ pub struct ProgramAnswers {
     pub why: Option<String>,
 }
 
+/// Whether every program of an analysis of many programs was answered with a certificate
+/// ([`SolverInfo::by_programs`]'s lines): each line `certified`, `infeasible` or `unbounded`,
+/// and every `not certified` answer decided again by a later line of the same kind.
+pub fn answers_certified(lines: &[ProgramAnswers]) -> bool {
+    let mut pending: Vec<(&str, usize)> = vec![];
+    for l in lines {
+        let at = match pending.iter().position(|(k, _)| *k == l.programs) {
+            Some(i) => i,
+            None => {
+                pending.push((&l.programs, 0));
+                pending.len() - 1
+            }
+        };
+        match l.outcome.as_str() {
+            "not certified" => pending[at].1 += l.answers,
+            "certified" | "infeasible" | "unbounded" => {
+                pending[at].1 = pending[at].1.saturating_sub(l.answers)
+            }
+            _ => return false,
+        }
+    }
+    pending.iter().all(|(_, n)| *n == 0)
+}
+
 impl SolverInfo {
     /// One sentence on how the answer was obtained when the requested method failed
     /// ("dual-simplex, after ipm: HiGHS run failed: Error"), or `None`.

@@ -1,6 +1,7 @@
 //! The solver policy, in one place (issue 29 items 1 and 2): which method solves a program when
-//! the user names none ([`default_method`], from the measurements of docs/performance.md,
-//! "Solver policy (session 11)"), and when an answer counts as one ([`check`]): the fallback
+//! the user names none ([`default_method`], by dimension, size and purpose, from the
+//! measurements of docs/performance.md, "Solver policy (session 11)" and "Solver policy by
+//! purpose (session 15)"), and when an answer counts as one ([`check`]): the fallback
 //! chain of [`super::fallback_chain`] moves on not only where a method fails, but also where it
 //! ends at a point that is not certified as optimal (primal rows violated, or a duality gap)
 //! beyond [`CERTIFICATE_TOLERANCE`].
@@ -21,6 +22,10 @@ pub enum Purpose {
     /// An iterate of the non-associative friction iteration (a sequence of LPs whose solutions
     /// must move smoothly from one iterate to the next).
     Iteration,
+    /// A curve: a sequence of optimisations of one shape whose coefficients change a little
+    /// from one to the next (`capacity`'s limit analyses on the settled geometries), each
+    /// warm-started from the basis of the one before where the method keeps one.
+    Curve,
 }
 
 /// The class of a program, as far as the choice of method goes.
@@ -112,6 +117,12 @@ pub const SIMPLEX_MAX_BLOCKS_2D: usize = 2_000;
 /// interior point and 49.1 with Clarabel). At 205 blocks the two take about a second each.
 pub const FRICTION_SIMPLEX_MAX_BLOCKS_2D: usize = 300;
 
+/// The largest 3D model whose capacity curve ([`Purpose::Curve`]) the dual simplex solves by
+/// default; above it Clarabel (docs/performance.md, "Solver policy by purpose (session 15)":
+/// measured at 113 and 192 blocks (dual simplex fastest) and 553 (its first program alone over
+/// 59 CPU s); the boundary between is not measured).
+pub const CURVE_SIMPLEX_MAX_BLOCKS_3D: usize = 300;
+
 /// The method used when the user names none: the one that measured fastest and certified in
 /// each class (docs/performance.md, "Solver policy (session 12)", every row measured on the
 /// 2-core machine):
@@ -124,6 +135,8 @@ pub const FRICTION_SIMPLEX_MAX_BLOCKS_2D: usize = 300;
 /// | 2D with friction, > 300 blocks (optimisations) | HiGHS IPM + crossover | 30 × 20 wall (610 blocks), μ = 0.6: `limit` 8.5 CPU s (dual simplex 34.9, Clarabel 0.7), `settle --raw` 7.1 (21.4, Clarabel 8.1 not certified: gap 2.2e-6); 60 × 30 wall: `settle --raw` 68.8 (349.5, 49.1); a vertex, certified |
 /// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges); as fast as any on these sizes |
 /// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 80 × 40 wall (3,220 blocks): `limit` 11.8 CPU s (dual simplex > 79, Clarabel not certified: duality gap 1.0, answered by the IPM after it), `settle --raw` 6.3 (dual simplex 8.0, Clarabel 8.5 with its fallback); a vertex |
+/// | 3D capacity curve ([`Purpose::Curve`]), ≤ 300 blocks | dual simplex, warm from step to step | session 15: README vault 21 steps 1.3 CPU s (Clarabel 1.8, HiGHS IPM 6.5–62: it stalls on some settled geometries), README dome 1.2 (Clarabel 2.2, IPM 5.3); a vertex, as the IPM's crossover gives |
+/// | 3D capacity curve, > 300 blocks | Clarabel | 24 × 24 dome (553 blocks): 23.7–35.6 CPU s; the dual simplex's first program alone > 59, the IPM's curve > 60, the IPM's first program then the warm dual simplex > 119 |
 /// | 3D | HiGHS IPM + crossover (a vertex; Clarabel measured faster, see below) | vault `limit` 0.13 CPU s (dual simplex 0.53, IPM 1.16), `settle` 0.13 (0.51, 0.56); dome 12 × 24 `limit` 0.30 (IPM 1.33, dual simplex > 97); `safety` within 1.3× of the fastest; HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
 ///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
@@ -141,6 +154,13 @@ pub fn default_method(class: &ProblemClass) -> Method {
         // come out at -1e-12 m, so the crack pattern changed with the method. Until the
         // canonical selection is on in 3D, the default stays a vertex: HiGHS's IPM with
         // crossover, followed by the fallback chain where it fails (docs/performance.md).
+        // A 3D curve (capacity): the dual simplex, warm from step to step, up to
+        // CURVE_SIMPLEX_MAX_BLOCKS_3D blocks (the README's vault's 21 steps: 1.3 CPU s, HiGHS's
+        // IPM 6.5–62: it stalls on some settled geometries); above, Clarabel (the 24 × 24
+        // dome: 36 CPU s; the dual simplex's first program alone took over 59, the IPM's
+        // curve over 60, the IPM's first program then the warm dual simplex over 119).
+        (Purpose::Curve, 3) if class.blocks <= CURVE_SIMPLEX_MAX_BLOCKS_3D => Method::DualSimplex,
+        (Purpose::Curve, 3) => Method::Clarabel,
         (_, 3) => Method::Ipm,
         _ if class.blocks > SIMPLEX_MAX_BLOCKS_2D => Method::Ipm,
         (Purpose::Optimise, _)
@@ -355,5 +375,37 @@ mod tests {
             ..c(2, 10)
         };
         assert_eq!(default_method(&cones), Method::Clarabel);
+    }
+
+    #[test]
+    fn issue29_item1_policy_by_purpose_curves() {
+        let curve = |dim, blocks, cones| ProblemClass {
+            purpose: Purpose::Curve,
+            cones,
+            blocks,
+            ..ProblemClass::of_dim(dim)
+        };
+        // 3D capacity curves: the dual simplex (warm from step to step) up to the bound,
+        // Clarabel above it and wherever there are cones.
+        assert_eq!(default_method(&curve(3, 192, false)), Method::DualSimplex);
+        assert_eq!(
+            default_method(&curve(3, CURVE_SIMPLEX_MAX_BLOCKS_3D, false)),
+            Method::DualSimplex
+        );
+        assert_eq!(
+            default_method(&curve(3, CURVE_SIMPLEX_MAX_BLOCKS_3D + 1, false)),
+            Method::Clarabel
+        );
+        assert_eq!(default_method(&curve(3, 553, false)), Method::Clarabel);
+        assert_eq!(default_method(&curve(3, 192, true)), Method::Clarabel);
+        // 2D curves as 2D optimisations: the dual simplex up to 2,000 blocks, the IPM above.
+        assert_eq!(default_method(&curve(2, 182, false)), Method::DualSimplex);
+        assert_eq!(default_method(&curve(2, 2_654, false)), Method::Ipm);
+        // A single 3D optimisation (limit, tilt) keeps the IPM with crossover (a vertex).
+        let limit3 = ProblemClass {
+            blocks: 553,
+            ..ProblemClass::of_dim(3)
+        };
+        assert_eq!(default_method(&limit3), Method::Ipm);
     }
 }

@@ -143,6 +143,11 @@ impl CapacityRequest {
         dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
         let opts = self.options(req, dims, &super::class(st, req));
-        Ok((Output::Capacity(capacity(st, &opts)?), opts.solver))
+        // Its many programs: the result states which method answered each kind of them (the
+        // first limit analysis, the warm-started steps, the certificates of no equilibrium).
+        let (out, solves) = crate::lp::collecting(|| capacity(st, &opts));
+        let mut out = out?;
+        out.answered = crate::lp::SolverInfo::by_programs(&opts.solver, &solves);
+        Ok((Output::Capacity(out), opts.solver))
     }
 }

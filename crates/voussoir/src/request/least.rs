@@ -139,34 +139,43 @@ pub fn least_thickness(
         purpose: crate::lp::policy::Purpose::Feasibility,
         ..crate::lp::policy::ProblemClass::of_dim(if generator.dims() == 3 { 3 } else { 2 })
     });
-    let found = match generator {
-        Generator::Arch(a) => bisect(
-            |t| {
-                let m = crate::generate::arch(&ArchSpec {
-                    thickness: t,
-                    ..a.clone()
-                })?;
-                Structure::new(&m, build)
-            },
-            lo,
-            hi,
-            tol,
-            &solver,
-        )?,
-        Generator::Dome(d) => bisect(
-            |t| {
-                let m = crate::generate3d::dome(&DomeSpec {
-                    thickness: t,
-                    ..d.clone()
-                })?;
-                Structure3d::new(&m, build)
-            },
-            lo,
-            hi,
-            tol,
-            &solver,
-        )?,
-    };
+    // Its many decisions: the result states the method that answered them, every fallback
+    // taken and each decision's outcome, as `safety` does.
+    let kind = crate::lp::ProgramKind::set("bisection", "");
+    let (found, solves) = crate::lp::collecting(|| -> Result<_> {
+        Ok(match generator {
+            Generator::Arch(a) => bisect(
+                |t| {
+                    let m = crate::generate::arch(&ArchSpec {
+                        thickness: t,
+                        ..a.clone()
+                    })?;
+                    Structure::new(&m, build)
+                },
+                lo,
+                hi,
+                tol,
+                &solver,
+            )?,
+            Generator::Dome(d) => bisect(
+                |t| {
+                    let m = crate::generate3d::dome(&DomeSpec {
+                        thickness: t,
+                        ..d.clone()
+                    })?;
+                    Structure3d::new(&m, build)
+                },
+                lo,
+                hi,
+                tol,
+                &solver,
+            )?,
+        })
+    });
+    drop(kind);
+    let found = found?;
+    let answered = crate::lp::SolverInfo::by_programs(&solver, &solves);
+    let certified = crate::lp::answers_certified(&answered);
     let model = generator.model(found.thickness)?;
     let rc = centreline(radius, at, found.thickness);
     Ok(LeastThicknessRun {
@@ -175,7 +184,9 @@ pub fn least_thickness(
             centreline_radius: rc,
             thickness_over_radius: found.thickness / rc,
             found,
-            solver: solver.info(),
+            solver: crate::lp::SolverInfo::of_solves(&solver, &solves),
+            answered,
+            certified,
         },
         model,
     })

@@ -228,6 +228,7 @@ pub fn class<S: Assembly>(st: &S, req: &Request) -> ProblemClass {
     let purpose = match &req.analysis {
         Analysis::Safety(_) => Purpose::Feasibility,
         a if joint_laws(a).is_some_and(|l| l.non_associative) => Purpose::Iteration,
+        Analysis::Capacity(_) => Purpose::Curve,
         _ => Purpose::Optimise,
     };
     let conic = joint_laws(&req.analysis).is_some_and(|l| l.crushing == Crushing::Conic);

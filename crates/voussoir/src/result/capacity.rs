@@ -29,6 +29,63 @@ pub struct CapacityPoint<D: Spatial = Two> {
     /// model has none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub existing_cracks_open: Option<usize>,
+    /// The certificate of this step's answer ([`StepCertificate`]); absent where the joint
+    /// laws have none (cohesion, crushing, non-associative friction) or the step is locked.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub certificate: Option<StepCertificate>,
+}
+
+/// What a step's certificate certifies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StepCertificateKind {
+    /// λ (of either sign) against the kinematic multiplier of the mechanism read from the
+    /// duals, and that mechanism's admissibility: the certificate `limit` reports
+    /// ([`super::limit::LimitCertificate`]).
+    Multiplier,
+    /// No equilibrium for any λ: the elastic program's least violation of the equilibrium
+    /// rows, bounded away from zero by its duals (a Farkas certificate of infeasibility:
+    /// [`crate::lp::sequence::decide_feasibility`]).
+    NoEquilibrium,
+}
+
+/// The certificate of one step of a capacity curve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StepCertificate {
+    pub kind: StepCertificateKind,
+    /// `multiplier`: `|λ − λ_kin| / max(|λ|, 1e-3 λ_unit)`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gap: Option<f64>,
+    /// `multiplier`: the mechanism's largest violation of the joints, relative to its largest
+    /// opening.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub admissibility: Option<f64>,
+    /// `no_equilibrium`: the least total violation of the equilibrium rows, relative to the
+    /// largest row bound (the Farkas certificate proves it positive).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub violation: Option<f64>,
+    /// Certified: gap and admissibility within [`super::limit::CERTIFICATE_TOLERANCE`], or
+    /// the infeasibility decided with its certificate.
+    pub ok: bool,
+}
+
+/// The certificates of a whole curve: every step's, summed up (what the benchmark and the
+/// text summary read).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CapacityCertificate {
+    /// Steps of the curve.
+    pub steps: usize,
+    /// Of those, the ones answered with a certificate that holds.
+    pub certified: usize,
+    /// The steps (indices into `curve`) without a certificate that holds.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub uncertified_steps: Vec<usize>,
+    /// The largest gap and admissibility over the steps' multiplier certificates (0 when
+    /// there is none).
+    pub gap: f64,
+    pub admissibility: f64,
+    /// Every step certified.
+    pub ok: bool,
 }
 
 /// The collapse mechanism at one settlement.
@@ -145,6 +202,13 @@ pub struct CapacityResult<D: Spatial = Two> {
     pub direction: Vec<SupportDirection>,
     /// `{settlement, load_multiplier, valid, …}` for s = 0 … max.
     pub curve: Vec<CapacityPoint<D>>,
+    /// The certificates of the curve's steps, summed up (absent when there is no curve).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub certificate: Option<CapacityCertificate>,
+    /// Which method answered each kind of program, as `safety` reports it (the request layer
+    /// gathers it; empty, and not written, where it was not gathered).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub answered: Vec<crate::lp::ProgramAnswers>,
     /// The settlement at which λ reaches 0 (`null` if λ does not change sign in the range).
     pub zero_capacity_settlement: Option<f64>,
     /// The settlement at which the last point of the model's existing cracks closes (to the

@@ -90,6 +90,17 @@ pub struct LeastThicknessResult {
     pub centreline_radius: f64,
     pub thickness_over_radius: f64,
     pub solver: SolverInfo,
+    /// How each decision of the bisection was answered, as `safety` reports it
+    /// ([`SafetyResult::answered`]): per kind of program and method, the answers and their
+    /// outcome (`certified`: an equilibrium state checked on the program, or a feasibility
+    /// decided by the elastic program with its certificate either way; `infeasible`: the dual
+    /// simplex's proof of infeasibility).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub answered: Vec<lp::ProgramAnswers>,
+    /// Every decision answered with a certificate (each line of `answered` `certified` or
+    /// `infeasible`, a `not certified` answer counting only where a later line of its kind
+    /// decided it again).
+    pub certified: bool,
 }
 
 /// The reaction ranges and what they cost ([`crate::analysis::safety::reaction_ranges_by`]).

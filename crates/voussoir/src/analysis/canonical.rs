@@ -817,10 +817,10 @@ pub fn canonical_forces<S: Assembly>(
     };
     // The candidates, in order of preference. Each must also certify the result: on the façade
     // in running bond at 0.35 and 0.25 m the QP ends at Clarabel's reduced accuracy among
-    // self-stresses of 10⁶ kN (the fields near the least μ wedge the bond), its equilibrium
-    // rows off by up to 0.12 kN — within the check above, 1e-7 of that scale — which sum to
-    // 2.3 (0.35 m) and 10.2 kN·m (0.25 m) of work on the mechanism: gaps 1.3e-2 and 5.7e-2,
-    // where the admissible field (an LP trial's point) certifies to 1e-9.
+    // self-stresses of 1.5e6 and 4.4e7 kN (the fields near the least μ wedge the bond), its
+    // equilibrium rows off by up to 0.12 and 1.2 kN — within the check above, 1e-7 of that
+    // scale — which sum to 2.3 and 10.2 kN·m of work on the mechanism: gaps 1.3e-2 and 5.7e-2,
+    // where the admissible field (an LP trial's point) certifies (gaps 5e-10 and 9.1e-9).
     let mut candidates: Vec<(ForceSelection, Vec<f64>)> = Vec::new();
     match qs {
         Ok(qs) if qs.status == LpStatus::Optimal => {

@@ -84,7 +84,14 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
         let crit = match f.selected_by {
             ForceSelection::LeastEnergy => "least complementary energy",
             ForceSelection::Admissible => {
-                "an admissible field (the least-energy program did not end optimal: not the least-energy field, nor unique)"
+                if f.rejected.iter().any(|r| r.field == ForceSelection::LeastEnergy) {
+                    "an admissible field (the least-energy field did not certify: not the least-energy field, nor unique)"
+                } else {
+                    "an admissible field (the least-energy program did not end optimal: not the least-energy field, nor unique)"
+                }
+            }
+            ForceSelection::ForceProgram => {
+                "the force program's own optimum (no canonical field certified: not canonical, μ not imposed)"
             }
         };
         match (f.least_friction, f.friction) {
@@ -120,6 +127,18 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
                     f.largest_open_force
                 );
             }
+        }
+        if !f.rejected.is_empty() {
+            let list: Vec<String> = f
+                .rejected
+                .iter()
+                .map(|r| format!("{} (duality gap {:.1e})", r.field.name(), r.gap))
+                .collect();
+            let _ = writeln!(
+                s,
+                "canonical forces: not reported, their duality certificate failing with the mechanism: {}",
+                list.join(", ")
+            );
         }
         let ranged: Vec<&str> = f
             .reaction_ranges

@@ -76,9 +76,10 @@ pub struct CanonicalForces<D: Spatial = Two> {
     /// every joint has its own friction.
     #[serde(default)]
     pub friction_demand: Option<f64>,
-    /// What fixed the reported field: `least_energy` (the least complementary energy), or
-    /// `admissible` when the energy QP did not end optimal and the admissible field of the
-    /// last feasibility program at the imposed μ stands instead.
+    /// What fixed the reported field: `least_energy` (the least complementary energy);
+    /// `admissible` when the energy QP did not end optimal, or its field did not certify, and
+    /// the admissible field of the last feasibility program at the imposed μ stands instead;
+    /// `force_program` when neither certified (see `rejected`).
     #[serde(default)]
     pub selected_by: ForceSelection,
     /// Whether the open points carry nothing at all. False when every optimal field needs
@@ -95,6 +96,19 @@ pub struct CanonicalForces<D: Spatial = Two> {
     pub reaction_ranges: Vec<ReactionRange<D>>,
     /// Programs solved for the selection.
     pub solves: usize,
+    /// The candidate fields not reported because their duality certificate failed (each with
+    /// its relative gap), in the order they were tried: least energy, admissible, the force
+    /// program's own optimum. Empty when the first candidate certified.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub rejected: Vec<RejectedField>,
+}
+
+/// A candidate force field not reported: its certificate failed.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RejectedField {
+    pub field: ForceSelection,
+    /// Its relative duality gap with the reported mechanism (above the tolerance, 1e-7).
+    pub gap: f64,
 }
 
 /// What fixed the canonical force field among the admissible ones.
@@ -108,6 +122,21 @@ pub enum ForceSelection {
     /// program at the imposed μ), physical by the same rules but not the least-energy one, nor
     /// unique.
     Admissible,
+    /// Neither canonical field certified (its duality gap with the mechanism above 1e-7): the
+    /// optimum of the force program itself, solved through the solver layer's fallback chain
+    /// (an optimal field, not a canonical one: friction at the least μ not imposed).
+    ForceProgram,
+}
+
+impl ForceSelection {
+    /// A few words naming the field.
+    pub fn name(self) -> &'static str {
+        match self {
+            ForceSelection::LeastEnergy => "the least-energy field",
+            ForceSelection::Admissible => "the admissible field",
+            ForceSelection::ForceProgram => "the force program's optimum",
+        }
+    }
 }
 
 /// The canonical selection of a result.

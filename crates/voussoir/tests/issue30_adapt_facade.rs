@@ -173,10 +173,12 @@ fn issue30_item2_adapt_does_not_stop_after_one_small_step() {
 }
 
 /// The must-show's works: the façade at 0.5 m adapted from the grid and from triangles, within
-/// 2 % of each other and neither below either unadapted mesh. (The longest cracks are not
-/// within 1 m of each other: docs/cracks.md.)
+/// 2 % of each other and neither below either unadapted mesh. Not met (measured with the
+/// search trials on the force LP, docs/cracks.md): the grid reaches 388.03 kN·m, the triangles
+/// 418.42, 7.3 % apart; both are above both unadapted works (369.66, 384.71). The longest
+/// cracks are not within 1 m of each other either.
 #[test]
-#[ignore = "never completed in this session: the grid's adapted run takes 238 s of CPU, the triangles' did not finish in more than 540 s of CPU (load 7-10)"]
+#[ignore = "fails, measured: adapted grid 388.03, triangles 418.42 kN·m (7.3 % apart); the grid's run takes 277 s of CPU, the triangles' 376 s with --raw (load 3-9)"]
 fn issue30_item2_facade_adapted_from_grid_and_triangles_agree_in_work() {
     let grid = settling_facade(0.5, FacadeMesh::Grid);
     let tri = settling_facade(0.5, FacadeMesh::Triangles);

@@ -147,6 +147,28 @@ fn parse<T: serde::de::DeserializeOwned>(
         .map_err(|e| IoError(format!("invalid {what}: {e}")))
 }
 
+/// A side of a reaction range the canonical selection found unbounded is ±∞, which JSON writes
+/// as `null` (docs/canonical.md): read back as ±`f64::MAX`, so that a result is read as it was
+/// written (`voussoir plot` refused the adapted door panel's settlement: "invalid type: null,
+/// expected f64").
+fn unbounded_ranges(v: &mut serde_json::Value) {
+    let Some(ranges) = v
+        .pointer_mut("/canonical/forces/reaction_ranges")
+        .and_then(|r| r.as_array_mut())
+    else {
+        return;
+    };
+    for r in ranges {
+        for (side, big) in [("min", -f64::MAX), ("max", f64::MAX)] {
+            if let Some(w) = r.get_mut(side).and_then(|w| w.as_object_mut()) {
+                for x in w.values_mut().filter(|x| x.is_null()) {
+                    *x = serde_json::json!(big);
+                }
+            }
+        }
+    }
+}
+
 /// Recognise and parse a saved result or model, 2D or 3D.
 pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
     // Duplicate keys are refused as the analyses' readers refuse them (a `Value` would keep the
@@ -163,6 +185,8 @@ pub fn parse_saved(text: &str) -> Result<Saved, IoError> {
             IoError(format!("not JSON: {e}"))
         }
     })?;
+    let mut v = v;
+    unbounded_ranges(&mut v);
     let obj = v
         .as_object()
         .ok_or_else(|| IoError("expected a JSON object (a saved result or a model)".into()))?;

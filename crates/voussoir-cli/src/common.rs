@@ -185,10 +185,12 @@ pub const FRICTION_FACETS: std::ops::RangeInclusive<usize> = 3..=1024;
 #[derive(Args, Clone, Debug)]
 #[command(next_help_heading = "Solver")]
 pub struct SolverArgs {
-    /// LP method [default: the solver policy's: dual-simplex for 2D models of up to 2,000
-    /// blocks, clarabel above and for 3D models (docs/performance.md, "Solver policy"); a
-    /// method that fails or answers uncertified is followed by the next of its fallback chain,
-    /// and the result says so].
+    /// LP method [default: the solver policy's (docs/performance.md, "Solver policy"):
+    /// dual-simplex for 2D models of up to 2,000 blocks (300 with frictional joints), ipm
+    /// (HiGHS's interior point with crossover) above and for 3D models; in 3D, capacity curves
+    /// by dual-simplex up to 300 blocks and clarabel above; clarabel for cones and the
+    /// non-associative iteration. A method that fails or answers uncertified is followed by
+    /// the next of its fallback chain, and the result says so].
     #[arg(long, value_enum, ignore_case = true)]
     pub method: Option<MethodArg>,
 }

@@ -417,12 +417,29 @@ pub fn canonical_mechanism(
     // most rows of an exact face are equalities, which presolve removes, where a primal simplex
     // warm-started from stage 2 took thousands of pivots on the façade (346 s for one).
     let r = generic_functional(nd);
-    let extremes = |st: &mut Stages, face: &LinearProgram| -> Result<Option<(Vec<f64>, f64)>> {
+    let extremes = |st: &mut Stages,
+                    face: &LinearProgram,
+                    warm: Option<&Basis>|
+     -> Result<Option<(Vec<f64>, f64)>> {
         let mut lp = face.clone();
         lp.cost[..nd].copy_from_slice(&r);
-        let lo = st.solve_fresh(&lp)?;
+        let mut lo = st.solve_fresh(&lp)?;
         lp.maximise = true;
-        let hi = st.solve_fresh(&lp)?;
+        let mut hi = st.solve_fresh(&lp)?;
+        // From scratch, the dual simplex can find a face of nearly dependent held rows
+        // empty to its tolerances where the stage-2 vertex lies in it (the 30 × 20 wall with
+        // μ = 0.6: both extremes "infeasible"). Then from that vertex's basis, by the primal
+        // simplex, which stays on the face.
+        if let (Some(b), false) = (
+            warm,
+            lo.status == LpStatus::Optimal && hi.status == LpStatus::Optimal,
+        ) {
+            let mut b1 = Some(b.clone());
+            lp.maximise = false;
+            lo = st.solve(&lp, &mut b1)?;
+            lp.maximise = true;
+            hi = st.solve(&lp, &mut b1)?;
+        }
         Ok(
             (lo.status == LpStatus::Optimal && hi.status == LpStatus::Optimal).then(|| {
                 (
@@ -479,7 +496,7 @@ pub fn canonical_mechanism(
             )));
         }
     }
-    let Some((d3, spread2)) = extremes(&mut st, &face2)? else {
+    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.as_ref())? else {
         return Ok(None);
     };
     let face2_point = spread2 <= ptol;
@@ -494,7 +511,7 @@ pub fn canonical_mechanism(
     let unique = !changed2
         && face2_point
         && face1_spread.is_none()
-        && extremes(&mut st, &face1)?.is_some_and(|(_, w)| w <= ptol);
+        && extremes(&mut st, &face1, None)?.is_some_and(|(_, w)| w <= ptol);
     let selected_by = if unique {
         Selection::Optimum
     } else {

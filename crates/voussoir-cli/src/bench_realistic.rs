@@ -264,24 +264,11 @@ fn program_lines(v: &Value) -> Vec<ProgramLine> {
 /// every `not certified` answer re-solved by a later decided line of the same kind. An unknown
 /// outcome, or a `not certified` answer no later line of its kind covers, is not certified.
 pub fn answered_certified(lines: &[ProgramLine]) -> bool {
-    let mut pending: Vec<(&str, u64)> = vec![];
-    for l in lines {
-        let at = match pending.iter().position(|(k, _)| *k == l.programs) {
-            Some(i) => i,
-            None => {
-                pending.push((&l.programs, 0));
-                pending.len() - 1
-            }
-        };
-        match l.outcome.as_str() {
-            "not certified" => pending[at].1 += l.answers,
-            "certified" | "infeasible" | "unbounded" => {
-                pending[at].1 = pending[at].1.saturating_sub(l.answers)
-            }
-            _ => return false,
-        }
-    }
-    pending.iter().all(|(_, n)| *n == 0)
+    voussoir::lp::outcomes_certified(
+        lines
+            .iter()
+            .map(|l| (l.programs.as_str(), l.answers, l.outcome.as_str())),
+    )
 }
 
 /// Benchmark settings.

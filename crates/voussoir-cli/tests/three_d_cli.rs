@@ -3,28 +3,13 @@
 //! give the same blocks, interfaces, λ and settlement results; a 3D capacity run.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use vtkio::model::{Attribute, DataSet, Vtk};
 
-fn run(dir: &Path, args: &[&str]) -> String {
-    let o = Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run voussoir");
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
+mod common;
+use common::run;
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-3dcli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("3dcli", name)
 }
 
 fn json(path: &Path) -> serde_json::Value {

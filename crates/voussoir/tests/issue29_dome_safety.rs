@@ -14,40 +14,8 @@ use voussoir::lp::{Direction, LinearProgram, Method, SolverOptions};
 use voussoir::request::default_method;
 use voussoir::{Assembly, BuildOptions, Structure3d};
 
-/// Two unit boxes on a base, the upper one offset by `e` along x.
-fn offset_stack(e: f64) -> Structure3d {
-    let cuboid = |lo: [f64; 3], hi: [f64; 3]| -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
-        let v = (0..8)
-            .map(|i| {
-                [
-                    if i & 1 == 0 { lo[0] } else { hi[0] },
-                    if i & 2 == 0 { lo[1] } else { hi[1] },
-                    if i & 4 == 0 { lo[2] } else { hi[2] },
-                ]
-            })
-            .collect();
-        let f = vec![
-            vec![0, 2, 3, 1],
-            vec![4, 5, 7, 6],
-            vec![0, 1, 5, 4],
-            vec![2, 6, 7, 3],
-            vec![0, 4, 6, 2],
-            vec![1, 3, 7, 5],
-        ];
-        (v, f)
-    };
-    let block = |lo, hi| {
-        let (v, f) = cuboid(lo, hi);
-        serde_json::json!({"vertices": v, "faces": f})
-    };
-    let (bv, bf) = cuboid([-1.0, -1.0, -1.0], [3.0, 2.0, 0.0]);
-    let m: voussoir::model3d::Model3d = serde_json::from_value(serde_json::json!({
-        "blocks": [block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([e, 0.0, 1.0], [1.0 + e, 1.0, 2.0])],
-        "supports": [{"name": "base", "vertices": bv, "faces": bf}]
-    }))
-    .unwrap();
-    Structure3d::new(&m, BuildOptions::default()).unwrap()
-}
+mod support;
+use support::offset_stack;
 
 #[test]
 fn issue29_item3_the_bisection_decides_f0_only_where_it_must() {
@@ -61,7 +29,7 @@ fn issue29_item3_the_bisection_decides_f0_only_where_it_must() {
     };
     // By hand: the upper box offset by e = 0.3 needs the fraction e/(1 − e) = 3/7.
     let hand = 0.3 / 0.7;
-    let (f, solves) = least_joint_fraction(&offset_stack(0.3), 1e-7, &dual).unwrap();
+    let (f, solves) = least_joint_fraction(&offset_stack(0.3, 1.0), 1e-7, &dual).unwrap();
     let f = f.unwrap();
     assert!(
         f >= hand - 1e-9 && f <= hand + 1.01e-7,
@@ -71,11 +39,11 @@ fn issue29_item3_the_bisection_decides_f0_only_where_it_must() {
     assert_eq!(solves, 25);
     // Centred boxes stand with every joint a point at its centre: every halving stands, then
     // f = 0 is decided (and stands): the factor is unbounded.
-    let (f, solves) = least_joint_fraction(&offset_stack(0.0), 1e-7, &dual).unwrap();
+    let (f, solves) = least_joint_fraction(&offset_stack(0.0, 1.0), 1e-7, &dual).unwrap();
     assert_eq!(f, Some(0.0));
     assert_eq!(solves, 26);
     let r = safety(
-        &offset_stack(0.0),
+        &offset_stack(0.0, 1.0),
         &SafetyOptions {
             solver: SolverOptions {
                 method: default_method(3),

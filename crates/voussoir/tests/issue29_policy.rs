@@ -338,7 +338,8 @@ fn issue29_item2_a_forced_failure_of_the_default_method_is_answered_by_the_next(
 fn issue29_item2_friction_wall_settle_with_primal_simplex_falls_back() {
     // `settle --method primal-simplex --friction 0.6 --raw` on a 60 × 30 wall (1 × 0.5 m
     // units), the left 30 % of the base settling 1 cm: HiGHS's primal simplex stops with "Solve
-    // error"; the dual simplex answers, certified, with the dual simplex's own work.
+    // error"; the next method of its chain (the interior point with crossover since session
+    // 16) answers, certified, with the work of an independent solve by the dual simplex.
     let mut m = wall(&WallSpec {
         courses: 30,
         units: 60,

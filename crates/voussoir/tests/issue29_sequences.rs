@@ -14,6 +14,9 @@ use voussoir::model::Model;
 use voussoir::request::default_method;
 use voussoir::{Assembly, BuildOptions, Structure, Structure3d};
 
+mod support;
+use support::offset_stack;
+
 /// A block [0, 3] × [0, 1] (× `s`) on two supports under [0, 1] and [2, 3], friction `mu`.
 fn block_on_two_supports(s: f64, mu: f64) -> Structure {
     let p =
@@ -164,41 +167,6 @@ fn issue29_item4_warm_ranges_of_a_small_dome_equal_the_cold_ones() {
         // The supports together carry W, so their largest vertical reactions add up to more.
         assert!(total >= w * (1.0 - 1e-9), "{total} against {w}");
     }
-}
-
-/// Two boxes on a base, the upper one offset by `e` along x, every length × `s`.
-fn offset_stack(e: f64, s: f64) -> Structure3d {
-    let cuboid = |lo: [f64; 3], hi: [f64; 3]| -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
-        let v = (0..8)
-            .map(|i| {
-                [
-                    s * if i & 1 == 0 { lo[0] } else { hi[0] },
-                    s * if i & 2 == 0 { lo[1] } else { hi[1] },
-                    s * if i & 4 == 0 { lo[2] } else { hi[2] },
-                ]
-            })
-            .collect();
-        let f = vec![
-            vec![0, 2, 3, 1],
-            vec![4, 5, 7, 6],
-            vec![0, 1, 5, 4],
-            vec![2, 6, 7, 3],
-            vec![0, 4, 6, 2],
-            vec![1, 3, 7, 5],
-        ];
-        (v, f)
-    };
-    let block = |lo, hi| {
-        let (v, f) = cuboid(lo, hi);
-        serde_json::json!({"vertices": v, "faces": f})
-    };
-    let (bv, bf) = cuboid([-1.0, -1.0, -1.0], [3.0, 2.0, 0.0]);
-    let m: voussoir::model3d::Model3d = serde_json::from_value(serde_json::json!({
-        "blocks": [block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([e, 0.0, 1.0], [1.0 + e, 1.0, 2.0])],
-        "supports": [{"name": "base", "vertices": bv, "faces": bf}]
-    }))
-    .unwrap();
-    Structure3d::new(&m, BuildOptions::default()).unwrap()
 }
 
 #[test]

@@ -9,6 +9,9 @@ use voussoir::generate::{arch, ArchSpec, LiveLoad};
 use voussoir::lp::{fallback_chain, Method, SolverOptions};
 use voussoir::{BuildOptions, Structure};
 
+mod support;
+use support::offset_stack;
+
 fn paper_arch(live: LiveLoad) -> Structure {
     let mut m = arch(&ArchSpec {
         live,
@@ -87,41 +90,6 @@ fn a_settlement_whose_method_fails_is_answered_and_certified() {
     assert!(reference.solver.tried.is_empty());
     let json = serde_json::to_string(&reference).unwrap();
     assert!(!json.contains("\"tried\""), "{json}");
-}
-
-/// Two boxes on a base, the upper one offset by `e` along x, every length × `s`.
-fn offset_stack(e: f64, s: f64) -> voussoir::Structure3d {
-    let cuboid = |lo: [f64; 3], hi: [f64; 3]| -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
-        let v = (0..8)
-            .map(|i| {
-                [
-                    s * if i & 1 == 0 { lo[0] } else { hi[0] },
-                    s * if i & 2 == 0 { lo[1] } else { hi[1] },
-                    s * if i & 4 == 0 { lo[2] } else { hi[2] },
-                ]
-            })
-            .collect();
-        let f = vec![
-            vec![0, 2, 3, 1],
-            vec![4, 5, 7, 6],
-            vec![0, 1, 5, 4],
-            vec![2, 6, 7, 3],
-            vec![0, 4, 6, 2],
-            vec![1, 3, 7, 5],
-        ];
-        (v, f)
-    };
-    let block = |lo, hi| {
-        let (v, f) = cuboid(lo, hi);
-        serde_json::json!({"vertices": v, "faces": f})
-    };
-    let (bv, bf) = cuboid([-1.0, -1.0, -1.0], [3.0, 2.0, 0.0]);
-    let m: voussoir::model3d::Model3d = serde_json::from_value(serde_json::json!({
-        "blocks": [block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([e, 0.0, 1.0], [1.0 + e, 1.0, 2.0])],
-        "supports": [{"name": "base", "vertices": bv, "faces": bf}]
-    }))
-    .unwrap();
-    voussoir::Structure3d::new(&m, BuildOptions::default()).unwrap()
 }
 
 #[test]

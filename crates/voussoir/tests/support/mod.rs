@@ -8,7 +8,7 @@ use voussoir::generate::{wall, WallSpec};
 use voussoir::lp::{self, LpStatus, Method, SolverOptions};
 use voussoir::programs;
 use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::{BuildOptions, Structure};
+use voussoir::{BuildOptions, Structure, Structure3d};
 
 /// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
 /// `settle --profile uniform:2.8,4.0,-0.01`.
@@ -76,4 +76,39 @@ pub fn least_friction_by_bisection(st: &Structure, r: &SettlementResult) -> f64 
         }
     }
     hi
+}
+
+/// Two boxes on a base, the upper one offset by `e` along x, every length × `s`.
+pub fn offset_stack(e: f64, s: f64) -> Structure3d {
+    let cuboid = |lo: [f64; 3], hi: [f64; 3]| -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
+        let v = (0..8)
+            .map(|i| {
+                [
+                    s * if i & 1 == 0 { lo[0] } else { hi[0] },
+                    s * if i & 2 == 0 { lo[1] } else { hi[1] },
+                    s * if i & 4 == 0 { lo[2] } else { hi[2] },
+                ]
+            })
+            .collect();
+        let f = vec![
+            vec![0, 2, 3, 1],
+            vec![4, 5, 7, 6],
+            vec![0, 1, 5, 4],
+            vec![2, 6, 7, 3],
+            vec![0, 4, 6, 2],
+            vec![1, 3, 7, 5],
+        ];
+        (v, f)
+    };
+    let block = |lo, hi| {
+        let (v, f) = cuboid(lo, hi);
+        serde_json::json!({"vertices": v, "faces": f})
+    };
+    let (bv, bf) = cuboid([-1.0, -1.0, -1.0], [3.0, 2.0, 0.0]);
+    let m: voussoir::model3d::Model3d = serde_json::from_value(serde_json::json!({
+        "blocks": [block([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), block([e, 0.0, 1.0], [1.0 + e, 1.0, 2.0])],
+        "supports": [{"name": "base", "vertices": bv, "faces": bf}]
+    }))
+    .unwrap();
+    Structure3d::new(&m, BuildOptions::default()).unwrap()
 }

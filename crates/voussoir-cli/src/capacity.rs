@@ -37,6 +37,8 @@ pub struct CapacityArgs {
     #[command(flatten)]
     pub crushing: crate::common::CrushingArgs,
     #[command(flatten)]
+    pub canonical: crate::canonical::RawArgs,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -55,6 +57,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         crushing: a.crushing.crushing(),
         facets: a.crushing.facets,
         non_associative: a.crushing.non_associative,
+        raw: a.canonical.raw,
     };
     let req = a
         .model
@@ -201,6 +204,24 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
             s,
             "hinges opened by the settlement: joints {}",
             hinges.join(", ")
+        );
+    }
+    if let Some(c) = &r.canonical {
+        let how = match &c.settlement {
+            Some(m) if m.unique => "the settlement mechanism is unique".to_string(),
+            Some(m) => format!(
+                "the settlement mechanism is not unique: the canonical one is used ({})",
+                match m.selected_by {
+                    voussoir::analysis::canonical::Selection::LeastCrackArea => "least crack area",
+                    _ => "least crack area, then the generic tie-break",
+                }
+            ),
+            None => "the settlement mechanism's selection was not reached".to_string(),
+        };
+        let _ = writeln!(
+            s,
+            "canonical: {how}; collapse mechanisms selected at {} steps ({} differ from the solver's)",
+            c.steps_selected, c.steps_changed
         );
     }
     s.push_str(&crate::common::cracks_section(

@@ -84,6 +84,10 @@ pub struct CapacityOptions {
     /// (the fixed-point iteration of [`crate::analysis::nonassociative`]); None: associative.
     pub nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
     pub solver: SolverOptions,
+    /// The canonical selection (docs/canonical.md) of the settlement mechanism and of every
+    /// step's collapse mechanism (the mechanism stages only: λ is unchanged); `None`: the
+    /// solver's own. Only with the inscribed polygons and associative friction.
+    pub canonical: Option<crate::analysis::canonical::CanonicalOptions>,
 }
 
 impl Default for CapacityOptions {
@@ -98,6 +102,7 @@ impl Default for CapacityOptions {
             facets: DEFAULT_FACETS,
             nonassociative: None,
             solver: SolverOptions::default(),
+            canonical: None,
         }
     }
 }
@@ -145,12 +150,18 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     }
     check_facets(opts.facets)?;
     let kind = lp::ProgramKind::set("settlement", "");
-    let path = SettlementPath::with_laws(
+    // The canonical selection applies to LP optima: not to cone programs or the
+    // non-associative iteration.
+    let canonical = opts
+        .canonical
+        .filter(|_| opts.crushing == Crushing::Linear && opts.nonassociative.is_none());
+    let path = SettlementPath::with_canonical(
         st,
         &opts.solver,
         opts.crushing,
         opts.facets,
         opts.nonassociative,
+        canonical,
     )?;
     drop(kind);
     let smax = path.max_settlement;
@@ -181,8 +192,16 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             solves: 0,
             iterations: 0,
             geometry: st.shapes(),
+            canonical: None,
         });
     }
+    let mut selection = canonical.map(|_| CapacityCanonical {
+        settlement: path.selection.clone(),
+        steps_selected: 0,
+        steps_changed: 0,
+        steps_not_reached: vec![],
+        solves: path.selection.as_ref().map_or(0, |m| m.solves),
+    });
     let umap = KinematicMap::new(&path.unit);
     let (pn0, pt0) = (
         vec![0.0; umap.num_points()],
@@ -270,6 +289,32 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             sol.status = LimitStatus::NoEquilibrium;
         }
         values.push(signed_lambda(&sol));
+        // The canonical collapse mechanism among the step's optima (λ unchanged).
+        if let (Some(copts), Some(rec)) = (canonical.as_ref(), selection.as_mut()) {
+            if sol.status == LimitStatus::Collapse && !sol.mechanism.is_empty() {
+                let _kind = lp::ProgramKind::set(
+                    "canonical selection",
+                    "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
+                );
+                match crate::analysis::canonical::limit_mechanism(
+                    &dst,
+                    &map,
+                    &sol,
+                    &opts.solver,
+                    copts,
+                )? {
+                    Some((d, m)) => {
+                        rec.steps_selected += 1;
+                        rec.solves += m.solves;
+                        if m.changed {
+                            rec.steps_changed += 1;
+                            sol.mechanism = d;
+                        }
+                    }
+                    None => rec.steps_not_reached.push(i),
+                }
+            }
+        }
         let closing = closing_joints(&dst, &map, &sol.mechanism);
         let hinges = if sol.mechanism.is_empty() {
             vec![]
@@ -396,6 +441,18 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             c.admissibility
         );
     }
+    if let Some(c) = selection.as_ref() {
+        if c.settlement.is_none() {
+            message.push_str("; the canonical selection of the settlement mechanism was not reached: the solver's own deforms the structure, which may depend on the method");
+        }
+        if !c.steps_not_reached.is_empty() {
+            message.push_str(&format!(
+                "; the canonical selection was not reached at {} of {} collapse steps: the solver's own mechanism is reported there",
+                c.steps_not_reached.len(),
+                c.steps_not_reached.len() + c.steps_selected
+            ));
+        }
+    }
     if invalid > 0 {
         message.push_str(&format!(
             "; WARNING: at {invalid} of {} settlements the collapse mechanism closes cracks opened by the settlement, so limit analysis is not valid there (use the incremental analysis)",
@@ -421,6 +478,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         solves,
         iterations,
         geometry: st.shapes(),
+        canonical: selection,
     })
 }
 

@@ -38,6 +38,12 @@ pub struct CapacityArgs {
     pub crushing: crate::common::CrushingArgs,
     #[command(flatten)]
     pub canonical: crate::canonical::RawArgs,
+    /// Also select the canonical collapse mechanism of every step (by default only the
+    /// settlement mechanism, which deforms the structure, is canonical; the steps' mechanisms
+    /// are the solver's). Costly on 3D models: 37× the raw CPU time on the README's vault
+    /// (docs/canonical.md).
+    #[arg(long, help_heading = "Canonical solution")]
+    pub canonical_steps: bool,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -58,6 +64,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         facets: a.crushing.facets,
         non_associative: a.crushing.non_associative,
         raw: a.canonical.raw,
+        canonical_steps: a.canonical_steps,
     };
     let req = a
         .model
@@ -218,11 +225,18 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
             ),
             None => "the settlement mechanism's selection was not reached".to_string(),
         };
-        let _ = writeln!(
-            s,
-            "canonical: {how}; collapse mechanisms selected at {} steps ({} differ from the solver's)",
-            c.steps_selected, c.steps_changed
-        );
+        if c.steps {
+            let _ = writeln!(
+                s,
+                "canonical: {how}; collapse mechanisms selected at {} steps ({} differ from the solver's)",
+                c.steps_selected, c.steps_changed
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "canonical: {how}; the steps' collapse mechanisms are the solver's (--canonical-steps selects them)"
+            );
+        }
     }
     s.push_str(&crate::common::cracks_section(
         "cracks at the largest settlement",

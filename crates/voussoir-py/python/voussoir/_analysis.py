@@ -295,6 +295,7 @@ def capacity(
     friction_facets: Optional[int] = None,
     friction_cone: Optional[str] = None,
     raw: bool = False,
+    canonical_steps: bool = False,
     executor=None,
 ) -> CapacityResult:
     """Load capacity after a settlement (``voussoir capacity``): λ against the settlement (limit
@@ -306,6 +307,8 @@ def capacity(
     The settlement mechanism and each step's collapse mechanism are the canonical ones (least
     crack area among the optimal mechanisms, then a generic tie-break; docs/canonical.md), in
     2D and 3D; ``raw=True`` reports the solver's own (``--raw``; λ is the same).
+    ``canonical_steps=True`` selects every step's collapse mechanism too (``--canonical-steps``;
+    costly in 3D; by default the settlement mechanism, which deforms the structure, only).
     Other keywords as :func:`settle` and :func:`limit`.
     """
     m = _model(model)
@@ -324,6 +327,8 @@ def capacity(
         }
         if raw:
             analysis["raw"] = True
+        if canonical_steps:
+            analysis["canonical_steps"] = True
         return a3.run("capacity", m._json, c3, analysis, executor)
     if split is not None:
         raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
@@ -339,6 +344,8 @@ def capacity(
     }
     if raw:
         a["raw"] = True
+    if canonical_steps:
+        a["canonical_steps"] = True
     r = o.request(
         a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile),

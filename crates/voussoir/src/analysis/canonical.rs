@@ -1210,9 +1210,9 @@ pub fn settlement_mechanism<S: Assembly>(
 }
 
 /// The canonical collapse mechanism alone (no force stage) among the optima of the limit
-/// program of `st` on `map`, whose solver's solution is `sol` (a collapse): the kinematic
-/// program solved for the duals that fix the optimal face, then the mechanism stages. `None`
-/// where `sol` is no collapse, the kinematic program is not optimal or a stage did not solve.
+/// program of `st` on `map`, whose solver's solution is `sol` (a multiplier, λ ≥ 0 or not):
+/// the kinematic program solved for the duals that fix the optimal face, then the mechanism
+/// stages. `None` where `sol` has no multiplier, the kinematic program is not optimal or a stage did not solve.
 /// The mechanism is in the normalisation of `sol.mechanism` (λ unchanged).
 pub fn limit_mechanism<S: Assembly>(
     st: &S,
@@ -1221,7 +1221,9 @@ pub fn limit_mechanism<S: Assembly>(
     opts: &SolverOptions,
     copts: &CanonicalOptions,
 ) -> Result<Option<(Vec<f64>, CanonicalMechanism)>> {
-    if sol.status != LimitStatus::Collapse || sol.mechanism.is_empty() {
+    // A multiplier and its mechanism: a collapse, or a negative λ (no equilibrium under the
+    // dead loads alone, as a capacity curve's steps past its zero report it).
+    if sol.lambda.is_none() || sol.mechanism.is_empty() {
         return Ok(None);
     }
     let (dead, live) = (st.load_vector(false), st.load_vector(true));
@@ -1239,7 +1241,7 @@ pub fn limit_mechanism<S: Assembly>(
     // A limit mechanism's openings are N d: support motions do not enter.
     let mut kmap = map.clone();
     kmap.support_normal.iter_mut().for_each(|g| *g = 0.0);
-    canonical_mechanism(
+    let found = canonical_mechanism(
         &kmap,
         &kp.lp,
         &first,
@@ -1247,6 +1249,31 @@ pub fn limit_mechanism<S: Assembly>(
         basis,
         &weights,
         &o,
+        copts,
+    )?;
+    if found.is_some() || !first.method.is_interior() {
+        return Ok(found);
+    }
+    // As for a settlement ([`settlement_selection`]): an interior point's duals that did not
+    // fix the optimal face; cross over to a vertex with the dual simplex and select from there
+    // (the README's dome tilted, with Clarabel).
+    let vo = SolverOptions {
+        method: Method::DualSimplex,
+        ..*opts
+    };
+    let mut vbasis = None;
+    let vertex = lp::solve_warm(&kp.lp, &vo, &mut vbasis)?;
+    if vertex.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    canonical_mechanism(
+        &kmap,
+        &kp.lp,
+        &vertex,
+        &sol.mechanism,
+        vbasis,
+        &weights,
+        &vo,
         copts,
     )
 }

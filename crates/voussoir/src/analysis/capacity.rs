@@ -84,10 +84,13 @@ pub struct CapacityOptions {
     /// (the fixed-point iteration of [`crate::analysis::nonassociative`]); None: associative.
     pub nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
     pub solver: SolverOptions,
-    /// The canonical selection (docs/canonical.md) of the settlement mechanism and of every
-    /// step's collapse mechanism (the mechanism stages only: λ is unchanged); `None`: the
-    /// solver's own. Only with the inscribed polygons and associative friction.
+    /// The canonical selection (docs/canonical.md) of the settlement mechanism, which deforms
+    /// the structure (the mechanism stages only); `None`: the solver's own. Only with the
+    /// inscribed polygons and associative friction.
     pub canonical: Option<crate::analysis::canonical::CanonicalOptions>,
+    /// With `canonical`: also select every step's collapse mechanism (λ unchanged). Costly on
+    /// deformed 3D geometry (the README's vault: 37× the raw CPU time, docs/performance.md).
+    pub canonical_steps: bool,
 }
 
 impl Default for CapacityOptions {
@@ -103,6 +106,7 @@ impl Default for CapacityOptions {
             nonassociative: None,
             solver: SolverOptions::default(),
             canonical: None,
+            canonical_steps: false,
         }
     }
 }
@@ -197,6 +201,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     }
     let mut selection = canonical.map(|_| CapacityCanonical {
         settlement: path.selection.clone(),
+        steps: opts.canonical_steps,
         steps_selected: 0,
         steps_changed: 0,
         steps_not_reached: vec![],
@@ -290,8 +295,10 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         }
         values.push(signed_lambda(&sol));
         // The canonical collapse mechanism among the step's optima (λ unchanged).
-        if let (Some(copts), Some(rec)) = (canonical.as_ref(), selection.as_mut()) {
-            if sol.status == LimitStatus::Collapse && !sol.mechanism.is_empty() {
+        if let (Some(copts), Some(rec), true) =
+            (canonical.as_ref(), selection.as_mut(), opts.canonical_steps)
+        {
+            if sol.lambda.is_some() && !sol.mechanism.is_empty() {
                 let _kind = lp::ProgramKind::set(
                     "canonical selection",
                     "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
@@ -447,7 +454,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         }
         if !c.steps_not_reached.is_empty() {
             message.push_str(&format!(
-                "; the canonical selection was not reached at {} of {} collapse steps: the solver's own mechanism is reported there",
+                "; the canonical selection was not reached at {} of {} steps with a multiplier: the solver's own mechanism is reported there",
                 c.steps_not_reached.len(),
                 c.steps_not_reached.len() + c.steps_selected
             ));

@@ -40,6 +40,10 @@ pub struct CapacityRequest {
     /// ones (which the exact cones and non-associative friction do anyway).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub raw: bool,
+    /// Also the canonical collapse mechanism of every step (costly on deformed 3D geometry:
+    /// docs/canonical.md); by default only the settlement mechanism is selected.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub canonical_steps: bool,
 }
 
 impl Default for CapacityRequest {
@@ -53,6 +57,7 @@ impl Default for CapacityRequest {
             facets: None,
             non_associative: false,
             raw: false,
+            canonical_steps: false,
         }
     }
 }
@@ -87,6 +92,23 @@ impl CapacityRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
+        if self.canonical_steps && !self.canonical(req, dims) {
+            // The steps' selection is a stage of the canonical selection: without it, it would
+            // be silently left out.
+            let why = if self.raw {
+                n.name("raw")
+            } else if self.non_associative {
+                n.name("non_associative")
+            } else if dims == 3 {
+                n.given("friction_cone", "exact")
+            } else {
+                n.given("crushing", "conic")
+            };
+            return invalid(format!(
+                "{} applies to the canonical selection, which {why} leaves out",
+                n.name("canonical_steps")
+            ));
+        }
         if dims == 3 {
             if self.laws().strength_given() {
                 return invalid(format!(
@@ -139,6 +161,7 @@ impl CapacityRequest {
                 req.solver.options(class)
             },
             canonical: self.canonical(req, dims).then(super::mechanism_options),
+            canonical_steps: self.canonical_steps,
             ..CapacityOptions::default()
         }
     }

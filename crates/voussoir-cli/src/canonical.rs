@@ -42,8 +42,8 @@ pub struct RawArgs {
     /// Report the solver's own optimal mechanisms instead of the canonical ones (the default in
     /// 2D and 3D): faster, but where the optimum is not unique the hinges and cracks depend on
     /// --method; λ, the critical tilt and the works are the same either way
-    /// (docs/canonical.md). With --crushing conic, --friction-cone exact or
-    /// --non-associative the solver's own is reported anyway.
+    /// (docs/canonical.md). Where the selection does not apply (the exact friction cone, conic
+    /// crushing, non-associative friction) the solver's own is reported anyway.
     #[arg(long)]
     pub raw: bool,
 }

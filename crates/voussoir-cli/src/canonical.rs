@@ -34,6 +34,20 @@ pub struct CanonicalArgs {
     pub least_friction_precision: Option<f64>,
 }
 
+/// `capacity`, `tilt` and `sweep`: the canonical mechanism is their default too (least crack
+/// area among the optimal mechanisms, then a generic tie-break; docs/canonical.md).
+#[derive(Args, Clone, Debug)]
+#[command(next_help_heading = "Canonical solution")]
+pub struct RawArgs {
+    /// Report the solver's own optimal mechanisms instead of the canonical ones (the default in
+    /// 2D and 3D): faster, but where the optimum is not unique the hinges and cracks depend on
+    /// --method; λ, the critical tilt and the works are the same either way
+    /// (docs/canonical.md). Where the selection does not apply (the exact friction cone, conic
+    /// crushing, non-associative friction) the solver's own is reported anyway.
+    #[arg(long)]
+    pub raw: bool,
+}
+
 /// `limit`'s flags: the canonical selection is opt-in there (docs/canonical.md: on a symmetric
 /// arch the generic tie-break picks one of two mirror mechanisms).
 #[derive(Args, Clone, Debug)]

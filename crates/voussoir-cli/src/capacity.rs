@@ -37,6 +37,14 @@ pub struct CapacityArgs {
     #[command(flatten)]
     pub crushing: crate::common::CrushingArgs,
     #[command(flatten)]
+    pub canonical: crate::canonical::RawArgs,
+    /// Also select the canonical collapse mechanism of every step (by default only the
+    /// settlement mechanism, which deforms the structure, is canonical; the steps' mechanisms
+    /// are the solver's). Costly on 3D models: 37× the raw CPU time on the README's vault
+    /// (docs/canonical.md).
+    #[arg(long, help_heading = "Canonical solution")]
+    pub canonical_steps: bool,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -55,6 +63,8 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
         crushing: a.crushing.crushing(),
         facets: a.crushing.facets,
         non_associative: a.crushing.non_associative,
+        raw: a.canonical.raw,
+        canonical_steps: a.canonical_steps,
     };
     let req = a
         .model
@@ -202,6 +212,31 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
             "hinges opened by the settlement: joints {}",
             hinges.join(", ")
         );
+    }
+    if let Some(c) = &r.canonical {
+        let how = match &c.settlement {
+            Some(m) if m.unique => "the settlement mechanism is unique".to_string(),
+            Some(m) => format!(
+                "the settlement mechanism is not unique: the canonical one is used ({})",
+                match m.selected_by {
+                    voussoir::analysis::canonical::Selection::LeastCrackArea => "least crack area",
+                    _ => "least crack area, then the generic tie-break",
+                }
+            ),
+            None => "the settlement mechanism's selection was not reached".to_string(),
+        };
+        if c.steps {
+            let _ = writeln!(
+                s,
+                "canonical: {how}; collapse mechanisms selected at {} steps ({} differ from the solver's)",
+                c.steps_selected, c.steps_changed
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "canonical: {how}; the steps' collapse mechanisms are the solver's (--canonical-steps selects them)"
+            );
+        }
     }
     s.push_str(&crate::common::cracks_section(
         "cracks at the largest settlement",

@@ -17,6 +17,8 @@ pub struct SweepArgs {
     /// The base settlement: moves, fixed supports, profile (as for `settle`).
     #[command(flatten)]
     pub settle: SettleArgs,
+    #[command(flatten)]
+    pub canonical: crate::canonical::RawArgs,
     /// Magnitude sweep: N analyses, the base motions scaled by k/N, k = 1 … N. (`--steps` is
     /// another name of this flag.)
     #[arg(long, alias = "steps", value_name = "N")]
@@ -139,6 +141,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
         capacity_steps: a.capacity_steps,
         shard: shard.map(|(i, n)| [i, n]),
         tasks: None,
+        raw: a.canonical.raw,
     };
     let req = a
         .model

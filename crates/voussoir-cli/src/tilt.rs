@@ -22,6 +22,8 @@ pub struct TiltArgs {
     )]
     pub direction: Option<Direction>,
     #[command(flatten)]
+    pub canonical: crate::canonical::RawArgs,
+    #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub out: OutArgs,
@@ -41,6 +43,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
     let tilt = TiltRequest {
         azimuth: given.azimuth("--direction").map_err(Fail)?,
         label: Some(given.text()),
+        raw: a.canonical.raw,
     };
     // In 3D every direction is an azimuth: +x is 0°, -x 180°, +y 90°.
     let az = tilt.normalised();
@@ -92,6 +95,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                         let _ = writeln!(s, "{}", r.limit.message);
                     }
                 }
+                s.push_str(&crate::canonical::summary(&r.limit.canonical));
                 s
             })
         }
@@ -132,6 +136,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                         let _ = writeln!(s, "{}", r.limit.message);
                     }
                 }
+                s.push_str(&crate::canonical::summary(&r.limit.canonical));
                 s
             })
         }

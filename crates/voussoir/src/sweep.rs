@@ -74,8 +74,14 @@ pub struct SweepSpec {
     pub solver: SolverOptions,
     pub form: SettlementForm,
     /// Also run the capacity analysis after each settlement, with these options (their solver
-    /// is replaced by `solver`); `None`: settlement analyses only.
+    /// and canonical selection are replaced by `solver` and `canonical`); `None`: settlement
+    /// analyses only.
     pub capacity: Option<CapacityOptions>,
+    /// The canonical selection (docs/canonical.md) of each settlement's mechanism (and of the
+    /// capacity curves' mechanisms): hinges and open joints that do not depend on the LP
+    /// method; `None`: the solver's own. The mechanism stages only (the forces are the force
+    /// program's: work and certificate unchanged).
+    pub canonical: Option<crate::analysis::canonical::CanonicalOptions>,
 }
 
 /// Deterministic random numbers (SplitMix64), so that a seed means the same samples everywhere.
@@ -221,12 +227,16 @@ where
         }
         st.set_support_motion(s, mo);
     }
-    let r = settle_with(&st, &spec.solver, spec.form)?;
+    let r = match &spec.canonical {
+        Some(c) => crate::analysis::canonical::settle_canonical(&st, &spec.solver, spec.form, c)?,
+        None => settle_with(&st, &spec.solver, spec.form)?,
+    };
     // A capacity analysis that fails (a solver failure on one deformed geometry) is recorded
     // as such, so that one sample does not stop a Monte Carlo of hundreds.
     let capacity = spec.capacity.as_ref().map(|o| {
         let o = CapacityOptions {
             solver: spec.solver,
+            canonical: spec.canonical,
             ..*o
         };
         capacity_record(&st, &o).unwrap_or_else(|e| CapacityRecord::failed(&e))

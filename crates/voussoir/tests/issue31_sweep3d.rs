@@ -48,6 +48,7 @@ fn spec(kind: SweepKind, solver: SolverOptions) -> SweepSpec {
         solver,
         form: SettlementForm::Both,
         capacity: None,
+        canonical: None,
     }
 }
 

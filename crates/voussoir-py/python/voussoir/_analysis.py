@@ -294,6 +294,8 @@ def capacity(
     split: Union[str, Iterable[str], None] = None,
     friction_facets: Optional[int] = None,
     friction_cone: Optional[str] = None,
+    raw: bool = False,
+    canonical_steps: bool = False,
     executor=None,
 ) -> CapacityResult:
     """Load capacity after a settlement (``voussoir capacity``): λ against the settlement (limit
@@ -302,6 +304,11 @@ def capacity(
 
     ``keep_fixed``: keep ``fixed`` supports tied after the settlement (default: contact joints).
     ``no_mechanisms``: leave each step's mechanism out of the JSON. ``cold``: no HiGHS hot start.
+    The settlement mechanism and each step's collapse mechanism are the canonical ones (least
+    crack area among the optimal mechanisms, then a generic tie-break; docs/canonical.md), in
+    2D and 3D; ``raw=True`` reports the solver's own (``--raw``; λ is the same).
+    ``canonical_steps=True`` selects every step's collapse mechanism too (``--canonical-steps``;
+    costly in 3D; by default the settlement mechanism, which deforms the structure, only).
     Other keywords as :func:`settle` and :func:`limit`.
     """
     m = _model(model)
@@ -318,6 +325,10 @@ def capacity(
             "crushing": crushing,
             "facets": facets,
         }
+        if raw:
+            analysis["raw"] = True
+        if canonical_steps:
+            analysis["canonical_steps"] = True
         return a3.run("capacity", m._json, c3, analysis, executor)
     if split is not None:
         raise ValueError("split applies to 3D models here; in 2D cut the support in the model")
@@ -331,6 +342,10 @@ def capacity(
         "cold": bool(cold),
         **o.laws(crushing, facets, non_associative),
     }
+    if raw:
+        a["raw"] = True
+    if canonical_steps:
+        a["canonical_steps"] = True
     r = o.request(
         a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength, motion=o.motion(move, fixed, profile),
@@ -401,18 +416,25 @@ def tilt(
     compressive_strength: Optional[float] = None,
     friction_facets: Optional[int] = None,
     friction_cone: Optional[str] = None,
+    raw: bool = False,
     executor=None,
 ) -> TiltResult:
     """Tilting-table analysis (``voussoir tilt``): the critical tilt angle (degrees) towards
     ``direction``, as the CLI's ``--direction`` on a 2D model: along x, ``"+x"`` or ``"-x"``
     (or 0, 180, (dx, 0)). A 3D model tilts towards any horizontal direction: ``"+y"``, an
-    azimuth in degrees from +x towards +y, (dx, dy)."""
+    azimuth in degrees from +x towards +y, (dx, dy). The collapse mechanism is the canonical one
+    (least crack area among the optimal mechanisms, then a generic tie-break;
+    docs/canonical.md); ``raw=True`` reports the solver's own (``--raw``; the angle is the
+    same)."""
     m = _model(model)
     if m.dim == 3:
         from ._generate3d import azimuth
 
         c3 = a3.common3d(tolerance, method, friction, compressive_strength, friction_facets, friction_cone)
-        return a3.run("tilt", m._json, c3, {"azimuth": azimuth("direction", direction)}, executor)
+        t = {"azimuth": azimuth("direction", direction)}
+        if raw:
+            t["raw"] = True
+        return a3.run("tilt", m._json, c3, t, executor)
     if friction_facets is not None or friction_cone is not None:
         _planar(m, "tilt", friction_facets, friction_cone)
     import math
@@ -421,8 +443,11 @@ def tilt(
     exact = {(1.0, 0.0): 0.0, (0.0, 1.0): 90.0, (-1.0, 0.0): 180.0, (0.0, -1.0): 270.0}
     u = (dx / math.hypot(dx, dy), dy / math.hypot(dx, dy))
     azimuth = exact.get(u, math.degrees(math.atan2(dy, dx)) % 360.0)
+    t = {"type": "tilt", "azimuth": azimuth}
+    if raw:
+        t["raw"] = True
     r = o.request(
-        {"type": "tilt", "azimuth": azimuth}, tolerance=tolerance, method=method,
+        t, tolerance=tolerance, method=method,
         friction=friction, compressive_strength=compressive_strength,
     )
     return _dispatch("tilt", m, (r,), executor)
@@ -472,6 +497,7 @@ def sweep(
     split: Union[str, Iterable[str], None] = None,
     friction_facets: Optional[int] = None,
     friction_cone: Optional[str] = None,
+    raw: bool = False,
 ) -> SweepResult:
     """Many settlement analyses (``voussoir sweep``): give exactly one of
 
@@ -492,6 +518,9 @@ def sweep(
     of a model extruded along y); ``split`` and ``friction_facets`` as for :func:`settle`; the
     default method is the solver policy's (as the CLI's in 3D); ``friction_cone="exact"`` is
     refused (a sweep solves the friction pyramid).
+
+    Each settlement's mechanism (hinges, open joints) is the canonical one (docs/canonical.md);
+    ``raw=True`` reports the solver's own (``--raw``; the works are the same).
     """
     magnitudes = o.renamed("magnitudes", magnitudes, "steps", steps)
     angles = o.renamed("angles", angles, "directions", directions)
@@ -519,6 +548,8 @@ def sweep(
         "seed": seed,
         "settlement_form": o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS),
     }
+    if raw:
+        a["raw"] = True
     req = json.loads(_request(
         m, a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength, friction_facets=friction_facets,

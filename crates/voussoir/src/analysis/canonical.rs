@@ -1086,26 +1086,8 @@ pub fn settle_canonical<S: Assembly>(
     let value = primal.objective;
     let weights = tributary_weights(st, &map);
     let t0 = std::time::Instant::now();
-    let mut found = canonical_mechanism(&map, &mp.lp, &primal, &raw, basis, &weights, &o, copts)?;
+    let found = settlement_selection(&map, &mp, &primal, &raw, basis, &weights, &o, opts, copts)?;
     trace("mechanism", t0);
-    if found.is_none() && primal.method.is_interior() {
-        // The interior point's duals did not fix the optimal face (its solution is optimal
-        // only to the solver's tolerance): cross over to a vertex with the dual simplex, as
-        // HiGHS's crossover would, and select from there. (Not after a vertex: its duals are
-        // exact, and the dual simplex would find the same face again; on the 30 × 20 wall
-        // with μ = 0.6 that second pass took 81 s to reach the same dead end.)
-        let vo = SolverOptions {
-            method: Method::DualSimplex,
-            ..*opts
-        };
-        let mut vbasis = None;
-        let vertex = lp::solve_warm(&mp.lp, &vo, &mut vbasis)?;
-        if vertex.status == LpStatus::Optimal {
-            let vraw = mp.motion(&vertex.x);
-            found =
-                canonical_mechanism(&map, &mp.lp, &vertex, &vraw, vbasis, &weights, &vo, copts)?;
-        }
-    }
     let (d, mech) = match found {
         Some((d, m)) => (d, Some(m)),
         None => (raw, None),
@@ -1166,6 +1148,136 @@ pub fn settle_canonical<S: Assembly>(
     Ok(r)
 }
 
+/// The mechanism stages of a settlement from the motion program's solution `primal` (its
+/// mechanism `raw`, its basis `basis`); after an interior point whose duals did not fix the
+/// optimal face, again from a vertex of the dual simplex.
+#[allow(clippy::too_many_arguments)]
+fn settlement_selection(
+    map: &KinematicMap,
+    mp: &programs::MotionProgram,
+    primal: &lp::LpSolution,
+    raw: &[f64],
+    basis: Option<Basis>,
+    weights: &[f64],
+    o: &SolverOptions,
+    opts: &SolverOptions,
+    copts: &CanonicalOptions,
+) -> Result<Option<(Vec<f64>, CanonicalMechanism)>> {
+    let found = canonical_mechanism(map, &mp.lp, primal, raw, basis, weights, o, copts)?;
+    if found.is_some() || !primal.method.is_interior() {
+        return Ok(found);
+    }
+    // The interior point's duals did not fix the optimal face (its solution is optimal only to
+    // the solver's tolerance): cross over to a vertex with the dual simplex, as HiGHS's
+    // crossover would, and select from there. (Not after a vertex: its duals are exact, and the
+    // dual simplex would find the same face again; on the 30 × 20 wall with μ = 0.6 that second
+    // pass took 81 s to reach the same dead end.)
+    let vo = SolverOptions {
+        method: Method::DualSimplex,
+        ..*opts
+    };
+    let mut vbasis = None;
+    let vertex = lp::solve_warm(&mp.lp, &vo, &mut vbasis)?;
+    if vertex.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    let vraw = mp.motion(&vertex.x);
+    canonical_mechanism(map, &mp.lp, &vertex, &vraw, vbasis, weights, &vo, copts)
+}
+
+/// The canonical settlement mechanism alone (no force stage) of `st` on its map `map` (its
+/// facets as the caller set them): the motion program solved again, then the mechanism
+/// stages of [`settle_canonical`]. `None` where the motion program is not optimal or a stage
+/// did not solve (the caller keeps the solver's mechanism). What capacity curves deform the
+/// structure with and sweeps report (docs/canonical.md).
+pub fn settlement_mechanism<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+    copts: &CanonicalOptions,
+) -> Result<Option<(Vec<f64>, CanonicalMechanism)>> {
+    let dead = st.load_vector(false);
+    let mp = programs::settlement_motion_program(map, &dead)?;
+    let o = stage_options(opts);
+    let mut basis = None;
+    let primal = lp::solve_warm(&mp.lp, &o, &mut basis)?;
+    if primal.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    let raw = mp.motion(&primal.x);
+    let weights = tributary_weights(st, map);
+    settlement_selection(map, &mp, &primal, &raw, basis, &weights, &o, opts, copts)
+}
+
+/// The canonical collapse mechanism alone (no force stage) among the optima of the limit
+/// program of `st` on `map`, whose solver's solution is `sol` (a multiplier, λ ≥ 0 or not):
+/// the kinematic program solved for the duals that fix the optimal face, then the mechanism
+/// stages. `None` where `sol` has no multiplier, the kinematic program is not optimal or a stage did not solve.
+/// The mechanism is in the normalisation of `sol.mechanism` (λ unchanged).
+pub fn limit_mechanism<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    sol: &LimitSolution,
+    opts: &SolverOptions,
+    copts: &CanonicalOptions,
+) -> Result<Option<(Vec<f64>, CanonicalMechanism)>> {
+    // A multiplier and its mechanism: a collapse, or a negative λ (no equilibrium under the
+    // dead loads alone, as a capacity curve's steps past its zero report it).
+    if sol.lambda.is_none() || sol.mechanism.is_empty() {
+        return Ok(None);
+    }
+    let (dead, live) = (st.load_vector(false), st.load_vector(true));
+    let fp = programs::limit_force_program(map, &dead, &live);
+    let kp = programs::kinematic_program(&fp)?;
+    // The kinematic program (its maximisation's optimum is −λ; `y = −d`), solved for the
+    // duals that fix its optimal face.
+    let o = stage_options(opts);
+    let mut basis = None;
+    let first = lp::solve_warm(&kp.lp, &o, &mut basis)?;
+    if first.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    let weights = tributary_weights(st, map);
+    // A limit mechanism's openings are N d: support motions do not enter.
+    let mut kmap = map.clone();
+    kmap.support_normal.iter_mut().for_each(|g| *g = 0.0);
+    let found = canonical_mechanism(
+        &kmap,
+        &kp.lp,
+        &first,
+        &sol.mechanism,
+        basis,
+        &weights,
+        &o,
+        copts,
+    )?;
+    if found.is_some() || !first.method.is_interior() {
+        return Ok(found);
+    }
+    // As for a settlement ([`settlement_selection`]): an interior point's duals that did not
+    // fix the optimal face; cross over to a vertex with the dual simplex and select from there
+    // (the README's dome tilted, with Clarabel).
+    let vo = SolverOptions {
+        method: Method::DualSimplex,
+        ..*opts
+    };
+    let mut vbasis = None;
+    let vertex = lp::solve_warm(&kp.lp, &vo, &mut vbasis)?;
+    if vertex.status != LpStatus::Optimal {
+        return Ok(None);
+    }
+    canonical_mechanism(
+        &kmap,
+        &kp.lp,
+        &vertex,
+        &sol.mechanism,
+        vbasis,
+        &weights,
+        &vo,
+        copts,
+    )
+}
+
 /// The work of a settlement force field on the support motions, with the closing gaps' term of
 /// the force program's objective (`programs::settlement_force_program`: a point with a gap `Δ`
 /// on a joint of infinite strength costs `Δ` per unit normal force).
@@ -1200,31 +1312,9 @@ pub fn limit_canonical<S: Assembly>(
     }
     let (dead, live) = (st.load_vector(false), st.load_vector(true));
     let lambda = s.lambda.unwrap_or(0.0);
-    let fp = programs::limit_force_program(&map, &dead, &live);
-    let kp = programs::kinematic_program(&fp)?;
-    // The kinematic program (its maximisation's optimum is −λ; `y = −d`), solved for the
-    // duals that fix its optimal face.
     let o = stage_options(opts);
-    let mut basis = None;
-    let first = lp::solve_warm(&kp.lp, &o, &mut basis)?;
-    if first.status != LpStatus::Optimal {
-        return Ok(limit::limit_result(st, &map, &s));
-    }
     let weights = tributary_weights(st, &map);
-    // A limit mechanism's openings are N d: support motions do not enter.
-    let mut kmap = map.clone();
-    kmap.support_normal.iter_mut().for_each(|g| *g = 0.0);
-    let Some((d, mech)) = canonical_mechanism(
-        &kmap,
-        &kp.lp,
-        &first,
-        &s.mechanism,
-        basis,
-        &weights,
-        &o,
-        copts,
-    )?
-    else {
+    let Some((d, mech)) = limit_mechanism(st, &map, &s, opts, copts)? else {
         return Ok(limit::limit_result(st, &map, &s));
     };
     if mech.changed {

@@ -84,6 +84,13 @@ pub struct CapacityOptions {
     /// (the fixed-point iteration of [`crate::analysis::nonassociative`]); None: associative.
     pub nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
     pub solver: SolverOptions,
+    /// The canonical selection (docs/canonical.md) of the settlement mechanism, which deforms
+    /// the structure (the mechanism stages only); `None`: the solver's own. Only with the
+    /// inscribed polygons and associative friction.
+    pub canonical: Option<crate::analysis::canonical::CanonicalOptions>,
+    /// With `canonical`: also select every step's collapse mechanism (λ unchanged). Costly on
+    /// deformed 3D geometry (the README's vault: 37× the raw CPU time, docs/performance.md).
+    pub canonical_steps: bool,
 }
 
 impl Default for CapacityOptions {
@@ -98,6 +105,8 @@ impl Default for CapacityOptions {
             facets: DEFAULT_FACETS,
             nonassociative: None,
             solver: SolverOptions::default(),
+            canonical: None,
+            canonical_steps: false,
         }
     }
 }
@@ -145,12 +154,18 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     }
     check_facets(opts.facets)?;
     let kind = lp::ProgramKind::set("settlement", "");
-    let path = SettlementPath::with_laws(
+    // The canonical selection applies to LP optima: not to cone programs or the
+    // non-associative iteration.
+    let canonical = opts
+        .canonical
+        .filter(|_| opts.crushing == Crushing::Linear && opts.nonassociative.is_none());
+    let path = SettlementPath::with_canonical(
         st,
         &opts.solver,
         opts.crushing,
         opts.facets,
         opts.nonassociative,
+        canonical,
     )?;
     drop(kind);
     let smax = path.max_settlement;
@@ -181,8 +196,17 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             solves: 0,
             iterations: 0,
             geometry: st.shapes(),
+            canonical: None,
         });
     }
+    let mut selection = canonical.map(|_| CapacityCanonical {
+        settlement: path.selection.clone(),
+        steps: opts.canonical_steps,
+        steps_selected: 0,
+        steps_changed: 0,
+        steps_not_reached: vec![],
+        solves: path.selection.as_ref().map_or(0, |m| m.solves),
+    });
     let umap = KinematicMap::new(&path.unit);
     let (pn0, pt0) = (
         vec![0.0; umap.num_points()],
@@ -270,6 +294,34 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             sol.status = LimitStatus::NoEquilibrium;
         }
         values.push(signed_lambda(&sol));
+        // The canonical collapse mechanism among the step's optima (λ unchanged).
+        if let (Some(copts), Some(rec), true) =
+            (canonical.as_ref(), selection.as_mut(), opts.canonical_steps)
+        {
+            if sol.lambda.is_some() && !sol.mechanism.is_empty() {
+                let _kind = lp::ProgramKind::set(
+                    "canonical selection",
+                    "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
+                );
+                match crate::analysis::canonical::limit_mechanism(
+                    &dst,
+                    &map,
+                    &sol,
+                    &opts.solver,
+                    copts,
+                )? {
+                    Some((d, m)) => {
+                        rec.steps_selected += 1;
+                        rec.solves += m.solves;
+                        if m.changed {
+                            rec.steps_changed += 1;
+                            sol.mechanism = d;
+                        }
+                    }
+                    None => rec.steps_not_reached.push(i),
+                }
+            }
+        }
         let closing = closing_joints(&dst, &map, &sol.mechanism);
         let hinges = if sol.mechanism.is_empty() {
             vec![]
@@ -396,6 +448,18 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             c.admissibility
         );
     }
+    if let Some(c) = selection.as_ref() {
+        if c.settlement.is_none() {
+            message.push_str("; the canonical selection of the settlement mechanism was not reached: the solver's own deforms the structure, which may depend on the method");
+        }
+        if !c.steps_not_reached.is_empty() {
+            message.push_str(&format!(
+                "; the canonical selection was not reached at {} of {} steps with a multiplier: the solver's own mechanism is reported there",
+                c.steps_not_reached.len(),
+                c.steps_not_reached.len() + c.steps_selected
+            ));
+        }
+    }
     if invalid > 0 {
         message.push_str(&format!(
             "; WARNING: at {invalid} of {} settlements the collapse mechanism closes cracks opened by the settlement, so limit analysis is not valid there (use the incremental analysis)",
@@ -421,6 +485,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         solves,
         iterations,
         geometry: st.shapes(),
+        canonical: selection,
     })
 }
 

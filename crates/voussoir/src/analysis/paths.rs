@@ -124,6 +124,11 @@ pub struct SettlementPath<S: Assembly = Structure> {
     crushing: Crushing,
     facets: usize,
     nonassociative: Option<NonAssociativeOptions>,
+    canonical: Option<crate::analysis::canonical::CanonicalOptions>,
+    /// With the canonical selection ([`SettlementPath::with_canonical`]): how the settlement
+    /// mechanism was selected; `None` without it, or where it was not reached (the solver's
+    /// mechanism then stands).
+    pub selection: Option<crate::analysis::canonical::CanonicalMechanism>,
 }
 
 impl<S: Assembly> SettlementPath<S> {
@@ -149,6 +154,22 @@ impl<S: Assembly> SettlementPath<S> {
         crushing: Crushing,
         facets: usize,
         nonassociative: Option<NonAssociativeOptions>,
+    ) -> Result<SettlementPath<S>> {
+        Self::with_canonical(st, solver, crushing, facets, nonassociative, None)
+    }
+
+    /// [`SettlementPath::with_laws`] with the canonical settlement mechanism where `canonical`
+    /// is given ([`crate::analysis::canonical::settlement_mechanism`]: least crack area among
+    /// the optimal mechanisms, then the generic tie-break), so that the deformed structures do
+    /// not depend on the LP method. Only with the inscribed polygons and associative friction
+    /// (other laws: the solver's mechanism).
+    pub fn with_canonical(
+        st: &S,
+        solver: &SolverOptions,
+        crushing: Crushing,
+        facets: usize,
+        nonassociative: Option<NonAssociativeOptions>,
+        canonical: Option<crate::analysis::canonical::CanonicalOptions>,
     ) -> Result<SettlementPath<S>> {
         let mag = st.settlement_magnitude();
         if !(mag.is_finite() && mag > 0.0) {
@@ -181,9 +202,12 @@ impl<S: Assembly> SettlementPath<S> {
             crushing,
             facets,
             nonassociative,
+            canonical,
+            selection: None,
         };
         if path.existing_cracks.is_empty() {
-            let sol = path.solve(&path.unit, &mut map)?;
+            let (sol, selection) = path.solve(&path.unit, &mut map)?;
+            path.selection = selection;
             if sol.status == SettlementStatus::Mechanism {
                 (path.openings, path.open_tol) =
                     path.unit.joint_openings(&map, &sol.mechanism, 1.0);
@@ -191,8 +215,9 @@ impl<S: Assembly> SettlementPath<S> {
             path.status = sol.status;
             path.mechanism = sol.mechanism;
         } else {
-            let (at, map, sol) = path.solve_at(mag)?;
+            let (at, map, sol, selection) = path.solve_at(mag)?;
             let _ = (at, map);
+            path.selection = selection;
             path.status = sol.status;
             path.mechanism = sol.mechanism.iter().map(|x| x / mag).collect();
         }
@@ -200,19 +225,61 @@ impl<S: Assembly> SettlementPath<S> {
     }
 
     /// The structure with the support motions of a settlement `s`, its map and its solution.
-    fn solve_at(&self, s: f64) -> Result<(S, KinematicMap, SettlementSolution)> {
+    #[allow(clippy::type_complexity)]
+    fn solve_at(
+        &self,
+        s: f64,
+    ) -> Result<(
+        S,
+        KinematicMap,
+        SettlementSolution,
+        Option<crate::analysis::canonical::CanonicalMechanism>,
+    )> {
         let motions: Vec<Vec<f64>> = (0..self.unit.num_supports())
             .map(|k| self.unit.support_motion(k).iter().map(|x| x * s).collect())
             .collect();
         let at = self.unit.with_support_motions(&motions);
         let mut map = KinematicMap::new(&at);
         map.facets = self.facets;
-        let sol = self.solve(&at, &mut map)?;
-        Ok((at, map, sol))
+        let (sol, selection) = self.solve(&at, &mut map)?;
+        Ok((at, map, sol, selection))
     }
 
-    /// One settlement solve under the path's joint laws.
-    fn solve(&self, st: &S, map: &mut KinematicMap) -> Result<SettlementSolution> {
+    /// One settlement solve under the path's joint laws; with the canonical selection (the
+    /// inscribed polygons, associative friction) its mechanism replaced by the canonical one,
+    /// with how it was selected.
+    fn solve(
+        &self,
+        st: &S,
+        map: &mut KinematicMap,
+    ) -> Result<(
+        SettlementSolution,
+        Option<crate::analysis::canonical::CanonicalMechanism>,
+    )> {
+        let mut sol = self.solve_raw(st, map)?;
+        let Some(copts) = self
+            .canonical
+            .filter(|_| self.nonassociative.is_none() && self.crushing == Crushing::Linear)
+        else {
+            return Ok((sol, None));
+        };
+        if sol.status != SettlementStatus::Mechanism {
+            return Ok((sol, None));
+        }
+        let _kind = lp::ProgramKind::set(
+            "canonical selection",
+            "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
+        );
+        match crate::analysis::canonical::settlement_mechanism(st, map, &self.solver, &copts)? {
+            Some((d, m)) => {
+                sol.mechanism = d;
+                Ok((sol, Some(m)))
+            }
+            None => Ok((sol, None)),
+        }
+    }
+
+    fn solve_raw(&self, st: &S, map: &mut KinematicMap) -> Result<SettlementSolution> {
         match &self.nonassociative {
             Some(o) => Ok(
                 crate::analysis::nonassociative::solve_settlement_nonassociative(
@@ -237,7 +304,7 @@ impl<S: Assembly> SettlementPath<S> {
             self.unit
                 .deformed(&self.mechanism, s, &self.openings, s.abs() * self.open_tol)
         } else {
-            let (at, map, sol) = self.solve_at(s)?;
+            let (at, map, sol, _) = self.solve_at(s)?;
             if sol.status != SettlementStatus::Mechanism {
                 return Err(Error::Request(format!(
                     "at a settlement of {s} m: {}",

@@ -93,3 +93,23 @@ pub fn tilt_along<S: Assembly>(
     };
     Ok((tilt_angle, limit))
 }
+
+/// [`tilt_along`] with the canonical collapse mechanism (and, with `copts.forces`, forces) of
+/// the tilted structure ([`crate::analysis::canonical::limit_canonical`]; docs/canonical.md):
+/// the same critical tilt, hinges that do not depend on the LP method. The inscribed polygons
+/// only (the exact cones: [`tilt_along`]).
+pub fn tilt_along_canonical<S: Assembly>(
+    st: &S,
+    direction: <S::D as Dim>::Vector,
+    opts: &SolverOptions,
+    copts: &crate::analysis::canonical::CanonicalOptions,
+) -> Result<(Option<f64>, LimitResult<S::D>)> {
+    let s = st.with_weight_as_live_load(direction)?;
+    let limit =
+        crate::analysis::canonical::limit_canonical(&s, opts, super::limit::DEFAULT_FACETS, copts)?;
+    let tilt_angle = match (limit.status, limit.load_multiplier) {
+        (LimitStatus::Collapse, Some(l)) => Some(l.atan().to_degrees()),
+        _ => None,
+    };
+    Ok((tilt_angle, limit))
+}

@@ -12,7 +12,8 @@ use serde::{Deserialize, Serialize};
 
 /// Options of a capacity analysis. Defaults: 40 intervals, `fixed` supports released after
 /// the settlement, every step's mechanism kept, hot starts, the joint laws of
-/// [`super::LimitRequest`].
+/// [`super::LimitRequest`], the canonical settlement and collapse mechanisms
+/// (docs/canonical.md).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct CapacityRequest {
@@ -35,6 +36,14 @@ pub struct CapacityRequest {
     /// Non-associative Coulomb friction in the settlement and every limit analysis.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub non_associative: bool,
+    /// Report the solver's own settlement and collapse mechanisms instead of the canonical
+    /// ones (which the exact cones and non-associative friction do anyway).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub raw: bool,
+    /// Also the canonical collapse mechanism of every step (costly on deformed 3D geometry:
+    /// docs/canonical.md); by default only the settlement mechanism is selected.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub canonical_steps: bool,
 }
 
 impl Default for CapacityRequest {
@@ -47,6 +56,8 @@ impl Default for CapacityRequest {
             crushing: Crushing::Linear,
             facets: None,
             non_associative: false,
+            raw: false,
+            canonical_steps: false,
         }
     }
 }
@@ -81,6 +92,23 @@ impl CapacityRequest {
 
     pub(super) fn check_dimension(&self, req: &Request, dims: usize) -> Result<()> {
         let n = req.names;
+        if self.canonical_steps && !self.canonical(req, dims) {
+            // The steps' selection is a stage of the canonical selection: without it, it would
+            // be silently left out.
+            let why = if self.raw {
+                n.name("raw")
+            } else if self.non_associative {
+                n.name("non_associative")
+            } else if dims == 3 {
+                n.given("friction_cone", "exact")
+            } else {
+                n.given("crushing", "conic")
+            };
+            return invalid(format!(
+                "{} applies to the canonical selection, which {why} leaves out",
+                n.name("canonical_steps")
+            ));
+        }
         if dims == 3 {
             if self.laws().strength_given() {
                 return invalid(format!(
@@ -132,8 +160,23 @@ impl CapacityRequest {
             } else {
                 req.solver.options(class)
             },
+            canonical: self.canonical(req, dims).then(super::mechanism_options),
+            canonical_steps: self.canonical_steps,
             ..CapacityOptions::default()
         }
+    }
+
+    /// Whether the canonical selection runs: unless `raw`, with the inscribed polygons and
+    /// associative friction (a cone program's optimum is an interior point; the non-associative
+    /// iteration's last iterate is reported as is), in 2D and 3D alike.
+    pub fn canonical(&self, req: &Request, dims: usize) -> bool {
+        !self.raw
+            && !self.non_associative
+            && if dims == 3 {
+                !req.model.exact_cone()
+            } else {
+                self.crushing == Crushing::Linear
+            }
     }
 
     pub(super) fn solve<S: Assembly>(

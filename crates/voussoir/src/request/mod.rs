@@ -357,6 +357,17 @@ fn canonical_options(
     }
 }
 
+/// The canonical selection of the mechanism alone (no force stage, no reaction ranges): what
+/// capacity curves and sweeps report of it (hinges, open joints, drawn mechanisms; their forces
+/// are not reported, or are the force program's: docs/canonical.md).
+fn mechanism_options() -> CanonicalOptions {
+    CanonicalOptions {
+        forces: false,
+        reaction_ranges: false,
+        ..CanonicalOptions::default()
+    }
+}
+
 /// The analysis to run, with its options.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "type", rename_all = "kebab-case")]
@@ -806,9 +817,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             let (setup, adapt) = adapted(setup, req)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
-                    let solver = req.solver.options(&class(&setup.structure, req));
-                    let dir = t.sign_2d(req)?;
-                    let r = crate::analysis::tilt::tilt(&setup.structure, dir, &solver)?;
+                    let (r, solver) = t.solve_2d(&setup.structure, req)?;
                     (Output::Tilt(r), solver)
                 }
                 _ => solve_more(&setup.structure, req, 2, moves, hooks)?,
@@ -832,13 +841,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
-                    let solver = req.solver.options(&class(&setup.structure, req));
-                    let az = t.normalised();
-                    let r = if req.model.exact_cone() {
-                        crate::analysis::tilt::tilt_azimuth_exact(&setup.structure, az, &solver)?
-                    } else {
-                        crate::analysis::tilt::tilt_azimuth(&setup.structure, az, &solver)?
-                    };
+                    let (r, solver) = t.solve_3d(&setup.structure, req)?;
                     (Output::Tilt(r), solver)
                 }
                 _ => solve_more(&setup.structure, req, 3, moves, hooks)?,

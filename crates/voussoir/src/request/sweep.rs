@@ -46,6 +46,10 @@ pub struct SweepRequest {
     /// shard's).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tasks: Option<Vec<usize>>,
+    /// Report each settlement's (and capacity curve's) solver's own mechanism instead of the
+    /// canonical one (docs/canonical.md).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub raw: bool,
 }
 
 impl Default for SweepRequest {
@@ -61,6 +65,7 @@ impl Default for SweepRequest {
             capacity_steps: 40,
             shard: None,
             tasks: None,
+            raw: false,
         }
     }
 }
@@ -115,6 +120,9 @@ impl SweepRequest {
                 mechanisms: false,
                 ..CapacityOptions::default()
             }),
+            // The mechanism stages only: a sweep's records hold the hinges, open joints and
+            // works, not the forces.
+            canonical: (!self.raw).then(super::mechanism_options),
         })
     }
 

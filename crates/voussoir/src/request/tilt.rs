@@ -1,10 +1,15 @@
 //! The tilting table: the critical tilt of the base towards a horizontal direction.
 
 use super::{invalid, Request};
+use crate::analysis::tilt::{tilt_along, tilt_along_canonical, TiltResult};
+use crate::dim::Three;
 use crate::error::Result;
+use crate::lp::SolverOptions;
+use crate::structure::{Structure, Structure3d};
 use serde::{Deserialize, Serialize};
 
-/// Options of a tilting-table analysis. Default: towards +x (azimuth 0°).
+/// Options of a tilting-table analysis. Default: towards +x (azimuth 0°), the canonical
+/// collapse mechanism (docs/canonical.md).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct TiltRequest {
@@ -14,6 +19,9 @@ pub struct TiltRequest {
     /// How the front end wrote the direction (`+x`, `1,1`), for messages; not part of the JSON.
     #[serde(skip)]
     pub label: Option<String>,
+    /// Report the solver's own collapse mechanism instead of the canonical one.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub raw: bool,
 }
 
 impl TiltRequest {
@@ -42,6 +50,72 @@ impl TiltRequest {
             ));
         }
         Ok(())
+    }
+
+    /// Whether the canonical selection runs: unless `raw`, and not with the exact friction cone
+    /// (a cone program, whose optimum is an interior point: the solver's own is reported, as
+    /// `settle` does).
+    pub fn canonical(&self, req: &Request) -> bool {
+        !self.raw && !req.model.exact_cone()
+    }
+
+    /// The canonical selection's options: the mechanism stages only. With the force stage
+    /// (the least-μ bisection) the README's vault and dome took 3.6× and 4.8× the raw CPU time
+    /// (docs/performance.md, session 16); `limit --canonical` on the tilted model gives the
+    /// canonical forces. The forces reported are the solver's optimal field, which is
+    /// complementary to every optimal mechanism, the canonical one included.
+    fn canonical_options(_dims: usize) -> crate::analysis::canonical::CanonicalOptions {
+        super::mechanism_options()
+    }
+
+    /// The 2D tilting table (towards +x or −x).
+    pub(super) fn solve_2d(
+        &self,
+        st: &Structure,
+        req: &Request,
+    ) -> Result<(TiltResult, SolverOptions)> {
+        let solver = req.solver.options(&super::class(st, req));
+        let direction = self.sign_2d(req)?;
+        let (tilt_angle, limit) = if self.canonical(req) {
+            tilt_along_canonical(st, [direction, 0.0], &solver, &Self::canonical_options(2))?
+        } else {
+            tilt_along(st, [direction, 0.0], &solver, false)?
+        };
+        Ok((
+            TiltResult {
+                tilt_angle,
+                direction,
+                azimuth: None,
+                limit,
+            },
+            solver,
+        ))
+    }
+
+    /// The 3D tilting table (towards the azimuth), with the exact friction cone when asked.
+    pub(super) fn solve_3d(
+        &self,
+        st: &Structure3d,
+        req: &Request,
+    ) -> Result<(TiltResult<Three>, SolverOptions)> {
+        let solver = req.solver.options(&super::class(st, req));
+        let azimuth = self.normalised();
+        let a = azimuth.to_radians();
+        let direction = [a.cos(), a.sin(), 0.0];
+        let (tilt_angle, limit) = if self.canonical(req) {
+            tilt_along_canonical(st, direction, &solver, &Self::canonical_options(3))?
+        } else {
+            tilt_along(st, direction, &solver, req.model.exact_cone())?
+        };
+        Ok((
+            TiltResult {
+                tilt_angle,
+                direction: 1.0,
+                azimuth: Some(azimuth),
+                limit,
+            },
+            solver,
+        ))
     }
 
     /// 2D: +1 (+x) or −1 (−x).

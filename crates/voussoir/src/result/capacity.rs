@@ -232,6 +232,32 @@ pub struct CapacityResult<D: Spatial = Two> {
     pub iterations: i64,
     /// The undeformed geometry.
     pub geometry: D::Shapes,
+    /// The canonical selection (docs/canonical.md): how the settlement mechanism and the
+    /// steps' collapse mechanisms were selected; absent without it (`raw`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub canonical: Option<CapacityCanonical>,
+}
+
+/// The canonical selection of a capacity curve: the settlement mechanism that deforms the
+/// structure (its hinges and cracks, the deformed geometry) is the canonical one, so that it
+/// does not depend on the LP method; with `canonical_steps`, each step's collapse mechanism
+/// (hinges, closing joints, drawn mechanism) too. λ is the solver's (the selection only picks
+/// among the optimal mechanisms).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CapacityCanonical {
+    /// How the settlement mechanism was selected (`null`: not reached, the solver's stands).
+    pub settlement: Option<super::canonical::CanonicalMechanism>,
+    /// Whether the steps' collapse mechanisms were selected (else they are the solver's).
+    pub steps: bool,
+    /// Steps whose collapse mechanism was selected, and of those the ones where it differs from
+    /// the solver's.
+    pub steps_selected: usize,
+    pub steps_changed: usize,
+    /// Steps with a multiplier where the selection was not reached (the solver's mechanism is reported).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub steps_not_reached: Vec<usize>,
+    /// Programs solved for the selection.
+    pub solves: usize,
 }
 
 impl<D: Spatial> CapacityResult<D> {

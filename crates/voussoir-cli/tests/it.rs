@@ -33,6 +33,8 @@ mod issue28_scale;
 mod issue29_bench;
 #[path = "issue29_bench2.rs"]
 mod issue29_bench2;
+#[path = "issue29_canonical_default_cli.rs"]
+mod issue29_canonical_default_cli;
 #[path = "issue29_capacity_cert_cli.rs"]
 mod issue29_capacity_cert_cli;
 #[path = "issue29_fixes_cli.rs"]
@@ -94,15 +96,9 @@ fn every_test_file_is_a_module() {
     let mut missing = Vec::new();
     for e in std::fs::read_dir(&dir).expect("the tests directory") {
         let name = e.unwrap().file_name().into_string().unwrap();
-        if name.ends_with(".rs")
-            && name != "it.rs"
-            && !me.contains(&format!("#[path = \"{name}\"]"))
-        {
+        if name.ends_with(".rs") && name != "it.rs" && !me.contains(&format!("#[path = \"{name}\"]")) {
             missing.push(name);
         }
     }
-    assert!(
-        missing.is_empty(),
-        "test files not in tests/it.rs (never compiled): {missing:?}"
-    );
+    assert!(missing.is_empty(), "test files not in tests/it.rs (never compiled): {missing:?}");
 }

@@ -41,6 +41,8 @@ mod issue28_scale;
 mod issue29_canonical;
 #[path = "issue29_canonical3d.rs"]
 mod issue29_canonical3d;
+#[path = "issue29_canonical_default_all.rs"]
+mod issue29_canonical_default_all;
 #[path = "issue29_capacity_cert.rs"]
 mod issue29_capacity_cert;
 #[path = "issue29_cert025.rs"]
@@ -122,15 +124,9 @@ fn every_test_file_is_a_module() {
     let mut missing = Vec::new();
     for e in std::fs::read_dir(&dir).expect("the tests directory") {
         let name = e.unwrap().file_name().into_string().unwrap();
-        if name.ends_with(".rs")
-            && name != "it.rs"
-            && !me.contains(&format!("#[path = \"{name}\"]"))
-        {
+        if name.ends_with(".rs") && name != "it.rs" && !me.contains(&format!("#[path = \"{name}\"]")) {
             missing.push(name);
         }
     }
-    assert!(
-        missing.is_empty(),
-        "test files not in tests/it.rs (never compiled): {missing:?}"
-    );
+    assert!(missing.is_empty(), "test files not in tests/it.rs (never compiled): {missing:?}");
 }

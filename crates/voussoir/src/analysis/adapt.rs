@@ -60,6 +60,12 @@ pub struct AdaptOptions {
     pub evaluations: usize,
     /// Half the arc of the outline searched for each end, as a fraction of the wall's diagonal.
     pub reach: f64,
+    /// Crack lines placed by the global stage before the local one (0: no global stage): each
+    /// chosen greedily, one at a time, among the candidate lines from the outline's corners
+    /// and the ends of the settling zone over a fan of directions.
+    pub global_lines: usize,
+    /// Directions of the global stage's fan, over the full circle (36: every 10°).
+    pub fan: usize,
 }
 
 impl Default for AdaptOptions {
@@ -70,6 +76,8 @@ impl Default for AdaptOptions {
             lines_per_iteration: 3,
             evaluations: 5,
             reach: 0.1,
+            global_lines: 3,
+            fan: 36,
         }
     }
 }
@@ -257,10 +265,100 @@ where
     let mut converged = false;
     let mut small = 0usize;
     let reach = o.reach * region.size;
-    for it in 1..=o.iterations {
+    // The global stage (iteration 1 of the record when it places a line): candidate crack
+    // lines that do not depend on the mesh (from the outline's corners and the ends of the
+    // settling zone, over a fan of directions), chosen greedily by one search solve each.
+    let mut first = 1usize;
+    if o.global_lines > 0 {
+        let t = Instant::now();
+        let cands = region.candidates(model, o.fan.max(4), tol);
+        if trace {
+            eprintln!("adapt: global stage: {} candidate lines", cands.len());
+        }
+        let mut evaluations = 0usize;
+        let mut trial = |ls: &[Line], evaluations: &mut usize| -> f64 {
+            *evaluations += 1;
+            match cut_model(model, &region, ls, tol).and_then(|m| Structure::new(&m, build)) {
+                Ok(st) => solve(&st, false).map_or(f64::NEG_INFINITY, |e| score(e.value)),
+                Err(_) => f64::NEG_INFINITY,
+            }
+        };
+        let gains = |v: f64, best: f64| v > best + IMPROVEMENT * best.abs().max(1e-12);
+        let mut best = score(Some(v0));
+        let mut chosen: Vec<usize> = Vec::new();
+        for _ in 0..o.global_lines {
+            let mut round: Option<(usize, f64)> = None;
+            for (k, c) in cands.iter().enumerate() {
+                if chosen.contains(&k) {
+                    continue;
+                }
+                let mut ls = lines.clone();
+                ls.push(c.line);
+                let v = trial(&ls, &mut evaluations);
+                if round.is_none_or(|(_, b)| v > b) {
+                    round = Some((k, v));
+                }
+            }
+            match round {
+                Some((k, v)) if gains(v, best) => {
+                    best = v;
+                    chosen.push(k);
+                    lines.push(cands[k].line);
+                }
+                _ => break,
+            }
+        }
+        // The far end of each chosen line (its key point held) by golden section over one step
+        // of the fan either way.
+        for (li, &k) in chosen.iter().enumerate() {
+            let (lp, s0) = lines[li].ends[1];
+            let r = cands[k].reach;
+            let mut f = |s: f64, evaluations: &mut usize| {
+                let mut ls = lines.clone();
+                ls[li].ends[1] = (lp, region.wrap(lp, s));
+                if ls[li].degenerate(&region) {
+                    return f64::NEG_INFINITY;
+                }
+                trial(&ls, evaluations)
+            };
+            let (s, v) = golden_section(s0 - r, s0 + r, o.evaluations, |s| f(s, &mut evaluations));
+            if gains(v, best) {
+                best = v;
+                lines[li].ends[1] = (lp, region.wrap(lp, s));
+            }
+        }
+        if trace {
+            eprintln!(
+                "adapt: global stage: {} candidates, {evaluations} trials, {} lines, {:.2} s, best trial {best}",
+                cands.len(),
+                lines.len(),
+                t.elapsed().as_secs_f64()
+            );
+        }
+        if !lines.is_empty() {
+            let m = cut_model(model, &region, &lines, tol)?;
+            let st = Structure::new(&m, build)?;
+            let ev = solve(&st, true)?;
+            let v = ev.value.unwrap_or(f64::NAN);
+            iterations.push(AdaptIteration {
+                iteration: 1,
+                blocks: st.blocks.len(),
+                lines: lines.len(),
+                value: v,
+                certified: ev.certified,
+                evaluations,
+                time: start.elapsed().as_secs_f64(),
+            });
+            current = (m, st);
+            cracks = ev.cracks;
+            value = v;
+            first = 2;
+        }
+    }
+    for it in first..first + o.iterations {
         let new = region.lines_from_cracks(&cracks, &lines, o.lines_per_iteration);
         // No crack to straighten (the first time) or no new one (later): nothing to move.
-        if new.is_empty() && (it > 1 || lines.is_empty()) {
+        if new.is_empty() {
             converged = true;
             break;
         }
@@ -432,6 +530,13 @@ impl Line {
     }
 }
 
+/// A candidate line of the global stage, its key point first, and the arc either way over
+/// which its far end is refined (one step of the fan at the far end's distance).
+struct Candidate {
+    line: Line,
+    reach: f64,
+}
+
 /// The wall's outline: the union of its blocks (outer boundary and openings).
 struct Region {
     loops: Vec<Vec<Point>>,
@@ -536,6 +641,123 @@ impl Region {
             }
         }
         best.1
+    }
+
+    /// Whether `p` lies inside the wall (inside an odd number of its loops), farther than
+    /// `tol` from the outline.
+    fn inside(&self, p: Point, tol: f64) -> bool {
+        self.loops
+            .iter()
+            .filter(|l| strictly_inside(p, l, tol))
+            .count()
+            % 2
+            == 1
+    }
+
+    /// The global stage's candidate crack lines: from each key point of the outline (a corner
+    /// turning by more than 30°, or an end of the settling zone: a vertex shared by two
+    /// supports of different motions, within one element of the outline, projected onto it),
+    /// the chord in each of `fan` directions over the full circle that enters the wall, to the
+    /// first point where it leaves it; and where both a direction and its opposite enter the
+    /// wall, the chord through the key point. Depends on the outline and the supports only,
+    /// not on the mesh. Duplicates (both ends within 5 % of an element) are dropped.
+    fn candidates(&self, model: &Model, fan: usize, tol: f64) -> Vec<Candidate> {
+        let mut keys: Vec<Point> = Vec::new();
+        let add_key = |p: Point, keys: &mut Vec<Point>| {
+            if !keys.iter().any(|k| norm(sub(*k, p)) < 0.05 * self.element) {
+                keys.push(p);
+            }
+        };
+        for lp in &self.loops {
+            let n = lp.len();
+            for i in 0..n {
+                let (a, v, b) = (lp[(i + n - 1) % n], lp[i], lp[(i + 1) % n]);
+                let (u, w) = (sub(v, a), sub(b, v));
+                let (lu, lw) = (norm(u), norm(w));
+                if lu <= tol || lw <= tol {
+                    continue;
+                }
+                let c = (dot(u, w) / (lu * lw)).clamp(-1.0, 1.0);
+                if c.acos() > 30f64.to_radians() {
+                    add_key(v, &mut keys);
+                }
+            }
+        }
+        let sup = &model.supports;
+        for i in 0..sup.len() {
+            for j in i + 1..sup.len() {
+                if sup[i].motion == sup[j].motion {
+                    continue;
+                }
+                for p in &sup[i].polygon {
+                    if !sup[j].polygon.iter().any(|q| norm(sub(*p, *q)) <= tol) {
+                        continue;
+                    }
+                    let q = self.point_at(self.project(*p));
+                    if norm(sub(q, *p)) <= self.element {
+                        add_key(q, &mut keys);
+                    }
+                }
+            }
+        }
+        let step = std::f64::consts::TAU / fan as f64;
+        let eps = 1e-6 * self.size;
+        let mut out: Vec<Candidate> = Vec::new();
+        for p in keys {
+            // The first exit of the ray from `p` along each direction (if it enters the wall).
+            let exits: Vec<Option<(Point, f64)>> = (0..fan)
+                .map(|k| {
+                    let th = step * k as f64;
+                    let d = [th.cos(), th.sin()];
+                    let t = self
+                        .hits(p, d)
+                        .into_iter()
+                        .filter(|t| *t > eps)
+                        .fold(f64::INFINITY, f64::min);
+                    if !t.is_finite() {
+                        return None;
+                    }
+                    let q = [p[0] + t * d[0], p[1] + t * d[1]];
+                    let m = [p[0] + 0.5 * t * d[0], p[1] + 0.5 * t * d[1]];
+                    self.inside(m, 1e-9 * self.size).then_some((q, t))
+                })
+                .collect();
+            let push = |a: Point, b: Point, len: f64, out: &mut Vec<Candidate>| {
+                let line = Line {
+                    ends: [self.project(a), self.project(b)],
+                };
+                if line.degenerate(self) || self.along_outline(&line) {
+                    return;
+                }
+                let [a, b] = line.points(self);
+                let near = 0.05 * self.element;
+                if out.iter().any(|c| {
+                    let [x, y] = c.line.points(self);
+                    (norm(sub(x, a)) < near && norm(sub(y, b)) < near)
+                        || (norm(sub(x, b)) < near && norm(sub(y, a)) < near)
+                }) {
+                    return;
+                }
+                out.push(Candidate {
+                    line,
+                    reach: len * step,
+                });
+            };
+            for k in 0..fan {
+                if let Some((q, t)) = exits[k] {
+                    push(p, q, t, &mut out);
+                }
+            }
+            if fan % 2 == 0 {
+                for k in 0..fan / 2 {
+                    if let (Some((q, t)), Some((r, _))) = (exits[k], exits[k + fan / 2]) {
+                        // Through the key point: from `r` to `q`, the far end `q` searched.
+                        push(r, q, t, &mut out);
+                    }
+                }
+            }
+        }
+        out
     }
 
     /// Whether a line runs along the outline (its midpoint on it): it would cut nothing.

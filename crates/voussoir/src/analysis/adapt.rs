@@ -8,6 +8,18 @@
 //! *inserted into the mesh and moved*:
 //!
 //! 1. Solve the paper's program on the model as given (iteration 0).
+//!
+//!    *Global stage* (`global_lines` > 0; iteration 1 of the record, `global: true`): the key
+//!    points of the outline — its corners at the scale of an element and the ends of the
+//!    settling zone — and from each the chords into the wall over a fan of `fan` directions
+//!    (and through it where both sides are wall) are the candidate crack lines; they depend on
+//!    the outline and the supports, not on the mesh. Each is cut into the mesh alone and solved
+//!    once (the search trial below); the best is kept if it gains, then the next line is chosen
+//!    the same way with it held (later rounds among the 12 best of the first), up to
+//!    `global_lines`; each chosen line's far end is refined by golden section over one step of
+//!    the fan. A greedy version of the placement of crack lines by a search (Chiozzi, Milani
+//!    and Tralli 2017; Grillanda et al. 2021), so that the local stage starts from the same
+//!    mechanism whatever the mesh.
 //! 2. Read its crack polylines ([`crate::result::cracks`]); simplify each (Douglas–Peucker, to
 //!    the element size) into straight runs, and extend every run that is not already a crack
 //!    line to the wall's outline (the union of the blocks, its outer boundary and openings):
@@ -178,6 +190,10 @@ pub fn search_solver(opts: &SolverOptions) -> SolverOptions {
 /// never kept on the solver's noise and the certified objective stays monotone.
 const IMPROVEMENT: f64 = 1e-6;
 
+/// The global stage's later rounds try only this many of the candidates that gained most
+/// alone in its first round.
+const GLOBAL_SHORTLIST: usize = 12;
+
 /// Limit analysis with adapted crack lines: λ minimised over the positions of the crack lines.
 pub fn limit_adapt(
     model: &Model,
@@ -221,6 +237,12 @@ where
             o.tolerance
         )));
     }
+    if o.global_lines > 0 && o.fan < 4 {
+        return Err(Error::Request(format!(
+            "--adapt-fan must be at least 4 (got {})",
+            o.fan
+        )));
+    }
     let start = Instant::now();
     // With the environment variable `VOUSSOIR_TRACE` set: each iteration's time in the trial
     // geometries (cut and joints), the trial solves and the full solve, on stderr.
@@ -256,6 +278,7 @@ where
         value: v0,
         certified: ev.certified,
         evaluations: 0,
+        global: false,
         time: start.elapsed().as_secs_f64(),
     }];
     let mut lines: Vec<Line> = Vec::new();
@@ -271,7 +294,7 @@ where
     let mut first = 1usize;
     if o.global_lines > 0 {
         let t = Instant::now();
-        let cands = region.candidates(model, o.fan.max(4), tol);
+        let cands = region.candidates(model, o.fan, tol);
         if trace {
             eprintln!("adapt: global stage: {} candidate lines", cands.len());
         }
@@ -286,18 +309,26 @@ where
         let gains = |v: f64, best: f64| v > best + IMPROVEMENT * best.abs().max(1e-12);
         let mut best = score(Some(v0));
         let mut chosen: Vec<usize> = Vec::new();
-        for _ in 0..o.global_lines {
+        // Round 1 tries every candidate; the later rounds only the best of round 1.
+        let mut pool: Vec<usize> = (0..cands.len()).collect();
+        for r in 0..o.global_lines {
             let mut round: Option<(usize, f64)> = None;
-            for (k, c) in cands.iter().enumerate() {
+            let mut values: Vec<(f64, usize)> = Vec::new();
+            for &k in &pool {
                 if chosen.contains(&k) {
                     continue;
                 }
                 let mut ls = lines.clone();
-                ls.push(c.line);
+                ls.push(cands[k].line);
                 let v = trial(&ls, &mut evaluations);
+                values.push((v, k));
                 if round.is_none_or(|(_, b)| v > b) {
                     round = Some((k, v));
                 }
+            }
+            if r == 0 {
+                values.sort_by(|x, y| y.0.total_cmp(&x.0).then(x.1.cmp(&y.1)));
+                pool = values.iter().take(GLOBAL_SHORTLIST).map(|x| x.1).collect();
             }
             match round {
                 Some((k, v)) if gains(v, best) => {
@@ -347,6 +378,7 @@ where
                 value: v,
                 certified: ev.certified,
                 evaluations,
+                global: true,
                 time: start.elapsed().as_secs_f64(),
             });
             current = (m, st);
@@ -424,6 +456,7 @@ where
             value: v,
             certified: ev.certified,
             evaluations,
+            global: false,
             time: start.elapsed().as_secs_f64(),
         });
         let change = (v - value).abs() / v.abs().max(value.abs()).max(f64::MIN_POSITIVE);
@@ -440,7 +473,12 @@ where
         }
     }
     let method = format!(
-        "crack lines cut into the mesh along the straightened crack polylines and moved along the outline by golden-section search ({} solves per end, reach {:.3} m, each iteration's new lines only{}), {} the {}",
+        "{}crack lines cut into the mesh along the straightened crack polylines and moved along the outline by golden-section search ({} solves per end, reach {:.3} m, each iteration's new lines only{}), {} the {}",
+        if o.global_lines > 0 {
+            format!("a global stage (up to {} crack lines chosen greedily among the chords from the outline's corners and the settling zone's ends over a fan of {} directions, by one search solve each), then ", o.global_lines, o.fan)
+        } else {
+            String::new()
+        },
         o.evaluations,
         o.reach * region.size,
         match objective {
@@ -643,15 +681,97 @@ impl Region {
         best.1
     }
 
-    /// Whether `p` lies inside the wall (inside an odd number of its loops), farther than
+    /// Whether `p` lies inside the wall (inside an odd number of its loops of at least an
+    /// element's area: not the slivers between blocks that do not quite meet), farther than
     /// `tol` from the outline.
     fn inside(&self, p: Point, tol: f64) -> bool {
         self.loops
             .iter()
-            .filter(|l| strictly_inside(p, l, tol))
+            .filter(|l| {
+                area_centroid(l).0.abs() >= self.element * self.element
+                    && strictly_inside(p, l, tol)
+            })
             .count()
             % 2
             == 1
+    }
+
+    /// The key points of the global stage (module docs): the outline's corners at the scale of
+    /// an element — vertices where the outline turns by more than 60° between the chords to
+    /// its points one element before and after (along the loop), the sharpest within an
+    /// element kept — and the ends of the settling zone: the ends of each stretch of the
+    /// outline resting on supports of one motion, where that motion is not zero (an end within
+    /// an element of a corner is that corner).
+    fn key_points(&self, model: &Model, tol: f64) -> Vec<Point> {
+        let e = self.element;
+        let mut corners: Vec<(f64, Point)> = Vec::new();
+        for lp in &self.loops {
+            // Slivers between blocks that do not quite meet, and holes smaller than an
+            // element, have no corner of the wall's.
+            if area_centroid(lp).0.abs() < e * e {
+                continue;
+            }
+            // The loop's vertices that the outline keeps at a quarter of an element (the steps
+            // of a grid along a slope are not corners).
+            let mut closed = lp.clone();
+            closed.push(lp[0]);
+            let kept = douglas_peucker(&closed, 0.25 * e);
+            for v in kept.iter().take(kept.len().saturating_sub(1)) {
+                let (l2, s) = self.project(*v);
+                let (a, b) = (self.point_at((l2, s - e)), self.point_at((l2, s + e)));
+                let (u, w) = (sub(*v, a), sub(b, *v));
+                let (lu, lw) = (norm(u), norm(w));
+                if lu <= tol || lw <= tol {
+                    continue;
+                }
+                let turn = (dot(u, w) / (lu * lw)).clamp(-1.0, 1.0).acos();
+                if turn > 60f64.to_radians() {
+                    corners.push((turn, *v));
+                }
+            }
+        }
+        // The sharpest first; a corner within an element of a sharper one is the same corner.
+        corners.sort_by(|x, y| {
+            y.0.total_cmp(&x.0)
+                .then(x.1[0].total_cmp(&y.1[0]))
+                .then(x.1[1].total_cmp(&y.1[1]))
+        });
+        let mut keys: Vec<Point> = Vec::new();
+        for (_, v) in corners {
+            if !keys.iter().any(|k| norm(sub(*k, v)) < e) {
+                keys.push(v);
+            }
+        }
+        // The outline's contact with each support: its edges lying on the outline.
+        let on_outline =
+            |p: Point| norm(sub(self.point_at(self.project(p)), p)) <= tol.max(1e-9 * self.size);
+        let mut ends: Vec<(Point, usize)> = Vec::new();
+        for (k, sp) in model.supports.iter().enumerate() {
+            let n = sp.polygon.len();
+            for i in 0..n {
+                let (a, b) = (sp.polygon[i], sp.polygon[(i + 1) % n]);
+                if norm(sub(b, a)) > tol && on_outline([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]) {
+                    ends.push((a, k));
+                    ends.push((b, k));
+                }
+            }
+        }
+        for &(p, k) in &ends {
+            let m = model.supports[k].motion;
+            if m.iter().all(|x| *x == 0.0) {
+                continue;
+            }
+            // An end of a stretch of one motion: no contact edge of another support with the same
+            // motion, and no other contact edge of this support, meets it there.
+            let same = ends
+                .iter()
+                .filter(|(q, j)| norm(sub(*q, p)) <= tol && model.supports[*j].motion == m)
+                .count();
+            if same <= 1 && !keys.iter().any(|q| norm(sub(*q, p)) < e) {
+                keys.push(p);
+            }
+        }
+        keys
     }
 
     /// The global stage's candidate crack lines: from each key point of the outline (a corner
@@ -662,43 +782,9 @@ impl Region {
     /// wall, the chord through the key point. Depends on the outline and the supports only,
     /// not on the mesh. Duplicates (both ends within 5 % of an element) are dropped.
     fn candidates(&self, model: &Model, fan: usize, tol: f64) -> Vec<Candidate> {
-        let mut keys: Vec<Point> = Vec::new();
-        let add_key = |p: Point, keys: &mut Vec<Point>| {
-            if !keys.iter().any(|k| norm(sub(*k, p)) < 0.05 * self.element) {
-                keys.push(p);
-            }
-        };
-        for lp in &self.loops {
-            let n = lp.len();
-            for i in 0..n {
-                let (a, v, b) = (lp[(i + n - 1) % n], lp[i], lp[(i + 1) % n]);
-                let (u, w) = (sub(v, a), sub(b, v));
-                let (lu, lw) = (norm(u), norm(w));
-                if lu <= tol || lw <= tol {
-                    continue;
-                }
-                let c = (dot(u, w) / (lu * lw)).clamp(-1.0, 1.0);
-                if c.acos() > 30f64.to_radians() {
-                    add_key(v, &mut keys);
-                }
-            }
-        }
-        let sup = &model.supports;
-        for i in 0..sup.len() {
-            for j in i + 1..sup.len() {
-                if sup[i].motion == sup[j].motion {
-                    continue;
-                }
-                for p in &sup[i].polygon {
-                    if !sup[j].polygon.iter().any(|q| norm(sub(*p, *q)) <= tol) {
-                        continue;
-                    }
-                    let q = self.point_at(self.project(*p));
-                    if norm(sub(q, *p)) <= self.element {
-                        add_key(q, &mut keys);
-                    }
-                }
-            }
+        let keys = self.key_points(model, tol);
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!("adapt: global stage: {} key points {keys:?}", keys.len());
         }
         let step = std::f64::consts::TAU / fan as f64;
         let eps = 1e-6 * self.size;
@@ -709,8 +795,9 @@ impl Region {
                 .map(|k| {
                     let th = step * k as f64;
                     let d = [th.cos(), th.sin()];
+                    // Slivers between blocks that do not quite meet are not the outline.
                     let t = self
-                        .hits(p, d)
+                        .hits_of(p, d, self.element * self.element)
                         .into_iter()
                         .filter(|t| *t > eps)
                         .fold(f64::INFINITY, f64::min);
@@ -769,8 +856,16 @@ impl Region {
 
     /// Parameters `t` where the line `p + t·d` (d a unit vector) crosses the outline.
     fn hits(&self, p: Point, d: Point) -> Vec<f64> {
+        self.hits_of(p, d, 0.0)
+    }
+
+    /// [`Region::hits`] on the loops of area at least `min_area` only.
+    fn hits_of(&self, p: Point, d: Point, min_area: f64) -> Vec<f64> {
         let mut ts = Vec::new();
         for lp in &self.loops {
+            if min_area > 0.0 && area_centroid(lp).0.abs() < min_area {
+                continue;
+            }
             for i in 0..lp.len() {
                 let (a, b) = (lp[i], lp[(i + 1) % lp.len()]);
                 let e = sub(b, a);

@@ -135,9 +135,10 @@ fn issue30_item2_facade_adapted_1m_grid_passes_the_half_metre_grid() {
     .unwrap();
     let its = &ad.record.iterations;
     assert!((its[0].value - w0).abs() <= 1e-9 * w0);
+    // The local iterations (the global stage, `global`, tries its candidates once each).
     for it in &its[1..] {
         assert!(
-            it.evaluations <= 1 + 2 * o.evaluations * o.lines_per_iteration,
+            it.global || it.evaluations <= 1 + 2 * o.evaluations * o.lines_per_iteration,
             "{its:?}"
         );
         assert!(it.certified, "{its:?}");

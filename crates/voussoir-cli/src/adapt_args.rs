@@ -22,6 +22,15 @@ pub struct AdaptArgs {
     /// row [default: 0.005].
     #[arg(long, value_name = "TOL")]
     pub adapt_tol: Option<f64>,
+    /// Crack lines placed by the global stage before the local iterations, greedily, among
+    /// candidate lines from the outline's corners and the settling zone's ends (0: no global
+    /// stage) [default: 3].
+    #[arg(long, value_name = "N")]
+    pub adapt_global: Option<usize>,
+    /// Directions of the global stage's fan of candidate lines from each key point, over the
+    /// full circle (at least 4) [default: 36, every 10°].
+    #[arg(long, value_name = "N")]
+    pub adapt_fan: Option<usize>,
 }
 
 impl AdaptArgs {
@@ -33,6 +42,12 @@ impl AdaptArgs {
             }
             if self.adapt_tol.is_some() {
                 return Err(Fail("--adapt-tol goes with --adapt".into()));
+            }
+            if self.adapt_global.is_some() {
+                return Err(Fail("--adapt-global goes with --adapt".into()));
+            }
+            if self.adapt_fan.is_some() {
+                return Err(Fail("--adapt-fan goes with --adapt".into()));
             }
             return Ok(None);
         }
@@ -50,6 +65,15 @@ impl AdaptArgs {
                 )));
             }
             o.tolerance = t;
+        }
+        if let Some(n) = self.adapt_global {
+            o.global_lines = n;
+        }
+        if let Some(n) = self.adapt_fan {
+            if n < 4 {
+                return Err(Fail(format!("--adapt-fan must be at least 4 (got {n})")));
+            }
+            o.fan = n;
         }
         Ok(Some(o))
     }
@@ -81,8 +105,9 @@ pub fn summary(r: &AdaptRecord) -> String {
     );
     for it in &r.iterations {
         s += &format!(
-            "  iteration {}: {} blocks, {} line{}, {what} {:.6}{unit}{}, {} search solves, {:.1} s\n",
+            "  iteration {}{}: {} blocks, {} line{}, {what} {:.6}{unit}{}, {} search solves, {:.1} s\n",
             it.iteration,
+            if it.global { " (global stage)" } else { "" },
             it.blocks,
             it.lines,
             if it.lines == 1 { "" } else { "s" },

@@ -44,7 +44,14 @@ impl LimitArgs {
             canonical: self.canonical.canonical,
             least_friction_precision: self.canonical.least_friction_precision,
             ranges: self.canonical.no_ranges.then_some(false),
-            adapt: self.adapt.options()?,
+            adapt: {
+                if self.adapt.adapt_global.is_some() || self.adapt.adapt_fan.is_some() {
+                    return Err(Fail(
+                        "--adapt-global and --adapt-fan apply to settle --adapt only (limit --adapt has no global stage)".into(),
+                    ));
+                }
+                self.adapt.options()?
+            },
         };
         let request = self
             .model

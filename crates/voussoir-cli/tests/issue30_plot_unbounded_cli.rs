@@ -46,6 +46,10 @@ fn issue30_plot_reads_back_an_adapted_settlement_with_unbounded_reaction_ranges(
             "--adapt",
             "--adapt-iterations",
             "1",
+            // The case found in session 15: the local search alone (the global stage's
+            // mechanism has no unbounded reaction range).
+            "--adapt-global",
+            "0",
             "-o",
             "r.json",
         ],

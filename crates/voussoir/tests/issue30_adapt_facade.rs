@@ -135,9 +135,10 @@ fn issue30_item2_facade_adapted_1m_grid_passes_the_half_metre_grid() {
     .unwrap();
     let its = &ad.record.iterations;
     assert!((its[0].value - w0).abs() <= 1e-9 * w0);
+    // The local iterations (the global stage, `global`, tries its candidates once each).
     for it in &its[1..] {
         assert!(
-            it.evaluations <= 1 + 2 * o.evaluations * o.lines_per_iteration,
+            it.global || it.evaluations <= 1 + 2 * o.evaluations * o.lines_per_iteration,
             "{its:?}"
         );
         assert!(it.certified, "{its:?}");
@@ -178,7 +179,7 @@ fn issue30_item2_adapt_does_not_stop_after_one_small_step() {
 /// 418.42, 7.3 % apart; both are above both unadapted works (369.66, 384.71). The longest
 /// cracks are not within 1 m of each other either.
 #[test]
-#[ignore = "fails, measured: adapted grid 388.03, triangles 418.42 kN·m (7.3 % apart); the grid's run takes 277 s of CPU, the triangles' 376 s with --raw (load 3-9)"]
+#[ignore = "failed with the local search alone, measured: adapted grid 388.03, triangles 418.42 kN·m (7.3 % apart), 277 and 376 s of CPU; with the global stage (the default now) not measured to the end: about 330-410 s of CPU more per mesh"]
 fn issue30_item2_facade_adapted_from_grid_and_triangles_agree_in_work() {
     let grid = settling_facade(0.5, FacadeMesh::Grid);
     let tri = settling_facade(0.5, FacadeMesh::Triangles);

@@ -8,6 +8,18 @@
 //! *inserted into the mesh and moved*:
 //!
 //! 1. Solve the paper's program on the model as given (iteration 0).
+//!
+//!    *Global stage* (`global_lines` > 0; iteration 1 of the record, `global: true`): the key
+//!    points of the outline — its corners at the scale of an element and the ends of the
+//!    settling zone — and from each the chords into the wall over a fan of `fan` directions
+//!    (and through it where both sides are wall) are the candidate crack lines; they depend on
+//!    the outline and the supports, not on the mesh. Each is cut into the mesh alone and solved
+//!    once (the search trial below); the best is kept if it gains, then the next line is chosen
+//!    the same way with it held (later rounds among the 12 best of the first), up to
+//!    `global_lines`; each chosen line's far end is refined by golden section over one step of
+//!    the fan. A greedy version of the placement of crack lines by a search (Chiozzi, Milani
+//!    and Tralli 2017; Grillanda et al. 2021), so that the local stage starts from the same
+//!    mechanism whatever the mesh.
 //! 2. Read its crack polylines ([`crate::result::cracks`]); simplify each (Douglas–Peucker, to
 //!    the element size) into straight runs, and extend every run that is not already a crack
 //!    line to the wall's outline (the union of the blocks, its outer boundary and openings):
@@ -60,6 +72,13 @@ pub struct AdaptOptions {
     pub evaluations: usize,
     /// Half the arc of the outline searched for each end, as a fraction of the wall's diagonal.
     pub reach: f64,
+    /// Crack lines placed by the global stage before the local one (0: no global stage;
+    /// settlement only, `limit_adapt` has none): each
+    /// chosen greedily, one at a time, among the candidate lines from the outline's corners
+    /// and the ends of the settling zone over a fan of directions.
+    pub global_lines: usize,
+    /// Directions of the global stage's fan, over the full circle (36: every 10°).
+    pub fan: usize,
 }
 
 impl Default for AdaptOptions {
@@ -70,6 +89,8 @@ impl Default for AdaptOptions {
             lines_per_iteration: 3,
             evaluations: 5,
             reach: 0.1,
+            global_lines: 3,
+            fan: 36,
         }
     }
 }
@@ -170,6 +191,10 @@ pub fn search_solver(opts: &SolverOptions) -> SolverOptions {
 /// never kept on the solver's noise and the certified objective stays monotone.
 const IMPROVEMENT: f64 = 1e-6;
 
+/// The global stage's later rounds try only this many of the candidates that gained most
+/// alone in its first round.
+const GLOBAL_SHORTLIST: usize = 12;
+
 /// Limit analysis with adapted crack lines: λ minimised over the positions of the crack lines.
 pub fn limit_adapt(
     model: &Model,
@@ -213,6 +238,12 @@ where
             o.tolerance
         )));
     }
+    if o.global_lines > 0 && objective == Objective::SettlementWork && o.fan < 4 {
+        return Err(Error::Request(format!(
+            "--adapt-fan must be at least 4 (got {})",
+            o.fan
+        )));
+    }
     let start = Instant::now();
     // With the environment variable `VOUSSOIR_TRACE` set: each iteration's time in the trial
     // geometries (cut and joints), the trial solves and the full solve, on stderr.
@@ -248,6 +279,7 @@ where
         value: v0,
         certified: ev.certified,
         evaluations: 0,
+        global: false,
         time: start.elapsed().as_secs_f64(),
     }];
     let mut lines: Vec<Line> = Vec::new();
@@ -257,10 +289,112 @@ where
     let mut converged = false;
     let mut small = 0usize;
     let reach = o.reach * region.size;
-    for it in 1..=o.iterations {
+    // The global stage (iteration 1 of the record when it places a line): candidate crack
+    // lines that do not depend on the mesh (from the outline's corners and the ends of the
+    // settling zone, over a fan of directions), chosen greedily by one search solve each.
+    let mut first = 1usize;
+    // Settlement only: for the limit analysis the trials are full limit analyses, and a
+    // no-tension panel under a horizontal load has no finite optimum to place lines towards
+    // (a sliver from its toe; tests/issue30_adapt.rs).
+    if o.global_lines > 0 && objective == Objective::SettlementWork {
+        let t = Instant::now();
+        let cands = region.candidates(model, o.fan, tol);
+        if trace {
+            eprintln!("adapt: global stage: {} candidate lines", cands.len());
+        }
+        let mut evaluations = 0usize;
+        let mut trial = |ls: &[Line], evaluations: &mut usize| -> f64 {
+            *evaluations += 1;
+            match cut_model(model, &region, ls, tol).and_then(|m| Structure::new(&m, build)) {
+                Ok(st) => solve(&st, false).map_or(f64::NEG_INFINITY, |e| score(e.value)),
+                Err(_) => f64::NEG_INFINITY,
+            }
+        };
+        let gains = |v: f64, best: f64| v > best + IMPROVEMENT * best.abs().max(1e-12);
+        let mut best = score(Some(v0));
+        let mut chosen: Vec<usize> = Vec::new();
+        // Round 1 tries every candidate; the later rounds only the best of round 1.
+        let mut pool: Vec<usize> = (0..cands.len()).collect();
+        for r in 0..o.global_lines {
+            let mut round: Option<(usize, f64)> = None;
+            let mut values: Vec<(f64, usize)> = Vec::new();
+            for &k in &pool {
+                if chosen.contains(&k) {
+                    continue;
+                }
+                let mut ls = lines.clone();
+                ls.push(cands[k].line);
+                let v = trial(&ls, &mut evaluations);
+                values.push((v, k));
+                if round.is_none_or(|(_, b)| v > b) {
+                    round = Some((k, v));
+                }
+            }
+            if r == 0 {
+                values.sort_by(|x, y| y.0.total_cmp(&x.0).then(x.1.cmp(&y.1)));
+                pool = values.iter().take(GLOBAL_SHORTLIST).map(|x| x.1).collect();
+            }
+            match round {
+                Some((k, v)) if gains(v, best) => {
+                    best = v;
+                    chosen.push(k);
+                    lines.push(cands[k].line);
+                }
+                _ => break,
+            }
+        }
+        // The far end of each chosen line (its key point held) by golden section over one step
+        // of the fan either way.
+        for (li, &k) in chosen.iter().enumerate() {
+            let (lp, s0) = lines[li].ends[1];
+            let r = cands[k].reach;
+            let mut f = |s: f64, evaluations: &mut usize| {
+                let mut ls = lines.clone();
+                ls[li].ends[1] = (lp, region.wrap(lp, s));
+                if ls[li].degenerate(&region) {
+                    return f64::NEG_INFINITY;
+                }
+                trial(&ls, evaluations)
+            };
+            let (s, v) = golden_section(s0 - r, s0 + r, o.evaluations, |s| f(s, &mut evaluations));
+            if gains(v, best) {
+                best = v;
+                lines[li].ends[1] = (lp, region.wrap(lp, s));
+            }
+        }
+        if trace {
+            eprintln!(
+                "adapt: global stage: {} candidates, {evaluations} trials, {} lines, {:.2} s, best trial {best}",
+                cands.len(),
+                lines.len(),
+                t.elapsed().as_secs_f64()
+            );
+        }
+        if !lines.is_empty() {
+            let m = cut_model(model, &region, &lines, tol)?;
+            let st = Structure::new(&m, build)?;
+            let ev = solve(&st, true)?;
+            let v = ev.value.unwrap_or(f64::NAN);
+            iterations.push(AdaptIteration {
+                iteration: 1,
+                blocks: st.blocks.len(),
+                lines: lines.len(),
+                value: v,
+                certified: ev.certified,
+                evaluations,
+                global: true,
+                time: start.elapsed().as_secs_f64(),
+            });
+            current = (m, st);
+            cracks = ev.cracks;
+            value = v;
+            first = 2;
+        }
+    }
+    for it in first..first + o.iterations {
         let new = region.lines_from_cracks(&cracks, &lines, o.lines_per_iteration);
         // No crack to straighten (the first time) or no new one (later): nothing to move.
-        if new.is_empty() && (it > 1 || lines.is_empty()) {
+        if new.is_empty() {
             converged = true;
             break;
         }
@@ -326,6 +460,7 @@ where
             value: v,
             certified: ev.certified,
             evaluations,
+            global: false,
             time: start.elapsed().as_secs_f64(),
         });
         let change = (v - value).abs() / v.abs().max(value.abs()).max(f64::MIN_POSITIVE);
@@ -342,7 +477,12 @@ where
         }
     }
     let method = format!(
-        "crack lines cut into the mesh along the straightened crack polylines and moved along the outline by golden-section search ({} solves per end, reach {:.3} m, each iteration's new lines only{}), {} the {}",
+        "{}crack lines cut into the mesh along the straightened crack polylines and moved along the outline by golden-section search ({} solves per end, reach {:.3} m, each iteration's new lines only{}), {} the {}",
+        if o.global_lines > 0 && objective == Objective::SettlementWork {
+            format!("a global stage (up to {} crack lines chosen greedily among the chords from the outline's corners and the settling zone's ends over a fan of {} directions, by one search solve each), then ", o.global_lines, o.fan)
+        } else {
+            String::new()
+        },
         o.evaluations,
         o.reach * region.size,
         match objective {
@@ -430,6 +570,13 @@ impl Line {
         let [a, b] = self.points(r);
         norm(sub(b, a)) < 0.05 * r.element
     }
+}
+
+/// A candidate line of the global stage, its key point first, and the arc either way over
+/// which its far end is refined (one step of the fan at the far end's distance).
+struct Candidate {
+    line: Line,
+    reach: f64,
 }
 
 /// The wall's outline: the union of its blocks (outer boundary and openings).
@@ -538,6 +685,172 @@ impl Region {
         best.1
     }
 
+    /// Whether `p` lies inside the wall (inside an odd number of its loops of at least an
+    /// element's area: not the slivers between blocks that do not quite meet), farther than
+    /// `tol` from the outline.
+    fn inside(&self, p: Point, tol: f64) -> bool {
+        self.loops
+            .iter()
+            .filter(|l| {
+                area_centroid(l).0.abs() >= self.element * self.element
+                    && strictly_inside(p, l, tol)
+            })
+            .count()
+            % 2
+            == 1
+    }
+
+    /// The key points of the global stage (module docs): the outline's corners at the scale of
+    /// an element — vertices where the outline turns by more than 60° between the chords to
+    /// its points one element before and after (along the loop), the sharpest within an
+    /// element kept — and the ends of the settling zone: the ends of each stretch of the
+    /// outline resting on supports of one motion, where that motion is not zero (an end within
+    /// an element of a corner is that corner).
+    fn key_points(&self, model: &Model, tol: f64) -> Vec<Point> {
+        let e = self.element;
+        let mut corners: Vec<(f64, Point)> = Vec::new();
+        for lp in &self.loops {
+            // Slivers between blocks that do not quite meet, and holes smaller than an
+            // element, have no corner of the wall's.
+            if area_centroid(lp).0.abs() < e * e {
+                continue;
+            }
+            // The loop's vertices that the outline keeps at a quarter of an element (the steps
+            // of a grid along a slope are not corners).
+            let mut closed = lp.clone();
+            closed.push(lp[0]);
+            let kept = douglas_peucker(&closed, 0.25 * e);
+            for v in kept.iter().take(kept.len().saturating_sub(1)) {
+                let (l2, s) = self.project(*v);
+                let (a, b) = (self.point_at((l2, s - e)), self.point_at((l2, s + e)));
+                let (u, w) = (sub(*v, a), sub(b, *v));
+                let (lu, lw) = (norm(u), norm(w));
+                if lu <= tol || lw <= tol {
+                    continue;
+                }
+                let turn = (dot(u, w) / (lu * lw)).clamp(-1.0, 1.0).acos();
+                if turn > 60f64.to_radians() {
+                    corners.push((turn, *v));
+                }
+            }
+        }
+        // The sharpest first; a corner within an element of a sharper one is the same corner.
+        corners.sort_by(|x, y| {
+            y.0.total_cmp(&x.0)
+                .then(x.1[0].total_cmp(&y.1[0]))
+                .then(x.1[1].total_cmp(&y.1[1]))
+        });
+        let mut keys: Vec<Point> = Vec::new();
+        for (_, v) in corners {
+            if !keys.iter().any(|k| norm(sub(*k, v)) < e) {
+                keys.push(v);
+            }
+        }
+        // The outline's contact with each support: its edges lying on the outline.
+        let on_outline =
+            |p: Point| norm(sub(self.point_at(self.project(p)), p)) <= tol.max(1e-9 * self.size);
+        let mut ends: Vec<(Point, usize)> = Vec::new();
+        for (k, sp) in model.supports.iter().enumerate() {
+            let n = sp.polygon.len();
+            for i in 0..n {
+                let (a, b) = (sp.polygon[i], sp.polygon[(i + 1) % n]);
+                if norm(sub(b, a)) > tol && on_outline([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]) {
+                    ends.push((a, k));
+                    ends.push((b, k));
+                }
+            }
+        }
+        for &(p, k) in &ends {
+            let m = model.supports[k].motion;
+            if m.iter().all(|x| *x == 0.0) {
+                continue;
+            }
+            // An end of a stretch of one motion: no contact edge of another support with the same
+            // motion, and no other contact edge of this support, meets it there.
+            let same = ends
+                .iter()
+                .filter(|(q, j)| norm(sub(*q, p)) <= tol && model.supports[*j].motion == m)
+                .count();
+            if same <= 1 && !keys.iter().any(|q| norm(sub(*q, p)) < e) {
+                keys.push(p);
+            }
+        }
+        keys
+    }
+
+    /// The global stage's candidate crack lines: from each key point of the outline (a corner
+    /// turning by more than 30°, or an end of the settling zone: a vertex shared by two
+    /// supports of different motions, within one element of the outline, projected onto it),
+    /// the chord in each of `fan` directions over the full circle that enters the wall, to the
+    /// first point where it leaves it; and where both a direction and its opposite enter the
+    /// wall, the chord through the key point. Depends on the outline and the supports only,
+    /// not on the mesh. Duplicates (both ends within 5 % of an element) are dropped.
+    fn candidates(&self, model: &Model, fan: usize, tol: f64) -> Vec<Candidate> {
+        let keys = self.key_points(model, tol);
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!("adapt: global stage: {} key points {keys:?}", keys.len());
+        }
+        let step = std::f64::consts::TAU / fan as f64;
+        let eps = 1e-6 * self.size;
+        let mut out: Vec<Candidate> = Vec::new();
+        for p in keys {
+            // The first exit of the ray from `p` along each direction (if it enters the wall).
+            let exits: Vec<Option<(Point, f64)>> = (0..fan)
+                .map(|k| {
+                    let th = step * k as f64;
+                    let d = [th.cos(), th.sin()];
+                    // Slivers between blocks that do not quite meet are not the outline.
+                    let t = self
+                        .hits_of(p, d, self.element * self.element)
+                        .into_iter()
+                        .filter(|t| *t > eps)
+                        .fold(f64::INFINITY, f64::min);
+                    if !t.is_finite() {
+                        return None;
+                    }
+                    let q = [p[0] + t * d[0], p[1] + t * d[1]];
+                    let m = [p[0] + 0.5 * t * d[0], p[1] + 0.5 * t * d[1]];
+                    self.inside(m, 1e-9 * self.size).then_some((q, t))
+                })
+                .collect();
+            let push = |a: Point, b: Point, len: f64, out: &mut Vec<Candidate>| {
+                let line = Line {
+                    ends: [self.project(a), self.project(b)],
+                };
+                if line.degenerate(self) || self.along_outline(&line) {
+                    return;
+                }
+                let [a, b] = line.points(self);
+                let near = 0.05 * self.element;
+                if out.iter().any(|c| {
+                    let [x, y] = c.line.points(self);
+                    (norm(sub(x, a)) < near && norm(sub(y, b)) < near)
+                        || (norm(sub(x, b)) < near && norm(sub(y, a)) < near)
+                }) {
+                    return;
+                }
+                out.push(Candidate {
+                    line,
+                    reach: len * step,
+                });
+            };
+            for k in 0..fan {
+                if let Some((q, t)) = exits[k] {
+                    push(p, q, t, &mut out);
+                }
+            }
+            if fan % 2 == 0 {
+                for k in 0..fan / 2 {
+                    if let (Some((q, t)), Some((r, _))) = (exits[k], exits[k + fan / 2]) {
+                        // Through the key point: from `r` to `q`, the far end `q` searched.
+                        push(r, q, t, &mut out);
+                    }
+                }
+            }
+        }
+        out
+    }
+
     /// Whether a line runs along the outline (its midpoint on it): it would cut nothing.
     fn along_outline(&self, l: &Line) -> bool {
         let [a, b] = l.points(self);
@@ -547,8 +860,16 @@ impl Region {
 
     /// Parameters `t` where the line `p + t·d` (d a unit vector) crosses the outline.
     fn hits(&self, p: Point, d: Point) -> Vec<f64> {
+        self.hits_of(p, d, 0.0)
+    }
+
+    /// [`Region::hits`] on the loops of area at least `min_area` only.
+    fn hits_of(&self, p: Point, d: Point, min_area: f64) -> Vec<f64> {
         let mut ts = Vec::new();
         for lp in &self.loops {
+            if min_area > 0.0 && area_centroid(lp).0.abs() < min_area {
+                continue;
+            }
             for i in 0..lp.len() {
                 let (a, b) = (lp[i], lp[(i + 1) % lp.len()]);
                 let e = sub(b, a);

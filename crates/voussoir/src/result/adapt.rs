@@ -28,6 +28,10 @@ pub struct AdaptIteration {
     pub certified: bool,
     /// Search solves of this iteration.
     pub evaluations: usize,
+    /// The global stage (candidate lines from the outline's corners and the settling zone's
+    /// ends, chosen greedily), not a local iteration; written only when true.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub global: bool,
     /// Wall-clock seconds from the start of the adaptation to the end of this iteration (in the
     /// summary only: the JSON stays byte-identical for the same input).
     #[serde(skip)]

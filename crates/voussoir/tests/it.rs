@@ -69,6 +69,8 @@ mod issue29_sequences;
 mod issue30_adapt;
 #[path = "issue30_adapt_facade.rs"]
 mod issue30_adapt_facade;
+#[path = "issue30_adapt_global.rs"]
+mod issue30_adapt_global;
 #[path = "issue30_adapt_meshes.rs"]
 mod issue30_adapt_meshes;
 #[path = "issue30_cracks.rs"]

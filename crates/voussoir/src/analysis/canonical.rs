@@ -852,9 +852,14 @@ pub fn canonical_forces<S: Assembly>(
     // Why the QP's point is not a candidate (listed in `rejected`). A QP that reaches its
     // iteration cap is not used even where Clarabel calls its point "almost solved" (reduced
     // accuracy): on the façade in running bond at 0.25 m that point, after 500 iterations,
-    // failed the duality certificate (gap 5.7e-2).
+    // failed the duality certificate (gap 5.7e-2). A point solved to full accuracy at the cap's
+    // last iteration is used.
     let capped = |q: &Result<lp::LpSolution>| match q {
-        Ok(q) => q.status == LpStatus::Optimal && q.iterations.max(0) as usize >= qp_cap,
+        Ok(q) => {
+            q.status == LpStatus::Optimal
+                && q.reduced_accuracy
+                && q.iterations.max(0) as usize >= qp_cap
+        }
         Err(e) => e.to_string().contains("MaxIterations"),
     };
     let qp_reason: Option<String> = match &qs {
@@ -871,7 +876,10 @@ pub fn canonical_forces<S: Assembly>(
             Some("the energy QP's point does not hold the force program to 1e-7".into())
         }
         Ok(q) if q.status == LpStatus::Optimal => None,
-        Ok(q) => Some(format!("the energy QP ended {:?}", q.status).to_lowercase()),
+        Ok(q) => Some(format!(
+            "the energy QP ended {}",
+            format!("{:?}", q.status).to_lowercase()
+        )),
         Err(e) => Some(format!("the energy QP failed: {e}")),
     };
     let qs = match (qs, &qp_reason) {

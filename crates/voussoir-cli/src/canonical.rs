@@ -98,7 +98,11 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
         let crit = match f.selected_by {
             ForceSelection::LeastEnergy => "least complementary energy",
             ForceSelection::Admissible => {
-                if f.rejected.iter().any(|r| r.field == ForceSelection::LeastEnergy) {
+                if f
+                    .rejected
+                    .iter()
+                    .any(|r| r.field == ForceSelection::LeastEnergy && r.gap.is_some())
+                {
                     "an admissible field (the least-energy field did not certify: not the least-energy field, nor unique)"
                 } else {
                     "an admissible field (the least-energy program did not end optimal: not the least-energy field, nor unique)"
@@ -142,12 +146,24 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
                 );
             }
         }
-        if !f.rejected.is_empty() {
-            let list: Vec<String> = f
-                .rejected
-                .iter()
-                .map(|r| format!("{} (duality gap {:.1e})", r.field.name(), r.gap))
-                .collect();
+        for r in &f.rejected {
+            if let (None, Some(why)) = (r.gap, &r.reason) {
+                let _ = writeln!(
+                    s,
+                    "canonical forces: {} not computed: {why}",
+                    r.field.name()
+                );
+            }
+        }
+        let list: Vec<String> = f
+            .rejected
+            .iter()
+            .filter_map(|r| {
+                r.gap
+                    .map(|g| format!("{} (duality gap {:.1e})", r.field.name(), g))
+            })
+            .collect();
+        if !list.is_empty() {
             let _ = writeln!(
                 s,
                 "canonical forces: not reported, their duality certificate failing with the mechanism: {}",

@@ -96,19 +96,27 @@ pub struct CanonicalForces<D: Spatial = Two> {
     pub reaction_ranges: Vec<ReactionRange<D>>,
     /// Programs solved for the selection.
     pub solves: usize,
-    /// The candidate fields not reported because their duality certificate failed (each with
-    /// its relative gap), in the order they were tried: least energy, admissible, the force
-    /// program's own optimum. Empty when the first candidate certified.
+    /// The candidate fields not reported, in the order they were tried: least energy,
+    /// admissible, the force program's own optimum. Each either with its relative duality gap
+    /// (its certificate failed) or with the reason it was not computed (the energy QP stopped
+    /// at its iteration cap, or did not end optimal). Empty when the first candidate certified.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub rejected: Vec<RejectedField>,
 }
 
-/// A candidate force field not reported: its certificate failed.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+/// A candidate force field not reported: its certificate failed, or its program gave no
+/// field to certify.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RejectedField {
     pub field: ForceSelection,
-    /// Its relative duality gap with the reported mechanism (above the tolerance, 1e-7).
-    pub gap: f64,
+    /// Its relative duality gap with the reported mechanism (above the tolerance, 1e-7);
+    /// `None` (absent in JSON) when no field was computed (`reason`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gap: Option<f64>,
+    /// Why no field was computed, e.g. "the energy QP stopped at its cap of 100 iterations"
+    /// (absent when `gap` is given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
 }
 
 /// What fixed the canonical force field among the admissible ones.

@@ -61,6 +61,8 @@ mod issue29_friction_precision;
 mod issue29_outcomes;
 #[path = "issue29_policy.rs"]
 mod issue29_policy;
+#[path = "issue29_qp_budget.rs"]
+mod issue29_qp_budget;
 #[path = "issue29_recertify.rs"]
 mod issue29_recertify;
 #[path = "issue29_sequences.rs"]

@@ -63,7 +63,10 @@ fn issue29_item5_tilt_canonical_by_default_cli() {
     assert!(!joints(&d).is_empty());
     assert_eq!(joints(&d), joints(&r), "the vault's tilt optimum is unique");
     let text = run(&dir, &["tilt", &m]);
-    assert!(text.contains("canonical: the optimal mechanism is"), "{text}");
+    assert!(
+        text.contains("canonical: the optimal mechanism is"),
+        "{text}"
+    );
 }
 
 /// `capacity` of the 2D paper arch: by default the settlement mechanism is canonical (the
@@ -78,7 +81,15 @@ fn issue29_item5_capacity_canonical_by_default_cli() {
         &["gen", "arch", "--live", "full", "-o", m.to_str().unwrap()],
     );
     let m = m.to_str().unwrap();
-    let base = ["capacity", m, "--steps", "6", "--move", "right=0.02,0", "--json"];
+    let base = [
+        "capacity",
+        m,
+        "--steps",
+        "6",
+        "--move",
+        "right=0.02,0",
+        "--json",
+    ];
     let with = |extra: &[&str]| {
         let mut a = base.to_vec();
         a.extend_from_slice(extra);
@@ -114,7 +125,11 @@ fn issue29_item5_capacity_canonical_by_default_cli() {
     );
     let mut a = base[..base.len() - 1].to_vec();
     a.extend_from_slice(&["--raw", "--canonical-steps"]);
-    refused(&dir, &a, "--canonical-steps applies to the canonical selection, which --raw leaves out");
+    refused(
+        &dir,
+        &a,
+        "--canonical-steps applies to the canonical selection, which --raw leaves out",
+    );
 }
 
 /// `sweep` of the vault: the default and `--raw` give the same works (CSV), and both run.

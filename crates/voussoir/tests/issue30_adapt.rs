@@ -21,57 +21,14 @@ use voussoir::analysis::adapt::{limit_adapt, settle_adapt, AdaptOptions};
 use voussoir::analysis::limit::{limit, Crushing, DEFAULT_FACETS};
 use voussoir::analysis::settlement::settle;
 use voussoir::lp::SolverOptions;
-use voussoir::model::{Block, Load, Loads, Material, Model, Support};
+use voussoir::model::{Load, Model, Support};
 use voussoir::{BuildOptions, Structure};
 
-const B: f64 = 4.0;
-const H: f64 = 2.0;
-const A: f64 = 2.5;
-const DELTA: f64 = 0.01;
-const GAMMA: f64 = 18.0;
+mod support;
+use support::settling_panel::{panel, A, B, DELTA, GAMMA, H};
 
 fn hand_work() -> f64 {
     GAMMA * H * (B - A) * DELTA / 2.0
-}
-
-fn panel(blocks: Vec<Vec<[f64; 2]>>) -> Model {
-    let mut materials = std::collections::BTreeMap::new();
-    materials.insert(
-        "default".to_string(),
-        Material {
-            unit_weight: GAMMA,
-            width: 1.0,
-            ..Material::default()
-        },
-    );
-    Model {
-        description: "panel on two supports, the right one settling".into(),
-        materials,
-        blocks: blocks
-            .into_iter()
-            .map(|polygon| Block {
-                polygon,
-                material: None,
-            })
-            .collect(),
-        supports: vec![
-            Support {
-                name: "L".into(),
-                polygon: vec![[0.0, -0.5], [A, -0.5], [A, 0.0], [0.0, 0.0]],
-                motion: [0.0; 3],
-                connection: Default::default(),
-            },
-            Support {
-                name: "R".into(),
-                polygon: vec![[A, -0.5], [B, -0.5], [B, 0.0], [A, 0.0]],
-                motion: [0.0, -DELTA, 0.0],
-                connection: Default::default(),
-            },
-        ],
-        loads: Loads::default(),
-        tolerance: None,
-        cracks: vec![],
-    }
 }
 
 /// A grid of `nx` × `ny` rectangles.

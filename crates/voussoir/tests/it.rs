@@ -4,7 +4,8 @@
 //! its issue) and is a module here. One binary instead of one per file: the test binaries were
 //! linked ~100 times against HiGHS, Clarabel and the library, 9 of the CI's 30 minutes; and the
 //! tests of all files share the cores instead of waiting file by file. `autotests = false` in
-//! Cargo.toml, so a new file must be listed below: `every_test_file_is_a_module` fails otherwise.
+//! Cargo.toml, so a new file must be listed below: `every_test_file_is_a_module`
+//! (below, for every crate) fails otherwise.
 //! One file: `cargo test --release -p CRATE --test it -- FILE::`.
 
 #[path = "bench_scenarios.rs"]
@@ -120,17 +121,27 @@ mod three_d_core;
 #[path = "three_d_structures.rs"]
 mod three_d_structures;
 
-/// A test file not listed above would never be compiled nor run: refuse that.
+/// A test file not listed in its crate's `tests/it.rs` would never be compiled nor run: refuse
+/// that, for every crate of the workspace with integration tests (one guard, here).
 #[test]
 fn every_test_file_is_a_module() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
-    let me = std::fs::read_to_string(dir.join("it.rs")).expect("tests/it.rs");
+    let crates = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let mut missing = Vec::new();
-    for e in std::fs::read_dir(&dir).expect("the tests directory") {
-        let name = e.unwrap().file_name().into_string().unwrap();
-        if name.ends_with(".rs") && name != "it.rs" && !me.contains(&format!("#[path = \"{name}\"]")) {
-            missing.push(name);
+    for krate in ["voussoir", "voussoir-cli", "voussoir-io"] {
+        let dir = crates.join(krate).join("tests");
+        let me = std::fs::read_to_string(dir.join("it.rs")).expect("tests/it.rs");
+        for e in std::fs::read_dir(&dir).expect("the tests directory") {
+            let name = e.unwrap().file_name().into_string().unwrap();
+            if name.ends_with(".rs")
+                && name != "it.rs"
+                && !me.contains(&format!("#[path = \"{name}\"]"))
+            {
+                missing.push(format!("{krate}/tests/{name}"));
+            }
         }
     }
-    assert!(missing.is_empty(), "test files not in tests/it.rs (never compiled): {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "test files not in their tests/it.rs (never compiled): {missing:?}"
+    );
 }

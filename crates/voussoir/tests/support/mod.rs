@@ -112,3 +112,56 @@ pub fn offset_stack(e: f64, s: f64) -> Structure3d {
     .unwrap();
     Structure3d::new(&m, BuildOptions::default()).unwrap()
 }
+
+/// The panel of issue 30's adaptation tests: `B` × `H` m on two supports, the right one (from
+/// x = `A`) settling by `DELTA`; unit weight `GAMMA`, 1 m thick.
+pub mod settling_panel {
+    use voussoir::model::{Block, Loads, Material, Model, Point, Support};
+
+    pub const B: f64 = 4.0;
+    pub const H: f64 = 2.0;
+    pub const A: f64 = 2.5;
+    pub const DELTA: f64 = 0.01;
+    pub const GAMMA: f64 = 18.0;
+
+    /// The panel of `issue30_adapt.rs` with the given blocks.
+    pub fn panel(blocks: Vec<Vec<Point>>) -> Model {
+        let mut materials = std::collections::BTreeMap::new();
+        materials.insert(
+            "default".to_string(),
+            Material {
+                unit_weight: GAMMA,
+                width: 1.0,
+                ..Material::default()
+            },
+        );
+        Model {
+            description: "panel on two supports, the right one settling".into(),
+            materials,
+            blocks: blocks
+                .into_iter()
+                .map(|polygon| Block {
+                    polygon,
+                    material: None,
+                })
+                .collect(),
+            supports: vec![
+                Support {
+                    name: "L".into(),
+                    polygon: vec![[0.0, -0.5], [A, -0.5], [A, 0.0], [0.0, 0.0]],
+                    motion: [0.0; 3],
+                    connection: Default::default(),
+                },
+                Support {
+                    name: "R".into(),
+                    polygon: vec![[A, -0.5], [B, -0.5], [B, 0.0], [A, 0.0]],
+                    motion: [0.0, -DELTA, 0.0],
+                    connection: Default::default(),
+                },
+            ],
+            loads: Loads::default(),
+            tolerance: None,
+            cracks: vec![],
+        }
+    }
+}

@@ -470,6 +470,9 @@ fn read_result(analysis: &str, v: &Value, cell: &mut Cell) {
         cell.gap = c["gap"].as_f64().or(c["relative_gap"].as_f64());
         cell.admissibility = c["admissibility"].as_f64();
         cell.certified = c["ok"].as_bool();
+    } else if r["no_equilibrium"].is_object() {
+        // "Cannot stand": certified by the elastic program's Farkas certificate.
+        cell.certified = r["no_equilibrium"]["ok"].as_bool();
     }
     cell.programs = program_lines(r);
     if !cell.programs.is_empty() && cell.certified.is_none() {

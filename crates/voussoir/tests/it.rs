@@ -38,6 +38,8 @@ mod issue28_identify;
 mod issue28_io;
 #[path = "issue28_scale.rs"]
 mod issue28_scale;
+#[path = "issue29_cannot_stand_certified.rs"]
+mod issue29_cannot_stand_certified;
 #[path = "issue29_canonical.rs"]
 mod issue29_canonical;
 #[path = "issue29_canonical3d.rs"]

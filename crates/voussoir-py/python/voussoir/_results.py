@@ -139,6 +139,15 @@ class _Mechanism(Result):
     __slots__ = ()
 
     @property
+    def no_equilibrium(self) -> Optional[dict]:
+        """Of a "cannot stand" answer (limit ``no_equilibrium`` with no λ in equilibrium,
+        settle ``cannot_stand``): the certificate that no equilibrium exists — ``violation``
+        (the least total violation of the equilibrium rows, proved positive by the elastic
+        program's Farkas certificate), ``method``, ``ok``. None otherwise."""
+        c = self._d().get("no_equilibrium")
+        return None if c is None else dict(c)
+
+    @property
     def dim(self) -> int:
         """2 or 3: the dimension of the analysed model."""
         j = self._d().get("joints") or []

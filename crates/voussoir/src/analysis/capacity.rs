@@ -177,9 +177,21 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         })
         .collect();
     if path.status != SettlementStatus::Mechanism {
+        let mut message = format!("settlement analysis: {}", path.status.sentence());
+        // "Cannot stand" certified, as `settle` certifies it (the polygonal statics).
+        let mut no_equilibrium = None;
+        if path.status == SettlementStatus::CannotStand && opts.crushing == Crushing::Linear {
+            let mut map = KinematicMap::new(&path.unit);
+            map.facets = opts.facets;
+            let fp = programs::settlement_force_program(&map, &path.unit.load_vector(false));
+            no_equilibrium = crate::analysis::limit::no_equilibrium_certificate(&fp, &opts.solver)?;
+            if let Some(c) = &no_equilibrium {
+                message = crate::analysis::limit::no_equilibrium_message(&message, c);
+            }
+        }
         return Ok(CapacityResult {
             status: CapacityStatus::NoSettlementMechanism,
-            message: format!("settlement analysis: {}", path.status.sentence()),
+            message,
             solver: capacity_solver(opts),
             max_settlement: smax,
             direction,
@@ -197,6 +209,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             iterations: 0,
             geometry: st.shapes(),
             canonical: None,
+            no_equilibrium,
         });
     }
     let mut selection = canonical.map(|_| CapacityCanonical {
@@ -486,6 +499,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         iterations,
         geometry: st.shapes(),
         canonical: selection,
+        no_equilibrium: None,
     })
 }
 
@@ -523,40 +537,21 @@ fn step_certificate<S: Assembly>(
     let locked = sol.status == LimitStatus::Locked;
     let (dead, live) = (st.load_vector(false), st.load_vector(true));
     let fp = programs::limit_force_program(map, &dead, &live);
-    if !fp.cones.is_empty() {
+    let Some(c) = crate::analysis::limit::no_equilibrium_certificate(&fp, &opts.solver)? else {
         return Ok(None);
-    }
-    let _kind = lp::ProgramKind::set(
-        "no-equilibrium certificates",
-        "the elastic program decides with a certificate either way, Clarabel first",
-    );
-    for method in [lp::Method::Clarabel, lp::Method::DualSimplex] {
-        let o = SolverOptions {
-            method,
-            ..opts.solver
-        };
-        if let Some(d) = lp::sequence::decide_feasibility(&fp.lp, &o, 0.0)? {
-            // Locked and feasible: the certificate would be a ray of unbounded λ (not
-            // computed here): no certificate.
-            if locked && d.feasible {
-                return Ok(None);
-            }
-            return Ok(Some(StepCertificate {
-                kind: StepCertificateKind::NoEquilibrium,
-                gap: None,
-                admissibility: None,
-                violation: Some(d.violation),
-                // Decided infeasible, as the step says; a feasible decision contradicts it.
-                ok: !d.feasible,
-            }));
-        }
+    };
+    // Locked and feasible (decided): the certificate would be a ray of unbounded λ (not
+    // computed here): no certificate.
+    if locked && c.violation.is_some() && !c.ok {
+        return Ok(None);
     }
     Ok(Some(StepCertificate {
         kind: StepCertificateKind::NoEquilibrium,
         gap: None,
         admissibility: None,
-        violation: None,
-        ok: false,
+        violation: c.violation,
+        // Decided infeasible, as the step says; a feasible decision contradicts it.
+        ok: c.ok,
     }))
 }
 

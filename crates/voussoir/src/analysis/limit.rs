@@ -427,6 +427,82 @@ fn limit_certificate(
     })
 }
 
+/// The certificate that a force program `fp` (limit or settlement; its objective ignored) has
+/// no equilibrium: its elastic program decided with a certificate either way
+/// ([`lp::sequence::decide_feasibility`]), Clarabel first, then the dual simplex (each alone:
+/// a chain ending in the simplex's phase 1 stalled on the 24 × 24 dome's elastic programs).
+/// `None` for a cone program (the elastic program is an LP). `ok` only where a method decided
+/// "infeasible"; a "feasible" decision contradicts the answer and is reported with `ok: false`.
+pub fn no_equilibrium_certificate(
+    fp: &ForceProgram,
+    solver: &SolverOptions,
+) -> Result<Option<NoEquilibriumCertificate>> {
+    if !fp.cones.is_empty() {
+        return Ok(None);
+    }
+    let _kind = lp::ProgramKind::set(
+        "no-equilibrium certificates",
+        "the elastic program decides with a certificate either way, Clarabel first",
+    );
+    for method in [lp::Method::Clarabel, lp::Method::DualSimplex] {
+        let o = SolverOptions { method, ..*solver };
+        if let Some(d) = lp::sequence::decide_feasibility(&fp.lp, &o, 0.0)? {
+            return Ok(Some(NoEquilibriumCertificate {
+                violation: Some(d.violation),
+                method: Some(method),
+                ok: !d.feasible,
+            }));
+        }
+    }
+    Ok(Some(NoEquilibriumCertificate {
+        violation: None,
+        method: None,
+        ok: false,
+    }))
+}
+
+/// A "cannot stand" limit result (`no_equilibrium` with no multiplier in equilibrium at all)
+/// given its certificate ([`no_equilibrium_certificate`] of the limit's force program with the
+/// polygonal laws of the map); the message says whether it holds. Other results unchanged.
+pub fn certify_no_equilibrium<S: Assembly>(
+    st: &S,
+    r: &mut LimitResult<S::D>,
+    solver: &SolverOptions,
+    facets: usize,
+) -> Result<()> {
+    if r.status != LimitStatus::NoEquilibrium
+        || r.load_multiplier.is_some()
+        || r.least_load_multiplier.is_some()
+        || r.no_equilibrium.is_some()
+    {
+        return Ok(());
+    }
+    let mut map = KinematicMap::new(st);
+    map.facets = facets;
+    let (dead, live) = load_vectors(st)?;
+    let fp = programs::limit_force_program(&map, &dead, &live);
+    r.no_equilibrium = no_equilibrium_certificate(&fp, solver)?;
+    if let Some(c) = &r.no_equilibrium {
+        r.message = no_equilibrium_message(&r.message, c);
+    }
+    Ok(())
+}
+
+/// The message of a "cannot stand" answer with its certificate.
+pub fn no_equilibrium_message(message: &str, c: &NoEquilibriumCertificate) -> String {
+    match (c.ok, c.violation, c.method) {
+        (true, Some(v), Some(m)) => format!(
+            "{message} (certified: the equilibrium rows' least total violation is {v:.1e} of the largest load, a Farkas certificate by {})",
+            m.name()
+        ),
+        (false, Some(_), Some(m)) => format!(
+            "NOT CERTIFIED (the elastic program by {} found an equilibrium within its tolerance): {message}",
+            m.name()
+        ),
+        _ => format!("NOT CERTIFIED (no method decided the equilibrium's infeasibility): {message}"),
+    }
+}
+
 /// Turn raw vectors into the reported result.
 pub fn limit_result<S: Assembly>(
     st: &S,
@@ -519,5 +595,6 @@ pub fn limit_result<S: Assembly>(
         friction_iteration: None,
         geometry: st.shapes(),
         canonical: None,
+        no_equilibrium: None,
     }
 }

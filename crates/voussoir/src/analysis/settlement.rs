@@ -184,6 +184,30 @@ pub fn settle<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<SettlementRes
     )
 }
 
+/// A "cannot stand" settlement result given its certificate: the dead loads' equilibrium on
+/// the supports (the settlement's force program, whose infeasibility is the motion program's
+/// unboundedness) decided infeasible by its elastic program
+/// ([`crate::analysis::limit::no_equilibrium_certificate`]); the message says whether it holds.
+/// Other results unchanged.
+pub fn certify_cannot_stand<S: Assembly>(
+    st: &S,
+    r: &mut SettlementResult<S::D>,
+    solver: &SolverOptions,
+    facets: usize,
+) -> Result<()> {
+    if r.status != SettlementStatus::CannotStand || r.no_equilibrium.is_some() {
+        return Ok(());
+    }
+    let mut map = KinematicMap::new(st);
+    map.facets = facets;
+    let fp = programs::settlement_force_program(&map, &st.load_vector(false));
+    r.no_equilibrium = crate::analysis::limit::no_equilibrium_certificate(&fp, solver)?;
+    if let Some(c) = &r.no_equilibrium {
+        r.message = crate::analysis::limit::no_equilibrium_message(&r.message, c);
+    }
+    Ok(())
+}
+
 pub fn settlement_result<S: Assembly>(
     st: &S,
     map: &KinematicMap,
@@ -207,6 +231,7 @@ pub fn settlement_result<S: Assembly>(
             friction_iteration: None,
             geometry: st.shapes(),
             canonical: None,
+            no_equilibrium: None,
         };
     }
     let rep = report(st, map, &s.mechanism, 1.0, &s.pn, &s.pt);
@@ -265,6 +290,7 @@ pub fn settlement_result<S: Assembly>(
         friction_iteration: None,
         geometry: st.shapes(),
         canonical: None,
+        no_equilibrium: None,
     }
 }
 

@@ -146,7 +146,7 @@ impl LimitRequest {
         } else {
             (self.laws().crushing, self.laws().facets())
         };
-        let r = if self.laws().non_associative {
+        let mut r = if self.laws().non_associative {
             if crushing == Crushing::Conic {
                 return invalid(if dims == 3 {
                     format!(
@@ -184,6 +184,11 @@ impl LimitRequest {
         } else {
             limit_with(st, &solver, crushing, facets)?
         };
+        // "Cannot stand" certified (the polygonal statics the answer came from; a cone's
+        // answer is Clarabel's alone).
+        if crushing == Crushing::Linear {
+            crate::analysis::limit::certify_no_equilibrium(st, &mut r, &solver, facets)?;
+        }
         Ok((Output::Limit(r), solver))
     }
 }

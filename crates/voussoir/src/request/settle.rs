@@ -5,7 +5,9 @@ use crate::analysis::canonical::settle_canonical;
 use crate::analysis::canonical_friction::settle_nonassociative_canonical;
 use crate::analysis::limit::{Crushing, DEFAULT_FACETS};
 use crate::analysis::nonassociative::{settle_nonassociative, NonAssociativeOptions};
-use crate::analysis::settlement::{settle, settle_crushing, settle_with, SettlementForm};
+use crate::analysis::settlement::{
+    certify_cannot_stand, settle, settle_crushing, settle_with, SettlementForm,
+};
 use crate::error::Result;
 use crate::lp::SolverOptions;
 use crate::structure::Assembly;
@@ -181,7 +183,7 @@ impl SettleRequest {
             let solver = req.solver.iteration(&super::class(st, req));
             // In 2D (unless `raw`) the canonical mechanism of the last iterate's program
             // (least crack area; analysis::canonical_friction), as for Heyman's rules.
-            let r = if dims == 2 && !self.raw && crushing == Crushing::Linear {
+            let mut r = if dims == 2 && !self.raw && crushing == Crushing::Linear {
                 settle_nonassociative_canonical(
                     st,
                     &solver,
@@ -199,9 +201,12 @@ impl SettleRequest {
                     &NonAssociativeOptions::settlement(),
                 )?
             };
+            if crushing == Crushing::Linear {
+                certify_cannot_stand(st, &mut r, &solver, facets)?;
+            }
             return Ok((Output::Settlement(r), solver));
         }
-        let r = if self.canonical(req, dims) {
+        let mut r = if self.canonical(req, dims) {
             settle_canonical(
                 st,
                 &solver,
@@ -215,6 +220,10 @@ impl SettleRequest {
         } else {
             settle_with(st, &solver, self.settlement_form)?
         };
+        // "Cannot stand" certified (the polygonal statics the answer came from).
+        if crushing == Crushing::Linear {
+            certify_cannot_stand(st, &mut r, &solver, facets)?;
+        }
         Ok((Output::Settlement(r), solver))
     }
 }

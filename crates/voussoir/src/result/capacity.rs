@@ -236,6 +236,10 @@ pub struct CapacityResult<D: Spatial = Two> {
     /// steps' collapse mechanisms were selected; absent without it (`raw`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub canonical: Option<CapacityCanonical>,
+    /// The settlement cannot stand (`no_settlement_mechanism` with `cannot_stand`): the
+    /// certificate that the dead loads have no equilibrium ([`super::NoEquilibriumCertificate`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub no_equilibrium: Option<super::NoEquilibriumCertificate>,
 }
 
 /// The canonical selection of a capacity curve: the settlement mechanism that deforms the

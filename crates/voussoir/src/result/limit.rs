@@ -28,6 +28,25 @@ impl LimitStatus {
     }
 }
 
+/// The certificate of a "cannot stand" answer (issue 29 item 3): the equilibrium of the dead
+/// loads with no tension and the joints' friction — the statics, the same set whether friction
+/// is associative or not — decided infeasible again by its elastic program
+/// ([`crate::lp::sequence::decide_feasibility`]), whose duals are a Farkas certificate: row
+/// multipliers that bound the least total violation of the equilibrium rows from below.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct NoEquilibriumCertificate {
+    /// The least total violation of the equilibrium rows, relative to the largest row bound
+    /// (of the nondimensional program); `null` where no method decided.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub violation: Option<f64>,
+    /// The method whose elastic program decided; `null` where none did.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub method: Option<crate::lp::Method>,
+    /// Decided infeasible with its certificate, as the result says. False where no method
+    /// decided, or where the elastic program found an equilibrium after all.
+    pub ok: bool,
+}
+
 /// The certificate of a collapse multiplier (issue 18: every result at any size states it):
 /// the static λ of the force program against the kinematic multiplier of the mechanism read
 /// from its duals, and that mechanism's admissibility. Computed for the joint laws whose
@@ -94,4 +113,7 @@ pub struct LimitResult<D: Spatial = Two> {
     /// solution, e.g. with `--raw`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub canonical: Option<super::Canonical<D>>,
+    /// `no_equilibrium` without a multiplier: the certificate that no equilibrium exists.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub no_equilibrium: Option<NoEquilibriumCertificate>,
 }

@@ -78,6 +78,10 @@ pub struct SettlementResult<D: Spatial = Two> {
     /// solution, e.g. with `--raw`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub canonical: Option<super::Canonical<D>>,
+    /// `cannot_stand`: the certificate that the dead loads have no equilibrium (the force
+    /// program infeasible, decided by its elastic program; [`super::NoEquilibriumCertificate`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub no_equilibrium: Option<super::NoEquilibriumCertificate>,
 }
 
 /// Tolerance on the relative duality gap.

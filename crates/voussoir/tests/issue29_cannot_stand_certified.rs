@@ -113,6 +113,24 @@ fn issue29_item3_cannot_stand_certified_heyman_and_friction() {
     }
 }
 
+/// The tilting table: towards +x the overhanging cube tips further, so no tilt (nor the
+/// opposite tilt: λ is free in sign) gives it an equilibrium; "no angle" is certified on the
+/// dead loads alone.
+#[test]
+fn issue29_item3_tilt_that_cannot_stand_certified() {
+    let m = model(0.45, None);
+    let t = run(&m, r#"{"analysis": {"type": "tilt"}}"#);
+    let t = t.tilt().unwrap();
+    assert_eq!(t.tilt_angle, None, "{}", t.limit.message);
+    assert_eq!(
+        t.limit.status,
+        voussoir::analysis::limit::LimitStatus::NoEquilibrium,
+        "{}",
+        t.limit.message
+    );
+    certified(&t.limit.no_equilibrium, "tilt");
+}
+
 /// The control: with its base under x ∈ [0, 0.55] the first cube stands; no "cannot stand"
 /// certificate is made up (the live load collapses the second cube: λ = 0.5 by hand, the cube
 /// of weight W = γ·1 m² tipping about its left corner under λ·1 kN at height 1 m: λ·1 = W·0.5).

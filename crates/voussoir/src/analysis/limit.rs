@@ -461,26 +461,27 @@ pub fn no_equilibrium_certificate(
     }))
 }
 
-/// A "cannot stand" limit result (`no_equilibrium` with no multiplier in equilibrium at all)
-/// given its certificate ([`no_equilibrium_certificate`] of the limit's force program with the
-/// polygonal laws of the map); the message says whether it holds. Other results unchanged.
+/// A "cannot stand" limit result (`no_equilibrium`: no equilibrium under the dead loads alone)
+/// given its certificate: the dead loads' statics on `st` (the settlement force program with no
+/// support motion, whose feasible set is their equilibrium, with the polygonal laws of
+/// `facets`, `None` the map's default) decided infeasible ([`no_equilibrium_certificate`]);
+/// the message says whether it holds. `st` is the structure as given, also for a limit result
+/// of a structure built on it (the tilting table's, whose live load is the tilt). Other
+/// results unchanged.
 pub fn certify_no_equilibrium<S: Assembly>(
     st: &S,
     r: &mut LimitResult<S::D>,
     solver: &SolverOptions,
-    facets: usize,
+    facets: Option<usize>,
 ) -> Result<()> {
-    if r.status != LimitStatus::NoEquilibrium
-        || r.load_multiplier.is_some()
-        || r.least_load_multiplier.is_some()
-        || r.no_equilibrium.is_some()
-    {
+    if r.status != LimitStatus::NoEquilibrium || r.no_equilibrium.is_some() {
         return Ok(());
     }
     let mut map = KinematicMap::new(st);
-    map.facets = facets;
-    let (dead, live) = load_vectors(st)?;
-    let fp = programs::limit_force_program(&map, &dead, &live);
+    if let Some(f) = facets {
+        map.facets = f;
+    }
+    let fp = programs::settlement_force_program(&map, &st.load_vector(false));
     r.no_equilibrium = no_equilibrium_certificate(&fp, solver)?;
     if let Some(c) = &r.no_equilibrium {
         r.message = no_equilibrium_message(&r.message, c);

@@ -187,7 +187,7 @@ impl LimitRequest {
         // "Cannot stand" certified (the polygonal statics the answer came from; a cone's
         // answer is Clarabel's alone).
         if crushing == Crushing::Linear {
-            crate::analysis::limit::certify_no_equilibrium(st, &mut r, &solver, facets)?;
+            crate::analysis::limit::certify_no_equilibrium(st, &mut r, &solver, Some(facets))?;
         }
         Ok((Output::Limit(r), solver))
     }

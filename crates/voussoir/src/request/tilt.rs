@@ -76,11 +76,12 @@ impl TiltRequest {
     ) -> Result<(TiltResult, SolverOptions)> {
         let solver = req.solver.options(&super::class(st, req));
         let direction = self.sign_2d(req)?;
-        let (tilt_angle, limit) = if self.canonical(req) {
+        let (tilt_angle, mut limit) = if self.canonical(req) {
             tilt_along_canonical(st, [direction, 0.0], &solver, &Self::canonical_options(2))?
         } else {
             tilt_along(st, [direction, 0.0], &solver, false)?
         };
+        crate::analysis::limit::certify_no_equilibrium(st, &mut limit, &solver, None)?;
         Ok((
             TiltResult {
                 tilt_angle,
@@ -102,11 +103,15 @@ impl TiltRequest {
         let azimuth = self.normalised();
         let a = azimuth.to_radians();
         let direction = [a.cos(), a.sin(), 0.0];
-        let (tilt_angle, limit) = if self.canonical(req) {
+        let (tilt_angle, mut limit) = if self.canonical(req) {
             tilt_along_canonical(st, direction, &solver, &Self::canonical_options(3))?
         } else {
             tilt_along(st, direction, &solver, req.model.exact_cone())?
         };
+        // With the pyramid only: the exact cone's answer is the cone program's.
+        if !req.model.exact_cone() {
+            crate::analysis::limit::certify_no_equilibrium(st, &mut limit, &solver, None)?;
+        }
         Ok((
             TiltResult {
                 tilt_angle,

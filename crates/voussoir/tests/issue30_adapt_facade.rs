@@ -212,15 +212,22 @@ fn adapted_canonical(m: &Model) -> (f64, Vec<Point>) {
 /// The must-show (issue 30): the façade at 0.5 m adapted from the grid and from triangles
 /// (`settle --adapt`, default settings, canonical final analysis): works within 2 % of each
 /// other and neither below either unadapted mesh (grid 369.66, triangles 384.71 kN·m), and
-/// their longest crack polylines within 1 m of each other (Hausdorff). Measured: MEASURED.
+/// their longest crack polylines within 1 m of each other (Hausdorff). Measured (session 17,
+/// docs/cracks.md): grid 418.30, triangles 425.12 kN·m, 1.61 % apart, both above both
+/// unadapted works: met; the longest polylines 3.82 m apart: not met (the triangles' longest
+/// is a 3.4 mm hairline chain through the pieces over the rose window; the main cracks
+/// match within 0.51–0.61 m).
 #[test]
-#[ignore = "IGNORE_REASON"]
+#[ignore = "measured 669 + 959 s of CPU for the two adaptations (CLI, load 9-16 on 2 cores); fails on the Hausdorff clause: longest polylines 3.82 m apart (works 1.61 % apart: met)"]
 fn issue30_item2_facade_adapted_from_grid_and_triangles_must_show() {
     let grid = settling_facade(0.5, FacadeMesh::Grid);
     let tri = settling_facade(0.5, FacadeMesh::Triangles);
     let (g0, _) = solve(&grid);
     let (t0, _) = solve(&tri);
-    assert!((g0 - 369.66).abs() < 0.005 && (t0 - 384.71).abs() < 0.005, "{g0} {t0}");
+    assert!(
+        (g0 - 369.66).abs() < 0.005 && (t0 - 384.71).abs() < 0.005,
+        "{g0} {t0}"
+    );
     let (g, gl) = adapted_canonical(&grid);
     let (t, tl) = adapted_canonical(&tri);
     assert!((g - t).abs() <= 0.02 * g.max(t), "grid {g}, triangles {t}");

@@ -800,11 +800,11 @@ fn adapted(
 pub struct Hooks<'a> {
     pub step: Option<&'a mut dyn FnMut(&IncrementalPoint)>,
     pub task: Option<&'a (dyn Fn() + Sync)>,
-    pub adapted: Option<&'a mut AdaptedHook>,
+    pub adapted: Option<&'a mut AdaptedHook<'a>>,
 }
 
 /// The hook told of the adapted model and its record ([`Hooks::adapted`]).
-pub type AdaptedHook = dyn FnMut(&Model, &crate::analysis::adapt::AdaptRecord);
+pub type AdaptedHook<'a> = dyn FnMut(&Model, &crate::analysis::adapt::AdaptRecord) + 'a;
 
 /// [`solve_with`] without hooks.
 pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {

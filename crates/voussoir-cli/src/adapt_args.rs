@@ -1,9 +1,13 @@
 //! `--adapt` of `settle` and `limit` (2D): crack lines moved to their optimal position
 //! (docs/cracks.md, "Adapted crack lines").
 
-use crate::common::Fail;
+use crate::common::{Fail, Input};
 use clap::Args;
+use std::path::{Path, PathBuf};
 use voussoir::analysis::adapt::{AdaptOptions, AdaptRecord, Objective};
+use voussoir::model::Model;
+use voussoir::model3d::AnyModel;
+use voussoir::request::{AnyResult, Hooks, Request};
 
 #[derive(Args, Clone, Debug)]
 #[command(next_help_heading = "Adapted crack lines (2D)")]
@@ -31,6 +35,12 @@ pub struct AdaptArgs {
     /// full circle (at least 4) [default: 36, every 10°].
     #[arg(long, value_name = "N")]
     pub adapt_fan: Option<usize>,
+    /// Write the adapted model (the mesh with the crack lines cut in, its supports' motions and
+    /// joint laws as analysed) as a model JSON to FILE, atomically, as soon as the adaptation
+    /// ends and before the final analysis runs on it: `settle FILE` (`limit FILE`) with the same
+    /// options gives the same result without adapting again.
+    #[arg(long, value_name = "FILE")]
+    pub adapted_model: Option<PathBuf>,
 }
 
 impl AdaptArgs {
@@ -48,6 +58,9 @@ impl AdaptArgs {
             }
             if self.adapt_fan.is_some() {
                 return Err(Fail("--adapt-fan goes with --adapt".into()));
+            }
+            if self.adapted_model.is_some() {
+                return Err(Fail("--adapted-model goes with --adapt".into()));
             }
             return Ok(None);
         }
@@ -76,6 +89,61 @@ impl AdaptArgs {
             o.fan = n;
         }
         Ok(Some(o))
+    }
+}
+
+/// Run `req` on `model`, with `--adapted-model` honoured: the adapted model written
+/// (atomically) once the adaptation ends, before the final analysis, so that a long final
+/// analysis can be stopped and run again on it. Refused before anything runs when the file is
+/// the input model.
+pub fn run(
+    input: &Input,
+    model: &AnyModel,
+    req: &Request,
+    out: Option<&Path>,
+) -> Result<AnyResult, Fail> {
+    let Some(path) = out else {
+        return input.run(model, req);
+    };
+    if let (Ok(a), Ok(b)) = (
+        std::fs::canonicalize(path),
+        std::fs::canonicalize(&input.path),
+    ) {
+        if a == b {
+            return Err(Fail(format!(
+                "refusing to write {}: it is the input {}",
+                path.display(),
+                input.path.display()
+            )));
+        }
+    }
+    let mut failed: Option<Fail> = None;
+    let mut write = |m: &Model, rec: &AdaptRecord| {
+        let r = voussoir_io::files::to_json(m).and_then(|json| {
+            voussoir_io::write_all_or_nothing(&[(path, json.as_bytes())], &[&input.path])
+        });
+        match r {
+            Ok(()) => eprintln!(
+                "wrote {} (the adapted model: {} blocks, {} crack line{})",
+                path.display(),
+                m.blocks.len(),
+                rec.lines.len(),
+                if rec.lines.len() == 1 { "" } else { "s" }
+            ),
+            Err(e) => failed = Some(Fail(format!("--adapted-model: {}", e.0))),
+        }
+    };
+    let r = input.run_with(
+        model,
+        req,
+        &mut Hooks {
+            adapted: Some(&mut write),
+            ..Hooks::default()
+        },
+    );
+    match failed {
+        Some(e) => Err(e),
+        None => r,
     }
 }
 

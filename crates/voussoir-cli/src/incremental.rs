@@ -145,6 +145,7 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
         &mut Hooks {
             step: Some(&mut step),
             task: None,
+            adapted: None,
         },
     );
     if let Some(bar) = &bar {

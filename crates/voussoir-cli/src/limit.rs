@@ -71,7 +71,12 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
         a.draw.check_2d()?;
     }
     let lr = c.limit;
-    match c.input.run(&model, &c.request)? {
+    match crate::adapt_args::run(
+        &c.input,
+        &model,
+        &c.request,
+        a.adapt.adapted_model.as_deref(),
+    )? {
         AnyResult::Planar(run) => {
             let st = &run.setup.structure;
             let r = run

@@ -75,7 +75,12 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
     }
     let sr = c.settle;
     let internal = || Fail("internal: not a settlement result".into());
-    match c.input.run(&model, &c.request)? {
+    match crate::adapt_args::run(
+        &c.input,
+        &model,
+        &c.request,
+        a.adapt.adapted_model.as_deref(),
+    )? {
         AnyResult::Planar(run) => {
             let st = &run.setup.structure;
             let r = run.output.settlement().ok_or_else(internal)?;

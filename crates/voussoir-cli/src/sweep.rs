@@ -177,6 +177,7 @@ pub fn run(a: SweepArgs) -> Result<(), Fail> {
             &mut Hooks {
                 step: None,
                 task: Some(&progress),
+                adapted: None,
             },
         )
     });

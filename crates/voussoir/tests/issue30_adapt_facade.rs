@@ -7,7 +7,8 @@
 //! docs/cracks.md ("The paper's façade: adapted").
 
 use voussoir::analysis::adapt::{hausdorff_polylines, settle_adapt, AdaptOptions};
-use voussoir::analysis::settlement::settle;
+use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
+use voussoir::analysis::settlement::{settle, SettlementForm};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::SolverOptions;
 use voussoir::model::{Model, Point};
@@ -173,23 +174,67 @@ fn issue30_item2_adapt_does_not_stop_after_one_small_step() {
     assert!(its.last().unwrap().value > 1.03 * w0, "{its:?}");
 }
 
-/// The must-show's works: the façade at 0.5 m adapted from the grid and from triangles, within
-/// 2 % of each other and neither below either unadapted mesh. Not met (measured with the
-/// search trials on the force LP, docs/cracks.md): the grid reaches 388.03 kN·m, the triangles
-/// 418.42, 7.3 % apart; both are above both unadapted works (369.66, 384.71). The longest
-/// cracks are not within 1 m of each other either.
+/// The final analysis of an adapted model as `settle --adapt` runs it by default (the canonical
+/// selection of docs/canonical.md; reaction ranges are not computed beyond 500 blocks anyway):
+/// its work (certified) and its longest crack polyline.
+fn adapted_canonical(m: &Model) -> (f64, Vec<Point>) {
+    let ad = settle_adapt(
+        m,
+        BuildOptions::default(),
+        &SolverOptions::default(),
+        &AdaptOptions::default(),
+    )
+    .unwrap();
+    let its = &ad.record.iterations;
+    assert!(its.iter().all(|i| i.certified), "{its:?}");
+    let r = settle_canonical(
+        &ad.structure,
+        &SolverOptions::default(),
+        SettlementForm::Both,
+        &CanonicalOptions {
+            reaction_ranges: false,
+            ..CanonicalOptions::default()
+        },
+    )
+    .unwrap();
+    assert!(r.certificate.as_ref().is_some_and(|c| c.ok));
+    let w = r.work_dead_loads.unwrap();
+    assert!((w - its.last().unwrap().value).abs() <= 1e-7 * w);
+    let longest = r
+        .cracks
+        .iter()
+        .max_by(|a, b| a.length.total_cmp(&b.length))
+        .map(|c| c.points.clone())
+        .unwrap_or_default();
+    (w, longest)
+}
+
+/// The must-show (issue 30): the façade at 0.5 m adapted from the grid and from triangles
+/// (`settle --adapt`, default settings, canonical final analysis): works within 2 % of each
+/// other and neither below either unadapted mesh (grid 369.66, triangles 384.71 kN·m), and
+/// their longest crack polylines within 1 m of each other (Hausdorff). Measured (session 17,
+/// docs/cracks.md): grid 418.30, triangles 425.12 kN·m, 1.61 % apart, both above both
+/// unadapted works: met; the longest polylines 3.82 m apart: not met (the triangles' longest
+/// is a 3.4 mm hairline chain through the pieces over the rose window; the main cracks
+/// match within 0.51–0.61 m).
 #[test]
-#[ignore = "failed with the local search alone, measured: adapted grid 388.03, triangles 418.42 kN·m (7.3 % apart), 277 and 376 s of CPU; with the global stage (the default now) not measured to the end: about 330-410 s of CPU more per mesh"]
-fn issue30_item2_facade_adapted_from_grid_and_triangles_agree_in_work() {
+#[ignore = "measured 669 + 959 s of CPU for the two adaptations (CLI, load 9-16 on 2 cores); fails on the Hausdorff clause: longest polylines 3.82 m apart (works 1.61 % apart: met)"]
+fn issue30_item2_facade_adapted_from_grid_and_triangles_must_show() {
     let grid = settling_facade(0.5, FacadeMesh::Grid);
     let tri = settling_facade(0.5, FacadeMesh::Triangles);
     let (g0, _) = solve(&grid);
     let (t0, _) = solve(&tri);
-    let (g, _) = adapted(&grid);
-    let (t, _) = adapted(&tri);
+    assert!(
+        (g0 - 369.66).abs() < 0.005 && (t0 - 384.71).abs() < 0.005,
+        "{g0} {t0}"
+    );
+    let (g, gl) = adapted_canonical(&grid);
+    let (t, tl) = adapted_canonical(&tri);
     assert!((g - t).abs() <= 0.02 * g.max(t), "grid {g}, triangles {t}");
     assert!(
         g.min(t) >= g0.max(t0) * (1.0 - 1e-7),
         "{g} {t} vs {g0} {t0}"
     );
+    let h = hausdorff_polylines(&gl, &tl);
+    assert!(h <= 1.0, "longest cracks {h} m apart: {gl:?} vs {tl:?}");
 }

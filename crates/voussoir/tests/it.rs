@@ -84,6 +84,8 @@ mod issue30_cracks;
 mod issue30_friction;
 #[path = "issue30_meshes.rs"]
 mod issue30_meshes;
+#[path = "issue30_stage2_cap.rs"]
+mod issue30_stage2_cap;
 #[path = "issue31_request.rs"]
 mod issue31_request;
 #[path = "issue31_requests2.rs"]

@@ -303,12 +303,42 @@ where
             eprintln!("adapt: global stage: {} candidate lines", cands.len());
         }
         let mut evaluations = 0usize;
+        // A candidate that crosses no element (it runs along element edges: the grid's own
+        // lines from its corners) leaves every block as the lines before it left them: a
+        // polygon that the cut does not split is kept as it is, so the same number of blocks
+        // is the same geometry, and its value is theirs, solved once (`same`: the lines
+        // before, their blocks and their value once solved).
+        type Ends = Vec<[(usize, f64); 2]>;
+        let mut same: (Option<Ends>, usize, Option<f64>) = (None, 0, None);
+        let mut reused = 0usize;
         let mut trial = |ls: &[Line], evaluations: &mut usize| -> f64 {
+            let m = match cut_model(model, &region, ls, tol) {
+                Ok(m) => m,
+                Err(_) => return f64::NEG_INFINITY,
+            };
+            let before = &ls[..ls.len().saturating_sub(1)];
+            let key: Ends = before.iter().map(|l| l.ends).collect();
+            if same.0.as_ref() != Some(&key) {
+                let blocks = match cut_model(model, &region, before, tol) {
+                    Ok(b) => b.blocks.len(),
+                    Err(_) => usize::MAX,
+                };
+                same = (Some(key), blocks, None);
+            }
+            let unchanged = m.blocks.len() == same.1;
+            if let (true, Some(v)) = (unchanged, same.2) {
+                reused += 1;
+                return v;
+            }
             *evaluations += 1;
-            match cut_model(model, &region, ls, tol).and_then(|m| Structure::new(&m, build)) {
+            let v = match Structure::new(&m, build) {
                 Ok(st) => solve(&st, false).map_or(f64::NEG_INFINITY, |e| score(e.value)),
                 Err(_) => f64::NEG_INFINITY,
+            };
+            if unchanged {
+                same.2 = Some(v);
             }
+            v
         };
         let gains = |v: f64, best: f64| v > best + IMPROVEMENT * best.abs().max(1e-12);
         let mut best = score(Some(v0));
@@ -364,7 +394,7 @@ where
         }
         if trace {
             eprintln!(
-                "adapt: global stage: {} candidates, {evaluations} trials, {} lines, {:.2} s, best trial {best}",
+                "adapt: global stage: {} candidates, {evaluations} trials ({reused} more cut no element: the value of the lines before), {} lines, {:.2} s, best trial {best}",
                 cands.len(),
                 lines.len(),
                 t.elapsed().as_secs_f64()

@@ -40,6 +40,14 @@ pub const FRICTION_PRECISION: f64 = 0.05;
 /// the solver layer's fallback chain answers.
 pub const UNIQUE_PIVOTS: usize = 500;
 
+/// Pivots allowed to the primal simplex warm-started from the optimal vertex in stage 2 of the
+/// mechanism selection (least crack area on the optimal face; default of
+/// [`CanonicalOptions::stage2_pivots`]); beyond them the solver layer's fallback chain answers.
+/// On the 0.25 m façade grid (10,062 blocks) stage 2 took 2,245 pivots (26 s); on the 0.5 m
+/// façade in triangles adapted by `settle --adapt` (4,637 blocks, 28,901 rows) the same warm
+/// primal simplex ran for more than 25 minutes (docs/cracks.md).
+pub const STAGE2_PIVOTS: usize = 5000;
+
 /// Iterations allowed to the energy QP of the force stage (default of
 /// [`CanonicalOptions::energy_qp_iterations`]). Where the optimal fields wedge the bond (the
 /// façade in running bond at 0.25 m: point forces of 4.4e7 kN near the least μ) Clarabel
@@ -91,6 +99,9 @@ pub struct CanonicalOptions {
     /// Pivots allowed to the primal simplex in each program of the early uniqueness test
     /// (default [`UNIQUE_PIVOTS`]).
     pub unique_pivots: usize,
+    /// Pivots allowed to the warm-started primal simplex of stage 2 (default
+    /// [`STAGE2_PIVOTS`]); beyond them the fallback chain answers.
+    pub stage2_pivots: usize,
     /// Reaction ranges only for models of at most this many blocks (each range LP is a full
     /// solve; on the 1,889-block façade, 132 of them take many minutes).
     pub ranges_max_blocks: usize,
@@ -112,6 +123,7 @@ impl Default for CanonicalOptions {
             point_tolerance: 1e-6,
             friction_precision: FRICTION_PRECISION,
             unique_pivots: UNIQUE_PIVOTS,
+            stage2_pivots: STAGE2_PIVOTS,
             reaction_ranges: true,
             forces: true,
             ranges_max_blocks: 500,
@@ -390,7 +402,21 @@ pub fn canonical_mechanism(
     let mut stage2 = face1.clone();
     stage2.cost = area_cost.clone();
     let mut basis = start;
-    let s2 = st.solve(&stage2, &mut basis)?;
+    // Warm-started (a cost change keeps the optimal vertex primal feasible) the primal simplex
+    // usually needs few pivots; capped, so that a stalling one (the adapted 0.5 m façade in
+    // triangles: more than 25 min) is answered by the next method of the fallback chain.
+    let s2 = if basis.is_some() {
+        let saved = st.opts;
+        st.opts = SolverOptions {
+            iteration_limit: Some(copts.stage2_pivots),
+            ..saved
+        };
+        let s = st.solve(&stage2, &mut basis);
+        st.opts = saved;
+        s?
+    } else {
+        st.solve(&stage2, &mut basis)?
+    };
     if s2.status != LpStatus::Optimal {
         return Ok(None);
     }

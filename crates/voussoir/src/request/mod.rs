@@ -758,6 +758,7 @@ fn adapt_of(a: &Analysis) -> Option<crate::analysis::adapt::AdaptOptions> {
 fn adapted(
     mut setup: Setup<Model, Structure>,
     req: &Request,
+    hooks: &mut Hooks,
 ) -> Result<(
     Setup<Model, Structure>,
     Option<crate::analysis::adapt::AdaptRecord>,
@@ -783,19 +784,27 @@ fn adapted(
         }
         _ => crate::analysis::adapt::settle_adapt(&setup.model, build, &solver, &o)?,
     };
+    if let Some(f) = hooks.adapted.as_mut() {
+        f(&ad.model, &ad.record);
+    }
     setup.model = ad.model;
     setup.structure = ad.structure;
     Ok((setup, Some(ad.record)))
 }
 
 /// What a front end may watch while an analysis runs: each new point of an incremental
-/// analysis's curve, each finished task of a sweep (called from the worker threads). Default:
-/// nothing.
+/// analysis's curve, each finished task of a sweep (called from the worker threads), the
+/// adapted model of `--adapt` (its mesh with the crack lines cut in and its supports' motions,
+/// given once the adaptation ends and before the final analysis runs on it). Default: nothing.
 #[derive(Default)]
 pub struct Hooks<'a> {
     pub step: Option<&'a mut dyn FnMut(&IncrementalPoint)>,
     pub task: Option<&'a (dyn Fn() + Sync)>,
+    pub adapted: Option<&'a mut AdaptedHook<'a>>,
 }
+
+/// The hook told of the adapted model and its record ([`Hooks::adapted`]).
+pub type AdaptedHook<'a> = dyn FnMut(&Model, &crate::analysis::adapt::AdaptRecord) + 'a;
 
 /// [`solve_with`] without hooks.
 pub fn solve(prepared: Prepared, req: &Request) -> Result<AnyResult> {
@@ -814,7 +823,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             let moves = moving(setup.model.supports.iter().map(|s| s.motion));
             check_motion(req, 2, moves)?;
             check_dead_loads(req, &setup.structure)?;
-            let (setup, adapt) = adapted(setup, req)?;
+            let (setup, adapt) = adapted(setup, req, hooks)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {
                     let (r, solver) = t.solve_2d(&setup.structure, req)?;

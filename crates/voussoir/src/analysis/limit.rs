@@ -158,9 +158,10 @@ pub fn solve_limit_checked<S: Assembly>(
 /// differs). After HiGHS's interior point with crossover (the 3D default) the optimal basis of
 /// the largest multiplier's program is primal feasible for it, so the primal simplex goes on
 /// from there instead of a second interior point from scratch: on the 48 × 48 dome (2,257
-/// blocks) each interior point took about 95 CPU s, most of `limit`'s time (docs/performance.md,
-/// "Dome 48 × 48 (session 17)"). With a simplex (the 2D default) or without a basis (Clarabel)
-/// the program is solved as before, from scratch with the method asked for.
+/// blocks) the second program took as long as the first in HiGHS's clock (about 1,470 s at load
+/// 10–14), and 146 s from the basis; `limit` 224.3 → 197.9 CPU s (docs/performance.md, "Dome
+/// 48 × 48 (session 17)"). With a simplex (the 2D default) or without a basis (Clarabel) the
+/// program is solved as before, from scratch with the method asked for.
 fn least_program(
     lp: &lp::LinearProgram,
     opts: &SolverOptions,

@@ -52,6 +52,8 @@ mod issue29_capacity_cert;
 mod issue29_cert025;
 #[path = "issue29_dome2.rs"]
 mod issue29_dome2;
+#[path = "issue29_dome48.rs"]
+mod issue29_dome48;
 #[path = "issue29_dome_safety.rs"]
 mod issue29_dome_safety;
 #[path = "issue29_fixes.rs"]

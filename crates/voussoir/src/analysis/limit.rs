@@ -43,20 +43,28 @@ pub fn solve_limit<S: Assembly>(
     Ok(solve_static(st, map, opts)?.0)
 }
 
-/// The static program of `st`, solved: the solution and the program.
+/// The static program of `st`, solved: the solution, the program, and the optimal basis the
+/// solve left where the method keeps one (a simplex, or HiGHS's interior point with
+/// crossover), for the least multiplier's program ([`solve_limit_checked`]).
 fn solve_static<S: Assembly>(
     st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
-) -> Result<(LimitSolution, ForceProgram)> {
+) -> Result<(LimitSolution, ForceProgram, Option<lp::Basis>)> {
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
-    let sol = fp.solve(opts)?;
+    let mut basis = None;
+    let sol = if fp.cones.is_empty() {
+        lp::solve_warm(&fp.lp, opts, &mut basis)?
+    } else {
+        fp.solve(opts)?
+    };
     if sol.status == LpStatus::Optimal && programs::crushing_cap_reached(map, &fp, &sol.x) {
-        return solve_widened(map, &dead, &live, opts);
+        let (s, fp) = solve_widened(map, &dead, &live, opts)?;
+        return Ok((s, fp, None));
     }
     let s = limit_solution(map, &fp, &live, &sol, opts.info());
-    Ok((cleaned_up(map, &fp, &dead, &live, s, &sol, opts), fp))
+    Ok((cleaned_up(map, &fp, &dead, &live, s, &sol, opts), fp, basis))
 }
 
 /// The cleanup pass: when an interior point's collapse multiplier fails its certificate (or
@@ -142,8 +150,33 @@ pub fn solve_limit_checked<S: Assembly>(
     map: &KinematicMap,
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
-    let (s, fp) = solve_static(st, map, opts)?;
-    with_least_multiplier(s, &fp, |lp| lp::solve(lp, opts))
+    let (s, fp, basis) = solve_static(st, map, opts)?;
+    with_least_multiplier(s, &fp, |lp| least_program(lp, opts, basis))
+}
+
+/// Solve the least multiplier's program `lp` (the limit program minimised: only the objective
+/// differs). After HiGHS's interior point with crossover (the 3D default) the optimal basis of
+/// the largest multiplier's program is primal feasible for it, so the primal simplex goes on
+/// from there instead of a second interior point from scratch: on the 48 × 48 dome (2,257
+/// blocks) the second program took as long as the first in HiGHS's clock (about 1,470 s at load
+/// 10–14), and 146 s from the basis; `limit` 224.3 → 197.9 CPU s (docs/performance.md, "Dome
+/// 48 × 48 (session 17)"). With a simplex (the 2D default) or without a basis (Clarabel) the
+/// program is solved as before, from scratch with the method asked for.
+fn least_program(
+    lp: &lp::LinearProgram,
+    opts: &SolverOptions,
+    basis: Option<lp::Basis>,
+) -> Result<LpSolution> {
+    match basis {
+        Some(b) if !opts.method.is_simplex() => {
+            let warm = SolverOptions {
+                method: lp::Method::PrimalSimplex,
+                ..*opts
+            };
+            lp::solve_warm(lp, &warm, &mut Some(b))
+        }
+        _ => lp::solve(lp, opts),
+    }
 }
 
 /// Statics that cannot lie: the multipliers in equilibrium form an interval `[λ_min, λ_max]`;
@@ -224,7 +257,7 @@ pub fn solve_limit_conic<S: Assembly>(
         .map(|sol| limit_solution(map, &fp, &live, &sol, solver));
     let mut fine = map.clone();
     fine.facets = CHECK_FACETS;
-    let (poly, _) = solve_static(st, &fine, opts)?;
+    let (poly, _, _) = solve_static(st, &fine, opts)?;
     let why = match &conic {
         Err(e) => format!("the cone program failed ({e})"),
         Ok(c) => match (c.status, c.lambda, poly.status, poly.lambda) {

@@ -143,7 +143,10 @@ fn issue29_least_mu_ratio_search_against_bisection() {
             );
             assert!(fr.physical);
             assert!(least >= hi * (1.0 - 1e-5), "{name}: {least} below {hi}");
-            assert!(shown <= hi * (1.0 + 1e-5), "{name}: {shown} shown inadmissible, least {hi}");
+            assert!(
+                shown <= hi * (1.0 + 1e-5),
+                "{name}: {shown} shown inadmissible, least {hi}"
+            );
             let p = fr.friction_precision.unwrap();
             assert!(p <= precision, "{name}: precision {p} asked {precision}");
             assert!(

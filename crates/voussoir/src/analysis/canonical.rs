@@ -619,7 +619,13 @@ struct RatioSearch {
 /// their own (not bilateral, not open under the relaxation), with the tolerance of
 /// `friction_demand`: shears within 1e-8 of the largest force count as nothing. Infinite where
 /// a point carries shear without compression. 2D.
-fn field_ratio(map: &KinematicMap, fp: &ForceProgram, x: &[f64], relaxed: bool, open: &[bool]) -> f64 {
+fn field_ratio(
+    map: &KinematicMap,
+    fp: &ForceProgram,
+    x: &[f64],
+    relaxed: bool,
+    open: &[bool],
+) -> f64 {
     let (pn, pt) = fp.forces(x);
     let eps = 1e-8 * max_abs(&pn).max(max_abs(&pt));
     let mut r = 0.0f64;
@@ -671,7 +677,8 @@ fn ratio_program(
             None => mean,
         };
         // Coulomb's rows of point k: `±p_t − θ p_n ≤ 0` (the law rows, after equilibrium).
-        let rows_n: Vec<(usize, f64)> = lp0.column(cn).filter(|&(i, _)| i >= map.num_dofs).collect();
+        let rows_n: Vec<(usize, f64)> =
+            lp0.column(cn).filter(|&(i, _)| i >= map.num_dofs).collect();
         for (i, v) in lp0.column(ct) {
             if i < map.num_dofs || v.abs() != 1.0 || lp0.row_upper[i] != 0.0 {
                 continue;
@@ -739,7 +746,8 @@ fn least_by_ratio(
             0.5 * least
         }
         .min(MAX_FRICTION);
-        let fp = programs::physical_force_program(map, build, value, tol, open, Some(theta), relaxed);
+        let fp =
+            programs::physical_force_program(map, build, value, tol, open, Some(theta), relaxed);
         let (lp, scol) = ratio_program(&fp, map, open, theta, normal.as_deref());
         let solved = stages.solve_single(&lp, true);
         let before = least;

@@ -113,6 +113,24 @@ pub struct CanonicalOptions {
     /// limit of the solver options, if smaller, holds too). A QP that reaches it is not used:
     /// the admissible field stands, and `rejected` names the cap.
     pub energy_qp_iterations: usize,
+    /// How the least friction coefficient is searched (default [`FrictionSearch::Ratio`] in
+    /// 2D; 3D models always bisect).
+    pub friction_search: FrictionSearch,
+}
+
+/// How the force stage searches the least friction coefficient (docs/canonical.md, "The
+/// forces").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FrictionSearch {
+    /// Normalised elastic trials: at each trial θ, the least `s ≥ 0` with
+    /// `|p_t,k| − θ p_n,k ≤ s·ḡ_k` over the optimal fields (`ḡ` the normal forces of the last
+    /// field, as in Crouzeix, Ferland and Schaible's method for generalised fractional
+    /// programs). Every trial is a feasible, bounded program: its field's own largest ratio is
+    /// an admissible μ, and an optimum bounded above 0 by its duals shows θ inadmissible. On
+    /// the façade in running bond a trial costs what a feasible one of the bisection does,
+    /// where the bisection's infeasible trials cost 4–8 times as much. 2D only.
+    Ratio,
+    Bisection,
 }
 
 impl Default for CanonicalOptions {
@@ -129,6 +147,7 @@ impl Default for CanonicalOptions {
             ranges_max_blocks: 500,
             reject_fields: 0,
             energy_qp_iterations: ENERGY_QP_ITERATIONS,
+            friction_search: FrictionSearch::Ratio,
         }
     }
 }
@@ -607,6 +626,221 @@ pub fn open_points(map: &KinematicMap, d: &[f64], support_scale: f64) -> Vec<boo
         .collect()
 }
 
+/// Trials allowed to the ratio search ([`FrictionSearch::Ratio`]); it stops with the bracket
+/// it has (the precision shown says how wide) where they run out.
+pub const RATIO_TRIALS: usize = 30;
+
+/// What the ratio search found: the least admissible μ shown (a field's own largest ratio), the
+/// μ to impose (`least` widened by half the precision, at least 5e-4, so that the energy QP
+/// has an interior), the largest μ shown inadmissible, and the field of the least ratio (the
+/// force program's columns).
+struct RatioSearch {
+    least: Option<f64>,
+    friction: Option<f64>,
+    shown: f64,
+    field: Option<Vec<f64>>,
+}
+
+/// The largest `|p_t| / p_n` of field `x` of `fp` over the points of joints without friction of
+/// their own (not bilateral, not open under the relaxation), with the tolerance of
+/// `friction_demand`: shears within 1e-8 of the largest force count as nothing. Infinite where
+/// a point carries shear without compression. 2D.
+fn field_ratio(
+    map: &KinematicMap,
+    fp: &ForceProgram,
+    x: &[f64],
+    relaxed: bool,
+    open: &[bool],
+) -> f64 {
+    let (pn, pt) = fp.forces(x);
+    let eps = 1e-8 * max_abs(&pn).max(max_abs(&pt));
+    let mut r = 0.0f64;
+    for k in 0..map.num_points() {
+        let law = &map.laws[map.points[k].joint];
+        if law.friction.is_some() || map.bilateral[k] || (relaxed && open[k]) {
+            continue;
+        }
+        if pt[k].abs() > eps {
+            r = r.max(if pn[k] > 0.0 {
+                (pt[k].abs() - eps) / pn[k]
+            } else {
+                f64::INFINITY
+            });
+        }
+    }
+    r
+}
+
+/// The trial program of the ratio search at `theta`: the physical force program `fp` at
+/// μ = θ with one more column `s` (the last; cost 1, `s ≥ 0`) in the Coulomb rows of the points
+/// without friction of their own: `±p_t − θ p_n − s·ḡ_k ≤ 0`. `ḡ` is `normal` (the normal
+/// forces of the previous field, Crouzeix, Ferland and Schaible's normalisation: `s` is then
+/// the largest excess of a ratio over θ, to first order); a point where it carries nothing (at
+/// most 1e-9 of its largest) keeps Coulomb's rows at θ as they are. Without `normal` every
+/// `ḡ_k` is the mean point load.
+fn ratio_program(
+    fp: &ForceProgram,
+    map: &KinematicMap,
+    open: &[bool],
+    theta: f64,
+    normal: Option<&[f64]>,
+) -> (LinearProgram, usize) {
+    let lp0 = &fp.lp;
+    let big = normal.map_or(0.0, max_abs);
+    let mean = fp.force_scale.abs().max(1e-300) / map.num_points().max(1) as f64;
+    let mut entries = Vec::new();
+    for k in 0..map.num_points() {
+        let law = &map.laws[map.points[k].joint];
+        if law.friction.is_some() || map.bilateral[k] || open[k] {
+            continue;
+        }
+        let (Some(cn), Some(ct)) = (fp.pn[k], fp.pt[k]) else {
+            continue;
+        };
+        let g = match normal {
+            Some(n) if n[k] > 1e-9 * big => n[k],
+            Some(_) => continue,
+            None => mean,
+        };
+        // Coulomb's rows of point k: `±p_t − θ p_n ≤ 0` (the law rows, after equilibrium).
+        let rows_n: Vec<(usize, f64)> =
+            lp0.column(cn).filter(|&(i, _)| i >= map.num_dofs).collect();
+        for (i, v) in lp0.column(ct) {
+            if i < map.num_dofs || v.abs() != 1.0 || lp0.row_upper[i] != 0.0 {
+                continue;
+            }
+            if rows_n.iter().any(|&(r, a)| r == i && a == -theta) {
+                entries.push((i, -g));
+            }
+        }
+    }
+    let mut lp = lp0.clone();
+    lp.cost.iter_mut().for_each(|c| *c = 0.0);
+    lp.maximise = false;
+    let s = lp.add_column(1.0, 0.0, f64::INFINITY, entries);
+    (lp, s)
+}
+
+/// The least μ admitting a physical optimal field, by the ratio search
+/// ([`FrictionSearch::Ratio`], docs/canonical.md "The forces"). Each trial at θ minimises `s`
+/// over [`ratio_program`]; its answer gives
+/// * an upper bound: its field's own largest ratio (an optimal field, admissible at that μ);
+/// * a lower bound where θ is shown inadmissible: the program infeasible (Clarabel's
+///   certificate), or its optimum bounded above 1e-6·θ by duals that are dual feasible (no field
+///   has every `|p_t| − θ p_n ≤ 0`).
+///
+/// θ: 0.5, then 4× the last inadmissible θ until a field's ratio is within 16× of it, then the
+/// geometric mean of the bracket; once the bracket is within 4× the precision, a decisive trial
+/// at the upper bound less 0.9 of the precision (inadmissible, it ends the search).
+#[allow(clippy::too_many_arguments)]
+fn least_by_ratio(
+    stages: &mut Stages,
+    map: &KinematicMap,
+    build: &impl Fn(&KinematicMap) -> ForceProgram,
+    value: f64,
+    tol: f64,
+    open: &[bool],
+    relaxed: bool,
+    precision: f64,
+    start: Option<Vec<f64>>,
+) -> Result<RatioSearch> {
+    let mut normal = start;
+    let (mut lo, mut shown) = (0.0f64, 0.0f64);
+    let mut least = f64::INFINITY;
+    // The least θ at which a trial's field held Coulomb's rows.
+    let mut hi = f64::INFINITY;
+    let mut field: Option<Vec<f64>> = None;
+    for _ in 0..RATIO_TRIALS {
+        if (least.is_finite() && least - lo <= precision * least) || lo >= MAX_FRICTION {
+            break;
+        }
+        let theta = if !least.is_finite() {
+            if lo == 0.0 {
+                0.5
+            } else {
+                4.0 * lo
+            }
+        } else if least - lo <= 4.0 * precision * least {
+            // Close: a decisive trial (inadmissible, it ends the search).
+            least * (1.0 - 0.9 * precision)
+        } else if lo > 0.0 {
+            // The geometric mean (the bracket's ratio halves in logarithm), at most 4·lo as
+            // the bracket's growth: a field's ratio can be far above the least (10¹⁰ on the
+            // façade in running bond, where a point carries shear on next to no compression).
+            (lo * least).sqrt().min(4.0 * lo)
+        } else {
+            0.5 * least
+        }
+        .min(MAX_FRICTION);
+        let fp =
+            programs::physical_force_program(map, build, value, tol, open, Some(theta), relaxed);
+        let (lp, scol) = ratio_program(&fp, map, open, theta, normal.as_deref());
+        let solved = stages.solve_single(&lp, true);
+        let before = least;
+        let what = match solved {
+            Ok(s) if s.status == LpStatus::Infeasible => {
+                (lo, shown) = (lo.max(theta), shown.max(theta));
+                "infeasible".to_string()
+            }
+            Ok(s) if s.status == LpStatus::Optimal && s.x.len() == lp.num_cols() => {
+                let x = &s.x[..fp.lp.num_cols()];
+                let r = field_ratio(map, &fp, x, relaxed, open);
+                let bound = lp::sequence::certify_with_bound(&lp, &s)
+                    .filter(|(c, _)| c.dual <= lp::sequence::CERTIFICATE_TOLERANCE)
+                    .map(|(_, b)| b);
+                let inadmissible = bound.is_some_and(|b| b > 1e-6 * theta);
+                if inadmissible {
+                    (lo, shown) = (lo.max(theta), shown.max(theta));
+                } else if r <= theta * (1.0 + 1e-9) {
+                    hi = hi.min(theta);
+                } else {
+                    lo = lo.max(theta);
+                }
+                if r < least {
+                    least = r;
+                    field = Some(x.to_vec());
+                }
+                normal = Some(fp.forces(x).0);
+                format!(
+                    "s {:.3e}, bound {}, field ratio {r:.6}{}",
+                    s.x[scol],
+                    bound.map_or("none".into(), |b| format!("{b:.3e}")),
+                    if inadmissible { ": inadmissible" } else { "" }
+                )
+            }
+            // Undecided: the search moves on as if θ were inadmissible, but `shown` stays.
+            Ok(s) => {
+                lo = lo.max(theta);
+                format!("undecided ({:?})", s.status)
+            }
+            Err(e) => {
+                lo = lo.max(theta);
+                format!("undecided (failed: {e})")
+            }
+        };
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!(
+                "trace: least-μ ratio trial θ {theta:.6}: {what}; bracket [{lo:.6}, {least:.6}] (was {before:.6}), shown {shown:.6}"
+            );
+        }
+    }
+    if !least.is_finite() || least > MAX_FRICTION {
+        return Ok(RatioSearch {
+            least: None,
+            friction: None,
+            shown,
+            field: None,
+        });
+    }
+    let friction = hi.min(least * (1.0 + 0.5 * precision.max(1e-3)));
+    Ok(RatioSearch {
+        least: Some(least),
+        friction: Some(friction),
+        shown,
+        field,
+    })
+}
+
 /// Relative duality gap above which a candidate force field is not reported while another
 /// certifies ([`canonical_forces`]): the settlement certificate's tolerance.
 pub const FIELD_GAP_TOLERANCE: f64 = crate::result::settlement::GAP_TOLERANCE;
@@ -759,6 +993,33 @@ pub fn canonical_forces<S: Assembly>(
         let mut shown = 0.0f64;
         let (l, m) = if !needs_mu {
             (None, None)
+        } else if map.tangents_per_point == 1 && copts.friction_search == FrictionSearch::Ratio {
+            // The ratio search (2D), started from the normal forces of the field just found
+            // under the model's own laws.
+            let start = admissible.as_ref().map(|(_, _, x)| {
+                programs::physical_force_program(map, &build, value, tol, open, None, rel)
+                    .forces(x)
+                    .0
+            });
+            let r = least_by_ratio(
+                &mut stages,
+                map,
+                &build,
+                value,
+                tol,
+                open,
+                rel,
+                precision,
+                start,
+            )?;
+            shown = r.shown;
+            match (r.least, r.friction, r.field) {
+                (Some(l), Some(m), Some(x)) => {
+                    admissible = Some((Some(m), rel, x));
+                    (Some(l), Some(m))
+                }
+                _ => (None, None),
+            }
         } else if feasible(&mut stages, Some(0.0), &mut basis, rel, &mut admissible)?
             .ratio()
             .is_some()

@@ -62,7 +62,7 @@ pub fn certify(lp: &LinearProgram, s: &LpSolution) -> Option<Certificate> {
 
 /// [`certify`], and the dual bound the duals give (the objective value no feasible point of
 /// `lp` can beat where the duals are feasible), in the program's own sense.
-fn certify_with_bound(lp: &LinearProgram, s: &LpSolution) -> Option<(Certificate, f64)> {
+pub(crate) fn certify_with_bound(lp: &LinearProgram, s: &LpSolution) -> Option<(Certificate, f64)> {
     let (n, m) = (lp.num_cols(), lp.num_rows());
     if s.status != LpStatus::Optimal || s.x.len() != n || s.row_dual.len() != m {
         return None;

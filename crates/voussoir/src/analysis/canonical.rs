@@ -113,8 +113,10 @@ pub struct CanonicalOptions {
     /// limit of the solver options, if smaller, holds too). A QP that reaches it is not used:
     /// the admissible field stands, and `rejected` names the cap.
     pub energy_qp_iterations: usize,
-    /// How the least friction coefficient is searched (default [`FrictionSearch::Ratio`] in
-    /// 2D; 3D models always bisect).
+    /// How the least friction coefficient is searched (default [`FrictionSearch::Bisection`];
+    /// [`FrictionSearch::Ratio`] is opt-in, 2D only — 3D models always bisect — until it is
+    /// measured faster on the 0.25 m façade in running bond, docs/performance.md "Least μ by
+    /// normalised elastic trials (session 17)").
     pub friction_search: FrictionSearch,
 }
 
@@ -147,7 +149,7 @@ impl Default for CanonicalOptions {
             ranges_max_blocks: 500,
             reject_fields: 0,
             energy_qp_iterations: ENERGY_QP_ITERATIONS,
-            friction_search: FrictionSearch::Ratio,
+            friction_search: FrictionSearch::Bisection,
         }
     }
 }

@@ -79,7 +79,15 @@ fn issue31_item1_json_request_equals_library_call() {
         method: Method::PrimalSimplex,
         ..SolverOptions::default()
     };
-    let direct = limit_with(&st, &opts, Crushing::Linear, 24).unwrap();
+    let mut direct = limit_with(&st, &opts, Crushing::Linear, 24).unwrap();
+    // The request layer also certifies a "cannot stand" answer (this arch with crushing has
+    // no equilibrium under its dead loads: λ = −0.023): the library's second call.
+    voussoir::analysis::limit::certify_no_equilibrium(&st, &mut direct, &opts, Some(24)).unwrap();
+    assert!(
+        direct.no_equilibrium.as_ref().is_some_and(|c| c.ok),
+        "{}",
+        direct.message
+    );
     let AnyResult::Planar(run) = via else {
         panic!("a 2D model gives a 2D result")
     };

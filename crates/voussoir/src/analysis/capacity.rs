@@ -181,13 +181,12 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         // "Cannot stand" certified, as `settle` certifies it (the polygonal statics).
         let mut no_equilibrium = None;
         if path.status == SettlementStatus::CannotStand && opts.crushing == Crushing::Linear {
-            let mut map = KinematicMap::new(&path.unit);
-            map.facets = opts.facets;
-            let fp = programs::settlement_force_program(&map, &path.unit.load_vector(false));
-            no_equilibrium = crate::analysis::limit::no_equilibrium_certificate(&fp, &opts.solver)?;
-            if let Some(c) = &no_equilibrium {
-                message = crate::analysis::limit::no_equilibrium_message(&message, c);
-            }
+            no_equilibrium = crate::analysis::limit::dead_loads_certificate(
+                &path.unit,
+                &opts.solver,
+                Some(opts.facets),
+                &mut message,
+            )?;
         }
         return Ok(CapacityResult {
             status: CapacityStatus::NoSettlementMechanism,

@@ -510,16 +510,31 @@ pub fn certify_no_equilibrium<S: Assembly>(
     if r.status != LimitStatus::NoEquilibrium || r.no_equilibrium.is_some() {
         return Ok(());
     }
+    r.no_equilibrium = dead_loads_certificate(st, solver, facets, &mut r.message)?;
+    Ok(())
+}
+
+/// The certificate that `st`'s dead loads have no equilibrium (the settlement force program
+/// with no support motion, whose feasible set is their equilibrium, with the polygonal laws of
+/// `facets`, `None` the map's default; [`no_equilibrium_certificate`]), with `message` told
+/// whether it holds ([`no_equilibrium_message`]). The one step of every "cannot stand" answer:
+/// `limit`, `tilt`, `settle`, `capacity`.
+pub fn dead_loads_certificate<S: Assembly>(
+    st: &S,
+    solver: &SolverOptions,
+    facets: Option<usize>,
+    message: &mut String,
+) -> Result<Option<NoEquilibriumCertificate>> {
     let mut map = KinematicMap::new(st);
     if let Some(f) = facets {
         map.facets = f;
     }
     let fp = programs::settlement_force_program(&map, &st.load_vector(false));
-    r.no_equilibrium = no_equilibrium_certificate(&fp, solver)?;
-    if let Some(c) = &r.no_equilibrium {
-        r.message = no_equilibrium_message(&r.message, c);
+    let c = no_equilibrium_certificate(&fp, solver)?;
+    if let Some(c) = &c {
+        *message = no_equilibrium_message(message, c);
     }
-    Ok(())
+    Ok(c)
 }
 
 /// The message of a "cannot stand" answer with its certificate.

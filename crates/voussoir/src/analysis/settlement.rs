@@ -187,7 +187,7 @@ pub fn settle<S: Assembly>(st: &S, opts: &SolverOptions) -> Result<SettlementRes
 /// A "cannot stand" settlement result given its certificate: the dead loads' equilibrium on
 /// the supports (the settlement's force program, whose infeasibility is the motion program's
 /// unboundedness) decided infeasible by its elastic program
-/// ([`crate::analysis::limit::no_equilibrium_certificate`]); the message says whether it holds.
+/// ([`crate::analysis::limit::dead_loads_certificate`]); the message says whether it holds.
 /// Other results unchanged.
 pub fn certify_cannot_stand<S: Assembly>(
     st: &S,
@@ -198,13 +198,8 @@ pub fn certify_cannot_stand<S: Assembly>(
     if r.status != SettlementStatus::CannotStand || r.no_equilibrium.is_some() {
         return Ok(());
     }
-    let mut map = KinematicMap::new(st);
-    map.facets = facets;
-    let fp = programs::settlement_force_program(&map, &st.load_vector(false));
-    r.no_equilibrium = crate::analysis::limit::no_equilibrium_certificate(&fp, solver)?;
-    if let Some(c) = &r.no_equilibrium {
-        r.message = crate::analysis::limit::no_equilibrium_message(&r.message, c);
-    }
+    r.no_equilibrium =
+        crate::analysis::limit::dead_loads_certificate(st, solver, Some(facets), &mut r.message)?;
     Ok(())
 }
 

@@ -175,33 +175,9 @@ impl ModelEcho {
             .flatten()
             .chain(g.supports.iter().flat_map(|s| s.polygon.iter()))
             .map(|p| p.to_vec());
-        let (lo, hi) = bounds(pts, 2);
-        let mut dead = (0, vec![0.0; 2]);
-        let mut live = (0, vec![0.0; 2]);
-        for l in &g.loads {
-            let t = if l.live { &mut live } else { &mut dead };
-            t.0 += 1;
-            t.1[0] += l.fx;
-            t.1[1] += l.fy;
-        }
-        ModelEcho {
-            dim: 2,
-            blocks: g.blocks.len(),
-            joints,
-            lo,
-            hi,
-            dead,
-            live,
-            supports: g
-                .supports
-                .iter()
-                .map(|s| SupportEcho {
-                    name: s.name.clone(),
-                    fixed: s.fixed,
-                    motion: s.motion.to_vec(),
-                })
-                .collect(),
-        }
+        let loads = g.loads.iter().map(|l| (l.live, vec![l.fx, l.fy]));
+        let supports = g.supports.iter().map(|s| (&s.name, s.fixed, &s.motion[..]));
+        ModelEcho::new(2, g.blocks.len(), joints, pts, loads, supports)
     }
 
     pub fn of_3d(g: &SpatialShapes, joints: usize) -> ModelEcho {
@@ -211,31 +187,44 @@ impl ModelEcho {
             .flat_map(|b| b.vertices.iter())
             .chain(g.supports.iter().flat_map(|s| s.vertices.iter()))
             .map(|p| p.to_vec());
-        let (lo, hi) = bounds(pts, 3);
-        let mut dead = (0, vec![0.0; 3]);
-        let mut live = (0, vec![0.0; 3]);
-        for l in &g.loads {
-            let t = if l.live { &mut live } else { &mut dead };
+        let loads = g.loads.iter().map(|l| (l.live, vec![l.fx, l.fy, l.fz]));
+        let supports = g.supports.iter().map(|s| (&s.name, s.fixed, &s.motion[..]));
+        ModelEcho::new(3, g.blocks.len(), joints, pts, loads, supports)
+    }
+
+    /// The echo of either dimension: the points of the blocks and supports (for the bounding
+    /// box), each load as (live, force components), each support as (name, fixed, motion).
+    fn new<'a>(
+        dim: usize,
+        blocks: usize,
+        joints: usize,
+        pts: impl Iterator<Item = Vec<f64>>,
+        loads: impl Iterator<Item = (bool, Vec<f64>)>,
+        supports: impl Iterator<Item = (&'a String, bool, &'a [f64])>,
+    ) -> ModelEcho {
+        let (lo, hi) = bounds(pts, dim);
+        let mut dead = (0, vec![0.0; dim]);
+        let mut live = (0, vec![0.0; dim]);
+        for (is_live, f) in loads {
+            let t = if is_live { &mut live } else { &mut dead };
             t.0 += 1;
-            t.1[0] += l.fx;
-            t.1[1] += l.fy;
-            t.1[2] += l.fz;
+            for (k, fk) in f.iter().enumerate() {
+                t.1[k] += fk;
+            }
         }
         ModelEcho {
-            dim: 3,
-            blocks: g.blocks.len(),
+            dim,
+            blocks,
             joints,
             lo,
             hi,
             dead,
             live,
-            supports: g
-                .supports
-                .iter()
-                .map(|s| SupportEcho {
-                    name: s.name.clone(),
-                    fixed: s.fixed,
-                    motion: s.motion.to_vec(),
+            supports: supports
+                .map(|(name, fixed, motion)| SupportEcho {
+                    name: name.clone(),
+                    fixed,
+                    motion: motion.to_vec(),
                 })
                 .collect(),
         }

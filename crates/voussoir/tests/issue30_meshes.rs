@@ -568,8 +568,8 @@ fn issue30_item1_a_triangle_panel_tips_along_its_diagonal_crack_as_by_hand() {
     assert!(fine <= 0.25 * (1.0 + 1e-6), "{n} triangles: λ = {fine}");
 }
 
-fn settle_facade(mesh: FacadeMesh) -> (f64, f64, usize) {
-    let mut m = facade(&bondeno(0.5, mesh)).unwrap();
+fn settle_facade(element: f64, mesh: FacadeMesh) -> (f64, f64, usize) {
+    let mut m = facade(&bondeno(element, mesh)).unwrap();
     apply_profile(
         &mut m,
         &Profile::Uniform {
@@ -588,20 +588,19 @@ fn settle_facade(mesh: FacadeMesh) -> (f64, f64, usize) {
     (r.work_dead_loads.unwrap(), weight, st.blocks.len())
 }
 
-/// The paper's façade (element 0.5 m, right half settling 20 cm) meshed as triangles: the
-/// settlement runs and is certified; its work is at least the running bond's (whose bond
-/// interlocks: the least of the three) and at most the physical bound W·v (no element drops
-/// further than the foundation under it). It is close to the grid's and may exceed it: the
-/// settlement's work is the largest over the mesh's mechanisms, and triangles let cracks run
-/// diagonally (measured: 384.7 kN·m against the grid's 369.7 and the bond's 179.2; the
-/// numbers are printed, not asserted).
-#[test]
-fn issue30_item1_facade_of_triangles_settles_between_the_bond_and_the_bound() {
-    let (tri, w_tri, n) = settle_facade(FacadeMesh::Triangles);
-    let (grid, w_grid, _) = settle_facade(FacadeMesh::Grid);
-    let (bond, _, _) = settle_facade(FacadeMesh::RunningBond);
+/// The paper's façade (right half settling 20 cm) meshed as triangles: the settlement runs and
+/// is certified; its work is at least the running bond's (whose bond interlocks: the least of
+/// the three) and at most the physical bound W·v (no element drops further than the foundation
+/// under it). It is close to the grid's and may exceed it: the settlement's work is the largest
+/// over the mesh's mechanisms, and triangles let cracks run diagonally. Measured (printed, not
+/// asserted): element 1.0 m, triangles 382.17 kN·m (1,094 elements), grid 361.68, running bond
+/// 179.53; element 0.5 m (docs/meshes.md), 384.71, 369.66 and 179.25.
+fn triangles_between_the_bond_and_the_bound(element: f64) {
+    let (tri, w_tri, n) = settle_facade(element, FacadeMesh::Triangles);
+    let (grid, w_grid, _) = settle_facade(element, FacadeMesh::Grid);
+    let (bond, _, _) = settle_facade(element, FacadeMesh::RunningBond);
     println!(
-        "work: triangles {tri} kN·m ({n} elements), grid {grid}, running bond {bond}, W·v {}",
+        "element {element} m: work: triangles {tri} kN·m ({n} elements), grid {grid}, running bond {bond}, W·v {}",
         w_tri * 0.2
     );
     assert!(tri > 0.0);
@@ -617,4 +616,15 @@ fn issue30_item1_facade_of_triangles_settles_between_the_bond_and_the_bound() {
         (w_tri - w_grid).abs() < 0.01 * w_grid,
         "{w_tri} vs {w_grid}"
     );
+}
+
+#[test]
+fn issue30_item1_facade_of_triangles_settles_between_the_bond_and_the_bound() {
+    triangles_between_the_bond_and_the_bound(1.0);
+}
+
+#[test]
+#[ignore = "the 0.5 m façades: 428 s wall in the whole suite at load 10 on 2 cores (session 18); element 1.0 m runs in CI"]
+fn issue30_item1_half_metre_facade_of_triangles_settles_between_the_bond_and_the_bound() {
+    triangles_between_the_bond_and_the_bound(0.5);
 }

@@ -173,7 +173,15 @@ impl LinearProgram {
     pub fn clamped(&self, x: &[f64]) -> Vec<f64> {
         x.iter()
             .zip(self.col_lower.iter().zip(&self.col_upper))
-            .map(|(&v, (&lo, &hi))| if v < lo { lo } else if v > hi { hi } else { v })
+            .map(|(&v, (&lo, &hi))| {
+                if v < lo {
+                    lo
+                } else if v > hi {
+                    hi
+                } else {
+                    v
+                }
+            })
             .collect()
     }
 

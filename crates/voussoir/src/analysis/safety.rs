@@ -69,7 +69,7 @@ fn stands_on(map: &KinematicMap, dead: &[f64], solver: &SolverOptions) -> Result
     // a certificate of infeasibility.
     if feasible(sol.status)
         && !sol.method.is_simplex()
-        && fp.lp.relative_violation(&sol.x) > DECISION_TOLERANCE
+        && lp::sequence::point_violation(&fp.lp, &sol.x) > DECISION_TOLERANCE
     {
         let o = SolverOptions {
             method: lp::Method::DualSimplex,
@@ -96,6 +96,12 @@ fn warm_limit(lp: &lp::LinearProgram) -> usize {
 fn decision_warm_limit(lp: &lp::LinearProgram) -> usize {
     (lp.num_rows() / 8).max(500)
 }
+
+/// The fraction below which a bisection that has found only "stands" asks about f = 0
+/// ([`bisect_fraction`]): after 1, 1/2, 1/4, 1/8 and 1/16 stood. Below it lies a geometric
+/// safety factor above 16, which few structures have but those that stand on the centres of
+/// their joints (an unbounded factor: the façades of docs/performance.md).
+const EARLY_ZERO: f64 = 1.0 / 16.0;
 
 /// Largest relative violation of an equilibrium state that still counts as one (round-off).
 const DECISION_TOLERANCE: f64 = 1e-9;
@@ -195,11 +201,17 @@ impl Decisions {
     /// Whether an equilibrium state exists for the structure of kinematic map `map` under the
     /// dead loads `dead` ([`programs::equilibrium_program`]).
     pub fn stands(&mut self, map: &KinematicMap, dead: &[f64]) -> Result<bool> {
-        self.solves += 1;
         let fp = programs::equilibrium_program(map, dead);
         if !fp.cones.is_empty() {
+            self.solves += 1;
             return stands_on(map, dead, &self.solver);
         }
+        self.stands_lp(fp.lp)
+    }
+
+    /// [`Decisions::stands`] of an equilibrium program without cones.
+    fn stands_lp(&mut self, program: lp::LinearProgram) -> Result<bool> {
+        self.solves += 1;
         // The warm run (the first program: the requested method), until one fails: then
         // every later decision goes to the elastic program directly (on the 24 × 24 dome the
         // warm dual simplex reached its iteration limit on 15 of 17 later decisions).
@@ -208,12 +220,12 @@ impl Decisions {
         } else {
             let seq = match &mut self.sequence {
                 Some(seq) => {
-                    seq.replace(fp.lp.clone())?;
+                    seq.replace(program.clone())?;
                     seq
                 }
                 None => {
-                    let mut seq = lp::sequence::Sequence::new(fp.lp.clone(), &self.solver)?;
-                    seq.limit_warm_iterations(Some(decision_warm_limit(&fp.lp)));
+                    let mut seq = lp::sequence::Sequence::new(program.clone(), &self.solver)?;
+                    seq.limit_warm_iterations(Some(decision_warm_limit(&program)));
                     self.sequence.insert(seq)
                 }
             };
@@ -225,8 +237,8 @@ impl Decisions {
                 format_args!(
                     "decision {} ({} rows, {} columns): {:?} by {:?} ({} warm, {:?} iterations)",
                     self.solves,
-                    fp.lp.num_rows(),
-                    fp.lp.num_cols(),
+                    program.num_rows(),
+                    program.num_cols(),
                     sol.as_ref().map(|s| s.status),
                     sol.as_ref().map(|s| s.method.name()),
                     seq.stats.warm - before,
@@ -250,8 +262,12 @@ impl Decisions {
             let checked = match sol.status {
                 LpStatus::Infeasible => sol.method == lp::Method::DualSimplex,
                 _ => {
-                    sol.x.len() == fp.lp.num_cols()
-                        && fp.lp.relative_violation(&sol.x) <= DECISION_TOLERANCE
+                    let v = lp::sequence::point_violation(&program, &sol.x);
+                    trace(
+                        format_args!("decision {}: violation {v:.1e}", self.solves),
+                        std::time::Instant::now(),
+                    );
+                    v <= DECISION_TOLERANCE
                 }
             };
             if checked {
@@ -286,9 +302,9 @@ impl Decisions {
             };
             let t0 = std::time::Instant::now();
             let d = if step == 1 {
-                lp::sequence::decide_directly(&fp.lp, &o, DECISION_TOLERANCE)?
+                lp::sequence::decide_directly(&program, &o, DECISION_TOLERANCE)?
             } else {
-                lp::sequence::decide_feasibility(&fp.lp, &o, DECISION_TOLERANCE)?
+                lp::sequence::decide_feasibility(&program, &o, DECISION_TOLERANCE)?
             };
             trace(
                 format_args!(
@@ -315,7 +331,7 @@ impl Decisions {
             method: lp::Method::DualSimplex,
             ..self.solver
         };
-        Ok(feasible(fp.solve(&o)?.status))
+        Ok(feasible(lp::solve(&program, &o)?.status))
     }
 }
 
@@ -359,6 +375,18 @@ fn bisect_fraction<S: Assembly>(
     let (mut lo, mut hi) = (0.0, 1.0);
     let mut fell = false;
     while hi - lo > tolerance {
+        // A structure that has stood at every fraction down to EARLY_ZERO is asked about
+        // f = 0 there, once: where it stands at 0 the answer is 0 (as the bisection would end,
+        // feasibility growing with f) without the 16 or so decisions below; where it does not,
+        // the bisection goes on, knowing it (the same decisions and the same end). On the
+        // 0.5 m grid façade the warm runs failed at f ≈ 2e-6 and the decisions after went to
+        // the elastic program (minutes).
+        if !fell && hi <= EARLY_ZERO && hi - lo > tolerance {
+            if stands_at_zero(st, &base, &dead, &mut d)? {
+                return Ok((Some(0.0), d.solves, start));
+            }
+            fell = true;
+        }
         let mid = 0.5 * (lo + hi);
         if d.stands(&shrunk_map(st, &base, mid), &dead)? {
             hi = mid;
@@ -367,10 +395,88 @@ fn bisect_fraction<S: Assembly>(
             fell = true;
         }
     }
-    if !fell && d.stands(&shrunk_map(st, &base, 0.0), &dead)? {
+    if !fell && stands_at_zero(st, &base, &dead, &mut d)? {
         return Ok((Some(0.0), d.solves, start));
     }
     Ok((Some(hi), d.solves, start))
+}
+
+/// Whether `st` stands with every joint shrunk to its centre (f = 0), decided on
+/// [`merged_columns`] of its equilibrium program by decisions of their own (`d` counts the
+/// solves): at f = 0 the points of a joint coincide, so their columns are equal, and the
+/// program with one column of each kind per joint is feasible exactly when the program is (a
+/// state of the merged program is one of the program with each joint's force on one point; a
+/// state of the program sums to one of the merged). The program as written is the most
+/// degenerate of the bisection: on the 0.5 m grid façade the warm dual simplex, Clarabel and
+/// HiGHS's interior point on its elastic program each failed or took minutes on it.
+fn stands_at_zero<S: Assembly>(
+    st: &S,
+    base: &KinematicMap,
+    dead: &[f64],
+    d: &mut Decisions,
+) -> Result<bool> {
+    let fp = programs::equilibrium_program(&shrunk_map(st, base, 0.0), dead);
+    if !fp.cones.is_empty() {
+        return d.stands(&shrunk_map(st, base, 0.0), dead);
+    }
+    let merged = merged_columns(&fp.lp);
+    trace(
+        format_args!(
+            "f = 0: {} columns merged into {}",
+            fp.lp.num_cols(),
+            merged.num_cols()
+        ),
+        std::time::Instant::now(),
+    );
+    let mut own = Decisions::new(&d.solver);
+    let stands = own.stands_lp(merged)?;
+    d.solves += own.solves;
+    d.redecided += own.redecided;
+    d.warm += own.warm;
+    Ok(stands)
+}
+
+/// `lp` with every set of equal columns (bounds, cost and entries bit for bit) replaced by the
+/// first of them. Where the equal columns' bounds are `[0, ∞)` or free, as the forces of an
+/// equilibrium program are, the two programs are feasible together: a point of the merged
+/// program is one of `lp` with the others at 0, and a point of `lp` sums to one of the merged.
+/// Columns with other bounds are kept as they are.
+pub fn merged_columns(lp: &lp::LinearProgram) -> lp::LinearProgram {
+    use std::collections::HashMap;
+    let key = |j: usize| -> Vec<u64> {
+        let mut k = vec![
+            lp.col_lower[j].to_bits(),
+            lp.col_upper[j].to_bits(),
+            lp.cost[j].to_bits(),
+        ];
+        for (i, v) in lp.column(j) {
+            k.push(i as u64);
+            k.push(v.to_bits());
+        }
+        k
+    };
+    let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
+    let mut out = lp::LinearProgram::new(if lp.maximise {
+        Direction::Maximise
+    } else {
+        Direction::Minimise
+    });
+    for i in 0..lp.num_rows() {
+        out.add_row(lp.row_lower[i], lp.row_upper[i]);
+    }
+    for j in 0..lp.num_cols() {
+        let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
+        let cone = (lo == 0.0 || lo == f64::NEG_INFINITY) && hi == f64::INFINITY;
+        if cone {
+            let k = key(j);
+            if seen.contains_key(&k) {
+                continue;
+            }
+            seen.insert(k, j);
+        }
+        out.add_column(lp.cost[j], lo, hi, lp.column(j));
+    }
+    out
 }
 
 /// Coefficients of the force components of each support's reaction in the point forces:

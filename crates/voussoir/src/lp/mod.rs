@@ -165,6 +165,26 @@ impl LinearProgram {
             .fold(rows, f64::max)
     }
 
+    /// `x` moved onto its column bounds (each value clamped to `[lower, upper]`): a simplex
+    /// leaves basic values up to its feasibility tolerance outside their bounds (a force of
+    /// −1e-13 where `p_n ≥ 0`), which [`LinearProgram::relative_violation`] measures against
+    /// the value itself (a violation of 1). The clamped point satisfies every bound exactly and
+    /// is the one to check and to use as the answer.
+    pub fn clamped(&self, x: &[f64]) -> Vec<f64> {
+        x.iter()
+            .zip(self.col_lower.iter().zip(&self.col_upper))
+            .map(|(&v, (&lo, &hi))| {
+                if v < lo {
+                    lo
+                } else if v > hi {
+                    hi
+                } else {
+                    v
+                }
+            })
+            .collect()
+    }
+
     /// `A x` (row activities).
     pub fn row_activity(&self, x: &[f64]) -> Vec<f64> {
         let mut r = vec![0.0; self.num_rows()];

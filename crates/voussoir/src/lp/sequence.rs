@@ -502,11 +502,51 @@ pub fn decide_feasibility(
     }))
 }
 
+/// How far `x` is from a point of `lp` (its objective ignored), measured as
+/// [`decide_feasibility`] measures a violation: on the nondimensional program ([`Scaling`]),
+/// with `x` clamped onto its column bounds (a simplex leaves basic values up to its tolerance
+/// outside them: a force of −1e-13 where `p_n ≥ 0`), the largest violation of a row relative to
+/// the largest finite row bound (in a force program the largest load). Each row on its own
+/// scale ([`LinearProgram::relative_violation`]) is not a measure of a simplex's vertex: a
+/// block's horizontal equilibrium row with no horizontal load, whose forces are round-off
+/// (1e-13), is "violated" by 1 (measured: every warm decision of `safety` on the 0.5 m façade,
+/// docs/performance.md, "Façade safety and capacity (session 18)").
+pub fn point_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+    if x.len() != lp.num_cols() || x.iter().any(|v| !v.is_finite()) {
+        return f64::INFINITY;
+    }
+    let scaling = Scaling::of(lp, &[]);
+    let scaled = scaling.apply(lp);
+    let xs: Vec<f64> = x.iter().zip(&scaling.col).map(|(v, c)| v / c).collect();
+    let xs = scaled.clamped(&xs);
+    let act = scaled.row_activity(&xs);
+    let scale = scaled
+        .row_lower
+        .iter()
+        .chain(&scaled.row_upper)
+        .filter(|b| b.is_finite())
+        .fold(0.0f64, |m, b| m.max(b.abs()));
+    let worst = (0..scaled.num_rows())
+        .map(|i| {
+            (scaled.row_lower[i] - act[i])
+                .max(act[i] - scaled.row_upper[i])
+                .max(0.0)
+        })
+        .fold(0.0f64, f64::max);
+    if worst == 0.0 {
+        0.0
+    } else if scale > 0.0 {
+        worst / scale
+    } else {
+        f64::INFINITY
+    }
+}
+
 /// Whether `lp` (its objective ignored) is feasible by one run of `opts.method` alone on the
 /// program itself (its zero-objective form, no elastic slacks; Clarabel answers it on the
 /// 24 × 24 dome in 0.3–0.5 s where the elastic program takes 0.7–1 s): `Some` decision
-/// "feasible" where its point holds `lp` as written to `tolerance` (largest relative violation,
-/// [`LinearProgram::relative_violation`], the check of every "stands"); `None` otherwise — this
+/// "feasible" where its point holds `lp` to `tolerance` ([`point_violation`], the check of
+/// every "stands"); `None` otherwise — this
 /// never decides "infeasible" (the caller goes on to the elastic program).
 pub fn decide_directly(
     lp: &LinearProgram,
@@ -522,7 +562,7 @@ pub fn decide_directly(
     if s.status != LpStatus::Optimal || s.x.len() != lp.num_cols() {
         return Ok(None);
     }
-    let v = lp.relative_violation(&s.x);
+    let v = point_violation(lp, &s.x);
     Ok((v <= tolerance).then_some(FeasibilityDecision {
         feasible: true,
         violation: v,

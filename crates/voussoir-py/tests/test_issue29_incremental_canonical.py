@@ -22,7 +22,7 @@ def test_issue29_item5_incremental_raw_and_canonical_steps(cli, tmp_path):
     assert d["canonical"]["settlement"]["unique"] is True and d["canonical"]["steps"] is False
     assert r.get("canonical") is None
     assert s["canonical"]["steps"] is True and s["canonical"]["steps_changed"] == 0
-    assert s["canonical"]["steps_selected"] == len([p for p in s["curve"] if not p["before_closure"]])
+    assert s["canonical"]["steps_selected"] == len([p for p in s["curve"] if not p.get("before_closure", False)])
     for p, q in zip(s["curve"], r["curve"]):
         assert abs(p["load_multiplier"] - q["load_multiplier"]) <= 1e-9
     args = ["incremental", half, "--control", "0,3.19", "--max", "0.002", "--step", "0.0002",

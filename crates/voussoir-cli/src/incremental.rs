@@ -61,6 +61,18 @@ pub struct IncrementalArgs {
     /// Go on after λ has fallen to zero (up to --max).
     #[arg(long)]
     pub no_stop: bool,
+    /// With --move: settle by the solver's own settlement mechanism instead of the canonical
+    /// one (the default: least crack area among the optimal mechanisms, then a generic
+    /// tie-break; docs/canonical.md). Where the settlement's optimum is not unique the starting
+    /// cracks then depend on --method.
+    #[arg(long, help_heading = "Canonical solution")]
+    pub raw: bool,
+    /// Also follow the canonical collapse mechanism at every step (by default the solver's own:
+    /// where a step's optimum is not unique the path, its hinges, events and cracks, then
+    /// depend on --method; λ at each step is the same either way). Costs 5–10× the raw CPU
+    /// time (docs/performance.md).
+    #[arg(long, help_heading = "Canonical solution", conflicts_with = "raw")]
+    pub canonical_steps: bool,
     #[command(flatten)]
     pub split: crate::common::SplitArgs,
     #[command(flatten)]
@@ -103,6 +115,8 @@ pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
             keep_fixed: a.keep_fixed,
             snapshot_every: a.snapshot_every,
             no_stop: a.no_stop,
+            raw: a.raw,
+            canonical_steps: a.canonical_steps,
         }),
         SettleArgs {
             moves: a.moves.clone(),
@@ -349,5 +363,43 @@ where
         "{} LP solves, {} simplex iterations",
         r.solves, r.iterations
     );
+    if let Some(c) = &r.canonical {
+        let _ = writeln!(s, "{}", canonical_line(c));
+    }
     s
+}
+
+/// The summary's line on the canonical selection.
+fn canonical_line(c: &voussoir::result::incremental::IncrementalCanonical) -> String {
+    let settlement = match (&c.settlement, c.settlement_not_reached) {
+        (Some(m), _) => format!(
+            "the settlement mechanism is the canonical one ({})",
+            if m.changed {
+                "not the solver's"
+            } else {
+                "the solver's"
+            }
+        ),
+        (None, true) => {
+            "the settlement's canonical mechanism was not reached (the solver's settled the structure)".to_string()
+        }
+        (None, false) => "no settlement".to_string(),
+    };
+    let steps = if c.steps {
+        format!(
+            "the collapse mechanism of {} step{} selected, {} of them not the solver's{}",
+            c.steps_selected,
+            if c.steps_selected == 1 { "" } else { "s" },
+            c.steps_changed,
+            if c.steps_not_reached.is_empty() {
+                String::new()
+            } else {
+                format!(", not reached at {} steps", c.steps_not_reached.len())
+            }
+        )
+    } else {
+        "the steps' collapse mechanisms are the solver's (--canonical-steps selects them)"
+            .to_string()
+    };
+    format!("canonical: {settlement}; {steps} ({} programs)", c.solves)
 }

@@ -42,6 +42,8 @@ mod issue29_capacity_cert_cli;
 mod issue29_fixes_cli;
 #[path = "issue29_friction_precision_cli.rs"]
 mod issue29_friction_precision_cli;
+#[path = "issue29_incremental_canonical_cli.rs"]
+mod issue29_incremental_canonical_cli;
 #[path = "issue30_adapted_model_cli.rs"]
 mod issue30_adapted_model_cli;
 #[path = "issue30_cracks.rs"]

@@ -64,6 +64,8 @@ mod issue29_fixes;
 mod issue29_force_stage;
 #[path = "issue29_friction_precision.rs"]
 mod issue29_friction_precision;
+#[path = "issue29_incremental_canonical.rs"]
+mod issue29_incremental_canonical;
 #[path = "issue29_least_mu.rs"]
 mod issue29_least_mu;
 #[path = "issue29_outcomes.rs"]

@@ -370,6 +370,8 @@ def incremental(
     method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
+    raw: bool = False,
+    canonical_steps: bool = False,
     executor=None,
 ) -> IncrementalResult:
     """Incremental (nonlinear kinematic) analysis (``voussoir incremental``): λ against the
@@ -382,6 +384,11 @@ def incremental(
     (m). ``move``: settle first, ``{"right": (u, v)}`` (θ in degrees as third value; the old
     keyword ``settle=`` is still accepted); ``fixed``/``keep_fixed`` as for :func:`capacity`.
     ``snapshot_every``: keep the mechanism every N steps. ``no_stop``: go on after λ reaches 0.
+    A settlement (``move``) is the canonical one (least crack area among the optimal
+    mechanisms, then a generic tie-break; docs/canonical.md); ``raw=True`` settles by the
+    solver's own (``--raw``). ``canonical_steps=True`` follows the canonical collapse mechanism
+    at every step too (``--canonical-steps``; 5–10× the CPU time; λ is the same at each step);
+    with ``raw=True`` it is refused.
     """
     m = _model(model)
     try:
@@ -398,6 +405,10 @@ def incremental(
         "snapshot_every": int(snapshot_every),
         "no_stop": bool(no_stop),
     }
+    if raw:
+        a["raw"] = True
+    if canonical_steps:
+        a["canonical_steps"] = True
     r = _request(
         m, a, tolerance=tolerance, method=method, friction=friction,
         compressive_strength=compressive_strength,

@@ -38,6 +38,7 @@
 //! the dead loads), at the maximum control displacement, or when the LP has no mechanism
 //! (locked) or no equilibrium.
 
+use crate::analysis::canonical::{CanonicalMechanism, CanonicalOptions};
 use crate::analysis::limit::LimitStatus;
 use crate::analysis::paths::{SettlementPath, WarmLimit};
 use crate::analysis::settlement::SettlementStatus;
@@ -354,6 +355,13 @@ pub struct IncrementalOptions {
     pub snapshots: bool,
     pub hot_start: bool,
     pub solver: SolverOptions,
+    /// The canonical selection (docs/canonical.md) of every step's collapse mechanism: least
+    /// crack area among the step's optimal mechanisms, then the generic tie-break
+    /// ([`crate::analysis::canonical::limit_mechanism`]; λ unchanged), so that the path (the
+    /// moved geometry, hinges, cracks, events) does not depend on the LP method. `None`: the
+    /// solver's own mechanism (the default, also of the request layer: `canonical_steps` asks
+    /// for it; it costs 5–10× the raw CPU time, docs/performance.md).
+    pub canonical: Option<CanonicalOptions>,
 }
 
 impl Default for IncrementalOptions {
@@ -367,6 +375,7 @@ impl Default for IncrementalOptions {
             snapshots: true,
             hot_start: true,
             solver: SolverOptions::default(),
+            canonical: None,
         }
     }
 }
@@ -376,7 +385,28 @@ impl Default for IncrementalOptions {
 /// gap. `release` turns `fixed` supports into contact ones afterwards (see
 /// [`crate::analysis::capacity::CapacityOptions::release_fixed`]).
 pub fn settled<S: Assembly>(st: &S, solver: &SolverOptions, release: bool) -> Result<S> {
-    let path = SettlementPath::new(st, solver)?;
+    Ok(settled_canonical(st, solver, release, None)?.0)
+}
+
+/// [`settled`] with the canonical settlement mechanism where `canonical` is given
+/// ([`SettlementPath::with_canonical`]: least crack area among the optimal mechanisms, then the
+/// generic tie-break), so that the settled geometry and its cracks do not depend on the LP
+/// method; with how it was selected (`None` without `canonical`, or where the selection was not
+/// reached: the solver's mechanism then settles the structure).
+pub fn settled_canonical<S: Assembly>(
+    st: &S,
+    solver: &SolverOptions,
+    release: bool,
+    canonical: Option<CanonicalOptions>,
+) -> Result<(S, Option<CanonicalMechanism>)> {
+    let path = SettlementPath::with_canonical(
+        st,
+        solver,
+        crate::analysis::laws::Crushing::Linear,
+        crate::analysis::laws::DEFAULT_FACETS,
+        None,
+        canonical,
+    )?;
     if path.status != SettlementStatus::Mechanism {
         return Err(Error::Request(format!(
             "settlement analysis: {}",
@@ -387,7 +417,7 @@ pub fn settled<S: Assembly>(st: &S, solver: &SolverOptions, release: bool) -> Re
     if release {
         out.release_fixed();
     }
-    Ok(out)
+    Ok((out, path.selection))
 }
 
 fn open_joints<S: IncrementalGeometry>(st: &S) -> Vec<usize> {
@@ -456,6 +486,10 @@ pub fn incremental_with<S: IncrementalGeometry>(
     let mut status = IncrementalStatus::MaxSteps;
     let mut steps = 0usize;
     let mut snaps = 0usize;
+    let mut selection = opts.canonical.map(|_| IncrementalCanonical {
+        steps: true,
+        ..IncrementalCanonical::default()
+    });
     for step in 0..opts.max_steps {
         steps = step;
         let map = KinematicMap::new(&st);
@@ -464,7 +498,11 @@ pub fn incremental_with<S: IncrementalGeometry>(
         // closes an open point (a hinge moving to the next joint): follow that mechanism, with
         // no point on the curve, until the point closes.
         let (d, lam, snap) = match (sol.status, sol.lambda) {
-            (_, Some(l)) if !sol.mechanism.is_empty() => (sol.mechanism.clone(), l, false),
+            (_, Some(l)) if !sol.mechanism.is_empty() => (
+                select(&st, &map, &sol, opts, &mut selection, step)?,
+                l,
+                false,
+            ),
             (LimitStatus::Locked, _) => {
                 status = IncrementalStatus::Locked;
                 break;
@@ -636,7 +674,7 @@ pub fn incremental_with<S: IncrementalGeometry>(
         .iter()
         .filter(|e| e.kind == EventKind::Closed)
         .count();
-    let message = format!(
+    let mut message = format!(
         "peak λ = {:.6} at a control displacement of {}; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
         peak_l,
         crate::lengths::Length::Motion.show(peak.1),
@@ -648,6 +686,16 @@ pub fn incremental_with<S: IncrementalGeometry>(
         if snaps == 1 { "" } else { "s" },
         what
     );
+    if let Some(c) = selection
+        .as_ref()
+        .filter(|c| !c.steps_not_reached.is_empty())
+    {
+        message.push_str(&format!(
+            "; the canonical selection was not reached at {} of {} steps: the solver's own mechanism moved the structure there",
+            c.steps_not_reached.len(),
+            c.steps_not_reached.len() + c.steps_selected
+        ));
+    }
     Ok(IncrementalResult {
         status,
         message,
@@ -666,7 +714,46 @@ pub fn incremental_with<S: IncrementalGeometry>(
         iterations: warm.iterations,
         initial_geometry: start.shapes(),
         final_geometry: st.shapes(),
+        canonical: selection,
     })
+}
+
+/// The step's mechanism: the solver's, or with `opts.canonical` the canonical one among the
+/// step's optimal mechanisms (λ unchanged), recorded in `rec`. Where the selection is not
+/// reached the solver's mechanism stands and the step is listed.
+fn select<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    sol: &crate::analysis::limit::LimitSolution,
+    opts: &IncrementalOptions,
+    rec: &mut Option<IncrementalCanonical>,
+    step: usize,
+) -> Result<Vec<f64>> {
+    let (Some(copts), Some(rec)) = (opts.canonical.as_ref(), rec.as_mut()) else {
+        return Ok(sol.mechanism.clone());
+    };
+    let _kind = crate::lp::ProgramKind::set(
+        "canonical selection",
+        "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
+    );
+    Ok(
+        match crate::analysis::canonical::limit_mechanism(st, map, sol, &opts.solver, copts)? {
+            Some((d, m)) => {
+                rec.steps_selected += 1;
+                rec.solves += m.solves;
+                if m.changed {
+                    rec.steps_changed += 1;
+                    d
+                } else {
+                    sol.mechanism.clone()
+                }
+            }
+            None => {
+                rec.steps_not_reached.push(step);
+                sol.mechanism.clone()
+            }
+        },
+    )
 }
 
 /// Whether mechanism `d` closes an open point.

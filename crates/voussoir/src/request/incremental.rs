@@ -3,7 +3,8 @@
 
 use super::{invalid, Names, Output, Request};
 use crate::analysis::incremental::{
-    incremental_with, settled, Control, IncrementalGeometry, IncrementalOptions, IncrementalPoint,
+    incremental_with, settled_canonical, Control, IncrementalGeometry, IncrementalOptions,
+    IncrementalPoint,
 };
 use crate::error::Result;
 use crate::lp::{Method, SolverOptions};
@@ -119,7 +120,8 @@ impl Toward {
 
 /// Options of an incremental analysis. Defaults: direction +x, up to 50 mm in steps of 0.5 mm,
 /// stop when λ has fallen to zero, no snapshots beyond the first step and the events, fixed
-/// supports released after a settlement. The control point is required. A support motion in
+/// supports released after a settlement, the canonical settlement mechanism (docs/canonical.md;
+/// the steps' collapse mechanisms are the solver's unless `canonical_steps`). The control point is required. A support motion in
 /// the request (moves, a profile) is a settlement run first: the analysis starts from the
 /// settled geometry with its cracks open.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -142,6 +144,15 @@ pub struct IncrementalRequest {
     /// Go on after λ has fallen to zero (up to `max`).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub no_stop: bool,
+    /// Settle by the solver's own settlement mechanism instead of the canonical one
+    /// (docs/canonical.md).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub raw: bool,
+    /// Also follow the canonical collapse mechanism at every step (by default the solver's:
+    /// the selection costs 5–10× the raw CPU time, docs/performance.md). λ is the same at each
+    /// step; where a step's optimum is not unique the path then does not depend on the method.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub canonical_steps: bool,
 }
 
 impl Default for IncrementalRequest {
@@ -154,6 +165,8 @@ impl Default for IncrementalRequest {
             keep_fixed: false,
             snapshot_every: 0,
             no_stop: false,
+            raw: false,
+            canonical_steps: false,
         }
     }
 }
@@ -180,6 +193,15 @@ impl IncrementalRequest {
                 "{} mm is larger than {} mm",
                 n.given("step", self.step * 1e3),
                 n.given("max", self.max * 1e3)
+            ));
+        }
+        if self.raw && self.canonical_steps {
+            // The steps' selection is a stage of the canonical selection: `raw` would leave
+            // the settlement's out and keep the steps', which no other analysis does.
+            return invalid(format!(
+                "{} applies to the canonical selection, which {} leaves out",
+                n.name("canonical_steps"),
+                n.name("raw")
             ));
         }
         let m = &req.motion;
@@ -246,10 +268,12 @@ impl IncrementalRequest {
                 "internal: control point of the wrong dimension".into(),
             ));
         };
-        let start = if moving {
-            settled(st, &solver, !self.keep_fixed)?
+        let canonical = (!self.raw).then(super::mechanism_options);
+        let (start, settlement) = if moving {
+            let (s, m) = settled_canonical(st, &solver, !self.keep_fixed, canonical)?;
+            (s, Some(m))
         } else {
-            st.clone()
+            (st.clone(), None)
         };
         let block = Control::nearest(st, x, dir)?.block;
         let control = Control::new(&start, block, x, dir)?;
@@ -259,9 +283,22 @@ impl IncrementalRequest {
             stop_after_peak: !self.no_stop,
             snapshot_every: self.snapshot_every,
             solver,
+            canonical: canonical.filter(|_| self.canonical_steps),
             ..IncrementalOptions::default()
         };
-        let r = incremental_with(&start, &control, &opts, progress)?;
+        let mut r = incremental_with(&start, &control, &opts, progress)?;
+        // The record where something was selected: the settlement, or the steps.
+        if canonical.is_some() && (moving || self.canonical_steps) {
+            let c = r.canonical.get_or_insert_with(Default::default);
+            if let Some(m) = settlement {
+                c.settlement_not_reached = m.is_none();
+                if c.settlement_not_reached {
+                    r.message.push_str("; the canonical selection of the settlement mechanism was not reached: the solver's own settled the structure, which may depend on the method");
+                }
+                c.solves += m.as_ref().map_or(0, |m| m.solves);
+                c.settlement = m;
+            }
+        }
         Ok((Output::Incremental(r), solver))
     }
 }

@@ -127,4 +127,38 @@ pub struct IncrementalResult<D: Spatial = Two> {
     /// Geometry at the start and at the end.
     pub initial_geometry: D::Shapes,
     pub final_geometry: D::Shapes,
+    /// The canonical selection (docs/canonical.md): how the settlement mechanism and the
+    /// steps' collapse mechanisms were selected; absent without it (`raw`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub canonical: Option<IncrementalCanonical>,
+}
+
+/// The canonical selection of an incremental analysis (docs/canonical.md): the settlement
+/// mechanism of a settlement run first (which sets the starting geometry and its cracks) is the
+/// canonical one, so that it does not depend on the LP method; with `steps`, every step's
+/// collapse mechanism too (the motion that moves the structure: the path, its hinges, events
+/// and cracks). λ is the solver's (the selection only picks among the optimal mechanisms).
+/// Steps in which the dead loads alone move the structure (`snaps`) follow the ray of their
+/// own program, not selected.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct IncrementalCanonical {
+    /// How the settlement mechanism was selected (absent: no settlement, or its selection was
+    /// not reached, `settlement_not_reached`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub settlement: Option<super::canonical::CanonicalMechanism>,
+    /// A settlement ran first and its selection was not reached: the solver's own mechanism
+    /// settled the structure.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub settlement_not_reached: bool,
+    /// Whether the steps' collapse mechanisms were selected (else they are the solver's).
+    pub steps: bool,
+    /// Steps whose collapse mechanism was selected, and of those the ones where it differs from
+    /// the solver's.
+    pub steps_selected: usize,
+    pub steps_changed: usize,
+    /// Steps where the selection was not reached (the solver's mechanism moved the structure).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub steps_not_reached: Vec<usize>,
+    /// Programs solved for the selection (the settlement's included).
+    pub solves: usize,
 }

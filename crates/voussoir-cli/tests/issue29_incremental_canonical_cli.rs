@@ -1,0 +1,97 @@
+//! Issue 29, item 5 (session 18): `voussoir incremental` settles by the canonical settlement
+//! mechanism by default (a summary line says so, the JSON records it), `--raw` by the solver's
+//! own (no record), `--canonical-steps` selects every step's collapse mechanism, and the two
+//! together are refused in one line. Reference: the same curve either way on the paper's arch,
+//! whose optima are unique.
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_voussoir"))
+        .args(args)
+        .output()
+        .expect("run voussoir")
+}
+
+fn ok(args: &[&str]) -> String {
+    let o = run(args);
+    assert!(
+        o.status.success(),
+        "voussoir {args:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+#[test]
+fn issue29_item5_incremental_raw_and_canonical_steps_flags() {
+    let dir = std::env::temp_dir().join(format!("voussoir-inc-canonical-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let m = dir.join("half.json");
+    let m = m.to_str().unwrap();
+    ok(&["gen", "arch", "--live", "left", "-o", m]);
+    let base = [
+        "incremental",
+        m,
+        "--control",
+        "0,3.19",
+        "--max",
+        "2mm",
+        "--step",
+        "0.2mm",
+        "--move",
+        "right=0,-2.5mm",
+        "--fixed",
+        "right",
+    ];
+    let with = |extra: &[&str]| -> Vec<String> {
+        let mut a: Vec<String> = base.iter().map(|s| s.to_string()).collect();
+        a.extend(extra.iter().map(|s| s.to_string()));
+        a
+    };
+    let text = |extra: &[&str]| {
+        let a = with(extra);
+        ok(&a.iter().map(String::as_str).collect::<Vec<_>>())
+    };
+    let json = |extra: &[&str]| -> serde_json::Value {
+        let mut e = extra.to_vec();
+        e.push("--json");
+        serde_json::from_str(&text(&e)).unwrap()
+    };
+    // The summary's one line.
+    let d = text(&[]);
+    let lines: Vec<&str> = d.lines().filter(|l| l.starts_with("canonical:")).collect();
+    assert_eq!(lines.len(), 1, "{d}");
+    assert!(
+        lines[0].contains("settlement mechanism is the canonical one")
+            && lines[0].contains("--canonical-steps"),
+        "{d}"
+    );
+    assert!(!text(&["--raw"]).contains("canonical:"));
+    let s = text(&["--canonical-steps"]);
+    assert!(
+        s.contains("step") && s.contains("selected, 0 of them not the solver's"),
+        "{s}"
+    );
+    // The JSON: recorded by default and with --canonical-steps, absent with --raw; the same
+    // curve (unique optima).
+    let (jd, jr, js) = (json(&[]), json(&["--raw"]), json(&["--canonical-steps"]));
+    assert_eq!(jd["canonical"]["settlement"]["unique"], true);
+    assert_eq!(jd["canonical"]["steps"], false);
+    assert!(jr.get("canonical").is_none());
+    assert_eq!(js["canonical"]["steps"], true);
+    assert!(js["canonical"]["steps_selected"].as_u64().unwrap() >= 10);
+    assert_eq!(jd["curve"], jr["curve"]);
+    assert_eq!(js["curve"], jr["curve"]);
+    // Refused together, in one line.
+    let a = with(&["--raw", "--canonical-steps"]);
+    let o = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--canonical-steps") && err.contains("--raw"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

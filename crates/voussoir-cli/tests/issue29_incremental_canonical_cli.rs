@@ -95,3 +95,49 @@ fn issue29_item5_incremental_raw_and_canonical_steps_flags() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Regression (session 18): `incremental --friction-cone exact` on a 3D model ran its steps on
+/// the inscribed pyramid and said nothing (the curve was identical to the pyramid's). It is
+/// refused in one line naming the flag, and nothing is written.
+#[test]
+fn issue29_incremental_refuses_the_exact_cone() {
+    let dir = std::env::temp_dir().join(format!("voussoir-inc-cone-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let m = dir.join("vault.json");
+    let m = m.to_str().unwrap();
+    ok(&["gen", "vault", "--live", "right", "-o", m]);
+    let out = dir.join("out.json");
+    let o = run(&[
+        "incremental",
+        m,
+        "--control",
+        "0,0.5,3",
+        "--friction",
+        "0.6",
+        "--friction-cone",
+        "exact",
+        "--max",
+        "2mm",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--friction-cone exact") && err.contains("incremental"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    // The pyramid (the default) runs.
+    ok(&[
+        "incremental",
+        m,
+        "--control",
+        "0,0.5,3",
+        "--friction",
+        "0.6",
+        "--max",
+        "2mm",
+    ]);
+}

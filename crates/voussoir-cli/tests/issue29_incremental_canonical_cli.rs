@@ -141,3 +141,80 @@ fn issue29_incremental_refuses_the_exact_cone() {
         "2mm",
     ]);
 }
+
+/// Regression (session 18): the README's wall with a horizontal live load, settled 5 mm at
+/// `f9` and driven to 20 mm, ran the 100,000-step cap (minutes of LPs; killed after 120 s)
+/// where 17 mm ends in a fraction of a second: near 20 mm the dead loads alone move it again
+/// and again, each move closing a contact point, with no equilibrium at any λ. The run now
+/// stops once those moves outnumber the contact points, says so, and keeps the curve: the
+/// 17 mm run's curve (but its last step, cut to end at 17 mm) is its beginning, point for
+/// point (reference: that run, which ends at its maximum displacement and never takes such a
+/// move).
+#[test]
+fn issue29_incremental_dead_load_moves_in_a_row_stop() {
+    let dir = std::env::temp_dir().join(format!("voussoir-inc-snaps-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let m = dir.join("wall.json");
+    let m = m.to_str().unwrap();
+    ok(&[
+        "gen",
+        "wall",
+        "--courses",
+        "8",
+        "--units",
+        "10",
+        "--unit",
+        "0.4,0.2",
+        "--live",
+        "horizontal",
+        "-o",
+        m,
+    ]);
+    let run_to = |max: &str| -> serde_json::Value {
+        let out = ok(&[
+            "incremental",
+            m,
+            "--control",
+            "4.0,1.6",
+            "--move",
+            "f9=0,-5mm",
+            "--max",
+            max,
+            "--step",
+            "0.5mm",
+            "--raw",
+            "--json",
+        ]);
+        serde_json::from_str(&out).unwrap()
+    };
+    let short = run_to("17mm");
+    assert_eq!(short["status"], "max_displacement", "{}", short["message"]);
+    assert_eq!(short["snaps"], 0);
+    let long = run_to("20mm");
+    assert_eq!(long["status"], "no_equilibrium", "{}", long["message"]);
+    let msg = long["message"].as_str().unwrap();
+    assert!(
+        msg.contains("times in a row") && msg.contains("stopped"),
+        "{msg}"
+    );
+    assert!(long["snaps"].as_u64().unwrap() > 0);
+    let steps = long["curve"].as_array().unwrap().last().unwrap()["step"]
+        .as_u64()
+        .unwrap();
+    assert!(steps < 2_000, "{steps} steps");
+    let (a, b) = (
+        short["curve"].as_array().unwrap(),
+        long["curve"].as_array().unwrap(),
+    );
+    assert!(b.len() > a.len());
+    // The short run's last step is cut to end at 17 mm; the steps before it are the same.
+    for (p, q) in a[..a.len() - 1].iter().zip(b) {
+        for f in ["displacement", "load_multiplier"] {
+            let (x, y) = (p[f].as_f64().unwrap(), q[f].as_f64().unwrap());
+            assert!(
+                (x - y).abs() <= 1e-12 * (1.0 + x.abs()),
+                "{f}: {x} against {y}"
+            );
+        }
+    }
+}

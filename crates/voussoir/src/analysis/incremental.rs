@@ -490,9 +490,20 @@ pub fn incremental_with<S: IncrementalGeometry>(
         steps: true,
         ..IncrementalCanonical::default()
     });
+    // Dead-load moves in a row (no curve point between them): each should close a point; more
+    // of them than the structure has points means the moves cycle (one closes a point and
+    // opens another) — regression (session 18): the README's wall settled 5 mm and driven to
+    // 20 mm ran its 100,000-step cap, minutes of LPs, where 17 mm ended in 0.15 s.
+    let mut snaps_in_a_row = 0usize;
+    let mut snap_cycle: Option<usize> = None;
     for step in 0..opts.max_steps {
         steps = step;
         let map = KinematicMap::new(&st);
+        if snaps_in_a_row > map.num_points() {
+            snap_cycle = Some(map.num_points());
+            status = IncrementalStatus::NoEquilibrium;
+            break;
+        }
         let sol = warm.solve(&st, &map)?;
         // `snap`: no equilibrium for any λ, but the dead loads alone drive a mechanism that
         // closes an open point (a hinge moving to the next joint): follow that mechanism, with
@@ -510,6 +521,7 @@ pub fn incremental_with<S: IncrementalGeometry>(
             _ => match dead_load_ray(&st, &map, &opts.solver)? {
                 Some(ray) if closes_a_gap(&map, &ray) => {
                     snaps += 1;
+                    snaps_in_a_row += 1;
                     (ray, f64::NEG_INFINITY, true)
                 }
                 _ => {
@@ -520,6 +532,7 @@ pub fn incremental_with<S: IncrementalGeometry>(
         };
         let closing_now = closes_a_gap(&map, &d);
         if !snap {
+            snaps_in_a_row = 0;
             curve.push(IncrementalPoint {
                 step,
                 displacement: disp,
@@ -665,6 +678,10 @@ pub fn incremental_with<S: IncrementalGeometry>(
         IncrementalStatus::Locked => {
             "no finite collapse load on the current geometry (locked)".to_string()
         }
+        IncrementalStatus::NoEquilibrium if snap_cycle.is_some() => format!(
+            "no equilibrium on the current geometry: the dead loads alone moved it {snaps_in_a_row} times in a row, more than its {} contact points, without an equilibrium at any λ: stopped",
+            snap_cycle.unwrap_or(0)
+        ),
         IncrementalStatus::NoEquilibrium => "no equilibrium on the current geometry".to_string(),
         IncrementalStatus::ControlStill => {
             "the mechanism does not move the control point along the direction".to_string()

@@ -56,6 +56,8 @@ mod issue29_dome2;
 mod issue29_dome48;
 #[path = "issue29_dome_safety.rs"]
 mod issue29_dome_safety;
+#[path = "issue29_extremes_fallback.rs"]
+mod issue29_extremes_fallback;
 #[path = "issue29_facade_sequences.rs"]
 mod issue29_facade_sequences;
 #[path = "issue29_fixes.rs"]

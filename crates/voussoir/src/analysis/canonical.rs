@@ -315,16 +315,42 @@ impl Stages {
     }
 
     /// Solve from scratch, with the dual simplex and presolve (the extremes of a face: most of
-    /// its rows are held equalities).
-    fn solve_fresh(&mut self, lp: &LinearProgram) -> Result<lp::LpSolution> {
+    /// its rows are held equalities). On a program of `dofs` degrees of freedom where the
+    /// policy says so ([`lp::policy::extremes_fallback`]), an answer of the dual simplex that
+    /// is not certified goes to that method (and its chain) instead of the dual simplex's own
+    /// chain; the result's `tried` says why.
+    fn solve_fresh(&mut self, lp: &LinearProgram, dofs: usize) -> Result<lp::LpSolution> {
         let saved = self.opts;
         self.opts = SolverOptions {
             method: Method::DualSimplex,
             presolve: true,
             ..saved
         };
-        let mut none = None;
-        let r = self.solve(lp, &mut none);
+        let r = match lp::policy::extremes_fallback(dofs) {
+            None => {
+                let mut none = None;
+                self.solve(lp, &mut none)
+            }
+            Some(next) => {
+                let first = self.solve_single(lp, false);
+                let why = match &first {
+                    Ok(s) => lp::policy::check(lp, s),
+                    Err(e) => Some(e.to_string().trim().to_string()),
+                };
+                match (first, why) {
+                    (Ok(s), None) => Ok(s),
+                    (_, why) => {
+                        self.opts.method = next;
+                        let mut none = None;
+                        self.solve(lp, &mut none).map(|mut s| {
+                            s.tried
+                                .insert(0, format!("dual-simplex: {}", why.unwrap_or_default()));
+                            s
+                        })
+                    }
+                }
+            }
+        };
         self.opts = saved;
         r
     }
@@ -483,9 +509,9 @@ pub fn canonical_mechanism(
      -> Result<Option<(Vec<f64>, f64)>> {
         let mut lp = face.clone();
         lp.cost[..nd].copy_from_slice(&r);
-        let mut lo = st.solve_fresh(&lp)?;
+        let mut lo = st.solve_fresh(&lp, nd)?;
         lp.maximise = true;
-        let mut hi = st.solve_fresh(&lp)?;
+        let mut hi = st.solve_fresh(&lp, nd)?;
         // From scratch, the dual simplex can find a face of nearly dependent held rows
         // empty to its tolerances where the stage-2 vertex lies in it (the 30 × 20 wall with
         // μ = 0.6: both extremes "infeasible"). Then from that vertex's basis, by the primal

@@ -123,6 +123,25 @@ pub const FRICTION_SIMPLEX_MAX_BLOCKS_2D: usize = 300;
 /// 59 CPU s); the boundary between is not measured).
 pub const CURVE_SIMPLEX_MAX_BLOCKS_3D: usize = 300;
 
+/// Degrees of freedom above which the canonical selection's extremes from scratch (the least
+/// and largest value of a generic functional on a face, solved by the dual simplex with
+/// presolve) go to HiGHS's interior point with crossover, not to the primal simplex, where the
+/// dual simplex's answer is not certified: the 0.5 m grid façade's `tilt` (7,962 degrees of
+/// freedom), whose maximum the dual simplex ended "not certified (row violation 2.5e-2)": the
+/// primal simplex from scratch then took 8,599 iterations, 103 s of the 135 s wall clock
+/// (89.8 CPU s), where the interior point answers either extreme in 18–20 s wall, the same
+/// vertex (docs/performance.md, "The realistic benchmark (session 18)"). 2,000 blocks in 2D,
+/// the size above which the interior point is already the default ([`SIMPLEX_MAX_BLOCKS_2D`]).
+pub const EXTREMES_INTERIOR_FALLBACK_MIN_DOFS: usize = 3 * SIMPLEX_MAX_BLOCKS_2D;
+
+/// The method that answers a canonical selection's extreme from scratch on a program of `dofs`
+/// degrees of freedom after the dual simplex did not certify one: HiGHS's interior point with
+/// crossover above [`EXTREMES_INTERIOR_FALLBACK_MIN_DOFS`] (then its own fallback chain),
+/// else `None`: the dual simplex's own chain (the primal simplex next).
+pub fn extremes_fallback(dofs: usize) -> Option<Method> {
+    (dofs > EXTREMES_INTERIOR_FALLBACK_MIN_DOFS).then_some(Method::Ipm)
+}
+
 /// The method used when the user names none: the one that measured fastest and certified in
 /// each class (docs/performance.md, "Solver policy (session 12)", every row measured on the
 /// 2-core machine):

@@ -294,7 +294,7 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
     }
     let _ = writeln!(
         s,
-        "{} LP solves, {} simplex iterations",
+        "{} LP solves, {} solver iterations",
         r.solves, r.iterations
     );
     // Each step's certificate (the JSON's `certificate` per step and summed up); the numbers

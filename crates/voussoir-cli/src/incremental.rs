@@ -360,7 +360,7 @@ where
     }
     let _ = writeln!(
         s,
-        "{} LP solves, {} simplex iterations",
+        "{} LP solves, {} solver iterations",
         r.solves, r.iterations
     );
     if let Some(c) = &r.canonical {

@@ -154,8 +154,8 @@ pub fn extremes_fallback(dofs: usize) -> Option<Method> {
 /// | 2D with friction, > 300 blocks (optimisations) | HiGHS IPM + crossover | 30 × 20 wall (610 blocks), μ = 0.6: `limit` 8.5 CPU s (dual simplex 34.9, Clarabel 0.7), `settle --raw` 7.1 (21.4, Clarabel 8.1 not certified: gap 2.2e-6); 60 × 30 wall: `settle --raw` 68.8 (349.5, 49.1); a vertex, certified |
 /// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges); as fast as any on these sizes |
 /// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 80 × 40 wall (3,220 blocks): `limit` 11.8 CPU s (dual simplex > 79, Clarabel not certified: duality gap 1.0, answered by the IPM after it), `settle --raw` 6.3 (dual simplex 8.0, Clarabel 8.5 with its fallback); a vertex |
-/// | 3D capacity curve ([`Purpose::Curve`]), ≤ 300 blocks | dual simplex, warm from step to step | session 15: README vault 21 steps 1.3 CPU s (Clarabel 1.8, HiGHS IPM 6.5–62: it stalls on some settled geometries), README dome 1.2 (Clarabel 2.2, IPM 5.3); a vertex, as the IPM's crossover gives |
-/// | 3D capacity curve, > 300 blocks | Clarabel | 24 × 24 dome (553 blocks): 23.7–35.6 CPU s; the dual simplex's first program alone > 59, the IPM's curve > 60, the IPM's first program then the warm dual simplex > 119 |
+/// | 3D capacity curve ([`Purpose::Curve`]), ≤ 300 blocks, no friction | dual simplex, warm from step to step | session 15: README vault 21 steps 1.3 CPU s (Clarabel 1.8, HiGHS IPM 6.5–62: it stalls on some settled geometries), README dome 1.2 (Clarabel 2.2, IPM 5.3); a vertex, as the IPM's crossover gives |
+/// | 3D capacity curve, > 300 blocks or with friction | Clarabel | README vault, μ = 0.6, 5 steps: 11.4 CPU s (dual simplex 155.9); README dome, μ = 0.5, 10 steps: 14.2 (37.3); 24 × 24 dome (553 blocks): 23.7–35.6 CPU s; the dual simplex's first program alone > 59, the IPM's curve > 60, the IPM's first program then the warm dual simplex > 119 |
 /// | 3D | HiGHS IPM + crossover (a vertex; Clarabel measured faster, see below) | vault `limit` 0.13 CPU s (dual simplex 0.53, IPM 1.16), `settle` 0.13 (0.51, 0.56); dome 12 × 24 `limit` 0.30 (IPM 1.33, dual simplex > 97); `safety` within 1.3× of the fastest; HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
 ///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
@@ -178,7 +178,14 @@ pub fn default_method(class: &ProblemClass) -> Method {
         // IPM 6.5–62: it stalls on some settled geometries); above, Clarabel (the 24 × 24
         // dome: 36 CPU s; the dual simplex's first program alone took over 59, the IPM's
         // curve over 60, the IPM's first program then the warm dual simplex over 119).
-        (Purpose::Curve, 3) if class.blocks <= CURVE_SIMPLEX_MAX_BLOCKS_3D => Method::DualSimplex,
+        // With friction (the pyramid's facets add rows at every contact point) the dual simplex
+        // pivots for tens of seconds on each step even on the README's models: measured in
+        // session 19 (docs/performance.md, "3D curves with friction (session 19)"), the README
+        // vault with μ = 0.6, 5 steps: 155.9 CPU s, Clarabel 11.4; the README dome with a crown
+        // load and μ = 0.5, 10 steps: 37.3 against 14.2, the same λ to 1e-6 at every step.
+        (Purpose::Curve, 3) if class.blocks <= CURVE_SIMPLEX_MAX_BLOCKS_3D && !class.friction => {
+            Method::DualSimplex
+        }
         (Purpose::Curve, 3) => Method::Clarabel,
         (_, 3) => Method::Ipm,
         _ if class.blocks > SIMPLEX_MAX_BLOCKS_2D => Method::Ipm,
@@ -417,6 +424,12 @@ mod tests {
         );
         assert_eq!(default_method(&curve(3, 553, false)), Method::Clarabel);
         assert_eq!(default_method(&curve(3, 192, true)), Method::Clarabel);
+        // With friction, Clarabel at every size (session 19: the README vault with μ = 0.6).
+        let frictional = ProblemClass {
+            friction: true,
+            ..curve(3, 192, false)
+        };
+        assert_eq!(default_method(&frictional), Method::Clarabel);
         // 2D curves as 2D optimisations: the dual simplex up to 2,000 blocks, the IPM above.
         assert_eq!(default_method(&curve(2, 182, false)), Method::DualSimplex);
         assert_eq!(default_method(&curve(2, 2_654, false)), Method::Ipm);

@@ -262,7 +262,7 @@ fn issue29_item5_canonical_steps_same_hinges_every_method_2d() {
     let mut first: Option<Vec<Vec<usize>>> = None;
     for method in ["dual-simplex", "primal-simplex", "ipm", "clarabel"] {
         let r = run(body(r#", "canonical_steps": true"#, method));
-        let c = r.canonical.as_ref().unwrap();
+        let c = &r.canonical.as_ref().unwrap().selection;
         assert!(c.steps && c.steps_not_reached.is_empty(), "{method}: {c:?}");
         let hinges: Vec<Vec<usize>> = r.curve.iter().map(|p| joints(&p.hinges)).collect();
         for (p, q) in r.curve.iter().zip(&raw.curve) {

@@ -303,7 +303,7 @@ impl IncrementalRequest {
                 if c.settlement_not_reached {
                     r.message.push_str("; the canonical selection of the settlement mechanism was not reached: the solver's own settled the structure, which may depend on the method");
                 }
-                c.solves += m.as_ref().map_or(0, |m| m.solves);
+                c.selection.solves += m.as_ref().map_or(0, |m| m.solves);
                 c.settlement = m;
             }
         }

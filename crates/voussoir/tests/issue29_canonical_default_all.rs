@@ -181,7 +181,10 @@ fn capacity_same_with_every_method(model: &Model3d, moves: &str, extra: &str, wh
         .as_ref()
         .unwrap_or_else(|| panic!("{what}: the default capacity is not canonical"));
     assert!(c.settlement.is_some(), "{what}: settlement not selected");
-    assert!(!c.steps, "{what}: the steps are selected only when asked");
+    assert!(
+        !c.selection.steps,
+        "{what}: the steps are selected only when asked"
+    );
     let h0 = joints(&default.settlement_hinges);
     assert!(!h0.is_empty(), "{what}: no settlement hinge");
     assert_eq!(h0, joints(&raw.settlement_hinges), "{what}: against raw");

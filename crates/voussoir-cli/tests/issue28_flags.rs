@@ -7,8 +7,6 @@ use crate::common::{run, voussoir};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
-/// Run and expect success; stdout.
-
 /// Run and expect a refusal: non-zero exit, nothing on stdout, stderr one `error:` line that
 /// contains `needle`, and none of `outputs` written. Returns the line.
 fn refused(dir: &Path, args: &[&str], needle: &str, outputs: &[&str]) -> String {

@@ -13,8 +13,6 @@ fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("issue28io", name)
 }
 
-/// Fails with one line on stderr containing every needle; returns the line.
-
 fn lambda(model: &str) -> f64 {
     let o = ok(&["limit", model, "--json"]);
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();

@@ -12,8 +12,6 @@ use crate::common;
 use crate::common::{json_file as json, refusal as refused, run};
 use std::path::{Path, PathBuf};
 
-/// A refusal: non-zero exit, one line on stderr, returned.
-
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i28plot", name)
 }

@@ -9,8 +9,6 @@ use crate::common::{cwd::fails, cwd::ok, cwd::ok_json};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
-/// Fails with one line on stderr containing every needle.
-
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("issue32f", name)
 }

@@ -225,11 +225,11 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
             ),
             None => "the settlement mechanism's selection was not reached".to_string(),
         };
-        if c.steps {
+        if c.selection.steps {
             let _ = writeln!(
                 s,
                 "canonical: {how}; collapse mechanisms selected at {} steps ({} differ from the solver's)",
-                c.steps_selected, c.steps_changed
+                c.selection.steps_selected, c.selection.steps_changed
             );
         } else {
             let _ = writeln!(

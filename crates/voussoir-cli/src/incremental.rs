@@ -385,21 +385,22 @@ fn canonical_line(c: &voussoir::result::incremental::IncrementalCanonical) -> St
         }
         (None, false) => "no settlement".to_string(),
     };
-    let steps = if c.steps {
+    let sel = &c.selection;
+    let steps = if sel.steps {
         format!(
             "the collapse mechanism of {} step{} selected, {} of them not the solver's{}",
-            c.steps_selected,
-            if c.steps_selected == 1 { "" } else { "s" },
-            c.steps_changed,
-            if c.steps_not_reached.is_empty() {
+            sel.steps_selected,
+            if sel.steps_selected == 1 { "" } else { "s" },
+            sel.steps_changed,
+            if sel.steps_not_reached.is_empty() {
                 String::new()
             } else {
-                format!(", not reached at {} steps", c.steps_not_reached.len())
+                format!(", not reached at {} steps", sel.steps_not_reached.len())
             }
         )
     } else {
         "the steps' collapse mechanisms are the solver's (--canonical-steps selects them)"
             .to_string()
     };
-    format!("canonical: {settlement}; {steps} ({} programs)", c.solves)
+    format!("canonical: {settlement}; {steps} ({} programs)", sel.solves)
 }

@@ -1,20 +1,12 @@
 //! The `voussoir` binary end to end: generation, analyses, JSON output, bad input.
 
+use crate::common::cwd::run;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-}
 
 fn tmpdir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("voussoir-cli-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().expect("run voussoir")
 }
 
 fn paper_arch(dir: &Path, live: &str) -> String {

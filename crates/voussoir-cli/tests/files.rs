@@ -2,22 +2,14 @@
 //! device a device, an output naming the model is refused, and when one of several outputs
 //! cannot be written none is.
 
+use crate::common;
+use crate::common::cwd::run;
 use std::os::unix::fs::FileTypeExt;
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
+use std::process::Output;
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-files-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("files-cli", name)
 }
 
 fn arch(dir: &std::path::Path) -> String {

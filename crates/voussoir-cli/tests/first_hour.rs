@@ -3,31 +3,14 @@
 //! read well (units, no λ in settlement drawings, subtitles that fit, honest linear fits), and
 //! `tilt` draws. Each test is named after the behaviour it pins.
 
+use crate::common::{cwd::ok, cwd::run};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-}
+use std::process::Output;
 
 fn tmpdir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("voussoir-first-hour-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().expect("run voussoir")
-}
-
-fn ok(args: &[&str]) -> Output {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
 }
 
 fn stdout(o: &Output) -> String {

@@ -1,22 +1,13 @@
 //! `voussoir gen vault | dome | block | walls`: the written JSON reads back as a 3D model with
 //! the counts and names the generators document; bad flags fail in one line without output.
 
+use crate::common;
+use crate::common::cwd::run;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 use voussoir::model3d::{AnyModel, Load3d, Model3d};
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-gen3d-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("gen3d", name)
 }
 
 /// Run `gen ARGS -o FILE` and read FILE back as a 3D model.

@@ -2,9 +2,7 @@
 //! intensity. `--live-load` is now refused with `--live none|horizontal` (which have none) and
 //! honoured with a vertical live load: λ is inversely proportional to q (the live load is
 //! linear in q, the dead loads do not change), so q = 5 gives λ(q = 1) / 5.
-
-mod common;
-use common::{refused, run, tmpdir};
+use crate::common::{refused, run, tmpdir};
 
 fn lambda(summary: &str) -> f64 {
     let line = summary

@@ -1,15 +1,8 @@
 //! `voussoir identify` end to end: a forward settlement's cracks written as an observation file
 //! (by coordinates, as a surveyor would) give back the settlement; JSON, drawings, bad input.
 
+use crate::common::cwd::run;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
 
 fn tmpdir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("voussoir-identify-{}-{name}", std::process::id()));

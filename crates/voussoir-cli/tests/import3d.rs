@@ -3,15 +3,9 @@
 //! one line with nothing written. Fixtures: crates/voussoir-io/tests/fixtures/mesh
 //! (make_fixtures.py there).
 
+use crate::common;
+use crate::common::{cwd::fails, cwd::ok_text as ok};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
 
 fn fixture(name: &str) -> String {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -22,30 +16,7 @@ fn fixture(name: &str) -> String {
 }
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-import3d-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn ok(args: &[&str]) -> String {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn fails(args: &[&str], needles: &[&str]) {
-    let o = run(args);
-    assert!(!o.status.success(), "{args:?} succeeded");
-    let e = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(e.trim_end().lines().count(), 1, "{args:?}: {e}");
-    for n in needles {
-        assert!(e.contains(n), "{args:?}: {e} (expected {n})");
-    }
+    common::tmpdir("import3d", name)
 }
 
 /// λ from `limit --json`.

@@ -2,28 +2,10 @@
 //! honoured (checked against hand calculations) or refused in one line with no output file, and
 //! the summaries and drawings count and join what they show consistently.
 
+use crate::common;
+use crate::common::{run, voussoir};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn voussoir(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run voussoir")
-}
-
-/// Run and expect success; stdout.
-fn run(dir: &Path, args: &[&str]) -> String {
-    let o = voussoir(dir, args);
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
 
 /// Run and expect a refusal: non-zero exit, nothing on stdout, stderr one `error:` line that
 /// contains `needle`, and none of `outputs` written. Returns the line.
@@ -43,10 +25,7 @@ fn refused(dir: &Path, args: &[&str], needle: &str, outputs: &[&str]) -> String 
 }
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i28flags-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("i28flags", name)
 }
 
 fn read_json(path: &Path) -> Value {

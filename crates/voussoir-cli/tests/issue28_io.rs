@@ -4,44 +4,13 @@
 //! declare signed connectivity; `export`/`import` report success only once the file is written.
 //! References: hand calculations on boxes (in the tests).
 
+use crate::common;
+use crate::common::{cwd::fails, cwd::ok};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-issue28io-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn ok(args: &[&str]) -> Output {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
-
-/// Fails with one line on stderr containing every needle; returns the line.
-fn fails(args: &[&str], needles: &[&str]) -> String {
-    let o = run(args);
-    assert!(!o.status.success(), "{args:?} succeeded");
-    let e = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert_eq!(e.trim_end().lines().count(), 1, "{args:?}: {e}");
-    for n in needles {
-        assert!(e.contains(n), "{args:?}: {e} (expected {n})");
-    }
-    e
+    common::tmpdir("issue28io", name)
 }
 
 fn lambda(model: &str) -> f64 {

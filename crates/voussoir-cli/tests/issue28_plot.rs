@@ -8,45 +8,12 @@
 //! overturns at λ = b/h and slides at λ = μ (exact cone); a tilting table tips it at
 //! α = atan(b/h); its weight is γ·b·h (·d); a rotation of 0.5° is 8.7266 mrad.
 
+use crate::common;
+use crate::common::{json_file as json, refusal as refused, run};
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn voussoir(dir: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run voussoir")
-}
-
-fn run(dir: &Path, args: &[&str]) -> String {
-    let o = voussoir(dir, args);
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-/// A refusal: non-zero exit, one line on stderr, returned.
-fn refused(dir: &Path, args: &[&str]) -> String {
-    let o = voussoir(dir, args);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert!(!o.status.success(), "voussoir {args:?} succeeded");
-    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err}");
-    err
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i28plot-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+    common::tmpdir("i28plot", name)
 }
 
 fn read(path: &Path) -> String {

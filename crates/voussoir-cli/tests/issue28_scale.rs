@@ -2,6 +2,8 @@
 //! "certified", "zero", "open" and "sliding" mean relative to the problem's own scale
 //! (docs/tolerances.md).
 
+use crate::common;
+use crate::common::json_file as json;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -25,14 +27,7 @@ fn ok(dir: &Path, args: &[&str]) -> String {
 }
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i28s-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+    common::tmpdir("i28s", name)
 }
 
 /// The LACT3 portal, copied into voussoir-io's fixtures (source in its README).

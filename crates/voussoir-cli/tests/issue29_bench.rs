@@ -2,8 +2,7 @@
 //! analyses they run. A tiny subset is run here (the paper's arch × limit and settle, LACT3's
 //! arch × limit); the whole table is in docs/performance.md.
 
-mod common;
-use common::{json, refused, run, tmpdir};
+use crate::common::{json, refused, run, tmpdir};
 use std::path::PathBuf;
 
 fn lact3() -> PathBuf {

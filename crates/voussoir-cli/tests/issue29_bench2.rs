@@ -3,9 +3,7 @@
 //! certificate (or a certified decision: infeasible) and says so in its `answered` lines; the
 //! benchmark read no `certificate` object there and printed "— (none reported)", and its method
 //! column named only the bisection's method although the ranges were answered by another.
-
-mod common;
-use common::{json, run, tmpdir};
+use crate::common::{json, run, tmpdir};
 
 #[test]
 fn issue29_item6_bench_reads_safetys_answered_programs() {

@@ -2,10 +2,9 @@
 //! mechanism by default in 2D and 3D, `--raw` the solver's own (the same λ, tilt and works),
 //! and `--canonical-steps` is refused with `--raw` in one line naming both flags.
 
+use crate::common;
+use crate::common::{json, refused, run};
 use std::path::PathBuf;
-
-mod common;
-use common::{json, refused, run};
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i29candef", name)

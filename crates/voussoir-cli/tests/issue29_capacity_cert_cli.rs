@@ -3,10 +3,9 @@
 //! decisions (`answered`), and every step of the LACT3 wall's capacity is certified (a warm
 //! "locked" between two steps without equilibrium is decided again).
 
+use crate::common;
+use crate::common::{json, run};
 use std::path::{Path, PathBuf};
-
-mod common;
-use common::{json, run};
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i29capcert", name)

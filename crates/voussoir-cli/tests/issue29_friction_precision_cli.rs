@@ -3,9 +3,7 @@
 //! where they are not (every flag honoured or refused). The least μ's reference is an
 //! independent bisection to 1e-6 (crates/voussoir/tests/issue29_friction_precision.rs: 1.20280
 //! on the README's wall).
-
-mod common;
-use common::{json, refused, run, tmpdir};
+use crate::common::{json, refused, run, tmpdir};
 
 const REFERENCE: f64 = 1.2027998;
 

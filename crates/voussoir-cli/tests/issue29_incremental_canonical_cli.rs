@@ -4,24 +4,7 @@
 //! together are refused in one line. Reference: the same curve either way on the paper's arch,
 //! whose optima are unique.
 
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
-fn ok(args: &[&str]) -> String {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
+use crate::common::{cwd::ok_text as ok, cwd::run};
 
 #[test]
 fn issue29_item5_incremental_raw_and_canonical_steps_flags() {

@@ -4,11 +4,10 @@
 //! `settle` accepts as it is (its supports carry the profile's motions) and gives the adapted
 //! run's work.
 
+use crate::common;
+use crate::common::{refused, run};
 use serde_json::Value;
 use std::path::PathBuf;
-
-mod common;
-use common::{refused, run};
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i30am", name)

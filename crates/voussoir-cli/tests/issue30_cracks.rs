@@ -7,10 +7,9 @@
 //! settlement opens three cracks through the arch's 0.33 m thickness, the crown's twice as wide
 //! as each haunch's (tests/issue30_cracks.rs of the library).
 
+use crate::common;
+use crate::common::run;
 use std::path::PathBuf;
-
-mod common;
-use common::run;
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i30cracks", name)

@@ -2,37 +2,12 @@
 //! canonical mechanism of the friction iteration's last program (least crack area, openings and
 //! slips), `--raw` the iteration's own; `limit --non-associative --canonical` likewise.
 
+use crate::common;
+use crate::common::{cwd::ok, cwd::ok_json, cwd::run};
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
-fn ok(args: &[&str]) -> Output {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
-
-fn ok_json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.push("--json");
-    serde_json::from_slice(&ok(&a).stdout).unwrap()
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i30f-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("i30f-cli", name)
 }
 
 /// An 8 × 5 running-bond wall of 0.4 × 0.2 m units (`gen wall`), with `extra` flags.

@@ -3,27 +3,12 @@
 //! counts the hinge dots it draws, and every crack states the chord of its polyline (rise and
 //! run of its end points), the summary the longest crack's slope.
 
+use crate::common;
+use crate::common::cwd::ok;
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn ok(args: &[&str]) -> Output {
-    let o = Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir");
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i30fw-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("i30fw", name)
 }
 
 /// The wall settled as in docs/joint-laws.md: (summary, result JSON, SVG).

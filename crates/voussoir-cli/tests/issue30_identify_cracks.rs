@@ -2,9 +2,7 @@
 //! fields as written) go back in as they are — as `identify` observations and as a model's
 //! existing cracks. Must-show: `identify` recovers the paper arch's settlement from the crack
 //! polylines of its forward run.
-
-mod common;
-use common::{json, run, tmpdir};
+use crate::common::{json, run, tmpdir};
 
 /// The arch's forward settlement: the right support moves 5 mm out and 10 mm down.
 const U: f64 = 0.005;

@@ -5,9 +5,7 @@
 //! References: areas from closed forms; the physical bound of a settlement's work (W·v: no
 //! element drops further than the 20 cm the foundation does); byte-identical output twice.
 
-mod common;
-
-use common::{json, refused, run, tmpdir, voussoir};
+use crate::common::{json, refused, run, tmpdir, voussoir};
 use serde_json::Value;
 use std::path::Path;
 

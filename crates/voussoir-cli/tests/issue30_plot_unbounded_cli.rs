@@ -3,10 +3,9 @@
 //! type: null, expected f64"). The canonical reaction ranges had a side without bound (±∞),
 //! which JSON writes as `null`. The reader now takes `null` there as unbounded.
 
+use crate::common;
+use crate::common::run;
 use std::path::PathBuf;
-
-mod common;
-use common::run;
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i30plot", name)

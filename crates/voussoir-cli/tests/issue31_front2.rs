@@ -5,8 +5,7 @@
 //! while it runs (the saved result drawn again must be the same figure), the source of the
 //! front ends (no library analysis called but through the request layer).
 
-mod common;
-use common::{json, refused, run, tmpdir};
+use crate::common::{json, refused, run, tmpdir};
 use std::path::Path;
 
 #[test]

@@ -3,8 +3,7 @@
 //! per metre of depth what the arch carries per metre of width, so its λ curve against the
 //! crown's displacement is the arch's), and the forward settlement whose cracks are observed.
 
-mod common;
-use common::{json, refused, run, tmpdir};
+use crate::common::{json, refused, run, tmpdir};
 use serde_json::Value;
 use std::path::Path;
 

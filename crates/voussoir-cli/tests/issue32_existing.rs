@@ -8,16 +8,9 @@
 //! model JSON (results byte-identical), and the hand calculation of the closing supports: the
 //! crown's intrados closes at 0.45·s/3.31, so the 3 mm crack closes at s = 0.003·3.31/0.45.
 
+use crate::common::cwd::run;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
 
 fn ok(args: &[&str]) -> String {
     let o = run(args);

@@ -4,49 +4,13 @@
 //! parts, and supports from a DXF layer settle one by one. References: weights by the shoelace
 //! formula (18 kN/m³, 1 m wide) and hand calculations.
 
+use crate::common;
+use crate::common::{cwd::fails, cwd::ok, cwd::ok_json};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
-fn ok(args: &[&str]) -> Output {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
-
-fn ok_json(args: &[&str]) -> Value {
-    let mut a = args.to_vec();
-    a.push("--json");
-    serde_json::from_slice(&ok(&a).stdout).unwrap()
-}
-
-/// Fails with one line on stderr containing every needle.
-fn fails(args: &[&str], needles: &[&str]) {
-    let o = run(args);
-    assert!(!o.status.success(), "{args:?} succeeded");
-    let e = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert_eq!(e.trim_end().lines().count(), 1, "{args:?}: {e}");
-    for n in needles {
-        assert!(e.contains(n), "{args:?}: {e} (expected {n})");
-    }
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-issue32f-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("issue32f", name)
 }
 
 fn s(p: &Path) -> &str {

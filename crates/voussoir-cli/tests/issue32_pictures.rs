@@ -9,49 +9,16 @@
 //! block b × d × h on a tilting table (α = atan(b/h), λ = tan α, W = γ·b·d·h) and the counts of
 //! centres of pressure in the results' JSON.
 
+use crate::common;
+use crate::common::{json_file as json, refusal as refused, run};
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn voussoir(dir: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run voussoir")
-}
-
-fn run(dir: &Path, args: &[&str]) -> String {
-    let o = voussoir(dir, args);
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-/// A refusal: non-zero exit, one line on stderr, returned.
-fn refused(dir: &Path, args: &[&str]) -> String {
-    let o = voussoir(dir, args);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert!(!o.status.success(), "voussoir {args:?} succeeded");
-    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err}");
-    err
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-i32pic-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("i32pic", name)
 }
 
 fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap()
-}
-
-fn json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&read(path)).unwrap()
 }
 
 /// Advance widths of DejaVu Sans (units per em: 2048), from the font's `hmtx` table.

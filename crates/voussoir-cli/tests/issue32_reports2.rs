@@ -9,32 +9,13 @@
 //! 3.19 m, each a trapezoid of area ½·sin(π/16)·(Re² − Ri²), γ = 18 kN/m³), the unit
 //! conversions of the values given on the command line, and the JSON written by the same run.
 
+use crate::common;
+use crate::common::cwd::ok;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
-fn ok(args: &[&str]) -> Output {
-    let o = run(args);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-issue32r2-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("issue32r2", name)
 }
 
 fn s(p: &Path) -> &str {

@@ -4,10 +4,9 @@
 //! mm, motions and displacements in cm, positions in m), checked against the JSON (× 1000,
 //! × 100) within the printed precision; `--help` lists the new names.
 
+use crate::common;
+use crate::common::{json, refused, run};
 use std::path::{Path, PathBuf};
-
-mod common;
-use common::{json, refused, run};
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("i32vocab", name)

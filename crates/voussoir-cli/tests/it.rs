@@ -10,6 +10,8 @@
 
 #[path = "cli.rs"]
 mod cli;
+/// The helpers every test file shares (`common/mod.rs`: `use crate::common::…`).
+mod common;
 #[path = "files.rs"]
 mod files;
 #[path = "first_hour.rs"]

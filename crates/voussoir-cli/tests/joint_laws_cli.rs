@@ -1,33 +1,12 @@
 //! Issue #17, items 3–5 through the command line: `--crushing conic` and `--facets` on
 //! `settle` and `capacity`, `--non-associative` friction, and a model's existing `cracks`.
 
+use crate::common;
+use crate::common::{cwd::ok_json, cwd::run};
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
-fn ok_json(args: &[&str]) -> serde_json::Value {
-    let mut a = args.to_vec();
-    a.push("--json");
-    let o = run(&a);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    serde_json::from_slice(&o.stdout).unwrap()
-}
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-jl-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("jl-cli", name)
 }
 
 fn gen(dir: &std::path::Path, name: &str, args: &[&str]) -> String {

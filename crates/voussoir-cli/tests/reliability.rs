@@ -3,21 +3,13 @@
 //! regressions.rs`, the file-safety ones in `files.rs`). `scripts/reliability.sh` tries the
 //! same classes of bad input many times over and writes docs/reliability.md.
 
+use crate::common;
+use crate::common::cwd::run;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir")
-}
-
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("voussoir-rel-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmpdir("rel", name)
 }
 
 fn s(p: &Path) -> &str {

@@ -3,21 +3,8 @@
 //! arch's thrust range equal to the settlement analysis under spreading and closing supports,
 //! and a 3D vault equal to its arch.
 
+use crate::common::cwd::ok as run;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    let o = Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir");
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
 
 fn json(args: &[&str]) -> serde_json::Value {
     serde_json::from_slice(&run(args).stdout).unwrap()

@@ -3,9 +3,7 @@
 //! ranges are a stage of the canonical selection, so the flag did nothing), and a settlement
 //! of a weightless model (every mechanism does zero work: the LP's "answer" was printed with a
 //! relative gap of 1 as if it meant something), in 2D and 3D.
-
-mod common;
-use common::{json, refused, run, tmpdir};
+use crate::common::{json, refused, run, tmpdir};
 
 /// The generated arch with a live load at its crown (so that `limit` has something to do).
 fn arch(dir: &std::path::Path) {

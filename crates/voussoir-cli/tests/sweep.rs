@@ -2,21 +2,12 @@
 //! 0.33 m thick, 64 voussoirs): the sweep must reproduce single `settle` runs exactly, and the
 //! paper's hinges (crown and the 13th joint from each springing) for an outward settlement.
 
+use crate::common::cwd::ok as run;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Command;
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_voussoir"))
-}
-
-fn run(args: &[&str]) -> Output {
-    let o = bin().args(args).output().expect("run voussoir");
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
 }
 
 fn tmpdir(name: &str) -> PathBuf {

@@ -3,21 +3,9 @@
 //! high) with a horizontal live load equal to each block's weight (the tilting table); its
 //! right half (segments f2, f3) settles by 1 cm, each segment's settlement × (1 + 0.3 z).
 
+use crate::common::cwd::ok as run;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    let o = Command::new(env!("CARGO_BIN_EXE_voussoir"))
-        .args(args)
-        .output()
-        .expect("run voussoir");
-    assert!(
-        o.status.success(),
-        "voussoir {args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
-}
+use std::process::Command;
 
 fn tmpdir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!(

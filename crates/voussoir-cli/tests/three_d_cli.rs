@@ -2,18 +2,13 @@
 //! JSON result; a vault and a dome made by the generators, exported to OBJ and re-imported,
 //! give the same blocks, interfaces, λ and settlement results; a 3D capacity run.
 
-use std::path::{Path, PathBuf};
+use crate::common;
+use crate::common::{json_file as json, run};
+use std::path::PathBuf;
 use vtkio::model::{Attribute, DataSet, Vtk};
-
-mod common;
-use common::run;
 
 fn tmpdir(name: &str) -> PathBuf {
     common::tmpdir("3dcli", name)
-}
-
-fn json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
 fn array(attrs: &[Attribute], name: &str) -> Vec<f64> {

@@ -181,7 +181,10 @@ fn capacity_same_with_every_method(model: &Model3d, moves: &str, extra: &str, wh
         .as_ref()
         .unwrap_or_else(|| panic!("{what}: the default capacity is not canonical"));
     assert!(c.settlement.is_some(), "{what}: settlement not selected");
-    assert!(!c.steps, "{what}: the steps are selected only when asked");
+    assert!(
+        !c.selection.steps,
+        "{what}: the steps are selected only when asked"
+    );
     let h0 = joints(&default.settlement_hinges);
     assert!(!h0.is_empty(), "{what}: no settlement hinge");
     assert_eq!(h0, joints(&raw.settlement_hinges), "{what}: against raw");
@@ -262,7 +265,7 @@ fn issue29_item5_canonical_steps_same_hinges_every_method_2d() {
     let mut first: Option<Vec<Vec<usize>>> = None;
     for method in ["dual-simplex", "primal-simplex", "ipm", "clarabel"] {
         let r = run(body(r#", "canonical_steps": true"#, method));
-        let c = r.canonical.as_ref().unwrap();
+        let c = &r.canonical.as_ref().unwrap().selection;
         assert!(c.steps && c.steps_not_reached.is_empty(), "{method}: {c:?}");
         let hinges: Vec<Vec<usize>> = r.curve.iter().map(|p| joints(&p.hinges)).collect();
         for (p, q) in r.curve.iter().zip(&raw.curve) {

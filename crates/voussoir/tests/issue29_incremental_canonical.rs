@@ -134,7 +134,7 @@ fn issue29_item5_unique_optimum_canonical_path_equals_raw() {
         0.005,
         1e-4,
     );
-    let c = can.canonical.as_ref().expect("the steps' record");
+    let c = &can.canonical.as_ref().expect("the steps' record").selection;
     assert!(c.steps && c.steps_selected > 20, "{c:?}");
     assert_eq!(c.steps_changed, 0, "{c:?}");
     assert!(c.steps_not_reached.is_empty(), "{c:?}");
@@ -163,7 +163,7 @@ fn issue29_item5_non_unique_optimum_every_method_one_path() {
     let down = [0.0, -1.0];
     let raw = path(&st, down, Method::DualSimplex, false, 0.01, 2e-4);
     let reference = path(&st, down, Method::DualSimplex, true, 0.01, 2e-4);
-    let c = reference.canonical.as_ref().unwrap();
+    let c = &reference.canonical.as_ref().unwrap().selection;
     assert!(c.steps_changed >= 1, "{c:?}");
     // Step 0: the same geometry, the same λ, and a subset of the midpoint's hinges.
     let (l_raw, l_can) = (
@@ -214,14 +214,14 @@ fn issue29_item5_request_raw_and_canonical_steps() {
     let default = run("").unwrap();
     let d = incremental_of(&default);
     let c = d.canonical.as_ref().expect("the settlement's record");
-    assert!(c.settlement.as_ref().is_some_and(|s| s.unique) && !c.steps);
-    assert_eq!(c.steps_selected, 0);
+    assert!(c.settlement.as_ref().is_some_and(|s| s.unique) && !c.selection.steps);
+    assert_eq!(c.selection.steps_selected, 0);
     let raw = run(r#", "raw": true"#).unwrap();
     assert!(incremental_of(&raw).canonical.is_none());
     let steps = run(r#", "canonical_steps": true"#).unwrap();
     let s = incremental_of(&steps).canonical.as_ref().unwrap();
     assert!(
-        s.steps && s.steps_selected > 20 && s.settlement.is_some(),
+        s.selection.steps && s.selection.steps_selected > 20 && s.settlement.is_some(),
         "{s:?}"
     );
     let e = run(r#", "raw": true, "canonical_steps": true"#)
@@ -257,7 +257,7 @@ fn issue29_item5_request_raw_and_canonical_steps() {
     )
     .unwrap();
     let rec = direct.canonical.get_or_insert_with(Default::default);
-    rec.solves += sel.as_ref().map_or(0, |m| m.solves);
+    rec.selection.solves += sel.as_ref().map_or(0, |m| m.solves);
     rec.settlement = sel;
     assert_eq!(
         serde_json::to_string(d).unwrap(),

@@ -1737,3 +1737,44 @@ pub fn limit_canonical<S: Assembly>(
     });
     Ok(r)
 }
+
+impl StepSelection {
+    /// The canonical collapse mechanism of step `step` among its optimal mechanisms
+    /// ([`limit_mechanism`]; λ unchanged), counted in the record: `Some` with the selected
+    /// mechanism where it differs from the solver's, `None` where the solver's stands (the same
+    /// mechanism, a step without a multiplier or mechanism, or the selection not reached: then
+    /// the step is listed in `steps_not_reached`).
+    pub fn select<S: Assembly>(
+        &mut self,
+        st: &S,
+        map: &KinematicMap,
+        sol: &LimitSolution,
+        opts: &SolverOptions,
+        copts: &CanonicalOptions,
+        step: usize,
+    ) -> Result<Option<Vec<f64>>> {
+        if sol.lambda.is_none() || sol.mechanism.is_empty() {
+            return Ok(None);
+        }
+        let _kind = lp::ProgramKind::set(
+            "canonical selection",
+            "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
+        );
+        Ok(match limit_mechanism(st, map, sol, opts, copts)? {
+            Some((d, m)) => {
+                self.steps_selected += 1;
+                self.solves += m.solves;
+                if m.changed {
+                    self.steps_changed += 1;
+                    Some(d)
+                } else {
+                    None
+                }
+            }
+            None => {
+                self.steps_not_reached.push(step);
+                None
+            }
+        })
+    }
+}

@@ -45,6 +45,7 @@
 //! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
 
+use crate::analysis::canonical::StepSelection;
 pub use crate::analysis::laws::closing_joints;
 use crate::analysis::limit::{
     check_facets, multiplier_certificate, Crushing, LimitSolution, LimitStatus, DEFAULT_FACETS,
@@ -213,11 +214,11 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     }
     let mut selection = canonical.map(|_| CapacityCanonical {
         settlement: path.selection.clone(),
-        steps: opts.canonical_steps,
-        steps_selected: 0,
-        steps_changed: 0,
-        steps_not_reached: vec![],
-        solves: path.selection.as_ref().map_or(0, |m| m.solves),
+        selection: StepSelection {
+            steps: opts.canonical_steps,
+            solves: path.selection.as_ref().map_or(0, |m| m.solves),
+            ..StepSelection::default()
+        },
     });
     let umap = KinematicMap::new(&path.unit);
     let (pn0, pt0) = (
@@ -310,28 +311,11 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         if let (Some(copts), Some(rec), true) =
             (canonical.as_ref(), selection.as_mut(), opts.canonical_steps)
         {
-            if sol.lambda.is_some() && !sol.mechanism.is_empty() {
-                let _kind = lp::ProgramKind::set(
-                    "canonical selection",
-                    "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
-                );
-                match crate::analysis::canonical::limit_mechanism(
-                    &dst,
-                    &map,
-                    &sol,
-                    &opts.solver,
-                    copts,
-                )? {
-                    Some((d, m)) => {
-                        rec.steps_selected += 1;
-                        rec.solves += m.solves;
-                        if m.changed {
-                            rec.steps_changed += 1;
-                            sol.mechanism = d;
-                        }
-                    }
-                    None => rec.steps_not_reached.push(i),
-                }
+            if let Some(d) = rec
+                .selection
+                .select(&dst, &map, &sol, &opts.solver, copts, i)?
+            {
+                sol.mechanism = d;
             }
         }
         let closing = closing_joints(&dst, &map, &sol.mechanism);
@@ -464,11 +448,12 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         if c.settlement.is_none() {
             message.push_str("; the canonical selection of the settlement mechanism was not reached: the solver's own deforms the structure, which may depend on the method");
         }
-        if !c.steps_not_reached.is_empty() {
+        let s = &c.selection;
+        if !s.steps_not_reached.is_empty() {
             message.push_str(&format!(
                 "; the canonical selection was not reached at {} of {} steps with a multiplier: the solver's own mechanism is reported there",
-                c.steps_not_reached.len(),
-                c.steps_not_reached.len() + c.steps_selected
+                s.steps_not_reached.len(),
+                s.steps_not_reached.len() + s.steps_selected
             ));
         }
     }

@@ -38,7 +38,7 @@
 //! the dead loads), at the maximum control displacement, or when the LP has no mechanism
 //! (locked) or no equilibrium.
 
-use crate::analysis::canonical::{CanonicalMechanism, CanonicalOptions};
+use crate::analysis::canonical::{CanonicalMechanism, CanonicalOptions, StepSelection};
 use crate::analysis::limit::LimitStatus;
 use crate::analysis::paths::{SettlementPath, WarmLimit};
 use crate::analysis::settlement::SettlementStatus;
@@ -486,9 +486,9 @@ pub fn incremental_with<S: IncrementalGeometry>(
     let mut status = IncrementalStatus::MaxSteps;
     let mut steps = 0usize;
     let mut snaps = 0usize;
-    let mut selection = opts.canonical.map(|_| IncrementalCanonical {
+    let mut selection = opts.canonical.map(|_| StepSelection {
         steps: true,
-        ..IncrementalCanonical::default()
+        ..StepSelection::default()
     });
     // Dead-load moves in a row (no curve point between them): each should close a point; more
     // of them than the structure has points means the moves cycle (one closes a point and
@@ -731,46 +731,29 @@ pub fn incremental_with<S: IncrementalGeometry>(
         iterations: warm.iterations,
         initial_geometry: start.shapes(),
         final_geometry: st.shapes(),
-        canonical: selection,
+        canonical: selection.map(|selection| IncrementalCanonical {
+            selection,
+            ..IncrementalCanonical::default()
+        }),
     })
 }
 
 /// The step's mechanism: the solver's, or with `opts.canonical` the canonical one among the
-/// step's optimal mechanisms (λ unchanged), recorded in `rec`. Where the selection is not
-/// reached the solver's mechanism stands and the step is listed.
+/// step's optimal mechanisms (λ unchanged), recorded in `rec` ([`StepSelection::select`]).
+/// Where the selection is not reached the solver's mechanism stands and the step is listed.
 fn select<S: Assembly>(
     st: &S,
     map: &KinematicMap,
     sol: &crate::analysis::limit::LimitSolution,
     opts: &IncrementalOptions,
-    rec: &mut Option<IncrementalCanonical>,
+    rec: &mut Option<StepSelection>,
     step: usize,
 ) -> Result<Vec<f64>> {
-    let (Some(copts), Some(rec)) = (opts.canonical.as_ref(), rec.as_mut()) else {
-        return Ok(sol.mechanism.clone());
-    };
-    let _kind = crate::lp::ProgramKind::set(
-        "canonical selection",
-        "the mechanism stages: least crack area among the optimal mechanisms, then the generic tie-break",
-    );
-    Ok(
-        match crate::analysis::canonical::limit_mechanism(st, map, sol, &opts.solver, copts)? {
-            Some((d, m)) => {
-                rec.steps_selected += 1;
-                rec.solves += m.solves;
-                if m.changed {
-                    rec.steps_changed += 1;
-                    d
-                } else {
-                    sol.mechanism.clone()
-                }
-            }
-            None => {
-                rec.steps_not_reached.push(step);
-                sol.mechanism.clone()
-            }
-        },
-    )
+    Ok(match (opts.canonical.as_ref(), rec.as_mut()) {
+        (Some(copts), Some(rec)) => rec.select(st, map, sol, &opts.solver, copts, step)?,
+        _ => None,
+    }
+    .unwrap_or_else(|| sol.mechanism.clone()))
 }
 
 /// Whether mechanism `d` closes an open point.

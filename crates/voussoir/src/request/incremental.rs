@@ -195,14 +195,12 @@ impl IncrementalRequest {
                 n.given("max", self.max * 1e3)
             ));
         }
-        if req.model.exact_cone() {
-            // Regression (session 18): the flag was ignored in 3D and the steps ran on the
-            // inscribed pyramid with nothing said.
-            return invalid(format!(
-                "{} does not apply to `incremental` (its steps are warm-started LPs: the inscribed pyramid)",
-                n.given("friction_cone", "exact")
-            ));
-        }
+        // Regression (session 18): the flag was ignored in 3D and the steps ran on the
+        // inscribed pyramid with nothing said.
+        req.model.refuse_exact_cone(
+            n,
+            " does not apply to `incremental` (its steps are warm-started LPs: the inscribed pyramid)",
+        )?;
         if self.raw && self.canonical_steps {
             // The steps' selection is a stage of the canonical selection: `raw` would leave
             // the settlement's out and keep the steps', which no other analysis does.
@@ -303,7 +301,7 @@ impl IncrementalRequest {
                 if c.settlement_not_reached {
                     r.message.push_str("; the canonical selection of the settlement mechanism was not reached: the solver's own settled the structure, which may depend on the method");
                 }
-                c.solves += m.as_ref().map_or(0, |m| m.solves);
+                c.selection.solves += m.as_ref().map_or(0, |m| m.solves);
                 c.settlement = m;
             }
         }

@@ -198,6 +198,15 @@ impl ModelOptions {
     fn exact_cone(&self) -> bool {
         self.friction_cone == FrictionCone::Exact
     }
+
+    /// `friction_cone=exact` refused in one line by an analysis that solves the inscribed
+    /// pyramid only (safety, sweep, incremental): `why` follows the option as given.
+    fn refuse_exact_cone(&self, names: Names, why: &str) -> Result<()> {
+        if self.exact_cone() {
+            return invalid(format!("{}{why}", names.given("friction_cone", "exact")));
+        }
+        Ok(())
+    }
 }
 
 /// The solver. Default: the solver policy's method for the program's class

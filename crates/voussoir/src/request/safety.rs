@@ -39,13 +39,10 @@ impl SafetyRequest {
                 n.given("bisection_tolerance", tol)
             ));
         }
-        if req.model.exact_cone() {
-            return invalid(format!(
-                "{} does not apply to `safety` (its programs are LPs: the inscribed pyramid)",
-                n.given("friction_cone", "exact")
-            ));
-        }
-        Ok(())
+        req.model.refuse_exact_cone(
+            n,
+            " does not apply to `safety` (its programs are LPs: the inscribed pyramid)",
+        )
     }
 
     /// The analysis's options.

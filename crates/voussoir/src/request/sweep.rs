@@ -176,14 +176,13 @@ impl SweepRequest {
             None => 1,
         };
         sweep::check_size(kind.count(), shards)?;
-        if req.model.exact_cone() {
-            return invalid(format!(
-                "{}: a sweep solves the friction pyramid ({}); the exact cone is solved by settle",
-                n.given("friction_cone", "exact"),
+        req.model.refuse_exact_cone(
+            n,
+            &format!(
+                ": a sweep solves the friction pyramid ({}); the exact cone is solved by settle",
                 n.name("friction_facets")
-            ));
-        }
-        Ok(())
+            ),
+        )
     }
 
     /// The sweep's tasks on the structure (its supports carry the base settlement), calling

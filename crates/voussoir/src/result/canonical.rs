@@ -155,3 +155,24 @@ pub struct Canonical<D: Spatial = Two> {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub forces: Option<CanonicalForces<D>>,
 }
+
+/// The canonical selection of the collapse mechanisms of a sequence of steps (a capacity
+/// curve's, an incremental analysis's): flattened into [`super::capacity::CapacityCanonical`]
+/// and [`super::incremental::IncrementalCanonical`], so that its fields stand in their JSON
+/// records as their own. Filled in step by step by `StepSelection::select`
+/// (`crate::analysis::canonical`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct StepSelection {
+    /// Whether the steps' collapse mechanisms were selected (else they are the solver's).
+    pub steps: bool,
+    /// Steps whose collapse mechanism was selected, and of those the ones where it differs from
+    /// the solver's.
+    pub steps_selected: usize,
+    pub steps_changed: usize,
+    /// Steps with a multiplier where the selection was not reached (the solver's mechanism
+    /// stands there).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub steps_not_reached: Vec<usize>,
+    /// Programs solved for the selection (the settlement's included).
+    pub solves: usize,
+}

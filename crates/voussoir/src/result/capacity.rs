@@ -251,17 +251,10 @@ pub struct CapacityResult<D: Spatial = Two> {
 pub struct CapacityCanonical {
     /// How the settlement mechanism was selected (`null`: not reached, the solver's stands).
     pub settlement: Option<super::canonical::CanonicalMechanism>,
-    /// Whether the steps' collapse mechanisms were selected (else they are the solver's).
-    pub steps: bool,
-    /// Steps whose collapse mechanism was selected, and of those the ones where it differs from
-    /// the solver's.
-    pub steps_selected: usize,
-    pub steps_changed: usize,
-    /// Steps with a multiplier where the selection was not reached (the solver's mechanism is reported).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub steps_not_reached: Vec<usize>,
-    /// Programs solved for the selection.
-    pub solves: usize,
+    /// The steps' collapse mechanisms (where the selection was not reached, the solver's
+    /// mechanism is reported); `solves` includes the settlement's.
+    #[serde(flatten)]
+    pub selection: super::canonical::StepSelection,
 }
 
 impl<D: Spatial> CapacityResult<D> {

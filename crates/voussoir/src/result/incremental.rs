@@ -150,15 +150,8 @@ pub struct IncrementalCanonical {
     /// settled the structure.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub settlement_not_reached: bool,
-    /// Whether the steps' collapse mechanisms were selected (else they are the solver's).
-    pub steps: bool,
-    /// Steps whose collapse mechanism was selected, and of those the ones where it differs from
-    /// the solver's.
-    pub steps_selected: usize,
-    pub steps_changed: usize,
-    /// Steps where the selection was not reached (the solver's mechanism moved the structure).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub steps_not_reached: Vec<usize>,
-    /// Programs solved for the selection (the settlement's included).
-    pub solves: usize,
+    /// The steps' collapse mechanisms (where the selection was not reached, the solver's
+    /// mechanism moved the structure); `solves` includes the settlement's.
+    #[serde(flatten)]
+    pub selection: super::canonical::StepSelection,
 }

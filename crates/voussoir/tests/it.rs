@@ -62,6 +62,8 @@ mod issue29_dome_safety;
 mod issue29_extremes_fallback;
 #[path = "issue29_facade_sequences.rs"]
 mod issue29_facade_sequences;
+#[path = "issue29_facade_shortcuts.rs"]
+mod issue29_facade_shortcuts;
 #[path = "issue29_fixes.rs"]
 mod issue29_fixes;
 #[path = "issue29_force_stage.rs"]

@@ -129,6 +129,9 @@ pub struct ReactionRanges {
     pub lineality_rays: usize,
     /// The largest relative violation of the recession cone by the rays used.
     pub worst_ray: f64,
+    /// Endpoints given by the mirror image of another support's optimum (a structure
+    /// symmetric about a vertical line), certified on their own program without solving it.
+    pub mirrored: usize,
 }
 
 impl ReactionRanges {

@@ -161,14 +161,16 @@ pub fn solve_limit_checked<S: Assembly>(
 /// blocks) the second program took as long as the first in HiGHS's clock (about 1,470 s at load
 /// 10–14), and 146 s from the basis; `limit` 224.3 → 197.9 CPU s (docs/performance.md, "Dome
 /// 48 × 48 (session 17)"). With a simplex (the 2D default) or without a basis (Clarabel) the
-/// program is solved as before, from scratch with the method asked for.
+/// program is solved as before, from scratch with the method asked for. So is it after
+/// Clarabel with crossover ([`lp::Method::ClarabelVertex`]), which answers it from scratch in
+/// the time of the first (docs/performance.md, "Clarabel with crossover (session 19)").
 fn least_program(
     lp: &lp::LinearProgram,
     opts: &SolverOptions,
     basis: Option<lp::Basis>,
 ) -> Result<LpSolution> {
     match basis {
-        Some(b) if !opts.method.is_simplex() => {
+        Some(b) if !opts.method.is_simplex() && opts.method != lp::Method::ClarabelVertex => {
             let warm = SolverOptions {
                 method: lp::Method::PrimalSimplex,
                 ..*opts

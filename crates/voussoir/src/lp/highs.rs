@@ -53,9 +53,9 @@ fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
             opt(m, "run_crossover", "off")?;
         }
         Method::Pdlp => opt(m, "solver", "pdlp")?,
-        Method::Clarabel => {
+        Method::Clarabel | Method::ClarabelVertex => {
             return Err(Error::Solver(
-                "the HiGHS backend was handed the Clarabel method".into(),
+                "the HiGHS backend was handed a Clarabel method".into(),
             ))
         }
     }
@@ -399,7 +399,7 @@ pub struct Persistent {
 impl Persistent {
     /// The instance of `lp` (minimised or maximised as `lp` says), configured for `o`.
     pub fn new(lp: &LinearProgram, o: &SolverOptions) -> Result<Persistent> {
-        if o.method == Method::Clarabel {
+        if matches!(o.method, Method::Clarabel | Method::ClarabelVertex) {
             return Err(Error::Solver(
                 "the HiGHS backend was handed the Clarabel method".into(),
             ));
@@ -649,5 +649,245 @@ impl Persistent {
                 basis: basis.filter(|_| had_basis),
             })
         }
+    }
+}
+
+/// Start HiGHS's task scheduler on this thread, as every `Highs::run` does first: HiGHS's
+/// crossover from a point does not, and IPX's interrupt check then reads the scheduler of this
+/// thread (a null pointer where no HiGHS run came before on it: measured, a segmentation
+/// fault). A program of one row and one column, run once; the scheduler lives as long as the
+/// instance returned (`Highs_destroy` stops it), which the caller keeps until its crossover
+/// is done.
+fn start_scheduler(o: &SolverOptions) -> Result<highs::SolvedModel> {
+    let mut lp = LinearProgram::new(super::Direction::Minimise);
+    let r = lp.add_row(0.0, 1.0);
+    lp.add_column(1.0, 0.0, 1.0, [(r, 1.0)]);
+    let mut m = build(&lp)?;
+    common(&mut m, o, 1e-7)?;
+    m.try_solve()
+        .map_err(|e| Error::Solver(format!("HiGHS run failed: {e:?}")))
+}
+
+/// IPX's crossover (HiGHS's `Highs_crossover`) from a primal-dual point of `lp` that another
+/// method found (Clarabel's interior point, [`super::Method::ClarabelVertex`]): an optimal vertex
+/// of `lp` with its basis, without HiGHS's own interior point (whose starting basis took about
+/// 95 CPU s on the 48 × 48 dome's limit program, docs/performance.md "Dome 48 × 48 (session
+/// 17)").
+///
+/// HiGHS's crossover from a point takes a point that is complementary to the last bit (a value
+/// strictly inside its bounds with a dual of zero, or on a bound with a dual of the right sign)
+/// and, in HiGHS 1.x, rows with two finite sides or none mis-sized (it copies `num_col` values
+/// where the interior point's model has one more column per such row). So the program handed
+/// to it has only equations: every other row `lo ≤ aᵀx ≤ hi` becomes `aᵀx − s = 0` with a
+/// column `lo ≤ s ≤ hi` (free rows are left out and come back basic), and the point is made
+/// complementary column by column (a value nearer its bound than its dual is large goes to the
+/// bound; otherwise its dual goes to zero). Where IPX ends "imprecise", HiGHS's simplex goes on
+/// from the basis crossover left (a few iterations); the answer is HiGHS's simplex vertex, its
+/// duals exact to the simplex tolerances.
+pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> Result<Solved> {
+    use highs_sys::*;
+    let (n, m) = (lp.num_cols(), lp.num_rows());
+    if start.x.len() != n || start.col_dual.len() != n || start.row_dual.len() != m {
+        return Err(Error::Solver(
+            "crossover: the point does not fit the program".into(),
+        ));
+    }
+    let free_row = |i: usize| lp.row_lower[i] == f64::NEG_INFINITY && lp.row_upper[i] == f64::INFINITY;
+    // Rows of the program of equations (None: a free row, left out), and the slack column of
+    // each row that is not an equation.
+    let mut row_of = vec![None; m];
+    let mut slack_of = vec![None; m];
+    let mut eq = LinearProgram {
+        maximise: lp.maximise,
+        col_start: vec![0],
+        ..Default::default()
+    };
+    for i in 0..m {
+        if free_row(i) {
+            continue;
+        }
+        let rhs = if lp.row_lower[i] == lp.row_upper[i] {
+            lp.row_lower[i]
+        } else {
+            0.0
+        };
+        row_of[i] = Some(eq.add_row(rhs, rhs));
+    }
+    for j in 0..n {
+        eq.add_column(
+            lp.cost[j],
+            lp.col_lower[j],
+            lp.col_upper[j],
+            lp.column(j).filter_map(|(i, v)| row_of[i].map(|r| (r, v))),
+        );
+    }
+    let activity = lp.row_activity(&start.x);
+    let mut x = start.x.clone();
+    let mut z = start.col_dual.clone();
+    let mut y = vec![0.0; eq.num_rows()];
+    for i in 0..m {
+        let Some(r) = row_of[i] else { continue };
+        y[r] = start.row_dual[i];
+        if lp.row_lower[i] != lp.row_upper[i] {
+            slack_of[i] = Some(eq.add_column(
+                0.0,
+                lp.row_lower[i],
+                lp.row_upper[i],
+                [(r, -1.0)],
+            ));
+            // Its reduced cost 0 − (−1)·y.
+            x.push(activity[i]);
+            z.push(start.row_dual[i]);
+        }
+    }
+    // IPX minimises: a maximisation's duals change sign on the way in (HiGHS turns them back
+    // on the way out).
+    let sense = if lp.maximise { -1.0 } else { 1.0 };
+    for v in y.iter_mut() {
+        *v *= sense;
+    }
+    for j in 0..eq.num_cols() {
+        let (lo, hi) = (eq.col_lower[j], eq.col_upper[j]);
+        let zj = sense * z[j];
+        let v = if x[j] < lo {
+            lo
+        } else if x[j] > hi {
+            hi
+        } else {
+            x[j]
+        };
+        let (v, zj) = if lo == hi {
+            (lo, zj)
+        } else if zj > 0.0 && lo.is_finite() && v - lo <= zj {
+            (lo, zj)
+        } else if zj < 0.0 && hi.is_finite() && hi - v <= -zj {
+            (hi, zj)
+        } else {
+            (v, 0.0)
+        };
+        x[j] = v;
+        z[j] = zj;
+    }
+    let (ne, me) = (eq.num_cols(), eq.num_rows());
+    let scheduler = start_scheduler(o)?;
+    let mut model = build(&eq)?;
+    common(&mut model, o, o.feasibility_tolerance.clamp(1e-10, 1e-4))?;
+    opt(&mut model, "presolve", "off")?;
+    if let Some(t) = o.time_limit {
+        opt(&mut model, "time_limit", t)?;
+    }
+    let p = model.as_mut_ptr();
+    // SAFETY: `p` is the live HiGHS instance owned by `model`, whose program has `ne` columns
+    // and `me` rows; every array handed to HiGHS has those sizes.
+    unsafe {
+        let status = Highs_crossover(
+            p,
+            ne as HighsInt,
+            me as HighsInt,
+            x.as_ptr(),
+            z.as_ptr(),
+            y.as_ptr(),
+        );
+        if status == kHighsStatusError {
+            return Err(Error::Solver("HiGHS's crossover from the point failed".into()));
+        }
+        let mut crossed = 0 as HighsInt;
+        Highs_getIntInfoValue(p, c"crossover_iteration_count".as_ptr(), &mut crossed);
+        let mut simplex = 0 as HighsInt;
+        let model_status = Highs_getModelStatus(p);
+        if model_status != kHighsModelStatusOptimal {
+            // "Imprecise": HiGHS's simplex from the basis crossover left.
+            let mut valid = 0 as HighsInt;
+            Highs_getIntInfoValue(p, c"basis_validity".as_ptr(), &mut valid);
+            if model_status == kHighsModelStatusTimeLimit || valid != kHighsBasisValidityValid {
+                return Err(Error::Solver(format!(
+                    "HiGHS's crossover from the point ended with model status {model_status}"
+                )));
+            }
+            opt(&mut model, "solver", "simplex")?;
+            let p = model.as_mut_ptr();
+            if Highs_run(p) == kHighsStatusError
+                || Highs_getModelStatus(p) != kHighsModelStatusOptimal
+            {
+                return Err(Error::Solver(format!(
+                    "HiGHS's simplex after crossover ended with model status {}",
+                    Highs_getModelStatus(p)
+                )));
+            }
+            Highs_getIntInfoValue(p, c"simplex_iteration_count".as_ptr(), &mut simplex);
+        }
+        let p = model.as_mut_ptr();
+        let (mut xs, mut cd) = (vec![0.0; ne], vec![0.0; ne]);
+        let (mut rv, mut rd) = (vec![0.0; me], vec![0.0; me]);
+        if Highs_getSolution(
+            p,
+            xs.as_mut_ptr(),
+            cd.as_mut_ptr(),
+            rv.as_mut_ptr(),
+            rd.as_mut_ptr(),
+        ) == kHighsStatusError
+        {
+            return Err(Error::Solver("HiGHS gave no solution after crossover".into()));
+        }
+        let (mut cs, mut rs) = (vec![0 as HighsInt; ne], vec![0 as HighsInt; me]);
+        let mut valid = 0 as HighsInt;
+        Highs_getIntInfoValue(p, c"basis_validity".as_ptr(), &mut valid);
+        let got = Highs_getBasis(p, cs.as_mut_ptr(), rs.as_mut_ptr());
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            let nb = cs.iter().chain(&rs).filter(|&&s| s == kHighsBasisStatusBasic).count();
+            eprintln!(
+                "trace: crossover model status {} valid {valid} got {got} basic {nb} of {me} rows, crossover it {crossed}, simplex it {simplex}",
+                Highs_getModelStatus(p)
+            );
+        }
+        // The basis of `lp`: a column's status as it is; a row's that of its slack column where
+        // it has one, as it is for an equation, basic for a free row. Only where it has as
+        // many basic statuses as `lp` has rows (an equation of a former inequality left basic
+        // by crossover would break the count: then no basis).
+        let basis = (got != kHighsStatusError && valid == kHighsBasisValidityValid)
+            .then(|| Basis {
+                cols: cs[..n].iter().map(|&s| from_highs(s)).collect(),
+                rows: (0..m)
+                    .map(|i| match (row_of[i], slack_of[i]) {
+                        (None, _) => BasisStatus::Basic,
+                        (Some(_), Some(c)) => from_highs(cs[c]),
+                        (Some(r), None) => from_highs(rs[r]),
+                    })
+                    .collect(),
+            })
+            .filter(|b| {
+                b.cols
+                    .iter()
+                    .chain(&b.rows)
+                    .filter(|&&s| s == BasisStatus::Basic)
+                    .count()
+                    == m
+            });
+        let mut row_dual = vec![0.0; m];
+        for i in 0..m {
+            if let Some(r) = row_of[i] {
+                row_dual[i] = rd[r];
+            }
+        }
+        xs.truncate(n);
+        cd.truncate(n);
+        drop(model);
+        drop(scheduler);
+        let iterations = start.iterations + crossed.max(0) as i64 + simplex.max(0) as i64;
+        Ok(Solved {
+            solution: LpSolution {
+                status: LpStatus::Optimal,
+                objective: lp.objective(&xs),
+                x: xs,
+                row_dual,
+                col_dual: cd,
+                iterations,
+                dual_objective: f64::NAN,
+                reduced_accuracy: false,
+                method: o.method,
+                tried: Vec::new(),
+            },
+            basis,
+        })
     }
 }

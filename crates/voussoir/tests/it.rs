@@ -50,6 +50,8 @@ mod issue29_canonical_default_all;
 mod issue29_capacity_cert;
 #[path = "issue29_cert025.rs"]
 mod issue29_cert025;
+#[path = "issue29_crossover.rs"]
+mod issue29_crossover;
 #[path = "issue29_dome2.rs"]
 mod issue29_dome2;
 #[path = "issue29_dome48.rs"]

@@ -668,31 +668,34 @@ fn start_scheduler(o: &SolverOptions) -> Result<highs::SolvedModel> {
         .map_err(|e| Error::Solver(format!("HiGHS run failed: {e:?}")))
 }
 
-/// IPX's crossover (HiGHS's `Highs_crossover`) from a primal-dual point of `lp` that another
-/// method found (Clarabel's interior point, [`super::Method::ClarabelVertex`]): an optimal vertex
-/// of `lp` with its basis, without HiGHS's own interior point (whose starting basis took about
-/// 95 CPU s on the 48 × 48 dome's limit program, docs/performance.md "Dome 48 × 48 (session
-/// 17)").
+/// IPX's crossover (HiGHS's `Highs_crossover`) from the optimal duals of `lp` that another
+/// method found (Clarabel's interior point, [`super::Method::ClarabelVertex`]), then HiGHS's
+/// dual simplex from the basis it builds: an optimal vertex of `lp` with its basis, without
+/// HiGHS's own interior point.
 ///
 /// HiGHS's crossover from a point takes a point that is complementary to the last bit (a value
 /// strictly inside its bounds with a dual of zero, or on a bound with a dual of the right sign)
-/// and, in HiGHS 1.x, rows with two finite sides or none mis-sized (it copies `num_col` values
-/// where the interior point's model has one more column per such row). So the program handed
-/// to it has only equations: every other row `lo ≤ aᵀx ≤ hi` becomes `aᵀx − s = 0` with a
-/// column `lo ≤ s ≤ hi` (free rows are left out and come back basic), and the point is made
-/// complementary column by column (a value nearer its bound than its dual is large goes to the
-/// bound; otherwise its dual goes to zero). Where IPX ends "imprecise", HiGHS's simplex goes on
-/// from the basis crossover left (a few iterations); the answer is HiGHS's simplex vertex, its
-/// duals exact to the simplex tolerances.
+/// and, in HiGHS 1.15, mis-sizes rows with two finite sides or none (it copies `num_col` values
+/// where its model has one more column per such row). So the program handed to it has only
+/// equations: every other row `lo ≤ aᵀx ≤ hi` becomes `aᵀx − s = 0` with a column
+/// `lo ≤ s ≤ hi` (free rows are left out and come back basic). The point: every column at its
+/// bound nearest zero (zero where it is free), its dual kept where it has the sign of that
+/// bound, zero otherwise. IPX builds its crash basis from it (the columns with a dual
+/// nonbasic) with no push to make, and ends "imprecise": the basis is dual feasible, not primal
+/// feasible, and HiGHS's dual simplex goes on from it to an optimal vertex, its duals exact to
+/// the simplex tolerances. Measured (docs/performance.md, "Clarabel with crossover (session
+/// 19)"): on the 48 × 48 dome's limit program 1,888 dual simplex iterations from that basis;
+/// Clarabel's own primal point instead needed 31,952 primal pushes, about twice the time.
 pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> Result<Solved> {
     use highs_sys::*;
     let (n, m) = (lp.num_cols(), lp.num_rows());
-    if start.x.len() != n || start.col_dual.len() != n || start.row_dual.len() != m {
+    if start.col_dual.len() != n || start.row_dual.len() != m {
         return Err(Error::Solver(
-            "crossover: the point does not fit the program".into(),
+            "crossover: the duals do not fit the program".into(),
         ));
     }
-    let free_row = |i: usize| lp.row_lower[i] == f64::NEG_INFINITY && lp.row_upper[i] == f64::INFINITY;
+    let free_row =
+        |i: usize| lp.row_lower[i] == f64::NEG_INFINITY && lp.row_upper[i] == f64::INFINITY;
     // Rows of the program of equations (None: a free row, left out), and the slack column of
     // each row that is not an equation.
     let mut row_of = vec![None; m];
@@ -721,52 +724,37 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
             lp.column(j).filter_map(|(i, v)| row_of[i].map(|r| (r, v))),
         );
     }
-    let activity = lp.row_activity(&start.x);
-    let mut x = start.x.clone();
     let mut z = start.col_dual.clone();
     let mut y = vec![0.0; eq.num_rows()];
     for i in 0..m {
         let Some(r) = row_of[i] else { continue };
         y[r] = start.row_dual[i];
         if lp.row_lower[i] != lp.row_upper[i] {
-            slack_of[i] = Some(eq.add_column(
-                0.0,
-                lp.row_lower[i],
-                lp.row_upper[i],
-                [(r, -1.0)],
-            ));
-            // Its reduced cost 0 − (−1)·y.
-            x.push(activity[i]);
+            slack_of[i] = Some(eq.add_column(0.0, lp.row_lower[i], lp.row_upper[i], [(r, -1.0)]));
+            // Its reduced cost: 0 − (−1)·y.
             z.push(start.row_dual[i]);
         }
     }
     // IPX minimises: a maximisation's duals change sign on the way in (HiGHS turns them back
     // on the way out).
     let sense = if lp.maximise { -1.0 } else { 1.0 };
-    for v in y.iter_mut() {
-        *v *= sense;
-    }
+    y.iter_mut().for_each(|v| *v *= sense);
+    let mut x = vec![0.0; eq.num_cols()];
     for j in 0..eq.num_cols() {
         let (lo, hi) = (eq.col_lower[j], eq.col_upper[j]);
-        let zj = sense * z[j];
-        let v = if x[j] < lo {
+        x[j] = if lo > 0.0 {
             lo
-        } else if x[j] > hi {
+        } else if hi < 0.0 {
             hi
         } else {
-            x[j]
+            0.0
         };
-        let (v, zj) = if lo == hi {
-            (lo, zj)
-        } else if zj > 0.0 && lo.is_finite() && v - lo <= zj {
-            (lo, zj)
-        } else if zj < 0.0 && hi.is_finite() && hi - v <= -zj {
-            (hi, zj)
+        let zj = sense * z[j];
+        z[j] = if (x[j] == lo && zj > 0.0) || (x[j] == hi && zj < 0.0) {
+            zj
         } else {
-            (v, 0.0)
+            0.0
         };
-        x[j] = v;
-        z[j] = zj;
     }
     let (ne, me) = (eq.num_cols(), eq.num_rows());
     let scheduler = start_scheduler(o)?;
@@ -778,7 +766,8 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
     }
     let p = model.as_mut_ptr();
     // SAFETY: `p` is the live HiGHS instance owned by `model`, whose program has `ne` columns
-    // and `me` rows; every array handed to HiGHS has those sizes.
+    // and `me` rows; every array handed to HiGHS has those sizes. HiGHS's scheduler runs on
+    // this thread while `scheduler` lives.
     unsafe {
         let status = Highs_crossover(
             p,
@@ -789,22 +778,27 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
             y.as_ptr(),
         );
         if status == kHighsStatusError {
-            return Err(Error::Solver("HiGHS's crossover from the point failed".into()));
+            return Err(Error::Solver(
+                "HiGHS's crossover from the point failed".into(),
+            ));
         }
-        let mut crossed = 0 as HighsInt;
-        Highs_getIntInfoValue(p, c"crossover_iteration_count".as_ptr(), &mut crossed);
         let mut simplex = 0 as HighsInt;
         let model_status = Highs_getModelStatus(p);
+        if model_status == kHighsModelStatusTimeLimit {
+            return Err(Error::Solver(
+                "HiGHS's crossover from the point reached the time limit".into(),
+            ));
+        }
         if model_status != kHighsModelStatusOptimal {
             // "Imprecise": HiGHS's simplex from the basis crossover left.
-            let mut valid = 0 as HighsInt;
-            Highs_getIntInfoValue(p, c"basis_validity".as_ptr(), &mut valid);
-            if model_status == kHighsModelStatusTimeLimit || valid != kHighsBasisValidityValid {
-                return Err(Error::Solver(format!(
-                    "HiGHS's crossover from the point ended with model status {model_status}"
-                )));
-            }
             opt(&mut model, "solver", "simplex")?;
+            if let Some(n) = o.iteration_limit {
+                opt(
+                    &mut model,
+                    "simplex_iteration_limit",
+                    n.min(i32::MAX as usize) as i32,
+                )?;
+            }
             let p = model.as_mut_ptr();
             if Highs_run(p) == kHighsStatusError
                 || Highs_getModelStatus(p) != kHighsModelStatusOptimal
@@ -827,24 +821,18 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
             rd.as_mut_ptr(),
         ) == kHighsStatusError
         {
-            return Err(Error::Solver("HiGHS gave no solution after crossover".into()));
+            return Err(Error::Solver(
+                "HiGHS gave no solution after crossover".into(),
+            ));
         }
         let (mut cs, mut rs) = (vec![0 as HighsInt; ne], vec![0 as HighsInt; me]);
-        let mut valid = 0 as HighsInt;
-        Highs_getIntInfoValue(p, c"basis_validity".as_ptr(), &mut valid);
         let got = Highs_getBasis(p, cs.as_mut_ptr(), rs.as_mut_ptr());
-        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
-            let nb = cs.iter().chain(&rs).filter(|&&s| s == kHighsBasisStatusBasic).count();
-            eprintln!(
-                "trace: crossover model status {} valid {valid} got {got} basic {nb} of {me} rows, crossover it {crossed}, simplex it {simplex}",
-                Highs_getModelStatus(p)
-            );
-        }
         // The basis of `lp`: a column's status as it is; a row's that of its slack column where
-        // it has one, as it is for an equation, basic for a free row. Only where it has as
+        // it has one, as it is for an equation, basic for a free row; only where it has as
         // many basic statuses as `lp` has rows (an equation of a former inequality left basic
-        // by crossover would break the count: then no basis).
-        let basis = (got != kHighsStatusError && valid == kHighsBasisValidityValid)
+        // would break the count: then no basis). (HiGHS's `basis_validity` reads "invalid"
+        // after a crossover that ends optimal without the simplex: not asked.)
+        let basis = (got != kHighsStatusError)
             .then(|| Basis {
                 cols: cs[..n].iter().map(|&s| from_highs(s)).collect(),
                 rows: (0..m)
@@ -869,11 +857,10 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
                 row_dual[i] = rd[r];
             }
         }
-        xs.truncate(n);
-        cd.truncate(n);
         drop(model);
         drop(scheduler);
-        let iterations = start.iterations + crossed.max(0) as i64 + simplex.max(0) as i64;
+        xs.truncate(n);
+        cd.truncate(n);
         Ok(Solved {
             solution: LpSolution {
                 status: LpStatus::Optimal,
@@ -881,7 +868,7 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
                 x: xs,
                 row_dual,
                 col_dual: cd,
-                iterations,
+                iterations: start.iterations + simplex.max(0) as i64,
                 dual_objective: f64::NAN,
                 reduced_accuracy: false,
                 method: o.method,

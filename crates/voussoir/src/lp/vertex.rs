@@ -1,8 +1,10 @@
-//! Clarabel's interior point, then HiGHS's crossover from its point ([`Method::ClarabelVertex`]):
-//! an optimal vertex and its basis, as HiGHS's interior point with crossover gives, at
-//! Clarabel's speed on large 3D programs (docs/performance.md, "Clarabel with crossover
-//! (session 19)"). Clarabel's answer is the centre of the optimal face: where the optimum is not
-//! unique the crack pattern would depend on the method; the crossover moves it to a vertex.
+//! Clarabel's interior point, then HiGHS's crossover from its duals ([`Method::ClarabelVertex`]):
+//! an optimal vertex and its basis, as HiGHS's interior point with crossover gives, without
+//! HiGHS's interior point. Clarabel's answer is the centre of the optimal face: where the
+//! optimum is not unique the crack pattern would depend on the method; the crossover moves it
+//! to a vertex. Measured (docs/performance.md, "Clarabel with crossover (session 19)"): on the
+//! 48 × 48 dome's limit program the crossover, not Clarabel, takes the time (about 60–70 CPU s
+//! against Clarabel's 5), so it is a method to ask for, not the 3D default.
 
 use super::{Backend, Basis, Cone3, LinearProgram, LpStatus, Method, Solved, SolverOptions};
 use crate::error::{Error, Result};
@@ -20,7 +22,7 @@ impl Backend for ClarabelVertex {
     }
 
     /// Clarabel on `lp` (its presolve and settings as [`Method::Clarabel`]'s), then
-    /// [`super::highs::crossover`] from its optimal point. A status other than optimal is
+    /// [`super::highs::crossover`] from its optimal duals. A status other than optimal is
     /// Clarabel's; a crossover that fails is an error (the fallback chain goes on).
     fn solve(
         &self,

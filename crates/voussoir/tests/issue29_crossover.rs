@@ -183,3 +183,25 @@ fn issue29_clarabel_vertex_limit_analysis_as_the_interior_point_with_crossover()
         joints(ipm.hinges.iter().map(|h| h.joint).collect())
     );
 }
+
+#[test]
+fn issue29_clarabel_vertex_failure_goes_down_its_chain() {
+    // An iteration limit of 1 stops Clarabel (and the simplex after the crossover): the chain
+    // goes on to HiGHS's interior point with crossover, which answers with the dual simplex's
+    // λ and says what failed before it.
+    let st = crowned_dome(4, 8);
+    let map = KinematicMap::new(&st);
+    let fp = programs::limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
+    let o = SolverOptions {
+        iteration_limit: Some(1),
+        ..with(Method::ClarabelVertex)
+    };
+    let s = lp::solve(&fp.lp, &o).unwrap();
+    assert_eq!(s.method, Method::Ipm, "{:?}", s.tried);
+    assert_eq!(s.tried.len(), 1, "{:?}", s.tried);
+    assert!(s.tried[0].starts_with("clarabel-vertex:"), "{:?}", s.tried);
+    assert!(policy::check(&fp.lp, &s).is_none());
+    let d = lp::solve(&fp.lp, &with(Method::DualSimplex)).unwrap();
+    let j = fp.lambda.unwrap();
+    assert!((s.x[j] - d.x[j]).abs() <= 1e-6 * d.x[j].abs());
+}

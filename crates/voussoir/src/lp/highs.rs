@@ -705,7 +705,7 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
         col_start: vec![0],
         ..Default::default()
     };
-    for i in 0..m {
+    for (i, row) in row_of.iter_mut().enumerate() {
         if free_row(i) {
             continue;
         }
@@ -714,7 +714,7 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
         } else {
             0.0
         };
-        row_of[i] = Some(eq.add_row(rhs, rhs));
+        *row = Some(eq.add_row(rhs, rhs));
     }
     for j in 0..n {
         eq.add_column(

@@ -205,3 +205,23 @@ fn issue29_clarabel_vertex_failure_goes_down_its_chain() {
     let j = fp.lambda.unwrap();
     assert!((s.x[j] - d.x[j]).abs() <= 1e-6 * d.x[j].abs());
 }
+
+#[test]
+fn issue29_clarabel_vertex_basis_of_a_program_of_inequalities() {
+    // The dead-load ray program of the crowned 8 × 16 dome (`N d ≥ 0` on every point, bounded
+    // columns, degenerate: the dome stands, so its optimum is 0 at d = 0): every inequality
+    // becomes an equation with a slack column for the crossover, and where such an equation
+    // ends basic the row comes back basic. Before: no basis (the count of basic statuses was
+    // short), and the stages after it ran from scratch.
+    let st = crowned_dome(8, 16);
+    let map = KinematicMap::new(&st);
+    let lp = programs::dead_load_ray_program(&map, &st.load_vector(false), &st.load_vector(true));
+    let (s, _) = vertex_of(&lp);
+    let d = lp::solve(&lp, &with(Method::DualSimplex)).unwrap();
+    assert!(
+        (s.objective - d.objective).abs() <= 1e-9 * d.objective.abs().max(1.0),
+        "{} against the dual simplex's {}",
+        s.objective,
+        d.objective
+    );
+}

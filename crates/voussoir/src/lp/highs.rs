@@ -828,16 +828,18 @@ pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> R
         let (mut cs, mut rs) = (vec![0 as HighsInt; ne], vec![0 as HighsInt; me]);
         let got = Highs_getBasis(p, cs.as_mut_ptr(), rs.as_mut_ptr());
         // The basis of `lp`: a column's status as it is; a row's that of its slack column where
-        // it has one, as it is for an equation, basic for a free row; only where it has as
-        // many basic statuses as `lp` has rows (an equation of a former inequality left basic
-        // would break the count: then no basis). (HiGHS's `basis_validity` reads "invalid"
-        // after a crossover that ends optimal without the simplex: not asked.)
+        // it has one (basic also where the equation `aᵀx − s = 0` itself is basic, `s` then
+        // nonbasic: the basis matrix is the same up to signs), as it is for an equation, basic
+        // for a free row; only where it has as many basic statuses as `lp` has rows. (HiGHS's
+        // `basis_validity` reads "invalid" after a crossover that ends optimal without the
+        // simplex: not asked.)
         let basis = (got != kHighsStatusError)
             .then(|| Basis {
                 cols: cs[..n].iter().map(|&s| from_highs(s)).collect(),
                 rows: (0..m)
                     .map(|i| match (row_of[i], slack_of[i]) {
                         (None, _) => BasisStatus::Basic,
+                        (Some(r), Some(_)) if rs[r] == kHighsBasisStatusBasic => BasisStatus::Basic,
                         (Some(_), Some(c)) => from_highs(cs[c]),
                         (Some(r), None) => from_highs(rs[r]),
                     })

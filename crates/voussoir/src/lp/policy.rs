@@ -161,7 +161,9 @@ pub fn extremes_fallback(dofs: usize) -> Option<Method> {
 /// Measured in session 19 and not made a default: [`Method::ClarabelVertex`] (Clarabel, then
 /// HiGHS's crossover from its duals: the IPM's vertex, the same λ and hinges) — `limit` of the
 /// crowned 24 × 24 dome 2.81 CPU s (this table's 3D default 5.72), of the 48 × 48 dome 68.8
-/// (197.9): faster, but over the 30 s target, and the other analyses not re-measured with it
+/// (197.9): faster, but over the 30 s target; and `tilt` and `settle` of the 24 × 24 dome,
+/// whose canonical selection goes on from the vertex, slower (`tilt` 33.9 against 7.7,
+/// `settle` 18.3 against 13.9)
 /// (docs/performance.md, "Clarabel with crossover (session 19)").
 ///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends

@@ -310,6 +310,9 @@ pub enum MethodArg {
     Pdlp,
     /// Clarabel's interior point: fastest on large models (see docs/performance.md).
     Clarabel,
+    /// Clarabel's interior point, then HiGHS's crossover from its point to an optimal vertex
+    /// (measured, not a default: docs/performance.md, "Clarabel with crossover").
+    ClarabelVertex,
 }
 
 // The support motion of a settlement: moves, fixed supports, a profile.
@@ -542,6 +545,7 @@ pub fn method(m: MethodArg) -> Method {
         MethodArg::IpmNoCrossover => Method::IpmNoCrossover,
         MethodArg::Pdlp => Method::Pdlp,
         MethodArg::Clarabel => Method::Clarabel,
+        MethodArg::ClarabelVertex => Method::ClarabelVertex,
     }
 }
 

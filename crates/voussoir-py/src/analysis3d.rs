@@ -29,9 +29,10 @@ fn method_of(m: &str) -> Result<Method, Fail> {
         "ipm-no-crossover" => Method::IpmNoCrossover,
         "pdlp" => Method::Pdlp,
         "clarabel" => Method::Clarabel,
+        "clarabel-vertex" => Method::ClarabelVertex,
         m => {
             return Err(Fail::Model(format!(
-                "method={m}: expected dual-simplex, primal-simplex, ipm, choose, ipm-no-crossover, pdlp or clarabel"
+                "method={m}: expected dual-simplex, primal-simplex, ipm, choose, ipm-no-crossover, pdlp, clarabel or clarabel-vertex"
             )))
         }
     })

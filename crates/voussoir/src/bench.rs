@@ -112,6 +112,7 @@ fn method_name(m: Method) -> &'static str {
         Method::Pdlp => "PDLP",
         Method::Choose => "HiGHS choice",
         Method::Clarabel => "Clarabel IPM",
+        Method::ClarabelVertex => "Clarabel IPM + crossover",
     }
 }
 

@@ -161,12 +161,23 @@ pub fn solve_limit_checked<S: Assembly>(
 /// blocks) the second program took as long as the first in HiGHS's clock (about 1,470 s at load
 /// 10–14), and 146 s from the basis; `limit` 224.3 → 197.9 CPU s (docs/performance.md, "Dome
 /// 48 × 48 (session 17)"). With a simplex (the 2D default) or without a basis (Clarabel) the
-/// program is solved as before, from scratch with the method asked for.
+/// program is solved as before, from scratch with the method asked for. After Clarabel with
+/// crossover ([`lp::Method::ClarabelVertex`]) it goes to Clarabel alone: only its optimal value
+/// is read, which needs no vertex, and on the 48 × 48 dome Clarabel answers it in about 5 CPU s
+/// where the crossover from scratch took over 60 (docs/performance.md, "Clarabel with
+/// crossover (session 19)").
 fn least_program(
     lp: &lp::LinearProgram,
     opts: &SolverOptions,
     basis: Option<lp::Basis>,
 ) -> Result<LpSolution> {
+    if opts.method == lp::Method::ClarabelVertex {
+        let o = SolverOptions {
+            method: lp::Method::Clarabel,
+            ..*opts
+        };
+        return lp::solve(lp, &o);
+    }
     match basis {
         Some(b) if !opts.method.is_simplex() => {
             let warm = SolverOptions {

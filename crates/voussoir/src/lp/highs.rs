@@ -53,9 +53,9 @@ fn configure(m: &mut highs::Model, o: &SolverOptions) -> Result<()> {
             opt(m, "run_crossover", "off")?;
         }
         Method::Pdlp => opt(m, "solver", "pdlp")?,
-        Method::Clarabel => {
+        Method::Clarabel | Method::ClarabelVertex => {
             return Err(Error::Solver(
-                "the HiGHS backend was handed the Clarabel method".into(),
+                "the HiGHS backend was handed a Clarabel method".into(),
             ))
         }
     }
@@ -399,7 +399,7 @@ pub struct Persistent {
 impl Persistent {
     /// The instance of `lp` (minimised or maximised as `lp` says), configured for `o`.
     pub fn new(lp: &LinearProgram, o: &SolverOptions) -> Result<Persistent> {
-        if o.method == Method::Clarabel {
+        if matches!(o.method, Method::Clarabel | Method::ClarabelVertex) {
             return Err(Error::Solver(
                 "the HiGHS backend was handed the Clarabel method".into(),
             ));
@@ -649,5 +649,234 @@ impl Persistent {
                 basis: basis.filter(|_| had_basis),
             })
         }
+    }
+}
+
+/// Start HiGHS's task scheduler on this thread, as every `Highs::run` does first: HiGHS's
+/// crossover from a point does not, and IPX's interrupt check then reads the scheduler of this
+/// thread (a null pointer where no HiGHS run came before on it: measured, a segmentation
+/// fault). A program of one row and one column, run once; the scheduler lives as long as the
+/// instance returned (`Highs_destroy` stops it), which the caller keeps until its crossover
+/// is done.
+fn start_scheduler(o: &SolverOptions) -> Result<highs::SolvedModel> {
+    let mut lp = LinearProgram::new(super::Direction::Minimise);
+    let r = lp.add_row(0.0, 1.0);
+    lp.add_column(1.0, 0.0, 1.0, [(r, 1.0)]);
+    let mut m = build(&lp)?;
+    common(&mut m, o, 1e-7)?;
+    m.try_solve()
+        .map_err(|e| Error::Solver(format!("HiGHS run failed: {e:?}")))
+}
+
+/// IPX's crossover (HiGHS's `Highs_crossover`) from the optimal duals of `lp` that another
+/// method found (Clarabel's interior point, [`super::Method::ClarabelVertex`]), then HiGHS's
+/// dual simplex from the basis it builds: an optimal vertex of `lp` with its basis, without
+/// HiGHS's own interior point.
+///
+/// HiGHS's crossover from a point takes a point that is complementary to the last bit (a value
+/// strictly inside its bounds with a dual of zero, or on a bound with a dual of the right sign)
+/// and, in HiGHS 1.15, mis-sizes rows with two finite sides or none (it copies `num_col` values
+/// where its model has one more column per such row). So the program handed to it has only
+/// equations: every other row `lo ≤ aᵀx ≤ hi` becomes `aᵀx − s = 0` with a column
+/// `lo ≤ s ≤ hi` (free rows are left out and come back basic). The point: every column at its
+/// bound nearest zero (zero where it is free), its dual kept where it has the sign of that
+/// bound, zero otherwise. IPX builds its crash basis from it (the columns with a dual
+/// nonbasic) with no push to make, and ends "imprecise": the basis is dual feasible, not primal
+/// feasible, and HiGHS's dual simplex goes on from it to an optimal vertex, its duals exact to
+/// the simplex tolerances. Measured (docs/performance.md, "Clarabel with crossover (session
+/// 19)"): on the 48 × 48 dome's limit program 1,888 dual simplex iterations from that basis;
+/// Clarabel's own primal point instead needed 31,952 primal pushes, about twice the time.
+pub fn crossover(lp: &LinearProgram, start: &LpSolution, o: &SolverOptions) -> Result<Solved> {
+    use highs_sys::*;
+    let (n, m) = (lp.num_cols(), lp.num_rows());
+    if start.col_dual.len() != n || start.row_dual.len() != m {
+        return Err(Error::Solver(
+            "crossover: the duals do not fit the program".into(),
+        ));
+    }
+    let free_row =
+        |i: usize| lp.row_lower[i] == f64::NEG_INFINITY && lp.row_upper[i] == f64::INFINITY;
+    // Rows of the program of equations (None: a free row, left out), and the slack column of
+    // each row that is not an equation.
+    let mut row_of = vec![None; m];
+    let mut slack_of = vec![None; m];
+    let mut eq = LinearProgram {
+        maximise: lp.maximise,
+        col_start: vec![0],
+        ..Default::default()
+    };
+    for (i, row) in row_of.iter_mut().enumerate() {
+        if free_row(i) {
+            continue;
+        }
+        let rhs = if lp.row_lower[i] == lp.row_upper[i] {
+            lp.row_lower[i]
+        } else {
+            0.0
+        };
+        *row = Some(eq.add_row(rhs, rhs));
+    }
+    for j in 0..n {
+        eq.add_column(
+            lp.cost[j],
+            lp.col_lower[j],
+            lp.col_upper[j],
+            lp.column(j).filter_map(|(i, v)| row_of[i].map(|r| (r, v))),
+        );
+    }
+    let mut z = start.col_dual.clone();
+    let mut y = vec![0.0; eq.num_rows()];
+    for i in 0..m {
+        let Some(r) = row_of[i] else { continue };
+        y[r] = start.row_dual[i];
+        if lp.row_lower[i] != lp.row_upper[i] {
+            slack_of[i] = Some(eq.add_column(0.0, lp.row_lower[i], lp.row_upper[i], [(r, -1.0)]));
+            // Its reduced cost: 0 − (−1)·y.
+            z.push(start.row_dual[i]);
+        }
+    }
+    // IPX minimises: a maximisation's duals change sign on the way in (HiGHS turns them back
+    // on the way out).
+    let sense = if lp.maximise { -1.0 } else { 1.0 };
+    y.iter_mut().for_each(|v| *v *= sense);
+    let mut x = vec![0.0; eq.num_cols()];
+    for j in 0..eq.num_cols() {
+        let (lo, hi) = (eq.col_lower[j], eq.col_upper[j]);
+        x[j] = if lo > 0.0 {
+            lo
+        } else if hi < 0.0 {
+            hi
+        } else {
+            0.0
+        };
+        let zj = sense * z[j];
+        z[j] = if (x[j] == lo && zj > 0.0) || (x[j] == hi && zj < 0.0) {
+            zj
+        } else {
+            0.0
+        };
+    }
+    let (ne, me) = (eq.num_cols(), eq.num_rows());
+    let scheduler = start_scheduler(o)?;
+    let mut model = build(&eq)?;
+    common(&mut model, o, o.feasibility_tolerance.clamp(1e-10, 1e-4))?;
+    opt(&mut model, "presolve", "off")?;
+    if let Some(t) = o.time_limit {
+        opt(&mut model, "time_limit", t)?;
+    }
+    let p = model.as_mut_ptr();
+    // SAFETY: `p` is the live HiGHS instance owned by `model`, whose program has `ne` columns
+    // and `me` rows; every array handed to HiGHS has those sizes. HiGHS's scheduler runs on
+    // this thread while `scheduler` lives.
+    unsafe {
+        let status = Highs_crossover(
+            p,
+            ne as HighsInt,
+            me as HighsInt,
+            x.as_ptr(),
+            z.as_ptr(),
+            y.as_ptr(),
+        );
+        if status == kHighsStatusError {
+            return Err(Error::Solver(
+                "HiGHS's crossover from the point failed".into(),
+            ));
+        }
+        let mut simplex = 0 as HighsInt;
+        let model_status = Highs_getModelStatus(p);
+        if model_status == kHighsModelStatusTimeLimit {
+            return Err(Error::Solver(
+                "HiGHS's crossover from the point reached the time limit".into(),
+            ));
+        }
+        if model_status != kHighsModelStatusOptimal {
+            // "Imprecise": HiGHS's simplex from the basis crossover left.
+            opt(&mut model, "solver", "simplex")?;
+            if let Some(n) = o.iteration_limit {
+                opt(
+                    &mut model,
+                    "simplex_iteration_limit",
+                    n.min(i32::MAX as usize) as i32,
+                )?;
+            }
+            let p = model.as_mut_ptr();
+            if Highs_run(p) == kHighsStatusError
+                || Highs_getModelStatus(p) != kHighsModelStatusOptimal
+            {
+                return Err(Error::Solver(format!(
+                    "HiGHS's simplex after crossover ended with model status {}",
+                    Highs_getModelStatus(p)
+                )));
+            }
+            Highs_getIntInfoValue(p, c"simplex_iteration_count".as_ptr(), &mut simplex);
+        }
+        let p = model.as_mut_ptr();
+        let (mut xs, mut cd) = (vec![0.0; ne], vec![0.0; ne]);
+        let (mut rv, mut rd) = (vec![0.0; me], vec![0.0; me]);
+        if Highs_getSolution(
+            p,
+            xs.as_mut_ptr(),
+            cd.as_mut_ptr(),
+            rv.as_mut_ptr(),
+            rd.as_mut_ptr(),
+        ) == kHighsStatusError
+        {
+            return Err(Error::Solver(
+                "HiGHS gave no solution after crossover".into(),
+            ));
+        }
+        let (mut cs, mut rs) = (vec![0 as HighsInt; ne], vec![0 as HighsInt; me]);
+        let got = Highs_getBasis(p, cs.as_mut_ptr(), rs.as_mut_ptr());
+        // The basis of `lp`: a column's status as it is; a row's that of its slack column where
+        // it has one (basic also where the equation `aᵀx − s = 0` itself is basic, `s` then
+        // nonbasic: the basis matrix is the same up to signs), as it is for an equation, basic
+        // for a free row; only where it has as many basic statuses as `lp` has rows. (HiGHS's
+        // `basis_validity` reads "invalid" after a crossover that ends optimal without the
+        // simplex: not asked.)
+        let basis = (got != kHighsStatusError)
+            .then(|| Basis {
+                cols: cs[..n].iter().map(|&s| from_highs(s)).collect(),
+                rows: (0..m)
+                    .map(|i| match (row_of[i], slack_of[i]) {
+                        (None, _) => BasisStatus::Basic,
+                        (Some(r), Some(_)) if rs[r] == kHighsBasisStatusBasic => BasisStatus::Basic,
+                        (Some(_), Some(c)) => from_highs(cs[c]),
+                        (Some(r), None) => from_highs(rs[r]),
+                    })
+                    .collect(),
+            })
+            .filter(|b| {
+                b.cols
+                    .iter()
+                    .chain(&b.rows)
+                    .filter(|&&s| s == BasisStatus::Basic)
+                    .count()
+                    == m
+            });
+        let mut row_dual = vec![0.0; m];
+        for i in 0..m {
+            if let Some(r) = row_of[i] {
+                row_dual[i] = rd[r];
+            }
+        }
+        drop(model);
+        drop(scheduler);
+        xs.truncate(n);
+        cd.truncate(n);
+        Ok(Solved {
+            solution: LpSolution {
+                status: LpStatus::Optimal,
+                objective: lp.objective(&xs),
+                x: xs,
+                row_dual,
+                col_dual: cd,
+                iterations: start.iterations + simplex.max(0) as i64,
+                dual_objective: f64::NAN,
+                reduced_accuracy: false,
+                method: o.method,
+                tried: Vec::new(),
+            },
+            basis,
+        })
     }
 }

@@ -20,6 +20,7 @@ pub mod highs;
 pub mod policy;
 pub mod scale;
 pub mod sequence;
+pub mod vertex;
 
 pub use scale::Scaling;
 
@@ -230,6 +231,10 @@ pub enum Method {
     /// large block structures; optimal, generally non-vertex solutions (tolerance:
     /// `feasibility_tolerance`).
     Clarabel,
+    /// Clarabel's interior point, then HiGHS's crossover from its point ([`vertex`]): an
+    /// optimal vertex with its basis, as [`Method::Ipm`] gives, without HiGHS's interior point
+    /// (measured, not a default: docs/performance.md, "Clarabel with crossover (session 19)").
+    ClarabelVertex,
 }
 
 impl Method {
@@ -237,6 +242,7 @@ impl Method {
     pub fn backend(self) -> &'static dyn Backend {
         match self {
             Method::Clarabel => &clarabel::Clarabel,
+            Method::ClarabelVertex => &vertex::ClarabelVertex,
             _ => &highs::Highs,
         }
     }
@@ -250,6 +256,7 @@ impl Method {
             Method::IpmNoCrossover => "ipm-no-crossover",
             Method::Pdlp => "pdlp",
             Method::Clarabel => "clarabel",
+            Method::ClarabelVertex => "clarabel-vertex",
         }
     }
     /// Whether the method returns vertex (basic) solutions and can start from a basis.
@@ -699,6 +706,9 @@ pub fn fallback_chain(method: Method) -> &'static [Method] {
         Choose => &[Choose, DualSimplex, Clarabel],
         Pdlp => &[Pdlp, Ipm, DualSimplex],
         Clarabel => &[Clarabel, Ipm, DualSimplex],
+        // A crossover that fails or ends uncertified: HiGHS's own interior point with
+        // crossover (a vertex too), then the dual simplex.
+        ClarabelVertex => &[ClarabelVertex, Ipm, DualSimplex],
     }
 }
 

@@ -158,6 +158,14 @@ pub fn extremes_fallback(dofs: usize) -> Option<Method> {
 /// | 3D capacity curve, > 300 blocks or with friction | Clarabel | README vault, μ = 0.6, 5 steps: 11.4 CPU s (dual simplex 155.9); README dome, μ = 0.5, 10 steps: 14.2 (37.3); 24 × 24 dome (553 blocks): 23.7–35.6 CPU s; the dual simplex's first program alone > 59, the IPM's curve > 60, the IPM's first program then the warm dual simplex > 119 |
 /// | 3D | HiGHS IPM + crossover (a vertex; Clarabel measured faster, see below) | vault `limit` 0.13 CPU s (dual simplex 0.53, IPM 1.16), `settle` 0.13 (0.51, 0.56); dome 12 × 24 `limit` 0.30 (IPM 1.33, dual simplex > 97); `safety` within 1.3× of the fastest; HiGHS's IPM failed ("HiGHS run failed: Error") on domes and stacks |
 ///
+/// Measured in session 19 and not made a default: [`Method::ClarabelVertex`] (Clarabel, then
+/// HiGHS's crossover from its duals: the IPM's vertex, the same λ and hinges) — `limit` of the
+/// crowned 24 × 24 dome 2.81 CPU s (this table's 3D default 5.72), of the 48 × 48 dome 68.8
+/// (197.9): faster, but over the 30 s target; and `tilt` and `settle` of the 24 × 24 dome,
+/// whose canonical selection goes on from the vertex, slower (`tilt` 33.9 against 7.7,
+/// `settle` 18.3 against 13.9)
+/// (docs/performance.md, "Clarabel with crossover (session 19)").
+///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
 /// uncertified, the next method answers, and the result says so.
 pub fn default_method(class: &ProblemClass) -> Method {

@@ -50,13 +50,10 @@ mod issue29_canonical_default_all;
 mod issue29_capacity_cert;
 #[path = "issue29_cert025.rs"]
 mod issue29_cert025;
-<<<<<<< HEAD
-#[path = "issue29_curve_friction3d.rs"]
-mod issue29_curve_friction3d;
-=======
 #[path = "issue29_crossover.rs"]
 mod issue29_crossover;
->>>>>>> h-cross
+#[path = "issue29_curve_friction3d.rs"]
+mod issue29_curve_friction3d;
 #[path = "issue29_dome2.rs"]
 mod issue29_dome2;
 #[path = "issue29_dome48.rs"]

@@ -91,30 +91,7 @@ impl WarmLimit {
             let (dead, live) = load_vectors(st)?;
             let fp = programs::limit_force_program_fixed_topology(map, &dead, &live);
             let _kind = lp::ProgramKind::set("steps", "");
-            // A warm start is worth a few pivots (0–5 per step on the README's models). On a
-            // deformed geometry whose old basis is numerically poor it is not: regression
-            // (session 19), the 1.0 m façade's `incremental` (716 blocks, horizontal live load,
-            // 0.5 mm steps) spent 123 s in 365 warm dual simplex iterations of its second step
-            // (primal infeasibilities growing to 1e12) where the program from scratch takes 1 s.
-            // The warm attempt is capped (deterministically, in iterations); past the cap the
-            // solver layer's fallback chain answers, as for any other stop.
-            let simplex = matches!(
-                self.solver.method,
-                lp::Method::DualSimplex | lp::Method::PrimalSimplex
-            );
-            let opts = match self.basis {
-                Some(_) if simplex => SolverOptions {
-                    iteration_limit: Some(
-                        self.solver
-                            .iteration_limit
-                            .unwrap_or(usize::MAX)
-                            .min(warm_iteration_cap(fp.lp.num_rows())),
-                    ),
-                    ..self.solver
-                },
-                _ => self.solver,
-            };
-            let sol = lp::solve_warm(&fp.lp, &opts, &mut self.basis)?;
+            let sol = lp::solve_warm(&fp.lp, &self.solver, &mut self.basis)?;
             limit_solution(map, &fp, &live, &sol, self.solver.info())
         } else {
             solve_limit(st, map, &self.solver)?
@@ -122,14 +99,6 @@ impl WarmLimit {
         self.iterations += sol.iterations;
         Ok(sol)
     }
-}
-
-/// The iterations allowed to a warm-started step of a path ([`WarmLimit`]) on a program of
-/// `rows` rows before the fallback chain takes over: 50, or one per 20 rows on larger programs.
-/// Steps of a path move the basis by a few pivots (0–5 on the README's arch and wall, 1–3 on the
-/// 10,050-block wall of docs/capacity.md), so the cap only stops warm runs that have gone astray.
-pub fn warm_iteration_cap(rows: usize) -> usize {
-    (rows / 20).max(50)
 }
 
 /// The settlement path: the structure with unit support motions, its settlement mechanism and

@@ -86,6 +86,8 @@ mod issue29_qp_budget;
 mod issue29_recertify;
 #[path = "issue29_sequences.rs"]
 mod issue29_sequences;
+#[path = "issue29_vault_friction_safety.rs"]
+mod issue29_vault_friction_safety;
 #[path = "issue30_adapt.rs"]
 mod issue30_adapt;
 #[path = "issue30_adapt_facade.rs"]

@@ -21,20 +21,15 @@
 //!
 //! Times on the 0.5 m façades: docs/performance.md, "Façade safety and capacity (session 18)".
 
+mod support;
+use support::facade_grid;
 use voussoir::analysis::safety::{merged_columns, safety, shrunk_map, Decisions, SafetyOptions};
 use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
-use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::sequence::{decide_feasibility, point_violation};
 use voussoir::lp::{collecting, Direction, LinearProgram, Method, SolverOptions};
 use voussoir::programs::equilibrium_program;
 use voussoir::{BuildOptions, Structure};
-
-/// The paper's façade (Fig 18) in a grid of `element` m, dead loads only.
-fn facade_grid(element: f64) -> Structure {
-    let m = facade(&bondeno(element, FacadeMesh::Grid)).unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
-}
 
 /// By hand: `x0 + x1 = 10` (a load), `x2 − x3 = 0` (a row without load), every `x ≥ 0`.
 fn two_rows() -> LinearProgram {

@@ -15,22 +15,16 @@
 //!
 //! Times: docs/performance.md, "0.5 m façade safety and tilt (session 19)".
 
+mod support;
+use support::facade_grid;
 use voussoir::analysis::safety::{
     merged_columns, reaction_ranges_by, safety, shrunk_map, RangeSolve, SafetyOptions,
 };
 use voussoir::discretize::KinematicMap;
-use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::sequence::point_violation;
 use voussoir::lp::{self, collecting, LpStatus, Method, SolverOptions};
 use voussoir::programs::equilibrium_program;
 use voussoir::result::safety::ReactionRanges;
-use voussoir::{BuildOptions, Structure};
-
-/// The paper's façade (Fig 18) in a grid of `element` m, dead loads only.
-fn facade_grid(element: f64) -> Structure {
-    let m = facade(&bondeno(element, FacadeMesh::Grid)).unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
-}
 
 /// Every end of `warm` equal to the same end of `cold` to `rel` of the largest end; both
 /// certified.

@@ -165,3 +165,10 @@ pub mod settling_panel {
         }
     }
 }
+
+/// The paper's façade (Fig 18) in a grid of `element` m, dead loads only.
+pub fn facade_grid(element: f64) -> Structure {
+    use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
+    let m = facade(&bondeno(element, FacadeMesh::Grid)).unwrap();
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}

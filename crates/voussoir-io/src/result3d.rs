@@ -119,36 +119,44 @@ fn crack_summary(joints: &[JointResult<Three>]) -> String {
     parts.join(", ")
 }
 
+/// The parts of [`Result3d`] that a limit, settlement or tilt result reads from its fields
+/// (`result3d_parts!(limit)`: from its field `limit`).
+macro_rules! result3d_parts {
+    ($($f:ident).*) => {
+        fn cracks(&self) -> &[voussoir::result::Crack3d] {
+            &self$(.$f)*.cracks
+        }
+        fn reactions(&self) -> &[Reaction<Three>] {
+            &self$(.$f)*.reactions
+        }
+        fn solver(&self) -> Option<&SolverInfo> {
+            Some(&self$(.$f)*.solver)
+        }
+        fn friction_iteration(&self) -> Option<&FrictionIteration> {
+            self$(.$f)*.friction_iteration.as_ref()
+        }
+        fn blocks(&self) -> &[BlockMotion<Three>] {
+            &self$(.$f)*.blocks
+        }
+        fn joints(&self) -> &[JointResult<Three>] {
+            &self$(.$f)*.joints
+        }
+        fn hinges(&self) -> &[Hinge<Three>] {
+            &self$(.$f)*.hinges
+        }
+        fn thrust_line(&self) -> &[ThrustPoint<Three>] {
+            &self$(.$f)*.thrust_line
+        }
+        fn shapes(&self) -> &SpatialShapes {
+            &self$(.$f)*.geometry
+        }
+    };
+}
+
 impl Result3d for LimitResult<Three> {
-    fn cracks(&self) -> &[voussoir::result::Crack3d] {
-        &self.cracks
-    }
-    fn reactions(&self) -> &[Reaction<Three>] {
-        &self.reactions
-    }
-    fn solver(&self) -> Option<&SolverInfo> {
-        Some(&self.solver)
-    }
-    fn friction_iteration(&self) -> Option<&FrictionIteration> {
-        self.friction_iteration.as_ref()
-    }
+    result3d_parts!();
     fn certificate_rows(&self) -> Vec<(String, String)> {
         limit_certificate_rows(self)
-    }
-    fn blocks(&self) -> &[BlockMotion<Three>] {
-        &self.blocks
-    }
-    fn joints(&self) -> &[JointResult<Three>] {
-        &self.joints
-    }
-    fn hinges(&self) -> &[Hinge<Three>] {
-        &self.hinges
-    }
-    fn thrust_line(&self) -> &[ThrustPoint<Three>] {
-        &self.thrust_line
-    }
-    fn shapes(&self) -> &SpatialShapes {
-        &self.geometry
     }
     fn units(&self) -> MotionUnits {
         MotionUnits::Normalised
@@ -208,18 +216,7 @@ impl Result3d for LimitResult<Three> {
 }
 
 impl Result3d for SettlementResult<Three> {
-    fn cracks(&self) -> &[voussoir::result::Crack3d] {
-        &self.cracks
-    }
-    fn reactions(&self) -> &[Reaction<Three>] {
-        &self.reactions
-    }
-    fn solver(&self) -> Option<&SolverInfo> {
-        Some(&self.solver)
-    }
-    fn friction_iteration(&self) -> Option<&FrictionIteration> {
-        self.friction_iteration.as_ref()
-    }
+    result3d_parts!();
     fn certificate_rows(&self) -> Vec<(String, String)> {
         vec![(
             "duality certificate".to_string(),
@@ -236,21 +233,6 @@ impl Result3d for SettlementResult<Three> {
                 None => "none (no mechanism)".to_string(),
             },
         )]
-    }
-    fn blocks(&self) -> &[BlockMotion<Three>] {
-        &self.blocks
-    }
-    fn joints(&self) -> &[JointResult<Three>] {
-        &self.joints
-    }
-    fn hinges(&self) -> &[Hinge<Three>] {
-        &self.hinges
-    }
-    fn thrust_line(&self) -> &[ThrustPoint<Three>] {
-        &self.thrust_line
-    }
-    fn shapes(&self) -> &SpatialShapes {
-        &self.geometry
     }
     fn units(&self) -> MotionUnits {
         MotionUnits::Metres
@@ -323,35 +305,9 @@ impl Result3d for SettlementResult<Three> {
 
 /// The tilting-table result: its limit analysis, titled and summed up by the tilt angle.
 impl Result3d for TiltResult<Three> {
-    fn cracks(&self) -> &[voussoir::result::Crack3d] {
-        &self.limit.cracks
-    }
-    fn reactions(&self) -> &[Reaction<Three>] {
-        &self.limit.reactions
-    }
-    fn solver(&self) -> Option<&SolverInfo> {
-        Some(&self.limit.solver)
-    }
-    fn friction_iteration(&self) -> Option<&FrictionIteration> {
-        self.limit.friction_iteration.as_ref()
-    }
+    result3d_parts!(limit);
     fn certificate_rows(&self) -> Vec<(String, String)> {
         limit_certificate_rows(&self.limit)
-    }
-    fn blocks(&self) -> &[BlockMotion<Three>] {
-        self.limit.blocks()
-    }
-    fn joints(&self) -> &[JointResult<Three>] {
-        self.limit.joints()
-    }
-    fn hinges(&self) -> &[Hinge<Three>] {
-        self.limit.hinges()
-    }
-    fn thrust_line(&self) -> &[ThrustPoint<Three>] {
-        self.limit.thrust_line()
-    }
-    fn shapes(&self) -> &SpatialShapes {
-        self.limit.shapes()
     }
     fn units(&self) -> MotionUnits {
         self.limit.units()

@@ -11,12 +11,14 @@ use voussoir::analysis::tilt::{tilt, TiltResult};
 use voussoir::analysis::CapacityResult;
 use voussoir::dim::Three;
 use voussoir::generate::{arch, ArchSpec};
-use voussoir::generate3d::{dome, vault, Bond, DomeSpec};
+use voussoir::generate3d::{vault, Bond};
 use voussoir::lp::SolverOptions;
 use voussoir::model3d::{AnyModel, Model3d};
 use voussoir::request::{self, AnyResult, Request};
 use voussoir::sweep::SweepRecord;
 use voussoir::{BuildOptions, Structure};
+
+mod support;
 
 const METHODS: [&str; 3] = ["dual-simplex", "ipm", "clarabel"];
 
@@ -28,14 +30,7 @@ fn readme_vault() -> Model3d {
 /// The README's dome (`gen dome --courses 8 --segments 16 --thickness 0.3`), with a crown load
 /// of `crown` kN (capacity needs live loads).
 fn readme_dome(crown: f64) -> Model3d {
-    dome(&DomeSpec {
-        courses: 8,
-        segments: 16,
-        thickness: 0.3,
-        crown_load: crown,
-        ..DomeSpec::default()
-    })
-    .unwrap()
+    support::dome_model(8, 16, crown)
 }
 
 /// `request::run` of a request's JSON on a 3D model.

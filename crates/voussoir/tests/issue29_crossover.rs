@@ -5,25 +5,14 @@
 
 use voussoir::analysis::limit::limit;
 use voussoir::discretize::KinematicMap;
-use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::{
     self, policy, Basis, Direction, LinearProgram, LpStatus, Method, SolverOptions,
 };
 use voussoir::programs;
 use voussoir::structure::Assembly;
-use voussoir::{BuildOptions, Structure3d};
 
-fn crowned_dome(courses: usize, segments: usize) -> Structure3d {
-    let m = dome(&DomeSpec {
-        courses,
-        segments,
-        thickness: 0.3,
-        crown_load: 10.0,
-        ..DomeSpec::default()
-    })
-    .unwrap();
-    Structure3d::new(&m, BuildOptions::default()).unwrap()
-}
+mod support;
+use support::crowned_dome;
 
 fn with(method: Method) -> SolverOptions {
     SolverOptions {

@@ -15,12 +15,14 @@ use voussoir::analysis::safety::{
     reaction_ranges_by, safety, shrunk_map, RangeSolve, SafetyOptions,
 };
 use voussoir::discretize::KinematicMap;
-use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::sequence::{certify_ray, decide_directly, Lineality};
 use voussoir::lp::{self, Direction, LinearProgram, LpStatus, Method, SolverOptions};
 use voussoir::programs::equilibrium_program;
 use voussoir::request::default_method;
-use voussoir::{Assembly, BuildOptions, Structure3d};
+use voussoir::{Assembly, Structure3d};
+
+mod support;
+use support::dome_structure;
 
 /// `x0 ≥ 0`, `x1`, `x2` free; the rows `x0 + x1 + x2 = 1` and `x1 + x2 ≤ 4`.
 fn two_free_columns() -> LinearProgram {
@@ -106,16 +108,6 @@ fn issue29_item3_the_program_itself_decides_only_stands() {
     );
 }
 
-fn dome_structure(courses: usize, segments: usize) -> Structure3d {
-    let m = dome(&DomeSpec {
-        courses,
-        segments,
-        ..DomeSpec::default()
-    })
-    .unwrap();
-    Structure3d::new(&m, BuildOptions::default()).unwrap()
-}
-
 /// Whether the structure's equilibrium program with its joints shrunk by `f` is feasible, by
 /// the simplex from scratch.
 fn stands_by_dual_simplex(st: &Structure3d, f: f64) -> bool {
@@ -152,7 +144,7 @@ fn issue29_item4_dome_ranges_by_lineality_rays_against_cold_dual_simplex() {
     // self-equilibrated shear of its joints), now certified by lineality rays without a
     // recession program; every vertical end must be the dual simplex's from scratch, program
     // by program, to 1e-9 of the weight W, and statics hold: 0 ≤ fz ≤ W.
-    let st = dome_structure(6, 12);
+    let st = dome_structure(6, 12, 0.0);
     let w: f64 = -st.load_vector(false).chunks(6).map(|f| f[2]).sum::<f64>();
     let dual = SolverOptions {
         method: Method::DualSimplex,
@@ -196,7 +188,7 @@ fn issue29_item3_dome_factor_is_the_bisection_bracket_of_the_dual_simplex() {
     // iterations before the elastic programs decide). The least fraction f that `safety`
     // reports must stand and f − tolerance must not, each decided again by the simplex from
     // scratch; the default method and the dual simplex give the same factor to 1e-6.
-    let st = dome_structure(12, 12);
+    let st = dome_structure(12, 12, 0.0);
     let mut factors = Vec::new();
     for method in [default_method(3), Method::DualSimplex] {
         let r = safety(

@@ -16,23 +16,13 @@
 
 use voussoir::analysis::limit::limit;
 use voussoir::discretize::KinematicMap;
-use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::{self, LpStatus, Method, SolverOptions};
 use voussoir::programs;
 use voussoir::structure::Assembly;
-use voussoir::{BuildOptions, Structure3d};
+use voussoir::Structure3d;
 
-fn crowned_dome(courses: usize, segments: usize) -> Structure3d {
-    let m = dome(&DomeSpec {
-        courses,
-        segments,
-        thickness: 0.3,
-        crown_load: 10.0,
-        ..DomeSpec::default()
-    })
-    .unwrap();
-    Structure3d::new(&m, BuildOptions::default()).unwrap()
-}
+mod support;
+use support::crowned_dome;
 
 /// The largest and least multipliers of the dome's limit program, each solved from scratch by
 /// the dual simplex (another method than the default's, and no warm start).

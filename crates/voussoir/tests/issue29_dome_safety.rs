@@ -8,14 +8,13 @@
 use voussoir::analysis::safety::{
     least_joint_fraction, reaction_ranges_by, safety, RangeSolve, SafetyOptions,
 };
-use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::sequence::{certify_ray, decide_feasibility, ray_violation};
 use voussoir::lp::{Direction, LinearProgram, Method, SolverOptions};
 use voussoir::request::default_method;
-use voussoir::{Assembly, BuildOptions, Structure3d};
+use voussoir::Assembly;
 
 mod support;
-use support::offset_stack;
+use support::{dome_structure, offset_stack};
 
 #[test]
 fn issue29_item3_the_bisection_decides_f0_only_where_it_must() {
@@ -131,13 +130,7 @@ fn issue29_item4_dome_ranges_from_the_bisection_basis_against_statics_and_cold_s
     // horizontal side unbounded, and statics must hold: 0 ≤ fz ≤ W at every support, the
     // least vertical reactions add up to at most W and the largest to at least W; the twelve
     // supports alike (the dome's symmetry).
-    let m = dome(&DomeSpec {
-        courses: 6,
-        segments: 12,
-        ..DomeSpec::default()
-    })
-    .unwrap();
-    let st = Structure3d::new(&m, BuildOptions::default()).unwrap();
+    let st = dome_structure(6, 12, 0.0);
     let w: f64 = -st.load_vector(false).chunks(6).map(|f| f[2]).sum::<f64>();
     assert!(w > 0.0);
     let dual = SolverOptions {
@@ -200,13 +193,7 @@ fn issue29_item4_safety_of_the_24x24_dome_with_ranges_certifies() {
     // 553 blocks, t/R = 0.06, no sliding: the whole `safety` as the CLI runs it. Every
     // vertical end within [0, W] by statics, the supports alike (24-fold symmetry), every
     // horizontal side unbounded.
-    let m = dome(&DomeSpec {
-        courses: 24,
-        segments: 24,
-        ..DomeSpec::default()
-    })
-    .unwrap();
-    let st = Structure3d::new(&m, BuildOptions::default()).unwrap();
+    let st = dome_structure(24, 24, 0.0);
     let w: f64 = -st.load_vector(false).chunks(6).map(|f| f[2]).sum::<f64>();
     let t = std::time::Instant::now();
     let r = safety(

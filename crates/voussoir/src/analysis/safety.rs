@@ -123,6 +123,66 @@ const RAYS_DESIGN: &str =
     "Clarabel first on the recession programs: a ray need not be a vertex, and it was faster";
 const SCRATCH_DESIGN: &str = "an end that the warm runs did not certify goes to interior points certified by their duals, Clarabel first";
 
+/// The methods that solve a reaction range's end from scratch, in order: interior points
+/// (certified by their duals, no vertex needed), Clarabel's and HiGHS's without crossover;
+/// then the dual simplex ([`end_from_scratch`]).
+const SCRATCH_METHODS: [lp::Method; 3] = [
+    lp::Method::Clarabel,
+    lp::Method::IpmNoCrossover,
+    lp::Method::DualSimplex,
+];
+
+/// Whether each method of [`end_from_scratch`] goes alone or with its fallback chain.
+#[derive(Clone, Copy)]
+enum Chain {
+    /// [`lp::solve_without_fallback`].
+    Alone,
+    /// [`lp::solve`].
+    WithFallback,
+}
+
+/// Whether `sol` is an optimum of `program` certified by its duals.
+fn certified(program: &lp::LinearProgram, sol: &LpSolution) -> bool {
+    sol.status == LpStatus::Optimal && lp::sequence::certify(program, sol).is_some_and(|c| c.ok())
+}
+
+/// A reaction range's end from scratch: `program` by each of `methods` in turn until one
+/// answer is certified. That answer, or else the last one (`None` for no method); `solves`
+/// counts the programs; `(side, when, t0)` names them in the trace.
+fn end_from_scratch(
+    program: &lp::LinearProgram,
+    solver: &SolverOptions,
+    methods: &[lp::Method],
+    chain: Chain,
+    solves: &mut usize,
+    (side, when, t0): (&str, &str, std::time::Instant),
+) -> Option<Result<LpSolution>> {
+    let _kind = lp::ProgramKind::set("reaction ranges from scratch", SCRATCH_DESIGN);
+    let mut last = None;
+    for &method in methods {
+        *solves += 1;
+        let o = SolverOptions { method, ..*solver };
+        let got = match chain {
+            Chain::Alone => lp::solve_without_fallback(program, &o),
+            Chain::WithFallback => lp::solve(program, &o),
+        };
+        trace(
+            format_args!(
+                "range {side}: from scratch by {}{when}: {:?}",
+                method.name(),
+                got.as_ref().map(|g| (g.status, certified(program, g)))
+            ),
+            t0,
+        );
+        let done = got.as_ref().is_ok_and(|g| certified(program, g));
+        last = Some(got);
+        if done {
+            break;
+        }
+    }
+    last
+}
+
 /// The joints of `st` with every point moved towards its joint's centre: `x → c + f·(x − c)`,
 /// `c` the mean of the joint's points. In 2D the lever arms of the crushing domain and the
 /// joint's depth scale by `f` too.
@@ -994,10 +1054,6 @@ fn ranges_from<S: Assembly>(
     // The projection onto the free columns' lineality space (made at the first side that
     // needs it; `Some(None)` where the program has none).
     let mut lineality: Option<Option<lp::sequence::Lineality>> = None;
-    let certified = |program: &lp::LinearProgram, sol: &LpSolution| {
-        sol.status == LpStatus::Optimal
-            && lp::sequence::certify(program, sol).is_some_and(|c| c.ok())
-    };
     for (s, comps) in coefficients.iter().enumerate() {
         // The vertical component first: bounded where the structure stands, so the first
         // program has an optimum for the later ones to start from.
@@ -1191,26 +1247,22 @@ fn ranges_from<S: Assembly>(
                 // HiGHS's recession programs spent 10 s finding no ray, where the program itself
                 // from scratch by Clarabel answered in 0.27 s. Before those: the program from
                 // scratch by Clarabel alone; a certified optimum decides the side (bounded, and
-                // its value), anything else goes on as before.
-                let mut scratch_clarabel = false;
+                // its value), anything else goes on as before. The methods from scratch, in
+                // order: Clarabel, alone, here where it is tried; the rest, each with its
+                // fallback chain, where the side is bounded and still undecided below.
+                let mut scratch = SCRATCH_METHODS.as_slice();
                 if sol.is_none() && ray.is_none() && !bounded {
-                    scratch_clarabel = true;
-                    out.solves += 1;
-                    let _kind =
-                        lp::ProgramKind::set("reaction ranges from scratch", SCRATCH_DESIGN);
-                    let o = SolverOptions {
-                        method: lp::Method::Clarabel,
-                        ..*solver
-                    };
-                    let got = lp::solve_without_fallback(&program, &o);
-                    trace(
-                        format_args!(
-                            "range {side}: from scratch by clarabel before the recession programs: {:?}",
-                            got.as_ref().map(|g| (g.status, certified(&program, g)))
-                        ),
-                        t0,
+                    let (first, rest) = scratch.split_at(1);
+                    scratch = rest;
+                    let got = end_from_scratch(
+                        &program,
+                        solver,
+                        first,
+                        Chain::Alone,
+                        &mut out.solves,
+                        (&side, " before the recession programs", t0),
                     );
-                    if let Ok(g) = got {
+                    if let Some(Ok(g)) = got {
                         if certified(&program, &g) {
                             if let Some(seq) = sequence.as_mut() {
                                 seq.restart_from_optimal();
@@ -1303,42 +1355,19 @@ fn ranges_from<S: Assembly>(
                     Some(sol) => sol,
                     None => {
                         // Bounded, and the warm runs did not certify it: from scratch by
-                        // interior points (certified by their duals, no vertex needed):
-                        // Clarabel's, HiGHS's without crossover; then by the dual simplex.
+                        // the methods not tried yet ([`SCRATCH_METHODS`]).
                         if let Some(seq) = sequence.as_mut() {
                             seq.restart_from_optimal();
                         }
-                        let mut last = None;
-                        let _kind =
-                            lp::ProgramKind::set("reaction ranges from scratch", SCRATCH_DESIGN);
-                        for method in [
-                            lp::Method::Clarabel,
-                            lp::Method::IpmNoCrossover,
-                            lp::Method::DualSimplex,
-                        ]
-                        .into_iter()
-                        .filter(|m| !(scratch_clarabel && *m == lp::Method::Clarabel))
-                        {
-                            out.solves += 1;
-                            let o = SolverOptions { method, ..*solver };
-                            let got = lp::solve(&program, &o);
-                            trace(
-                                format_args!(
-                                    "range {side}: from scratch by {}: {:?}",
-                                    method.name(),
-                                    got.as_ref().map(|g| (g.status, certified(&program, g)))
-                                ),
-                                t0,
-                            );
-                            match got {
-                                Ok(g) if certified(&program, &g) => {
-                                    last = Some(Ok(g));
-                                    break;
-                                }
-                                other => last = Some(other),
-                            }
-                        }
-                        last.expect("two methods tried")?
+                        end_from_scratch(
+                            &program,
+                            solver,
+                            scratch,
+                            Chain::WithFallback,
+                            &mut out.solves,
+                            (&side, "", t0),
+                        )
+                        .expect("two methods tried")?
                     }
                 };
                 trace(

@@ -731,27 +731,7 @@ impl Structure {
 impl Assembly for Structure {
     type D = Two;
 
-    fn num_blocks(&self) -> usize {
-        self.blocks.len()
-    }
-    fn num_supports(&self) -> usize {
-        self.supports.len()
-    }
-    fn num_joints(&self) -> usize {
-        self.joints.len()
-    }
-    fn joint_bodies(&self, j: usize) -> (Body, Body) {
-        (self.joints[j].a, self.joints[j].b)
-    }
-    fn support_name(&self, s: usize) -> &str {
-        &self.supports[s].name
-    }
-    fn support_motion(&self, s: usize) -> &[f64] {
-        &self.supports[s].motion
-    }
-    fn set_support_motion(&mut self, s: usize, motion: &[f64]) {
-        self.supports[s].motion.copy_from_slice(&motion[..3]);
-    }
+    assembly_parts!();
 
     fn contact_bodies(&self) -> ContactBodies<Two> {
         ContactBodies {
@@ -770,13 +750,7 @@ impl Assembly for Structure {
             .map(|joint| {
                 let t = joint.tangent();
                 let mid = joint.midpoint();
-                let mats: Vec<&Material> = [joint.a, joint.b]
-                    .iter()
-                    .filter_map(|b| match b {
-                        Body::Block(i) => Some(&self.blocks[*i].material),
-                        Body::Support(_) => None,
-                    })
-                    .collect();
+                let mats = joint_materials([joint.a, joint.b], |i| &self.blocks[i].material);
                 ContactJoint {
                     a: joint.a,
                     b: joint.b,
@@ -899,19 +873,81 @@ impl Assembly for Structure {
             for (k, p) in joint.points.iter_mut().enumerate() {
                 let (xa, xb) = (ma.apply(p.x), mb.apply(p.x));
                 p.x = [0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])];
-                let g = p.gap
-                    + s * openings
-                        .get(j)
-                        .and_then(|o| o.get(k))
-                        .copied()
-                        .unwrap_or(0.0);
-                p.gap = if g > gap_tol { g } else { 0.0 };
+                p.gap = moved_gap(p.gap, s, openings, (j, k), gap_tol);
             }
         }
         for l in out.loads.iter_mut() {
             l.at = motion(Body::Block(l.block)).apply(l.at);
         }
         out
+    }
+}
+
+/// The accessors of [`Assembly`] that read the same fields of a 2D and a 3D structure
+/// (`blocks`, `supports` with `name` and `motion`, `joints` with `a` and `b`).
+macro_rules! assembly_parts {
+    () => {
+        fn num_blocks(&self) -> usize {
+            self.blocks.len()
+        }
+        fn num_supports(&self) -> usize {
+            self.supports.len()
+        }
+        fn num_joints(&self) -> usize {
+            self.joints.len()
+        }
+        fn joint_bodies(&self, j: usize) -> (Body, Body) {
+            (self.joints[j].a, self.joints[j].b)
+        }
+        fn support_name(&self, s: usize) -> &str {
+            &self.supports[s].name
+        }
+        fn support_motion(&self, s: usize) -> &[f64] {
+            &self.supports[s].motion
+        }
+        /// The first components of `motion`, as many as the support's motion has.
+        fn set_support_motion(&mut self, s: usize, motion: &[f64]) {
+            let m = &mut self.supports[s].motion;
+            let n = m.len();
+            m.copy_from_slice(&motion[..n]);
+        }
+    };
+}
+use assembly_parts;
+
+/// The materials of a joint's blocks, in the order of `bodies` (a support has none).
+pub(crate) fn joint_materials<'a>(
+    bodies: [Body; 2],
+    material: impl Fn(usize) -> &'a Material,
+) -> Vec<&'a Material> {
+    bodies
+        .iter()
+        .filter_map(|b| match b {
+            Body::Block(i) => Some(material(*i)),
+            Body::Support(_) => None,
+        })
+        .collect()
+}
+
+/// The gap of point `k` of joint `j` after a deformation scaled by `s`: `gap + s·openings[j][k]`
+/// (no opening where `openings` has none), closed (0) up to `gap_tol`.
+pub(crate) fn moved_gap(
+    gap: f64,
+    s: f64,
+    openings: &[Vec<f64>],
+    (j, k): (usize, usize),
+    gap_tol: f64,
+) -> f64 {
+    let g = gap
+        + s * openings
+            .get(j)
+            .and_then(|o| o.get(k))
+            .copied()
+            .unwrap_or(0.0);
+    if g > gap_tol {
+        g
+    } else {
+        0.0
     }
 }
 

@@ -8,8 +8,8 @@
 //! point (an opening and two slips), so a joint carries torsion through its vertices.
 
 use super::{
-    body_load_blocks, check_load_block, check_materials, check_support, relative_tolerance,
-    Assembly, Body, BuildOptions,
+    assembly_parts, body_load_blocks, check_load_block, check_materials, check_support,
+    joint_materials, moved_gap, relative_tolerance, Assembly, Body, BuildOptions,
 };
 use crate::dim::{Dim, Three};
 use crate::discretize::{ContactBodies, ContactJoint, JointLaw};
@@ -409,27 +409,7 @@ fn polyhedron(s: &Solid) -> Polyhedron {
 impl Assembly for Structure3d {
     type D = Three;
 
-    fn num_blocks(&self) -> usize {
-        self.blocks.len()
-    }
-    fn num_supports(&self) -> usize {
-        self.supports.len()
-    }
-    fn num_joints(&self) -> usize {
-        self.joints.len()
-    }
-    fn joint_bodies(&self, j: usize) -> (Body, Body) {
-        (self.joints[j].a, self.joints[j].b)
-    }
-    fn support_name(&self, s: usize) -> &str {
-        &self.supports[s].name
-    }
-    fn support_motion(&self, s: usize) -> &[f64] {
-        &self.supports[s].motion
-    }
-    fn set_support_motion(&mut self, s: usize, motion: &[f64]) {
-        self.supports[s].motion.copy_from_slice(&motion[..6]);
-    }
+    assembly_parts!();
 
     fn kinematic_map(&self) -> crate::discretize::KinematicMap {
         let mut map = crate::discretize::KinematicMap::assemble(
@@ -455,13 +435,7 @@ impl Assembly for Structure3d {
         self.joints
             .iter()
             .map(|joint| {
-                let mats: Vec<&Material> = [joint.a, joint.b]
-                    .iter()
-                    .filter_map(|b| match b {
-                        Body::Block(i) => Some(&self.blocks[*i].material),
-                        Body::Support(_) => None,
-                    })
-                    .collect();
+                let mats = joint_materials([joint.a, joint.b], |i| &self.blocks[i].material);
                 ContactJoint {
                     a: joint.a,
                     b: joint.b,
@@ -615,13 +589,7 @@ impl Assembly for Structure3d {
             for (k, p) in joint.points.iter_mut().enumerate() {
                 let (xa, xb) = (apply(ca, &ra, ta, p.x), apply(cb, &rb, tb, p.x));
                 p.x = [0, 1, 2].map(|c| 0.5 * (xa[c] + xb[c]));
-                let g = p.gap
-                    + s * openings
-                        .get(j)
-                        .and_then(|o| o.get(k))
-                        .copied()
-                        .unwrap_or(0.0);
-                p.gap = if g > gap_tol { g } else { 0.0 };
+                p.gap = moved_gap(p.gap, s, openings, (j, k), gap_tol);
             }
         }
         for l in out.loads.iter_mut() {

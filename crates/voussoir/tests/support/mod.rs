@@ -5,7 +5,9 @@
 use voussoir::analysis::SettlementResult;
 use voussoir::discretize::KinematicMap;
 use voussoir::generate::{wall, WallSpec};
+use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::{self, LpStatus, Method, SolverOptions};
+use voussoir::model3d::Model3d;
 use voussoir::programs;
 use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure, Structure3d};
@@ -171,4 +173,31 @@ pub fn facade_grid(element: f64) -> Structure {
     use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
     let m = facade(&bondeno(element, FacadeMesh::Grid)).unwrap();
     Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+/// `gen dome --courses C --segments S --crown-load P`: the other fields default (radius 5 m,
+/// thickness 0.3 m, a hemisphere).
+pub fn dome_model(courses: usize, segments: usize, crown_load: f64) -> Model3d {
+    dome(&DomeSpec {
+        courses,
+        segments,
+        thickness: 0.3,
+        crown_load,
+        ..DomeSpec::default()
+    })
+    .unwrap()
+}
+
+/// [`dome_model`]'s structure (default build options).
+pub fn dome_structure(courses: usize, segments: usize, crown_load: f64) -> Structure3d {
+    Structure3d::new(
+        &dome_model(courses, segments, crown_load),
+        BuildOptions::default(),
+    )
+    .unwrap()
+}
+
+/// The crowned dome of issue 29's solver tests: [`dome_structure`] with 10 kN at the crown.
+pub fn crowned_dome(courses: usize, segments: usize) -> Structure3d {
+    dome_structure(courses, segments, 10.0)
 }

@@ -16,7 +16,7 @@
 //! Times: docs/performance.md, "0.5 m façade safety and tilt (session 19)".
 
 mod support;
-use support::facade_grid;
+use support::{facade_grid, same_ranges};
 use voussoir::analysis::safety::{
     merged_columns, reaction_ranges_by, safety, shrunk_map, RangeSolve, SafetyOptions,
 };
@@ -24,38 +24,6 @@ use voussoir::discretize::KinematicMap;
 use voussoir::lp::sequence::point_violation;
 use voussoir::lp::{self, collecting, LpStatus, Method, SolverOptions};
 use voussoir::programs::equilibrium_program;
-use voussoir::result::safety::ReactionRanges;
-
-/// Every end of `warm` equal to the same end of `cold` to `rel` of the largest end; both
-/// certified.
-fn same_ranges(warm: &ReactionRanges, cold: &ReactionRanges, rel: f64) {
-    assert!(warm.certified() && cold.certified());
-    let scale = cold
-        .ranges
-        .iter()
-        .flat_map(|r| r.components.iter())
-        .flat_map(|c| [c.min, c.max])
-        .flatten()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    assert_eq!(warm.ranges.len(), cold.ranges.len());
-    for (w, c) in warm.ranges.iter().zip(&cold.ranges) {
-        assert_eq!(w.support, c.support);
-        for (a, b) in w.components.iter().zip(&c.components) {
-            for (x, y) in [(a.min, b.min), (a.max, b.max)] {
-                match (x, y) {
-                    (Some(x), Some(y)) => assert!(
-                        (x - y).abs() <= rel * scale,
-                        "{} {}: {x} {y}",
-                        w.support,
-                        a.component
-                    ),
-                    (None, None) => {}
-                    _ => panic!("{} {}: {x:?} against {y:?}", w.support, a.component),
-                }
-            }
-        }
-    }
-}
 
 /// The mirrored ranges against every side's program from scratch (`RangeSolve::Independent`:
 /// the requested method's whole chain, no mirror, no warm start).

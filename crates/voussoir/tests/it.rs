@@ -86,6 +86,8 @@ mod issue29_qp_budget;
 mod issue29_recertify;
 #[path = "issue29_sequences.rs"]
 mod issue29_sequences;
+#[path = "issue29_symmetric_ranges3d.rs"]
+mod issue29_symmetric_ranges3d;
 #[path = "issue29_vault_friction_safety.rs"]
 mod issue29_vault_friction_safety;
 #[path = "issue30_adapt.rs"]

@@ -848,12 +848,42 @@ impl Mirror {
         }
         Ok(Mirror { col, row, support })
     }
+}
 
+impl From<Mirror> for Symmetry {
+    fn from(m: Mirror) -> Symmetry {
+        Symmetry {
+            col: m.col.into_iter().map(|c| vec![c]).collect(),
+            row: m.row.into_iter().map(|r| vec![r]).collect(),
+            support: m.support,
+        }
+    }
+}
+
+/// A symmetry of an equilibrium program as linear maps of its columns and rows: a mirror
+/// ([`Mirror`], 2D: signed permutations) or an isometry of a 3D structure ([`isometries_3d`]:
+/// a point's normal force maps to its image's, its two shears to a rotation of its image's
+/// two, a block's force and moment rows to the isometry of its image's). Both maps are
+/// orthogonal, so the image of a direction, of a cost or of reduced costs is the same column
+/// map. An optimum mapped by it is only a candidate: it is used where its certificate on the
+/// target program holds ([`certified`]).
+struct Symmetry {
+    /// Column `j` ↦ `[(j', α), …]`: `x'_{j'} += α x_j`.
+    col: Vec<Vec<(usize, f64)>>,
+    /// Row `i` ↦ `[(i', s), …]`: `y'_{i'} += s y_i`.
+    row: Vec<Vec<(usize, f64)>>,
+    /// Support `s` ↦ its image.
+    support: Vec<usize>,
+}
+
+impl Symmetry {
     /// The image of a direction or a point of the program's columns.
     fn columns(&self, x: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; x.len()];
-        for (j, &(j2, a)) in self.col.iter().enumerate() {
-            out[j2] = a * x[j];
+        for (j, m) in self.col.iter().enumerate() {
+            for &(j2, a) in m {
+                out[j2] += a * x[j];
+            }
         }
         out
     }
@@ -883,8 +913,10 @@ impl Mirror {
         let sign = if same { 1.0 } else { -1.0 };
         let x = self.columns(&sol.x);
         let mut row_dual = vec![0.0; sol.row_dual.len()];
-        for (i, &(i2, sg)) in self.row.iter().enumerate() {
-            row_dual[i2] = sign * sg * sol.row_dual[i];
+        for (i, m) in self.row.iter().enumerate() {
+            for &(i2, sg) in m {
+                row_dual[i2] += sign * sg * sol.row_dual[i];
+            }
         }
         let col_dual: Vec<f64> = self
             .columns(&sol.col_dual)
@@ -905,6 +937,260 @@ impl Mirror {
             },
         ))
     }
+}
+
+/// At most this many rotations are tried as symmetries of a 3D structure ([`isometries_3d`]):
+/// each is a pass over the blocks and points, so the search stays linear in the model.
+const MAX_ROTATIONS: usize = 64;
+
+/// The isometries of a 3D structure that may map its equilibrium program onto itself: the
+/// rotations about the vertical line through the middle of the blocks' reference points
+/// that take the first support onto another support (at the same height and distance from
+/// the line; at most [`MAX_ROTATIONS`]), and the mirrors in the vertical planes `x = x_c` and
+/// `y = y_c` through that line. One is kept where every block, support and contact point has
+/// exactly one image (to 1e-9 of the structure's extent, the image point on a joint between
+/// the image bodies, its normal the image of the normal) and every column is a point's
+/// force; the loads are not compared, as every image of an optimum is certified on its own
+/// program before it is used. `Err` says why none was looked for.
+fn isometries_3d<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    base: &programs::ForceProgram,
+) -> std::result::Result<Vec<Symmetry>, &'static str> {
+    use std::collections::HashMap;
+    type V3 = [f64; 3];
+    if <S::D as Dim>::N != 3 || map.dofs_per_block != 6 || <S::D as Dim>::TANGENTS != 2 {
+        return Err("not 3D");
+    }
+    let lp = &base.lp;
+    let bodies = st.contact_bodies();
+    let nb = bodies.blocks.len();
+    if nb == 0 || lp.num_rows() != 6 * nb {
+        return Err("rows are not six per block");
+    }
+    let v3 = |v: &<S::D as Dim>::Vector| -> V3 {
+        let a = v.as_ref();
+        [a[0], a[1], a[2]]
+    };
+    let blocks: Vec<V3> = bodies.blocks.iter().map(v3).collect();
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for b in &blocks {
+        for c in 0..3 {
+            lo[c] = lo[c].min(b[c]);
+            hi[c] = hi[c].max(b[c]);
+        }
+    }
+    let extent = (0..3).fold(0.0f64, |m, c| m.max(hi[c] - lo[c]));
+    if !(extent.is_finite() && extent > 0.0) {
+        return Err("blocks extent");
+    }
+    let (xc, yc) = (0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]));
+    let tol = 1e-9 * extent;
+    let q = 1e-6 * extent;
+    let key = |p: V3| {
+        (
+            (p[0] / q).round() as i64,
+            (p[1] / q).round() as i64,
+            (p[2] / q).round() as i64,
+        )
+    };
+    let index_of = |pos: &[V3]| {
+        let mut index: HashMap<(i64, i64, i64), Vec<usize>> = HashMap::new();
+        for (i, &p) in pos.iter().enumerate() {
+            if p[0].is_finite() {
+                index.entry(key(p)).or_default().push(i);
+            }
+        }
+        index
+    };
+    let find = |index: &HashMap<(i64, i64, i64), Vec<usize>>, pos: &[V3], p: V3| {
+        let (kx, ky, kz) = key(p);
+        let mut out = Vec::new();
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for dz in -1..=1 {
+                    if let Some(v) = index.get(&(kx + dx, ky + dy, kz + dz)) {
+                        for &i in v {
+                            if (0..3).all(|c| (pos[i][c] - p[c]).abs() <= tol) {
+                                out.push(i);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        out
+    };
+    let joints = st.contact_joints();
+    let point_pos: Vec<V3> = map
+        .points
+        .iter()
+        .map(|pr| v3(&joints[pr.joint].points[pr.index].0))
+        .collect();
+    // Every column a point's force: its normal or one of its two shears.
+    let mut owned = vec![false; lp.num_cols()];
+    for c in base.pn.iter().chain(&base.pt).flatten() {
+        owned[*c] = true;
+    }
+    if owned.iter().any(|o| !o) {
+        return Err("a column that is not a point's force");
+    }
+    let ns = st.num_supports();
+    let mut mean = vec![([0.0; 3], 0usize); ns];
+    for (k, p) in point_pos.iter().enumerate() {
+        let j = &joints[map.points[k].joint];
+        for body in [j.a, j.b] {
+            if let Body::Support(s) = body {
+                for c in 0..3 {
+                    mean[s].0[c] += p[c];
+                }
+                mean[s].1 += 1;
+            }
+        }
+    }
+    let support_pos: Vec<V3> = mean
+        .iter()
+        .map(|&(p, n)| {
+            if n > 0 {
+                p.map(|v| v / n as f64)
+            } else {
+                [f64::NAN; 3]
+            }
+        })
+        .collect();
+    let (block_index, point_index, support_index) = (
+        index_of(&blocks),
+        index_of(&point_pos),
+        index_of(&support_pos),
+    );
+    // The candidates, as 3 × 3 matrices about the vertical line (xc, yc).
+    let mut candidates: Vec<[V3; 3]> = vec![
+        [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0]],
+    ];
+    if let Some(s0) = support_pos.iter().position(|p| p[0].is_finite()) {
+        let p0 = [support_pos[s0][0] - xc, support_pos[s0][1] - yc];
+        let r0 = p0[0].hypot(p0[1]);
+        if r0 > tol {
+            for (s, p) in support_pos.iter().enumerate() {
+                if s == s0 || !p[0].is_finite() || (p[2] - support_pos[s0][2]).abs() > tol {
+                    continue;
+                }
+                let d = [p[0] - xc, p[1] - yc];
+                if (d[0].hypot(d[1]) - r0).abs() > tol {
+                    continue;
+                }
+                let th = (p0[0] * d[1] - p0[1] * d[0]).atan2(p0[0] * d[0] + p0[1] * d[1]);
+                let (sn, cs) = th.sin_cos();
+                candidates.push([[cs, -sn, 0.0], [sn, cs, 0.0], [0.0, 0.0, 1.0]]);
+                if candidates.len() >= 2 + MAX_ROTATIONS {
+                    break;
+                }
+            }
+        }
+    }
+    let mul = |m: &[V3; 3], v: V3| -> V3 {
+        [0, 1, 2].map(|r| m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2])
+    };
+    let dot = |a: V3, b: V3| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let build = |m: &[V3; 3]| -> Option<Symmetry> {
+        let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        let place = |p: V3| {
+            let r = mul(m, [p[0] - xc, p[1] - yc, p[2]]);
+            [r[0] + xc, r[1] + yc, r[2]]
+        };
+        let mut sigma = vec![0; nb];
+        for (i, &b) in blocks.iter().enumerate() {
+            match find(&block_index, &blocks, place(b))[..] {
+                [j] => sigma[i] = j,
+                _ => return None,
+            }
+        }
+        let mut support: Vec<usize> = (0..ns).collect();
+        for (s, &p) in support_pos.iter().enumerate() {
+            if p[0].is_finite() {
+                match find(&support_index, &support_pos, place(p))[..] {
+                    [s2] => support[s] = s2,
+                    _ => return None,
+                }
+            }
+        }
+        let image_body = |b: Body| match b {
+            Body::Block(i) => Body::Block(sigma[i]),
+            Body::Support(s) => Body::Support(support[s]),
+        };
+        let frame = |k: usize| {
+            let j = &joints[map.points[k].joint];
+            let t = j.tangents.as_ref();
+            [
+                (base.pn[k], v3(&j.normal)),
+                (base.pt[2 * k], v3(&t[0])),
+                (base.pt[2 * k + 1], v3(&t[1])),
+            ]
+        };
+        let mut col = vec![Vec::new(); lp.num_cols()];
+        for (k, &p) in point_pos.iter().enumerate() {
+            let j = &joints[map.points[k].joint];
+            let (a2, b2) = (image_body(j.a), image_body(j.b));
+            let mut image = None;
+            for k2 in find(&point_index, &point_pos, place(p)) {
+                let j2 = &joints[map.points[k2].joint];
+                let sign = if (j2.a, j2.b) == (a2, b2) {
+                    1.0
+                } else if (j2.a, j2.b) == (b2, a2) {
+                    -1.0
+                } else {
+                    continue;
+                };
+                if image.is_some() {
+                    return None;
+                }
+                image = Some((k2, sign));
+            }
+            let (k2, sign) = image?;
+            // A force applied to b (and its opposite to a) maps to the image force applied to
+            // the image of b: the image joint's own b, or its a (sign -1).
+            let (from, to) = (frame(k), frame(k2));
+            for (c, e) in from {
+                let qe = mul(m, e).map(|v| sign * v);
+                for &(c2, e2) in &to {
+                    match (c, c2) {
+                        (Some(c), Some(c2)) => {
+                            let v = dot(qe, e2);
+                            if v.abs() > 1e-12 {
+                                col[c].push((c2, v));
+                            }
+                        }
+                        (None, None) => {}
+                        _ => return None,
+                    }
+                }
+            }
+            if let (Some(c), Some(c2)) = (base.pn[k], base.pn[k2]) {
+                if !col[c]
+                    .iter()
+                    .any(|&(j, v)| j == c2 && (v - 1.0).abs() <= 1e-9)
+                {
+                    return None;
+                }
+            }
+        }
+        let mut row = vec![Vec::new(); lp.num_rows()];
+        for (b, &b2) in sigma.iter().enumerate() {
+            for r in 0..3 {
+                for c in 0..3 {
+                    if m[c][r] != 0.0 {
+                        row[6 * b + r].push((6 * b2 + c, m[c][r]));
+                        row[6 * b + 3 + r].push((6 * b2 + 3 + c, det * m[c][r]));
+                    }
+                }
+            }
+        }
+        Some(Symmetry { col, row, support })
+    };
+    Ok(candidates.iter().filter_map(build).collect())
 }
 
 /// How the reaction ranges are solved.
@@ -1016,18 +1302,23 @@ fn ranges_from<S: Assembly>(
     // A mirror symmetry of the program: each side solved gives its mirror image's
     // (the mirrored support's side, checked by its certificate on that program) and each ray
     // its image, without a program (half the programs of a symmetric structure).
-    let mirror = match how {
-        RangeSolve::Sequence => Some(Mirror::of(st, &map, &base)),
-        RangeSolve::Independent => None,
+    // In 3D the rotations about a vertical line and the mirrors in vertical planes
+    // ([`isometries_3d`]; the 24 × 24 dome: 23 rotations and 24 mirrors, one support's sides
+    // solved give every other's).
+    let symmetries: Vec<Symmetry> = match how {
+        RangeSolve::Sequence => {
+            let found = match Mirror::of(st, &map, &base) {
+                Err("not planar") => isometries_3d(st, &map, &base),
+                m => m.map(|m| vec![m.into()]),
+            };
+            trace(
+                format_args!("ranges: symmetries {:?}", found.as_ref().map(|v| v.len())),
+                std::time::Instant::now(),
+            );
+            found.unwrap_or_default()
+        }
+        RangeSolve::Independent => vec![],
     };
-    trace(
-        format_args!(
-            "ranges: mirror symmetry {:?}",
-            mirror.as_ref().map(|m| m.as_ref().map(|_| "found"))
-        ),
-        std::time::Instant::now(),
-    );
-    let mirror = mirror.and_then(|m| m.ok());
     let mut mirrored: std::collections::HashMap<(usize, usize, usize), LpSolution> =
         std::collections::HashMap::new();
     let mut sequence = match how {
@@ -1132,7 +1423,7 @@ fn ranges_from<S: Assembly>(
                 } else if let Some(m) = image {
                     out.mirrored += 1;
                     trace(
-                        format_args!("range {side}: the mirror image of a side solved"),
+                        format_args!("range {side}: the image of a side solved under a symmetry"),
                         t0,
                     );
                     Some(m)
@@ -1338,7 +1629,7 @@ fn ranges_from<S: Assembly>(
                     // self-equilibrated shear: no normal force along it).
                     let opposite: Vec<f64> = d.iter().map(|v| -v).collect();
                     let back = lp::sequence::ray_violation(&base.lp, &opposite);
-                    if let Some(mi) = &mirror {
+                    for mi in &symmetries {
                         let image = mi.columns(&d);
                         let v = lp::sequence::ray_violation(&base.lp, &image);
                         if v <= lp::sequence::CERTIFICATE_TOLERANCE {
@@ -1379,12 +1670,17 @@ fn ranges_from<S: Assembly>(
                     ),
                     t0,
                 );
-                if let (Some(mi), LpStatus::Optimal) = (&mirror, sol.status) {
-                    let s2 = mi.support[s];
-                    if s2 > s || (s2 == s && e == 0) {
-                        let (cn2, ct2) = &coefficients[s2][c];
-                        if let Some((flipped, m)) = mi.optimum(&sol, &cost, &cost_of(cn2, ct2)) {
-                            mirrored.insert((s2, c, if flipped { 1 - e } else { e }), m);
+                if sol.status == LpStatus::Optimal {
+                    for mi in &symmetries {
+                        let s2 = mi.support[s];
+                        if s2 > s || (s2 == s && e == 0) {
+                            let (cn2, ct2) = &coefficients[s2][c];
+                            if let Some((flipped, m)) = mi.optimum(&sol, &cost, &cost_of(cn2, ct2))
+                            {
+                                mirrored
+                                    .entry((s2, c, if flipped { 1 - e } else { e }))
+                                    .or_insert(m);
+                            }
                         }
                     }
                 }

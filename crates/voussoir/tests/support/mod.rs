@@ -201,3 +201,38 @@ pub fn dome_structure(courses: usize, segments: usize, crown_load: f64) -> Struc
 pub fn crowned_dome(courses: usize, segments: usize) -> Structure3d {
     dome_structure(courses, segments, 10.0)
 }
+
+/// Every end of `warm` equal to the same end of `cold` to `rel` of the largest end; both
+/// certified.
+pub fn same_ranges(
+    warm: &voussoir::result::safety::ReactionRanges,
+    cold: &voussoir::result::safety::ReactionRanges,
+    rel: f64,
+) {
+    assert!(warm.certified() && cold.certified());
+    let scale = cold
+        .ranges
+        .iter()
+        .flat_map(|r| r.components.iter())
+        .flat_map(|c| [c.min, c.max])
+        .flatten()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    assert_eq!(warm.ranges.len(), cold.ranges.len());
+    for (w, c) in warm.ranges.iter().zip(&cold.ranges) {
+        assert_eq!(w.support, c.support);
+        for (a, b) in w.components.iter().zip(&c.components) {
+            for (x, y) in [(a.min, b.min), (a.max, b.max)] {
+                match (x, y) {
+                    (Some(x), Some(y)) => assert!(
+                        (x - y).abs() <= rel * scale,
+                        "{} {}: {x} {y}",
+                        w.support,
+                        a.component
+                    ),
+                    (None, None) => {}
+                    _ => panic!("{} {}: {x:?} against {y:?}", w.support, a.component),
+                }
+            }
+        }
+    }
+}

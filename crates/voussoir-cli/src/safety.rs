@@ -312,5 +312,12 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             a.why.as_ref().map_or(String::new(), |w| format!("; {w}"))
         );
     }
+    if r.reaction_ends_by_symmetry > 0 {
+        let _ = writeln!(
+            s,
+            "  reaction ranges: {} ends by the structure's symmetry (images of ends solved, each certified on its own program)",
+            r.reaction_ends_by_symmetry
+        );
+    }
     s
 }

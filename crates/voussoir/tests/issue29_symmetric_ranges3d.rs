@@ -92,3 +92,23 @@ fn issue29_item4_a_symmetry_broken_by_the_loads_is_refused_by_the_certificates()
         .fold((f64::INFINITY, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
     assert!(hi - lo > 1e-3 * hi, "{maxima:?}");
 }
+
+#[test]
+fn issue29_item4_safety_reports_the_ends_given_by_symmetry() {
+    use voussoir::analysis::safety::{safety, SafetyOptions};
+    let segments = 12;
+    let st = Structure3d::new(&dome_model(4, segments, 0.0), BuildOptions::default()).unwrap();
+    let r = safety(&st, &SafetyOptions::default()).unwrap();
+    assert!(r.stands);
+    // Every support but the first: its two vertical ends.
+    assert!(
+        r.reaction_ends_by_symmetry >= 2 * (segments - 1),
+        "{}",
+        r.reaction_ends_by_symmetry
+    );
+    let cold = reaction_ranges_by(&st, &SolverOptions::default(), RangeSolve::Independent).unwrap();
+    for (a, b) in r.reactions.iter().zip(&cold.ranges) {
+        let (x, y) = (a.component("fz").unwrap(), b.component("fz").unwrap());
+        assert!((x.max.unwrap() - y.max.unwrap()).abs() <= 1e-6 * y.max.unwrap());
+    }
+}

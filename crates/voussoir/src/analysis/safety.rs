@@ -1041,8 +1041,8 @@ fn isometries_3d<S: Assembly>(
         let j = &joints[map.points[k].joint];
         for body in [j.a, j.b] {
             if let Body::Support(s) = body {
-                for c in 0..3 {
-                    mean[s].0[c] += p[c];
+                for (m, v) in mean[s].0.iter_mut().zip(p) {
+                    *m += v;
                 }
                 mean[s].1 += 1;
             }
@@ -1180,10 +1180,10 @@ fn isometries_3d<S: Assembly>(
         let mut row = vec![Vec::new(); lp.num_rows()];
         for (b, &b2) in sigma.iter().enumerate() {
             for r in 0..3 {
-                for c in 0..3 {
-                    if m[c][r] != 0.0 {
-                        row[6 * b + r].push((6 * b2 + c, m[c][r]));
-                        row[6 * b + 3 + r].push((6 * b2 + 3 + c, det * m[c][r]));
+                for (c, mc) in m.iter().enumerate() {
+                    if mc[r] != 0.0 {
+                        row[6 * b + r].push((6 * b2 + c, mc[r]));
+                        row[6 * b + 3 + r].push((6 * b2 + 3 + c, det * mc[r]));
                     }
                 }
             }
@@ -1751,13 +1751,13 @@ pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult>
     drop(kind);
     let stands = fraction.is_some();
     let factor = fraction.and_then(|f| (f > 0.0).then_some(1.0 / f));
-    let reactions = if stands && opts.reactions {
+    let (reactions, by_symmetry) = if stands && opts.reactions {
         let _kind = lp::ProgramKind::set("reaction ranges", "");
         let r = ranges_from(st, &opts.solver, RangeSolve::Sequence, start)?;
         solves += r.solves;
-        r.ranges
+        (r.ranges, r.mirrored)
     } else {
-        vec![]
+        (vec![], 0)
     };
     let message = match (stands, factor) {
         (false, _) => {
@@ -1778,6 +1778,7 @@ pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult>
         tolerance: opts.tolerance,
         reactions,
         solves,
+        reaction_ends_by_symmetry: by_symmetry,
         answered: vec![],
     })
 }

@@ -57,6 +57,12 @@ pub struct SafetyResult {
     pub reactions: Vec<AdmissibleReactionRange>,
     /// LP solves spent.
     pub solves: usize,
+    /// Reaction range ends given by a symmetry of the structure without a program of their
+    /// own: the image of an end solved for another support (a mirror in 2D; a rotation about a
+    /// vertical axis or a mirror in a vertical plane in 3D), each certified on its own program
+    /// (docs/safety.md).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub reaction_ends_by_symmetry: usize,
     /// Which method answered each kind of program, and why where it is not the one asked for
     /// (a warm start, a fallback, or a kind that goes to a method of its own by design:
     /// docs/safety.md); empty (and not written) where it was not gathered.
@@ -139,4 +145,8 @@ impl ReactionRanges {
     pub fn certified(&self) -> bool {
         self.worst.ok() && self.worst_ray <= lp::sequence::CERTIFICATE_TOLERANCE
     }
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }

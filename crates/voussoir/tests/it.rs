@@ -54,6 +54,8 @@ mod issue29_cert025;
 mod issue29_crossover;
 #[path = "issue29_curve_friction3d.rs"]
 mod issue29_curve_friction3d;
+#[path = "issue29_curve_warm2d.rs"]
+mod issue29_curve_warm2d;
 #[path = "issue29_dome2.rs"]
 mod issue29_dome2;
 #[path = "issue29_dome48.rs"]

@@ -85,6 +85,11 @@ pub struct CapacityOptions {
     /// (the fixed-point iteration of [`crate::analysis::nonassociative`]); None: associative.
     pub nonassociative: Option<crate::analysis::nonassociative::NonAssociativeOptions>,
     pub solver: SolverOptions,
+    /// The method of a step whose program has the open points of the step before (only its
+    /// coefficients changed), warm from that step's basis (with `hot_start`); `None`: every
+    /// step by `solver`'s method. The request layer sets it from the solver policy
+    /// ([`lp::policy::curve_warm_method`]) where no method is named.
+    pub warm_method: Option<lp::Method>,
     /// The canonical selection (docs/canonical.md) of the settlement mechanism, which deforms
     /// the structure (the mechanism stages only); `None`: the solver's own. Only with the
     /// inscribed polygons and associative friction.
@@ -106,6 +111,7 @@ impl Default for CapacityOptions {
             facets: DEFAULT_FACETS,
             nonassociative: None,
             solver: SolverOptions::default(),
+            warm_method: None,
             canonical: None,
             canonical_steps: false,
         }
@@ -249,6 +255,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let settlement_cracks = path.unit.cracks(&srep.joints, &srep.open, &swidths);
 
     let mut warm = WarmLimit::new(&opts.solver, opts.hot_start)
+        .with_warm_method(opts.warm_method)
         .with_crushing(opts.crushing)
         .with_nonassociative(opts.nonassociative);
     let mut curve = Vec::with_capacity(opts.steps + 1);
@@ -268,8 +275,21 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
         // columns, same options, no starting basis), so λ(0) is the plain limit analysis
         // exactly, and its basis starts the next step.
+        let clock = std::time::Instant::now();
         let mut sol = warm.solve(&dst, &map)?;
+        let solved_in = clock.elapsed().as_secs_f64();
         let mut certificate = step_certificate(&dst, &map, &sol, opts)?;
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!(
+                "trace: capacity step {i} s {s:.6} {:?} λ {:?} by {:?} it {} in {solved_in:.3} s; certificate {:?} in {:.3} s",
+                sol.status,
+                sol.lambda,
+                sol.solver.method,
+                sol.iterations,
+                certificate.as_ref().map(|c| (c.kind, c.ok)),
+                clock.elapsed().as_secs_f64() - solved_in
+            );
+        }
         // A multiplier whose certificate does not hold (the warm simplex stopped short: the
         // LACT3 portal's steps at 0.4 and 0.45 cm, gap 6e-7 and 6e-6) is solved again from
         // scratch, by the method asked for and then by Clarabel; the first certified answer

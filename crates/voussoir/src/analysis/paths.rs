@@ -29,6 +29,11 @@ pub struct WarmLimit {
     /// Solves whose non-associative friction iteration did not converge.
     pub unconverged: usize,
     basis: Option<lp::Basis>,
+    /// The method of a program whose bounds are those of the program before
+    /// ([`WarmLimit::with_warm_method`]).
+    warm_method: Option<lp::Method>,
+    /// The column bounds of the last program solved warm (its open points).
+    bounds: Option<[Vec<f64>; 2]>,
     /// LP solves and simplex iterations so far.
     pub solves: usize,
     pub iterations: i64,
@@ -44,6 +49,8 @@ impl WarmLimit {
             nonassociative: None,
             unconverged: 0,
             basis: None,
+            warm_method: None,
+            bounds: None,
             solves: 0,
             iterations: 0,
         }
@@ -53,6 +60,16 @@ impl WarmLimit {
     /// the inscribed polygon.
     pub fn with_crushing(mut self, crushing: Crushing) -> WarmLimit {
         self.crushing = crushing;
+        self
+    }
+
+    /// Solve a program whose column bounds are those of the program before (a
+    /// capacity curve's steps after the first settled one: the same open points, only the
+    /// coefficients changed) by `method`, from the basis the one before left; every other
+    /// program by the method asked for. `None`: every program by the method asked for (the
+    /// solver policy's [`lp::policy::curve_warm_method`]).
+    pub fn with_warm_method(mut self, method: Option<lp::Method>) -> WarmLimit {
+        self.warm_method = method;
         self
     }
 
@@ -91,8 +108,23 @@ impl WarmLimit {
             let (dead, live) = load_vectors(st)?;
             let fp = programs::limit_force_program_fixed_topology(map, &dead, &live);
             let _kind = lp::ProgramKind::set("steps", "");
-            let sol = lp::solve_warm(&fp.lp, &self.solver, &mut self.basis)?;
-            limit_solution(map, &fp, &live, &sol, self.solver.info())
+            // A program with the column bounds of the one before (the same open points fixed
+            // at zero: only coefficients and right-hand sides changed, so that its basis stays
+            // dual feasible where the geometry moved little) goes on from that basis by the
+            // warm method where one is set; every other one by the method asked for.
+            let bounds = [fp.lp.col_lower.clone(), fp.lp.col_upper.clone()];
+            let o = match self.warm_method {
+                Some(method) if self.basis.is_some() && self.bounds.as_ref() == Some(&bounds) => {
+                    SolverOptions {
+                        method,
+                        ..self.solver
+                    }
+                }
+                _ => self.solver,
+            };
+            self.bounds = Some(bounds);
+            let sol = lp::solve_warm(&fp.lp, &o, &mut self.basis)?;
+            limit_solution(map, &fp, &live, &sol, o.info())
         } else {
             solve_limit(st, map, &self.solver)?
         };

@@ -123,6 +123,29 @@ pub const FRICTION_SIMPLEX_MAX_BLOCKS_2D: usize = 300;
 /// 59 CPU s); the boundary between is not measured).
 pub const CURVE_SIMPLEX_MAX_BLOCKS_3D: usize = 300;
 
+/// The method of a capacity curve's step ([`Purpose::Curve`]) whose program has the open
+/// points of the step before — the steps after the first settled one, whose programs differ
+/// only in their coefficients — warm from that step's basis, where the user named no method;
+/// `None`: every step by [`default_method`]. A 2D curve above [`SIMPLEX_MAX_BLOCKS_2D`]
+/// without friction or cones: the dual simplex (its first program and the first settled one
+/// stay with [`default_method`], HiGHS's interior point with crossover, whose vertex starts the
+/// next). At or below the bound the dual simplex already solves every step warm
+/// ([`default_method`]); 3D curves are the 3D rows' (not changed here).
+///
+/// Measured on the 0.5 m façade in running bond (2,672 blocks, `capacity --steps 20
+/// --profile uniform:11,22,-0.2`; docs/performance.md, "Façade capacity curves (session
+/// 20)"): a step by the interior point from scratch 8.4–25 CPU s, the same step by the warm dual
+/// simplex about 1.4 CPU s (0 or 1 iterations: the basis of the step before stays optimal),
+/// λ equal to 1e-11 relative.
+pub fn curve_warm_method(class: &ProblemClass) -> Option<Method> {
+    (class.purpose == Purpose::Curve
+        && class.dim == 2
+        && class.blocks > SIMPLEX_MAX_BLOCKS_2D
+        && !class.friction
+        && !class.cones)
+        .then_some(Method::DualSimplex)
+}
+
 /// Degrees of freedom above which the canonical selection's extremes from scratch (the least
 /// and largest value of a generic functional on a face, solved by the dual simplex with
 /// presolve) go to HiGHS's interior point with crossover, not to the primal simplex, where the
@@ -153,6 +176,7 @@ pub fn extremes_fallback(dofs: usize) -> Option<Method> {
 /// | canonical stage | dual simplex | the stages need vertices and bases |
 /// | 2D with friction, > 300 blocks (optimisations) | HiGHS IPM + crossover | 30 × 20 wall (610 blocks), μ = 0.6: `limit` 8.5 CPU s (dual simplex 34.9, Clarabel 0.7), `settle --raw` 7.1 (21.4, Clarabel 8.1 not certified: gap 2.2e-6); 60 × 30 wall: `settle --raw` 68.8 (349.5, 49.1); a vertex, certified |
 /// | 2D, ≤ 2,000 blocks | dual simplex | vertex solutions (crisp hinges); as fast as any on these sizes |
+/// | 2D capacity curve ([`Purpose::Curve`]), > 2,000 blocks, no friction | HiGHS IPM + crossover for the first program and the first settled one, then the dual simplex warm from step to step ([`curve_warm_method`]) | session 20: 0.5 m façade in running bond (2,672 blocks), 21 steps: 44.1 CPU s (every step by the IPM: step 0 4.4, step 1 8.4, step 2 about 25; a warm step about 1.4, 0 or 1 iterations), λ the same to 1e-11 |
 /// | 2D, > 2,000 blocks | HiGHS IPM + crossover | 80 × 40 wall (3,220 blocks): `limit` 11.8 CPU s (dual simplex > 79, Clarabel not certified: duality gap 1.0, answered by the IPM after it), `settle --raw` 6.3 (dual simplex 8.0, Clarabel 8.5 with its fallback); a vertex |
 /// | 3D capacity curve ([`Purpose::Curve`]), ≤ 300 blocks, no friction | dual simplex, warm from step to step | session 15: README vault 21 steps 1.3 CPU s (Clarabel 1.8, HiGHS IPM 6.5–62: it stalls on some settled geometries), README dome 1.2 (Clarabel 2.2, IPM 5.3); a vertex, as the IPM's crossover gives |
 /// | 3D capacity curve, > 300 blocks or with friction | Clarabel | README vault, μ = 0.6, 5 steps: 11.4 CPU s (dual simplex 155.9); README dome, μ = 0.5, 10 steps: 14.2 (37.3); 24 × 24 dome (553 blocks): 23.7–35.6 CPU s; the dual simplex's first program alone > 59, the IPM's curve > 60, the IPM's first program then the warm dual simplex > 119 |
@@ -438,9 +462,17 @@ mod tests {
             ..curve(3, 192, false)
         };
         assert_eq!(default_method(&frictional), Method::Clarabel);
-        // 2D curves as 2D optimisations: the dual simplex up to 2,000 blocks, the IPM above.
+        // 2D curves as 2D optimisations: the dual simplex up to 2,000 blocks, the IPM above
+        // for the first program and the first settled one, and the warm dual simplex after.
         assert_eq!(default_method(&curve(2, 182, false)), Method::DualSimplex);
+        assert_eq!(curve_warm_method(&curve(2, 182, false)), None);
         assert_eq!(default_method(&curve(2, 2_654, false)), Method::Ipm);
+        assert_eq!(
+            curve_warm_method(&curve(2, 2_654, false)),
+            Some(Method::DualSimplex)
+        );
+        assert_eq!(curve_warm_method(&curve(2, 2_654, true)), None);
+        assert_eq!(curve_warm_method(&curve(3, 192, false)), None);
         // A single 3D optimisation (limit, tilt) keeps the IPM with crossover (a vertex).
         let limit3 = ProblemClass {
             blocks: 553,

@@ -160,6 +160,13 @@ impl CapacityRequest {
             } else {
                 req.solver.options(class)
             },
+            // The policy's warm method for the steps after the first settled one, unless a
+            // method is named (then every step by it).
+            warm_method: if self.non_associative || req.solver.method.is_some() {
+                None
+            } else {
+                crate::lp::policy::curve_warm_method(class)
+            },
             canonical: self.canonical(req, dims).then(super::mechanism_options),
             canonical_steps: self.canonical_steps,
             ..CapacityOptions::default()

@@ -3,7 +3,7 @@
 //! the summaries and drawings count and join what they show consistently.
 
 use crate::common;
-use crate::common::{run, voussoir};
+use crate::common::{gen_model, run, voussoir};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
@@ -120,7 +120,7 @@ fn issue28_item1_tilt_direction_in_3d() {
     assert!(text.contains("towards −x (azimuth 180°)"), "{text}");
 
     // The issue's L-shaped walls: −x is the --azimuth 180 answer (51.07°), not the +x one.
-    run(&d, &["gen", "walls", "--plan", "L", "-o", "walls.json"]);
+    gen_model(&d, "walls --plan L -o walls.json");
     let minus = angle(&tilt_json(&d, "walls.json", &["--direction=-x"]));
     let az180 = angle(&tilt_json(&d, "walls.json", &["--azimuth", "180"]));
     let plus = angle(&tilt_json(&d, "walls.json", &[]));
@@ -132,7 +132,7 @@ fn issue28_item1_tilt_direction_in_3d() {
 #[test]
 fn issue28_item1_tilt_direction_with_azimuth_refused() {
     let d = tmpdir("tiltconflict");
-    run(&d, &["gen", "block", "-o", "b.json"]);
+    gen_model(&d, "block -o b.json");
     // Issue 32: `--azimuth` is another name of `--direction`; both at once is one flag twice.
     for dir in ["-x", "+x"] {
         refused(
@@ -404,49 +404,23 @@ fn issue28_item4c_gen_live_values_checked() {
     }
     // The accepted values do what they say: the façade's horizontal load is each block's
     // weight along +x; the wall's full load is 1 kN/m² on each of the top course's units.
-    run(
-        &d,
-        &[
-            "gen",
-            "facade",
-            "--element",
-            "2",
-            "--live",
-            "horizontal",
-            "-o",
-            "f.json",
-        ],
-    );
+    gen_model(&d, "facade --element 2 --live horizontal -o f.json");
     let f = read_json(&d.join("f.json"));
     assert_eq!(
         f["loads"]["live"],
         json!([{"type": "body", "coefficients": [1.0, 0.0]}])
     );
-    run(&d, &["gen", "facade", "--element", "2", "-o", "f0.json"]);
+    gen_model(&d, "facade --element 2 -o f0.json");
     let f0 = read_json(&d.join("f0.json"));
     assert!(f0["loads"]["live"].as_array().is_none_or(|l| l.is_empty()));
-    run(
-        &d,
-        &[
-            "gen",
-            "wall",
-            "--courses",
-            "3",
-            "--units",
-            "4",
-            "--live",
-            "full",
-            "-o",
-            "w.json",
-        ],
-    );
+    gen_model(&d, "wall --courses 3 --units 4 --live full -o w.json");
     let w = read_json(&d.join("w.json"));
     let live = w["loads"]["live"].as_array().unwrap();
     // Course 3 (odd courses full): 4 whole units.
     assert_eq!(live.len(), 4, "{live:?}");
     assert!(live.iter().all(|l| l["type"] == "edge" && l["q"] == 1.0));
     // The arch keeps its left/right half-span loads.
-    run(&d, &["gen", "arch", "--live", "left", "-o", "a.json"]);
+    gen_model(&d, "arch --live left -o a.json");
     let a = read_json(&d.join("a.json"));
     assert!(!a["loads"]["live"].as_array().unwrap().is_empty());
 }
@@ -456,7 +430,7 @@ fn issue28_item4d_mesh_live_on_obj() {
     let d = tmpdir("meshlive");
     // A 1 × 1 × 2 box on a base: the tilting-table load W·[1, 0, 0] overturns it at
     // λ = b/h = 0.5.
-    run(&d, &["gen", "block", "-o", "b.json"]);
+    gen_model(&d, "block -o b.json");
     run(&d, &["export", "b.json", "-o", "b.obj"]);
     let lambda = |extra: &[&str]| -> f64 {
         let mut args = vec!["limit", "b.obj", "--json"];
@@ -532,7 +506,7 @@ fn issue28_item4d_mesh_live_on_obj() {
 #[test]
 fn issue28_item4e_vtk_directory_refused() {
     let d = tmpdir("vtkdir");
-    run(&d, &["gen", "block", "-o", "b.json"]);
+    gen_model(&d, "block -o b.json");
     std::fs::create_dir_all(d.join("sub")).unwrap();
     for target in ["out.vtm/", "out.vtu/", "sub", "sub/.", "sub/..", "."] {
         refused(
@@ -549,7 +523,7 @@ fn issue28_item4e_vtk_directory_refused() {
         &["r.json", "out.txt"],
     );
     // Refused before any analysis, on a 2D model too.
-    run(&d, &["gen", "arch", "--live", "full", "-o", "a.json"]);
+    gen_model(&d, "arch --live full -o a.json");
     refused(
         &d,
         &["limit", "a.json", "--vtk", "out.vtm/", "-o", "r.json"],
@@ -593,7 +567,7 @@ fn issue28_item11a_summary_counts_hinged_joints() {
     let d = tmpdir("hinges");
     // 3D: a vault under a full live load: a four-hinge mechanism, each hinge a line of two
     // points across the vault's depth.
-    run(&d, &["gen", "vault", "--live", "full", "-o", "v.json"]);
+    gen_model(&d, "vault --live full -o v.json");
     let text = run(&d, &["limit", "v.json", "-o", "r.json", "--svg", "r.svg"]);
     let r = read_json(&d.join("r.json"));
     let joints = count_state(&r, "hinge");
@@ -642,7 +616,7 @@ fn issue28_item11a_summary_counts_hinged_joints() {
 
     // 2D: the paper's arch under a load on its left half: Heyman's four-hinge mechanism, one
     // point each (no separate point count).
-    run(&d, &["gen", "arch", "--live", "left", "-o", "a.json"]);
+    gen_model(&d, "arch --live left -o a.json");
     let text = run(&d, &["limit", "a.json", "-o", "ra.json", "--svg", "ra.svg"]);
     let ra = read_json(&d.join("ra.json"));
     assert_eq!(count_state(&ra, "hinge"), 4);

@@ -9,7 +9,7 @@
 //! α = atan(b/h); its weight is γ·b·h (·d); a rotation of 0.5° is 8.7266 mrad.
 
 use crate::common;
-use crate::common::{json_file as json, refusal as refused, run};
+use crate::common::{gen_model, json_file as json, refusal as refused, run};
 use std::path::{Path, PathBuf};
 
 fn tmpdir(name: &str) -> PathBuf {
@@ -125,19 +125,7 @@ const BOX_2D: &str = r#"{
 fn issue28_item6_plot_redraws_every_2d_result() {
     let d = tmpdir("2d");
     std::fs::write(d.join("box.json"), BOX_2D).unwrap();
-    run(
-        &d,
-        &[
-            "gen",
-            "arch",
-            "--voussoirs",
-            "16",
-            "--live",
-            "left",
-            "-o",
-            "arch.json",
-        ],
-    );
+    gen_model(&d, "arch --voussoirs 16 --live left -o arch.json");
 
     // The model: 16 blocks.
     assert_eq!(blocks_2d(&replot(&d, "arch.json")), 16);
@@ -245,7 +233,7 @@ fn issue28_item6_plot_redraws_every_2d_result() {
     assert!(svg.contains("the structure stands"));
 
     // Identify (the issue's observations on the paper's arch): 64 blocks, 3 observed cracks.
-    run(&d, &["gen", "arch", "--live", "none", "-o", "parch.json"]);
+    gen_model(&d, "arch --live none -o parch.json");
     std::fs::write(
         d.join("obs.json"),
         r#"{"tolerance": 1e-4, "cracks": [{"at": [-2.562, 1.9], "opening": 0.00125}, {"at": [0, 2.86], "opening": 0.0011}, {"at": [2.562, 1.9], "opening": 0.0004}]}"#,
@@ -275,22 +263,8 @@ fn issue28_item6_plot_redraws_every_2d_result() {
 #[test]
 fn issue28_item6_plot_redraws_every_3d_result() {
     let d = tmpdir("3d");
-    run(&d, &["gen", "block", "-o", "box.json"]);
-    run(
-        &d,
-        &[
-            "gen",
-            "vault",
-            "--voussoirs",
-            "8",
-            "--rings",
-            "2",
-            "--live",
-            "left",
-            "-o",
-            "v.json",
-        ],
-    );
+    gen_model(&d, "block -o box.json");
+    gen_model(&d, "vault --voussoirs 8 --rings 2 --live left -o v.json");
 
     // The models: 1 and 16 blocks (a 3D model was refused: "unknown field `faces`").
     assert_eq!(blocks_3d(&replot(&d, "box.json")), 1);
@@ -404,21 +378,7 @@ fn issue28_item6_plot_redraws_every_3d_result() {
 #[test]
 fn issue28_item6_capacity_draws_a_3d_curve() {
     let d = tmpdir("cap3d");
-    run(
-        &d,
-        &[
-            "gen",
-            "vault",
-            "--voussoirs",
-            "8",
-            "--rings",
-            "2",
-            "--live",
-            "left",
-            "-o",
-            "v.json",
-        ],
-    );
+    gen_model(&d, "vault --voussoirs 8 --rings 2 --live left -o v.json");
     let out = run(
         &d,
         &[
@@ -487,19 +447,7 @@ fn issue28_item6_capacity_draws_a_3d_curve() {
 #[test]
 fn issue28_item10_a_rotation_driven_capacity_curve_is_in_mrad() {
     let d = tmpdir("rot");
-    run(
-        &d,
-        &[
-            "gen",
-            "arch",
-            "--voussoirs",
-            "16",
-            "--live",
-            "left",
-            "-o",
-            "arch.json",
-        ],
-    );
+    gen_model(&d, "arch --voussoirs 16 --live left -o arch.json");
     let out = run(
         &d,
         &[
@@ -547,21 +495,7 @@ fn issue28_item10_a_rotation_driven_capacity_curve_is_in_mrad() {
     let e = refused(&d, &["plot", "t.json", "r.json", "-o", "both.svg"]);
     assert!(e.contains("do not share an axis"), "{e}");
     // 3D: a rotation about y of 0.5°.
-    run(
-        &d,
-        &[
-            "gen",
-            "vault",
-            "--voussoirs",
-            "8",
-            "--rings",
-            "2",
-            "--live",
-            "left",
-            "-o",
-            "v.json",
-        ],
-    );
+    gen_model(&d, "vault --voussoirs 8 --rings 2 --live left -o v.json");
     let out = run(
         &d,
         &[
@@ -586,19 +520,7 @@ fn issue28_item10_a_rotation_driven_capacity_curve_is_in_mrad() {
 #[test]
 fn issue28_item11_capacity_prints_every_step_or_says_which() {
     let d = tmpdir("rows");
-    run(
-        &d,
-        &[
-            "gen",
-            "arch",
-            "--voussoirs",
-            "16",
-            "--live",
-            "left",
-            "-o",
-            "arch.json",
-        ],
-    );
+    gen_model(&d, "arch --voussoirs 16 --live left -o arch.json");
     let rows = |out: &str| -> Vec<f64> {
         let start = out.lines().position(|l| l.contains("s (cm)")).unwrap() + 1;
         out.lines()
@@ -650,7 +572,7 @@ fn issue28_item11_capacity_prints_every_step_or_says_which() {
 #[test]
 fn issue28_item4_capacity_honours_the_exact_friction_cone() {
     let d = tmpdir("cone");
-    run(&d, &["gen", "block", "--azimuth", "22.5", "-o", "b.json"]);
+    gen_model(&d, "block --azimuth 22.5 -o b.json");
     let lambda0 = |extra: &[&str]| -> f64 {
         let mut args = vec![
             "capacity",
@@ -697,7 +619,7 @@ fn issue28_item4_capacity_honours_the_exact_friction_cone() {
 #[test]
 fn issue28_item6_plot_refuses_flags_that_do_not_apply() {
     let d = tmpdir("flags");
-    run(&d, &["gen", "block", "-o", "b3.json"]);
+    gen_model(&d, "block -o b3.json");
     std::fs::write(d.join("b2.json"), BOX_2D).unwrap();
     run(&d, &["limit", "b3.json", "-o", "l3.json"]);
     run(&d, &["limit", "b2.json", "-o", "l2.json"]);

@@ -10,7 +10,7 @@
 //! centres of pressure in the results' JSON.
 
 use crate::common;
-use crate::common::{json_file as json, refusal as refused, run};
+use crate::common::{gen_model, json_file as json, refusal as refused, run};
 use std::path::{Path, PathBuf};
 
 fn tmpdir(name: &str) -> PathBuf {
@@ -212,24 +212,9 @@ fn view_of(svg: &str) -> (f64, f64) {
 
 /// The dome of the issue and one settling support, `base2`, with its centroid.
 fn dome(dir: &Path) -> [f64; 3] {
-    run(
+    gen_model(
         dir,
-        &[
-            "gen",
-            "dome",
-            "--radius",
-            "5",
-            "--thickness",
-            "0.3",
-            "--courses",
-            "8",
-            "--segments",
-            "16",
-            "--oculus",
-            "10",
-            "-o",
-            "dome.json",
-        ],
+        "dome --radius 5 --thickness 0.3 --courses 8 --segments 16 --oculus 10 -o dome.json",
     );
     let m = json(&dir.join("dome.json"));
     let s = m["supports"]
@@ -360,7 +345,7 @@ fn issue32_item3_view_flag_is_honoured() {
 #[test]
 fn issue32_item3_view_on_a_2d_model_is_refused() {
     let d = tmpdir("view-2d");
-    run(&d, &["gen", "arch", "--live", "full", "-o", "arch.json"]);
+    gen_model(&d, "arch --live full -o arch.json");
     for args in [
         vec!["limit", "arch.json", "--view", "30", "--svg", "a.svg"],
         vec![
@@ -407,24 +392,9 @@ fn assert_legend_fits(svg: &str, what: &str) {
 fn issue32_item5_legend_fits_within_the_figure() {
     let d = tmpdir("legend");
     // The U walls of the issue ("live load × λ (largest 0.288" was cut off) and the 2D arch.
-    run(
+    gen_model(
         &d,
-        &[
-            "gen",
-            "walls",
-            "--plan",
-            "U",
-            "--length",
-            "2",
-            "--return-length",
-            "1",
-            "--height",
-            "1.2",
-            "--thickness",
-            "0.2",
-            "-o",
-            "walls.json",
-        ],
+        "walls --plan U --length 2 --return-length 1 --height 1.2 --thickness 0.2 -o walls.json",
     );
     run(
         &d,
@@ -438,7 +408,7 @@ fn issue32_item5_legend_fits_within_the_figure() {
         ],
     );
     assert_legend_fits(&read(&d.join("walls.svg")), "3D walls, 1000 px");
-    run(&d, &["gen", "arch", "--live", "full", "-o", "arch.json"]);
+    gen_model(&d, "arch --live full -o arch.json");
     run(
         &d,
         &[
@@ -490,10 +460,7 @@ fn issue32_item5_legend_states_the_factored_live_load() {
     let d = tmpdir("factored");
     // A block b × d × h = 0.5 × 0.4 × 1.5 m, γ = 18 kN/m³, with a horizontal live load equal to
     // its weight W = 5.4 kN: it overturns at λ = b/h = 1/3, so λ·W = 1.8 kN.
-    run(
-        &d,
-        &["gen", "block", "--size", "0.5,0.4,1.5", "-o", "block.json"],
-    );
+    gen_model(&d, "block --size 0.5,0.4,1.5 -o block.json");
     run(&d, &["limit", "block.json", "--svg", "block.svg"]);
     let (lambda, w, f, text) = factored(&read(&d.join("block.svg")));
     assert!(text.starts_with("live load × λ at collapse"), "{text}");
@@ -504,7 +471,7 @@ fn issue32_item5_legend_states_the_factored_live_load() {
     assert!((w - 5.4).abs() <= half_ulp(5.4, 3), "{text}");
     assert!((f - 1.8).abs() <= half_ulp(1.8, 3), "{text}");
     // 2D: the arch's λ and largest live load from its result; the product as printed.
-    run(&d, &["gen", "arch", "--live", "full", "-o", "arch.json"]);
+    gen_model(&d, "arch --live full -o arch.json");
     run(
         &d,
         &["limit", "arch.json", "-o", "r.json", "--svg", "arch.svg"],
@@ -538,10 +505,7 @@ fn issue32_item5_tilt_picture_states_the_angle() {
     let d = tmpdir("tilt");
     // The block on a tilting table towards azimuth 90° (+y, where it is d = 0.4 m deep):
     // α = atan(d/h) = atan(0.4/1.5) = 14.931°, λ = tan α = 0.2667, λ·W = 1.44 kN.
-    run(
-        &d,
-        &["gen", "block", "--size", "0.5,0.4,1.5", "-o", "block.json"],
-    );
+    gen_model(&d, "block --size 0.5,0.4,1.5 -o block.json");
     run(
         &d,
         &[
@@ -601,19 +565,7 @@ fn issue32_item5_pressure_points_flag_removes_the_dots() {
     let d = tmpdir("pressure");
     // A 2D wall of 10 courses × 8 units on 8 foundation segments, one of which settles: the
     // centres of pressure are dots on their own (no chain of an arch), more than a hundred.
-    run(
-        &d,
-        &[
-            "gen",
-            "wall",
-            "--courses",
-            "10",
-            "--units",
-            "8",
-            "-o",
-            "wall.json",
-        ],
-    );
+    gen_model(&d, "wall --courses 10 --units 8 -o wall.json");
     run(
         &d,
         &[
@@ -645,20 +597,9 @@ fn issue32_item5_pressure_points_flag_removes_the_dots() {
     assert_eq!(plot("r.json", Some("off")), 0);
     assert_eq!(plot("r.json", None), 0);
     // A small wall keeps them by default (at most 60).
-    run(
+    gen_model(
         &d,
-        &[
-            "gen",
-            "wall",
-            "--courses",
-            "4",
-            "--units",
-            "3",
-            "--live",
-            "horizontal",
-            "-o",
-            "small.json",
-        ],
+        "wall --courses 4 --units 3 --live horizontal -o small.json",
     );
     run(
         &d,
@@ -755,20 +696,9 @@ fn issue32_item5_quantile_labels_stay_off_the_exceedance_curve() {
     let d = tmpdir("quantile");
     // The sweep of docs/sweep.md, smaller: its exceedance curve is a staircase that runs
     // level just under the 5 % quantile's ring, where the label used to go.
-    run(
+    gen_model(
         &d,
-        &[
-            "gen",
-            "wall",
-            "--courses",
-            "5",
-            "--units",
-            "4",
-            "--live",
-            "horizontal",
-            "-o",
-            "wall.json",
-        ],
+        "wall --courses 5 --units 4 --live horizontal -o wall.json",
     );
     run(
         &d,

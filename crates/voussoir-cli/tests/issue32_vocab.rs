@@ -5,7 +5,7 @@
 //! × 100) within the printed precision; `--help` lists the new names.
 
 use crate::common;
-use crate::common::{json, refused, run};
+use crate::common::{gen_model, json, refused, run};
 use std::path::{Path, PathBuf};
 
 fn tmpdir(name: &str) -> PathBuf {
@@ -27,19 +27,7 @@ fn same(dir: &Path, base: &[&str], old: &[&str], new: &[&str]) -> String {
 
 /// The paper's arch with 16 voussoirs (quick), loaded on its left half.
 fn arch(dir: &Path) -> String {
-    run(
-        dir,
-        &[
-            "gen",
-            "arch",
-            "--voussoirs",
-            "16",
-            "--live",
-            "left",
-            "-o",
-            "arch.json",
-        ],
-    );
+    gen_model(dir, "arch --voussoirs 16 --live left -o arch.json");
     "arch.json".into()
 }
 
@@ -174,7 +162,7 @@ fn issue32_item4_tilt_and_gen_block_direction() {
         &["--azimuth", "90"],
         &["--direction", "0,2"],
     );
-    run(&d, &["gen", "block", "-o", "b.json"]);
+    gen_model(&d, "block -o b.json");
     let base = ["tilt", "b.json", "--json"];
     same(&d, &base, &["--azimuth", "30"], &["--direction", "30"]);
     let minus = same(&d, &base, &["--azimuth", "180"], &["--direction", "-x"]);
@@ -201,7 +189,7 @@ fn issue32_item4_tilt_and_gen_block_direction() {
         "must be horizontal",
     );
     // 2D: along x only.
-    run(&d, &["gen", "wall", "--live", "horizontal", "-o", "w.json"]);
+    gen_model(&d, "wall --live horizontal -o w.json");
     let base = ["tilt", "w.json", "--json"];
     same(&d, &base, &["--direction", "-x"], &["--direction", "180"]);
     same(&d, &base, &["--direction", "-x"], &["--azimuth", "180"]);
@@ -264,7 +252,7 @@ fn issue32_item4_import_live_and_weld() {
         &["--weld", "0.001"],
     );
     // Meshes: `--mesh-live` is the old name of `--live` too.
-    run(&d, &["gen", "block", "-o", "b.json"]);
+    gen_model(&d, "block -o b.json");
     run(&d, &["export", "b.json", "-o", "b.obj"]);
     let none = same(
         &d,
@@ -509,22 +497,9 @@ fn issue32_item4_settle_summary_units() {
 #[test]
 fn issue32_item4_identify_summary_units() {
     let d = tmpdir("identify");
-    run(
+    gen_model(
         &d,
-        &[
-            "gen",
-            "arch",
-            "--radius",
-            "2.86",
-            "--thickness",
-            "0.33",
-            "--voussoirs",
-            "64",
-            "--live",
-            "none",
-            "-o",
-            "arch.json",
-        ],
+        "arch --radius 2.86 --thickness 0.33 --voussoirs 64 --live none -o arch.json",
     );
     // docs/identify.md's worked example: the survey of the arch spreading by 1 cm.
     std::fs::write(

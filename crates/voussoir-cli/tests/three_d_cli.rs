@@ -3,7 +3,7 @@
 //! give the same blocks, interfaces, λ and settlement results; a 3D capacity run.
 
 use crate::common;
-use crate::common::{json_file as json, run};
+use crate::common::{gen_model, json_file as json, run};
 use std::path::PathBuf;
 use vtkio::model::{Attribute, DataSet, Vtk};
 
@@ -21,12 +21,7 @@ fn array(attrs: &[Attribute], name: &str) -> Vec<f64> {
 #[test]
 fn a_vault_limit_result_reads_back_from_vtk_equal_to_the_json() {
     let d = tmpdir("vtk");
-    run(
-        &d,
-        &[
-            "gen", "vault", "--live", "full", "--rings", "2", "-o", "v.json",
-        ],
-    );
+    gen_model(&d, "vault --live full --rings 2 -o v.json");
     run(&d, &["limit", "v.json", "--vtk", "v.vtu", "-o", "r.json"]);
     run(&d, &["limit", "v.json", "--vtk", "m.vtm"]);
     let r = json(&d.join("r.json"));
@@ -144,28 +139,10 @@ fn number(text: &str, after: &str) -> f64 {
 #[test]
 fn generated_vault_and_dome_round_trip_through_obj() {
     let d = tmpdir("obj");
-    run(
+    gen_model(&d, "vault --live left --rings 2 -o v.json");
+    gen_model(
         &d,
-        &[
-            "gen", "vault", "--live", "left", "--rings", "2", "-o", "v.json",
-        ],
-    );
-    run(
-        &d,
-        &[
-            "gen",
-            "dome",
-            "--courses",
-            "6",
-            "--segments",
-            "12",
-            "--thickness",
-            "0.4",
-            "--crown-load",
-            "10",
-            "-o",
-            "d.json",
-        ],
+        "dome --courses 6 --segments 12 --thickness 0.4 --crown-load 10 -o d.json",
     );
     for (model, mv) in [("v", "right=1cm,0,0"), ("d", "base0=0,0,-1cm")] {
         run(
@@ -226,13 +203,8 @@ fn a_vault_capacity_after_spreading_equals_the_arch_s() {
     // Stack bond: every ring follows the 2D arch, so the λ–settlement curve and its zero are
     // the 2D ones (finite rotations in 3D through the rotation vector's exponential map).
     let d = tmpdir("capacity");
-    run(&d, &["gen", "arch", "--live", "full", "-o", "a.json"]);
-    run(
-        &d,
-        &[
-            "gen", "vault", "--live", "full", "--rings", "2", "-o", "v.json",
-        ],
-    );
+    gen_model(&d, "arch --live full -o a.json");
+    gen_model(&d, "vault --live full --rings 2 -o v.json");
     run(
         &d,
         &[

@@ -28,6 +28,15 @@ pub fn run(dir: &Path, args: &[&str]) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
+/// Run `voussoir gen WORDS` in `dir` and expect success; stdout. `words` is the command line
+/// after `gen`, its words apart at white space (none of them has a space).
+pub fn gen_model(dir: &Path, words: &str) -> String {
+    let args: Vec<&str> = std::iter::once("gen")
+        .chain(words.split_whitespace())
+        .collect();
+    run(dir, &args)
+}
+
 /// Run and expect a one-line refusal (`error: …`) containing `needle`, nothing on stdout.
 pub fn refused(dir: &Path, args: &[&str], needle: &str) {
     let o = voussoir(dir, args);

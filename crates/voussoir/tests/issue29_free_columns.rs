@@ -3,9 +3,9 @@
 //! rows span are left out (`lp::free_columns`): in a 3D force program without friction, the
 //! shears of one joint span three directions whatever their number of points. On the 48 × 48
 //! dome the limit program's free columns went from 34,617 to 16,182 after presolve, and IPX's
-//! interior point from 423 to about 165 s of wall clock (docs/performance.md, "Dome 48 × 48
-//! (session 20)"). Exact: the same optimum, and the duals of the reduced program price the
-//! program as written.
+//! interior point from 423 to 211 s of its own clock, its crossover from 32 to 55 s (load
+//! 9-10; docs/performance.md, "Dome 48 × 48 (session 20)"). Exact: the same optimum, and the
+//! duals of the reduced program price the program as written.
 
 use voussoir::analysis::limit::limit;
 use voussoir::discretize::KinematicMap;
@@ -128,4 +128,31 @@ fn issue29_interior_point_without_the_dependent_shears_answers_as_before() {
     };
     assert!(!ipm.hinges.is_empty());
     assert_eq!(joints(&ipm), joints(&dual));
+}
+
+#[test]
+#[ignore = "slow: this file's three tests took 71 s together in release at load 10-11, this one \
+            solving the 32 x 32 dome's programs three times (the others the 8 x 16 dome's)"]
+fn issue29_least_multiplier_of_a_large_program_after_the_interior_point_by_clarabel() {
+    // 993 blocks, 24,193 columns (at least analysis::limit::LEAST_CLARABEL_MIN_COLUMNS): after
+    // HiGHS's interior point the least multiplier's program goes to Clarabel (before: the
+    // primal simplex from the crossover basis, 15,791 iterations on the 48 × 48 dome). Its
+    // value against HiGHS's interior point with crossover on the same program from scratch.
+    let st = crowned_dome(32, 32);
+    let map = KinematicMap::new(&st);
+    let fp = programs::limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
+    assert!(fp.lp.num_cols() >= voussoir::analysis::limit::LEAST_CLARABEL_MIN_COLUMNS);
+    let (r, solves) = lp::collecting(|| limit(&st, &with(Method::Ipm)).unwrap());
+    let methods: Vec<Method> = solves.iter().map(|s| s.method).collect();
+    assert_eq!(methods, vec![Method::Ipm, Method::Clarabel], "{solves:?}");
+    assert!(solves.iter().all(|s| s.tried.is_empty()), "{solves:?}");
+    assert!(r.certificate.as_ref().unwrap().ok);
+    let mut least = fp.lp.clone();
+    least.maximise = false;
+    let reference = lp::solve(&least, &with(Method::Ipm)).unwrap();
+    assert_eq!(reference.status, LpStatus::Optimal);
+    let lmin = reference.x[fp.lambda.unwrap()];
+    let m = r.least_load_multiplier.unwrap();
+    assert!(lmin < 0.0, "{lmin}");
+    assert!((m - lmin).abs() <= 1e-6 * lmin.abs(), "{m} against {lmin}");
 }

@@ -169,8 +169,8 @@ pub fn extremes_fallback(dofs: usize) -> Option<Method> {
 /// [`Method::ClarabelVertex`] the free columns that others span are left out
 /// ([`super::free_columns`]: a joint's shears span three directions), and after HiGHS's
 /// interior point a large program's least multiplier goes to Clarabel; the table is unchanged
-/// (the 48 × 48 dome's `limit`: default 166.8 → 99.4 CPU s, `clarabel-vertex` 51.6, both
-/// over the 30 s target, the same vertex).
+/// (the 48 × 48 dome's `limit`: default 173.6 → 84.7 CPU s side by side, `clarabel-vertex`
+/// 51.6, both over the 30 s target, the same vertex).
 ///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
 /// uncertified, the next method answers, and the result says so.

@@ -72,6 +72,8 @@ mod issue29_facade_shortcuts;
 mod issue29_fixes;
 #[path = "issue29_force_stage.rs"]
 mod issue29_force_stage;
+#[path = "issue29_free_columns.rs"]
+mod issue29_free_columns;
 #[path = "issue29_friction_precision.rs"]
 mod issue29_friction_precision;
 #[path = "issue29_incremental_canonical.rs"]

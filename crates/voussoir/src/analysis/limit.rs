@@ -151,7 +151,8 @@ pub fn solve_limit_checked<S: Assembly>(
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
     let (s, fp, basis) = solve_static(st, map, opts)?;
-    with_least_multiplier(s, &fp, |lp| least_program(lp, opts, basis))
+    let lambda = fp.lambda;
+    with_least_multiplier(s, &fp, |lp| least_program(lp, opts, basis, lambda))
 }
 
 /// Solve the least multiplier's program `lp` (the limit program minimised: only the objective
@@ -166,17 +167,35 @@ pub fn solve_limit_checked<S: Assembly>(
 /// is read, which needs no vertex, and on the 48 × 48 dome Clarabel answers it in about 5 CPU s
 /// where the crossover from scratch took over 60 (docs/performance.md, "Clarabel with
 /// crossover (session 19)").
+///
+/// A large program (at least [`LEAST_CLARABEL_MIN_COLUMNS`] columns) after HiGHS's interior
+/// point goes to Clarabel first, as after Clarabel with crossover: on the 48 × 48 dome the
+/// primal simplex from the crossover basis took over 10,000 iterations and about as much CPU as
+/// the interior point (docs/performance.md, "Dome 48 × 48 (session 20)"). Where Clarabel's
+/// value is within [`LEAST_CLARABEL_MARGIN`] of zero, the sign that decides whether the structure stands alone is left to the warm primal
+/// simplex, exact to its tolerance.
 fn least_program(
     lp: &lp::LinearProgram,
     opts: &SolverOptions,
     basis: Option<lp::Basis>,
+    lambda: Option<usize>,
 ) -> Result<LpSolution> {
+    let clarabel = SolverOptions {
+        method: lp::Method::Clarabel,
+        ..*opts
+    };
     if opts.method == lp::Method::ClarabelVertex {
-        let o = SolverOptions {
-            method: lp::Method::Clarabel,
-            ..*opts
-        };
-        return lp::solve(lp, &o);
+        return lp::solve(lp, &clarabel);
+    }
+    if let (Some(_), Some(j), lp::Method::Ipm) = (&basis, lambda, opts.method) {
+        if lp.num_cols() >= LEAST_CLARABEL_MIN_COLUMNS {
+            let s = lp::solve(lp, &clarabel)?;
+            let decided = s.status != LpStatus::Optimal
+                || s.x.get(j).is_some_and(|l| l.abs() > LEAST_CLARABEL_MARGIN);
+            if decided {
+                return Ok(s);
+            }
+        }
     }
     match basis {
         Some(b) if !opts.method.is_simplex() => {
@@ -219,6 +238,13 @@ fn with_least_multiplier(
     }
     Ok(s)
 }
+
+/// Columns from which the least multiplier's program after HiGHS's interior point goes to
+/// Clarabel ([`least_program`]): clarabel::PRESOLVE_MIN_COLUMNS, the size of a large program.
+pub const LEAST_CLARABEL_MIN_COLUMNS: usize = lp::clarabel::PRESOLVE_MIN_COLUMNS;
+
+/// A least multiplier from Clarabel within this of zero is decided again by the simplex.
+pub const LEAST_CLARABEL_MARGIN: f64 = 1e-6;
 
 /// Relative tolerance below which a positive least multiplier counts as zero.
 pub const LEAST_TOLERANCE: f64 = 1e-9;

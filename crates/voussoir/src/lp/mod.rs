@@ -16,6 +16,7 @@
 //! every program with cones.
 
 pub mod clarabel;
+pub mod free_columns;
 pub mod highs;
 pub mod policy;
 pub mod scale;

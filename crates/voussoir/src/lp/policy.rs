@@ -188,7 +188,13 @@ pub fn extremes_fallback(dofs: usize) -> Option<Method> {
 /// (197.9): faster, but over the 30 s target; and `tilt` and `settle` of the 24 × 24 dome,
 /// whose canonical selection goes on from the vertex, slower (`tilt` 33.9 against 7.7,
 /// `settle` 18.3 against 13.9)
-/// (docs/performance.md, "Clarabel with crossover (session 19)").
+/// (docs/performance.md, "Clarabel with crossover (session 19)"). Session 20 (docs/performance.md,
+/// "Dome 48 × 48 (session 20)"): before HiGHS's interior point and the crossover of
+/// [`Method::ClarabelVertex`] the free columns that others span are left out
+/// ([`super::free_columns`]: a joint's shears span three directions), and after HiGHS's
+/// interior point a large program's least multiplier goes to Clarabel; the table is unchanged
+/// (the 48 × 48 dome's `limit`: default 173.6 → 84.7 CPU s side by side, `clarabel-vertex`
+/// 51.6, both over the 30 s target, the same vertex).
 ///
 /// Every method is followed by its [`super::fallback_chain`]: where it fails or ends
 /// uncertified, the next method answers, and the result says so.

@@ -4,7 +4,9 @@
 //! optimum is not unique the crack pattern would depend on the method; the crossover moves it
 //! to a vertex. Measured (docs/performance.md, "Clarabel with crossover (session 19)"): on the
 //! 48 × 48 dome's limit program the crossover, not Clarabel, takes the time (about 60–70 CPU s
-//! against Clarabel's 5), so it is a method to ask for, not the 3D default.
+//! against Clarabel's 5), so it is a method to ask for, not the 3D default. Session 20: the free
+//! columns that others span left out first ([`super::free_columns`]), `limit` of that dome
+//! 51.6 CPU s at load 9–10 (68.8 in session 19 at load 6), the same vertex.
 
 use super::{Backend, Basis, Cone3, LinearProgram, LpStatus, Method, Solved, SolverOptions};
 use crate::error::{Error, Result};
@@ -37,6 +39,22 @@ impl Backend for ClarabelVertex {
             ));
         }
         let trace = std::env::var_os("VOUSSOIR_TRACE").is_some();
+        // The free columns that the others span left out first (super::free_columns): the
+        // crossover's crash basis pivots every free column in, as IPX's starting basis does.
+        if let Some(r) = super::free_columns::reduce(lp) {
+            if trace {
+                eprintln!(
+                    "trace: clarabel-vertex: {} of {} columns left out (free, spanned by others)",
+                    r.left_out(lp),
+                    lp.num_cols()
+                );
+            }
+            let solved = self.solve(&r.lp, cones, o, None)?;
+            return Ok(Solved {
+                basis: solved.basis.map(|b| r.expand_basis(lp, b)),
+                solution: r.expand(lp, solved.solution),
+            });
+        }
         let t0 = std::time::Instant::now();
         let clarabel = SolverOptions {
             method: Method::Clarabel,

@@ -287,6 +287,13 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             .collect();
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }
+    if r.reaction_ends_by_symmetry > 0 {
+        let _ = writeln!(
+            s,
+            "reaction ranges: {} ends given by the structure's symmetry (images of ends solved for other supports, each certified on its own program)",
+            r.reaction_ends_by_symmetry
+        );
+    }
     // The method that stands for the run (the one asked for where it answered), every
     // fallback taken, then which method answered each kind of program and why where it is
     // not the one asked for (the JSON's `solver` and `answered`).
@@ -310,13 +317,6 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
             a.method.name(),
             a.outcome,
             a.why.as_ref().map_or(String::new(), |w| format!("; {w}"))
-        );
-    }
-    if r.reaction_ends_by_symmetry > 0 {
-        let _ = writeln!(
-            s,
-            "  reaction ranges: {} ends by the structure's symmetry (images of ends solved, each certified on its own program)",
-            r.reaction_ends_by_symmetry
         );
     }
     s

@@ -287,3 +287,56 @@ fn issue29_item3_lact3_portal_uncertified_warm_steps_solved_again() {
         }
     }
 }
+
+/// Session 20: the 1.0 m grid façade's capacity curve (right half settling) was reported NOT
+/// CERTIFIED at 4 of 21 steps: each settled step has no equilibrium, and on 4 of them neither
+/// Clarabel (row violation 2.3e-6) nor the dual simplex ("HiGHS run failed: Error") decided the
+/// elastic program of the no-equilibrium certificate. The primal simplex decides it now. The
+/// first settled step (1 cm) is one of the four: "no equilibrium" there is decided twice
+/// independently — by the step's own program (the dual simplex: infeasible) and by the
+/// certificate's elastic program (a positive least violation with duals that bound it).
+#[test]
+fn issue29_facade_settled_step_without_equilibrium_is_certified() {
+    let dir = tmpdir("facade");
+    let m = dir.join("f.json");
+    let ms = m.to_str().unwrap();
+    run(
+        &dir,
+        &[
+            "gen",
+            "facade",
+            "--mesh",
+            "grid",
+            "--element",
+            "1.0",
+            "--live",
+            "horizontal",
+            "-o",
+            ms,
+        ],
+    );
+    let v = json(&run(
+        &dir,
+        &[
+            "capacity",
+            ms,
+            "--steps",
+            "1",
+            "--profile",
+            "uniform:11,22,-0.01",
+            "--json",
+        ],
+    ));
+    let c = &v["certificate"];
+    assert_eq!(c["steps"], 2, "{c}");
+    assert_eq!(c["certified"], 2, "{c}");
+    assert_eq!(c["ok"], true, "{c}");
+    let step = &v["curve"][1];
+    assert_eq!(step["status"], "no_equilibrium", "{step}");
+    let cert = &step["certificate"];
+    assert_eq!(cert["ok"], true, "{cert}");
+    let violation = cert["violation"].as_f64().unwrap();
+    assert!(violation > 1e-7 && violation < 1e-3, "{violation}");
+    // λ before any settlement: the façade's collapse load under the tilting table, certified.
+    assert!(v["curve"][0]["load_multiplier"].as_f64().unwrap() > 1.0);
+}

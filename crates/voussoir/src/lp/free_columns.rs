@@ -159,3 +159,26 @@ impl Reduced {
         Basis { cols, rows: b.rows }
     }
 }
+
+/// Solve `lp` by `solve` with its spanned free columns left out ([`reduce`]), and put the answer
+/// and its basis back on the columns of `lp`; `None` where nothing is left out (solve `lp`
+/// itself). `who` names the solve in the `VOUSSOIR_TRACE` line. The one place both backends
+/// that start from a crash basis (HiGHS's interior point, Clarabel's crossover) go through.
+pub fn solve_reduced(
+    lp: &LinearProgram,
+    who: &str,
+    solve: impl FnOnce(&LinearProgram) -> crate::error::Result<super::Solved>,
+) -> Option<crate::error::Result<super::Solved>> {
+    let r = reduce(lp)?;
+    if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        eprintln!(
+            "trace: {who}: {} of {} columns left out (free, spanned by others)",
+            r.left_out(lp),
+            lp.num_cols()
+        );
+    }
+    Some(solve(&r.lp).map(|solved| super::Solved {
+        basis: solved.basis.map(|b| r.expand_basis(lp, b)),
+        solution: r.expand(lp, solved.solution),
+    }))
+}

@@ -139,19 +139,10 @@ impl Backend for Highs {
         // HiGHS's interior point: the free columns that the others span left out first
         // (super::free_columns; the 48 × 48 dome's limit program: IPX's starting basis).
         if matches!(o.method, Method::Ipm | Method::IpmNoCrossover) {
-            if let Some(r) = super::free_columns::reduce(lp) {
-                if std::env::var_os("VOUSSOIR_TRACE").is_some() {
-                    eprintln!(
-                        "trace: ipm: {} of {} columns left out (free, spanned by others)",
-                        r.left_out(lp),
-                        lp.num_cols()
-                    );
-                }
-                let solved = self.solve(&r.lp, cones, o, None)?;
-                return Ok(Solved {
-                    basis: solved.basis.map(|b| r.expand_basis(lp, b)),
-                    solution: r.expand(lp, solved.solution),
-                });
+            if let Some(solved) =
+                super::free_columns::solve_reduced(lp, "ipm", |r| self.solve(r, cones, o, None))
+            {
+                return solved;
             }
         }
         let mut opts = *o;

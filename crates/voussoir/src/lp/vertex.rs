@@ -41,19 +41,10 @@ impl Backend for ClarabelVertex {
         let trace = std::env::var_os("VOUSSOIR_TRACE").is_some();
         // The free columns that the others span left out first (super::free_columns): the
         // crossover's crash basis pivots every free column in, as IPX's starting basis does.
-        if let Some(r) = super::free_columns::reduce(lp) {
-            if trace {
-                eprintln!(
-                    "trace: clarabel-vertex: {} of {} columns left out (free, spanned by others)",
-                    r.left_out(lp),
-                    lp.num_cols()
-                );
-            }
-            let solved = self.solve(&r.lp, cones, o, None)?;
-            return Ok(Solved {
-                basis: solved.basis.map(|b| r.expand_basis(lp, b)),
-                solution: r.expand(lp, solved.solution),
-            });
+        if let Some(solved) = super::free_columns::solve_reduced(lp, "clarabel-vertex", |r| {
+            self.solve(r, cones, o, None)
+        }) {
+            return solved;
         }
         let t0 = std::time::Instant::now();
         let clarabel = SolverOptions {

@@ -87,8 +87,10 @@ fn issue29_free_shears_of_a_joint_reduce_to_three() {
 
 #[test]
 fn issue29_interior_point_without_the_dependent_shears_answers_as_before() {
-    // The 3D default (HiGHS's interior point with crossover, now on the reduced program)
-    // against the dual simplex from scratch on the program as written: the same λ and least λ
+    // The 3D default (HiGHS's interior point with crossover; on the program as written since
+    // the reduction was withdrawn from it: the 0.5 m grid façade's `limit` regressed, 10.1 →
+    // 32.6 CPU s, docs/performance.md "Dome 48 × 48 (session 20)") against the dual simplex
+    // from scratch: the same λ and least λ
     // to 1e-6, certified, answered by the method itself; its basis put back is a vertex the
     // primal simplex takes without an iteration; and the same hinged joints as the dual
     // simplex's vertex (the crowned dome's collapse is unique up to its symmetry).

@@ -136,15 +136,6 @@ impl Backend for Highs {
         if !cones.is_empty() {
             return Err(Error::Solver("HiGHS does not take cone constraints".into()));
         }
-        // HiGHS's interior point: the free columns that the others span left out first
-        // (super::free_columns; the 48 × 48 dome's limit program: IPX's starting basis).
-        if matches!(o.method, Method::Ipm | Method::IpmNoCrossover) {
-            if let Some(solved) =
-                super::free_columns::solve_reduced(lp, "ipm", |r| self.solve(r, cones, o, None))
-            {
-                return solved;
-            }
-        }
         let mut opts = *o;
         let mut start = start.filter(|_| o.method.is_simplex());
         let mut spent = 0i64;

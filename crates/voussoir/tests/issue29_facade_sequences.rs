@@ -13,8 +13,10 @@
 //! * **Fewer decisions**: a bisection that has found only "stands" down to 1/16 asks about
 //!   f = 0 there, once (the façades stand on the centres of their joints).
 //!
-//! `capacity` is unchanged: the warm dual simplex from the interior point's crossover basis was
-//! measured slower than the interior point per step (docs/performance.md).
+//! `capacity` was unchanged in session 18 (the warm dual simplex from the interior point's
+//! crossover basis measured slower per step there); since session 20 a 2D curve above 2,000
+//! blocks solves the steps after the first settled one by the warm dual simplex
+//! (`tests/issue29_curve_warm2d.rs`; docs/performance.md, "Façade capacity curves (session 20)").
 //! * **f = 0 on the merged program**: at f = 0 a joint's points coincide and their columns are
 //!   equal; the decision is taken on the program with one column of each ([`merged_columns`]),
 //!   which is feasible exactly when the program is.

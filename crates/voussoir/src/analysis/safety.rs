@@ -602,6 +602,58 @@ fn reaction_coefficients<S: Assembly>(
     out
 }
 
+/// Positions by cell (side 1e-6 of the structure's extent), to find those within `tol` of a
+/// point: the images of blocks, supports and contact points under a symmetry ([`Mirror`] in
+/// 2D, [`isometries_3d`] in 3D). Positions that are not finite (a support without a point) are
+/// left out.
+struct PositionIndex<'a, const N: usize> {
+    pos: &'a [[f64; N]],
+    q: f64,
+    tol: f64,
+    cells: std::collections::HashMap<[i64; N], Vec<usize>>,
+}
+
+impl<'a, const N: usize> PositionIndex<'a, N> {
+    fn new(pos: &'a [[f64; N]], extent: f64) -> Self {
+        let mut index = PositionIndex {
+            pos,
+            q: 1e-6 * extent,
+            tol: 1e-9 * extent,
+            cells: std::collections::HashMap::new(),
+        };
+        for (i, p) in pos.iter().enumerate() {
+            if p.iter().all(|v| v.is_finite()) {
+                index.cells.entry(index.key(p)).or_default().push(i);
+            }
+        }
+        index
+    }
+
+    fn key(&self, p: &[f64; N]) -> [i64; N] {
+        p.map(|v| (v / self.q).round() as i64)
+    }
+
+    /// The positions within `tol` of `p` in every coordinate (the 3^N cells around it).
+    fn near(&self, p: [f64; N]) -> Vec<usize> {
+        let k = self.key(&p);
+        let mut out = Vec::new();
+        for m in 0..3usize.pow(N as u32) {
+            let mut cell = k;
+            let mut r = m;
+            for c in cell.iter_mut() {
+                *c += (r % 3) as i64 - 1;
+                r /= 3;
+            }
+            for &i in self.cells.get(&cell).into_iter().flatten() {
+                if (0..N).all(|c| (self.pos[i][c] - p[c]).abs() <= self.tol) {
+                    out.push(i);
+                }
+            }
+        }
+        out
+    }
+}
+
 /// A mirror symmetry of a planar equilibrium program (the structure, its supports and its
 /// dead loads symmetric about a vertical line): the columns, rows and supports it maps onto
 /// each other, with the signs (a force's normal component keeps its sign, its shear may flip;
@@ -628,7 +680,6 @@ impl Mirror {
         map: &KinematicMap,
         base: &programs::ForceProgram,
     ) -> std::result::Result<Mirror, &'static str> {
-        use std::collections::HashMap;
         if <S::D as Dim>::N != 2 || map.dofs_per_block != 3 || <S::D as Dim>::TANGENTS != 1 {
             return Err("not planar");
         }
@@ -657,54 +708,37 @@ impl Mirror {
             return Err("blocks extent");
         }
         let xc = 0.5 * (lo + hi);
-        let tol = 1e-9 * extent;
-        let q = 1e-6 * extent;
-        let key = |x: f64, y: f64| ((x / q).round() as i64, (y / q).round() as i64);
-        // Positions by cell, to find a point's mirror image.
-        let find = |index: &HashMap<(i64, i64), Vec<usize>>, pos: &[(f64, f64)], x: f64, y: f64| {
-            let (kx, ky) = key(x, y);
-            let mut out = Vec::new();
-            for dx in -1..=1 {
-                for dy in -1..=1 {
-                    if let Some(v) = index.get(&(kx + dx, ky + dy)) {
-                        for &i in v {
-                            let (px, py) = pos[i];
-                            if (px - x).abs() <= tol && (py - y).abs() <= tol {
-                                out.push(i);
-                            }
-                        }
-                    }
-                }
-            }
-            out
-        };
-        let block_pos: Vec<(f64, f64)> = bodies.blocks.iter().map(xy).collect();
-        let mut block_index: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-        for (i, &(x, y)) in block_pos.iter().enumerate() {
-            block_index.entry(key(x, y)).or_default().push(i);
-        }
+        let block_pos: Vec<[f64; 2]> = bodies
+            .blocks
+            .iter()
+            .map(|b| {
+                let (x, y) = xy(b);
+                [x, y]
+            })
+            .collect();
+        let block_index = PositionIndex::new(&block_pos, extent);
         let mut sigma = vec![usize::MAX; nb];
-        for (i, &(x, y)) in block_pos.iter().enumerate() {
-            match find(&block_index, &block_pos, 2.0 * xc - x, y)[..] {
+        for (i, &[x, y]) in block_pos.iter().enumerate() {
+            match block_index.near([2.0 * xc - x, y])[..] {
                 [j] => sigma[i] = j,
                 _ => return Err("a block without its mirror image"),
             }
         }
         let joints = st.contact_joints();
-        let point_pos: Vec<(f64, f64)> = map
+        let point_pos: Vec<[f64; 2]> = map
             .points
             .iter()
-            .map(|pr| xy(&joints[pr.joint].points[pr.index].0))
+            .map(|pr| {
+                let (x, y) = xy(&joints[pr.joint].points[pr.index].0);
+                [x, y]
+            })
             .collect();
-        let mut point_index: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-        for (k, &(x, y)) in point_pos.iter().enumerate() {
-            point_index.entry(key(x, y)).or_default().push(k);
-        }
+        let point_index = PositionIndex::new(&point_pos, extent);
         // Each support's image: the support whose points' mean is the mirror of its own (a
         // support without a point has no column and is its own image).
         let ns = st.num_supports();
         let mut mean = vec![(0.0, 0.0, 0usize); ns];
-        for (k, &(x, y)) in point_pos.iter().enumerate() {
+        for (k, &[x, y]) in point_pos.iter().enumerate() {
             let j = &joints[map.points[k].joint];
             for body in [j.a, j.b] {
                 if let Body::Support(s) = body {
@@ -714,26 +748,21 @@ impl Mirror {
                 }
             }
         }
-        let support_pos: Vec<(f64, f64)> = mean
+        let support_pos: Vec<[f64; 2]> = mean
             .iter()
             .map(|&(x, y, n)| {
                 if n > 0 {
-                    (x / n as f64, y / n as f64)
+                    [x / n as f64, y / n as f64]
                 } else {
-                    (f64::NAN, f64::NAN)
+                    [f64::NAN, f64::NAN]
                 }
             })
             .collect();
-        let mut support_index: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-        for (s, &(x, y)) in support_pos.iter().enumerate() {
-            if x.is_finite() {
-                support_index.entry(key(x, y)).or_default().push(s);
-            }
-        }
+        let support_index = PositionIndex::new(&support_pos, extent);
         let mut support: Vec<usize> = (0..ns).collect();
-        for (s, &(x, y)) in support_pos.iter().enumerate() {
+        for (s, &[x, y]) in support_pos.iter().enumerate() {
             if x.is_finite() {
-                match find(&support_index, &support_pos, 2.0 * xc - x, y)[..] {
+                match support_index.near([2.0 * xc - x, y])[..] {
                     [s2] => support[s] = s2,
                     _ => return Err("a support without its mirror image"),
                 }
@@ -744,10 +773,10 @@ impl Mirror {
             Body::Block(i) => Body::Block(sigma[i]),
             Body::Support(s) => Body::Support(support[s]),
         };
-        for (k, &(x, y)) in point_pos.iter().enumerate() {
+        for (k, &[x, y]) in point_pos.iter().enumerate() {
             let j = &joints[map.points[k].joint];
             let mut image = None;
-            for k2 in find(&point_index, &point_pos, 2.0 * xc - x, y) {
+            for k2 in point_index.near([2.0 * xc - x, y]) {
                 let j2 = &joints[map.points[k2].joint];
                 // The same pair of bodies mirrored, in either order.
                 let (a2, b2) = (mirrored_body(j.a), mirrored_body(j.b));
@@ -957,7 +986,6 @@ fn isometries_3d<S: Assembly>(
     map: &KinematicMap,
     base: &programs::ForceProgram,
 ) -> std::result::Result<Vec<Symmetry>, &'static str> {
-    use std::collections::HashMap;
     type V3 = [f64; 3];
     if <S::D as Dim>::N != 3 || map.dofs_per_block != 6 || <S::D as Dim>::TANGENTS != 2 {
         return Err("not 3D");
@@ -986,41 +1014,6 @@ fn isometries_3d<S: Assembly>(
     }
     let (xc, yc) = (0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]));
     let tol = 1e-9 * extent;
-    let q = 1e-6 * extent;
-    let key = |p: V3| {
-        (
-            (p[0] / q).round() as i64,
-            (p[1] / q).round() as i64,
-            (p[2] / q).round() as i64,
-        )
-    };
-    let index_of = |pos: &[V3]| {
-        let mut index: HashMap<(i64, i64, i64), Vec<usize>> = HashMap::new();
-        for (i, &p) in pos.iter().enumerate() {
-            if p[0].is_finite() {
-                index.entry(key(p)).or_default().push(i);
-            }
-        }
-        index
-    };
-    let find = |index: &HashMap<(i64, i64, i64), Vec<usize>>, pos: &[V3], p: V3| {
-        let (kx, ky, kz) = key(p);
-        let mut out = Vec::new();
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                for dz in -1..=1 {
-                    if let Some(v) = index.get(&(kx + dx, ky + dy, kz + dz)) {
-                        for &i in v {
-                            if (0..3).all(|c| (pos[i][c] - p[c]).abs() <= tol) {
-                                out.push(i);
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        out
-    };
     let joints = st.contact_joints();
     let point_pos: Vec<V3> = map
         .points
@@ -1059,9 +1052,9 @@ fn isometries_3d<S: Assembly>(
         })
         .collect();
     let (block_index, point_index, support_index) = (
-        index_of(&blocks),
-        index_of(&point_pos),
-        index_of(&support_pos),
+        PositionIndex::new(&blocks, extent),
+        PositionIndex::new(&point_pos, extent),
+        PositionIndex::new(&support_pos, extent),
     );
     // The candidates, as 3 × 3 matrices about the vertical line (xc, yc).
     let mut candidates: Vec<[V3; 3]> = vec![
@@ -1103,7 +1096,7 @@ fn isometries_3d<S: Assembly>(
         };
         let mut sigma = vec![0; nb];
         for (i, &b) in blocks.iter().enumerate() {
-            match find(&block_index, &blocks, place(b))[..] {
+            match block_index.near(place(b))[..] {
                 [j] => sigma[i] = j,
                 _ => return None,
             }
@@ -1111,7 +1104,7 @@ fn isometries_3d<S: Assembly>(
         let mut support: Vec<usize> = (0..ns).collect();
         for (s, &p) in support_pos.iter().enumerate() {
             if p[0].is_finite() {
-                match find(&support_index, &support_pos, place(p))[..] {
+                match support_index.near(place(p))[..] {
                     [s2] => support[s] = s2,
                     _ => return None,
                 }
@@ -1135,7 +1128,7 @@ fn isometries_3d<S: Assembly>(
             let j = &joints[map.points[k].joint];
             let (a2, b2) = (image_body(j.a), image_body(j.b));
             let mut image = None;
-            for k2 in find(&point_index, &point_pos, place(p)) {
+            for k2 in point_index.near(place(p)) {
                 let j2 = &joints[map.points[k2].joint];
                 let sign = if (j2.a, j2.b) == (a2, b2) {
                     1.0

@@ -10,7 +10,7 @@
 //! inadmissibility would put it above); and the precision shown must be the one asked.
 
 mod support;
-use support::{least_friction_by_bisection, readme_wall};
+use support::{least_friction_by_bisection, readme_wall, stack_wall_20x10};
 use voussoir::analysis::canonical::{
     limit_canonical, settle_canonical, CanonicalForces, CanonicalOptions, FrictionSearch,
 };
@@ -19,8 +19,6 @@ use voussoir::analysis::settlement::SettlementForm;
 use voussoir::analysis::SettlementResult;
 use voussoir::generate::{wall, LiveLoad, WallSpec};
 use voussoir::lp::SolverOptions;
-use voussoir::outline_mesh::{mesh_wall, Foundation, MeshKind, MeshOptions, Outline};
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
 
 fn options(search: FrictionSearch, precision: f64) -> CanonicalOptions {
@@ -87,32 +85,7 @@ fn issue29_least_mu_ratio_search_tipping_block_is_b_over_h() {
 /// precision is the one asked, and it agrees with the force stage's bisection to the precision.
 #[test]
 fn issue29_least_mu_ratio_search_against_bisection() {
-    let outline = Outline {
-        outer: vec![[0.0, 0.0], [20.0, 0.0], [20.0, 5.0], [0.0, 5.0]],
-        holes: vec![],
-    };
-    let mut stack = mesh_wall(
-        &outline,
-        &MeshKind::Grid {
-            length: 1.0,
-            height: 0.5,
-        },
-        18.0,
-        1.0,
-        &Foundation::segments(20, "f", 0.5),
-        &MeshOptions::default(),
-    )
-    .unwrap();
-    apply_profile(
-        &mut stack,
-        &Profile::Uniform {
-            x0: 0.0,
-            x1: 6.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
-    let stack = Structure::new(&stack, BuildOptions::default()).unwrap();
+    let stack = stack_wall_20x10();
     let o = SolverOptions::default();
     for (name, st) in [("README wall", readme_wall()), ("20 × 10 wall", stack)] {
         let mut reference = None;

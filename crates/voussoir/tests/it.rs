@@ -62,6 +62,8 @@ mod issue29_dome2;
 mod issue29_dome48;
 #[path = "issue29_dome_safety.rs"]
 mod issue29_dome_safety;
+#[path = "issue29_elastic_trials.rs"]
+mod issue29_elastic_trials;
 #[path = "issue29_extremes_fallback.rs"]
 mod issue29_extremes_fallback;
 #[path = "issue29_facade_sequences.rs"]

@@ -146,6 +146,21 @@ pub fn curve_warm_method(class: &ProblemClass) -> Option<Method> {
         .then_some(Method::DualSimplex)
 }
 
+/// The smallest 2D force program (columns) whose least-μ bisection asks each trial first as a
+/// bounded elastic program (`analysis::canonical`). Clarabel's proof that a nearly feasible
+/// trial is infeasible is its slow case: on the 0.5 m façade in running bond (2,672 blocks,
+/// 30,640 columns) 83–101 iterations and 15–20 s each against 23–37 iterations for a feasible
+/// trial, where the elastic program took 26–39 (the force stage 74 → 33 s of wall clock,
+/// docs/performance.md "Least-μ trials as elastic programs (session 21)"). Small programs keep
+/// the feasibility trials, which decide in a second, and their results as before.
+pub const ELASTIC_TRIAL_MIN_COLUMNS: usize = 20_000;
+
+/// Whether the least-μ bisection of a 2D force program of `columns` columns asks its trials
+/// first as elastic programs.
+pub fn elastic_trials(columns: usize) -> bool {
+    columns >= ELASTIC_TRIAL_MIN_COLUMNS
+}
+
 /// Degrees of freedom above which the canonical selection's extremes from scratch (the least
 /// and largest value of a generic functional on a face, solved by the dual simplex with
 /// presolve) go to HiGHS's interior point with crossover, not to the primal simplex, where the

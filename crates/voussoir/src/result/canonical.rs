@@ -96,6 +96,10 @@ pub struct CanonicalForces<D: Spatial = Two> {
     pub reaction_ranges: Vec<ReactionRange<D>>,
     /// Programs solved for the selection.
     pub solves: usize,
+    /// Trials of the least-μ bisection decided by a bounded elastic program instead of a
+    /// feasibility program (large 2D models, docs/canonical.md "The forces").
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub elastic_trials: usize,
     /// The candidate fields not reported, in the order they were tried: least energy,
     /// admissible, the force program's own optimum. Each either with its relative duality gap
     /// (its certificate failed) or with the reason it was not computed (the energy QP stopped
@@ -175,4 +179,8 @@ pub struct StepSelection {
     pub steps_not_reached: Vec<usize>,
     /// Programs solved for the selection (the settlement's included).
     pub solves: usize,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }

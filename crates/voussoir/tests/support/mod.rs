@@ -8,9 +8,41 @@ use voussoir::generate::{wall, WallSpec};
 use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::{self, LpStatus, Method, SolverOptions};
 use voussoir::model3d::Model3d;
+use voussoir::outline_mesh::{mesh_wall, Foundation, MeshKind, MeshOptions, Outline};
 use voussoir::programs;
 use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure, Structure3d};
+
+/// A 20 × 10 stack-bond wall of 1 × 0.5 m blocks on 20 foundation segments, the left 6 m of
+/// its base 1 cm down: the 3,200-block wall of issue 29 at a sixteenth of its size.
+pub fn stack_wall_20x10() -> Structure {
+    let outline = Outline {
+        outer: vec![[0.0, 0.0], [20.0, 0.0], [20.0, 5.0], [0.0, 5.0]],
+        holes: vec![],
+    };
+    let mut stack = mesh_wall(
+        &outline,
+        &MeshKind::Grid {
+            length: 1.0,
+            height: 0.5,
+        },
+        18.0,
+        1.0,
+        &Foundation::segments(20, "f", 0.5),
+        &MeshOptions::default(),
+    )
+    .unwrap();
+    apply_profile(
+        &mut stack,
+        &Profile::Uniform {
+            x0: 0.0,
+            x1: 6.0,
+            v: -0.01,
+        },
+    )
+    .unwrap();
+    Structure::new(&stack, BuildOptions::default()).unwrap()
+}
 
 /// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
 /// `settle --profile uniform:2.8,4.0,-0.01`.

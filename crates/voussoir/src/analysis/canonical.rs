@@ -660,6 +660,10 @@ pub fn open_points(map: &KinematicMap, d: &[f64], support_scale: f64) -> Vec<boo
         .collect()
 }
 
+/// The least dual bound on an elastic trial's optimum `s` (relative to θ) that shows θ
+/// inadmissible in the bisection's elastic trials ([`canonical_forces`]).
+const ELASTIC_MARGIN: f64 = 1e-3;
+
 /// Trials allowed to the ratio search ([`FrictionSearch::Ratio`]); it stops with the bracket
 /// it has (the precision shown says how wide) where they run out.
 pub const RATIO_TRIALS: usize = 30;
@@ -960,33 +964,58 @@ pub fn canonical_forces<S: Assembly>(
                     .0
             }) {
                 let theta = mu.unwrap_or(0.0);
-                let (lp, _) = ratio_program(&fp, map, open, theta, Some(&normal));
-                match stages.solve_single(&lp, true) {
-                    Ok(s) if s.status == LpStatus::Optimal && s.x.len() == lp.num_cols() => {
-                        let x = &s.x[..fp.lp.num_cols()];
-                        let r = field_ratio(map, &fp, x, relaxed, open);
-                        let bound = lp::sequence::certify_with_bound(&lp, &s)
-                            .filter(|(c, _)| c.dual <= lp::sequence::CERTIFICATE_TOLERANCE)
-                            .map(|(_, b)| b);
-                        if bound.is_some_and(|b| b > 1e-6 * theta) {
+                let (lp, scol) = ratio_program(&fp, map, open, theta, Some(&normal));
+                // Clarabel's tighter settings for large programs first (the duals are read),
+                // then its defaults (`decision`) where the duals do not certify: each fails on
+                // some trials the other decides (the 3,200-block wall at θ = 8: dual violation
+                // 3.7e-6 with the defaults, 2.2e-8 tight; the 0.5 m façade in running bond at
+                // θ = 0.5: 3.5e-5 tight, 1.2e-8 with the defaults).
+                let settings: &[bool] = if lp.num_cols() >= lp::clarabel::PRESOLVE_MIN_COLUMNS {
+                    &[false, true]
+                } else {
+                    &[true]
+                };
+                for &decision in settings {
+                    match stages.solve_single(&lp, decision) {
+                        Ok(s) if s.status == LpStatus::Optimal && s.x.len() == lp.num_cols() => {
+                            let x = &s.x[..fp.lp.num_cols()];
+                            let r = field_ratio(map, &fp, x, relaxed, open);
+                            let cert = lp::sequence::certify_with_bound(&lp, &s);
+                            if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+                                eprintln!(
+                                    "trace: elastic trial θ {theta:.6}: s {:.3e}, certificate {:?}, field ratio {r:.6}",
+                                    s.x[scol], cert
+                                );
+                            }
+                            // Duals dual feasible to the solver layer's certificate tolerance,
+                            // and a bound well above what that tolerance leaves uncertain:
+                            // `s` is the excess of a ratio over θ, so 1e-3·θ. (At 1e-6·θ, a
+                            // tight trial at θ = 4.2378 on the 0.5 m façade in running bond,
+                            // s = 6.1e-6 and bound 4.4e-6 where s = 0 is the optimum, counted
+                            // a μ inadmissible that a field of ratio 3.8653 admits.)
+                            let bound = cert
+                                .filter(|(c, _)| c.dual <= lp::policy::CERTIFICATE_TOLERANCE)
+                                .map(|(_, b)| b);
+                            if bound.is_some_and(|b| b > ELASTIC_MARGIN * theta) {
+                                elastic_count.set(elastic_count.get() + 1);
+                                return Ok(Trial::Inadmissible);
+                            }
+                            if r <= theta * (1.0 + 1e-9) {
+                                elastic_count.set(elastic_count.get() + 1);
+                                *admissible = Some((mu, relaxed, x.to_vec()));
+                                return Ok(Trial::Admissible(r));
+                            }
+                        }
+                        // The elastic program relaxes the trial's rows: without a point,
+                        // neither has one (Clarabel's certificate, as for a feasibility trial).
+                        Ok(s) if s.status == LpStatus::Infeasible => {
                             elastic_count.set(elastic_count.get() + 1);
                             return Ok(Trial::Inadmissible);
                         }
-                        if r <= theta * (1.0 + 1e-9) {
-                            elastic_count.set(elastic_count.get() + 1);
-                            *admissible = Some((mu, relaxed, x.to_vec()));
-                            return Ok(Trial::Admissible(r));
-                        }
-                        elastic_on.set(false);
+                        _ => {}
                     }
-                    // The elastic program relaxes the trial's rows: without a point, neither
-                    // has one (Clarabel's certificate, as for a feasibility trial).
-                    Ok(s) if s.status == LpStatus::Infeasible => {
-                        elastic_count.set(elastic_count.get() + 1);
-                        return Ok(Trial::Inadmissible);
-                    }
-                    _ => elastic_on.set(false),
                 }
+                elastic_on.set(false);
             }
         }
         let solved = if single {

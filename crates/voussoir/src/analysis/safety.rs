@@ -1232,6 +1232,9 @@ fn isometries_3d<S: Assembly>(
 /// so far: the neighbouring blocks) and this many rows.
 const LOCAL_RAY_ROUNDS: usize = 4;
 const LOCAL_RAY_ROWS: usize = 240;
+/// Sides tried for a local ray before the first is found ([`LocalRays`]): none found on these,
+/// no more are tried.
+const LOCAL_RAY_SIDES: usize = 4;
 
 /// Rays of a reaction's side found on a small part of the equilibrium program (session 21):
 /// the rows of the blocks around the support and the columns that touch no other row. A
@@ -1347,14 +1350,19 @@ impl LocalRays {
                     }
                 }
             }
-            // The neighbouring blocks: every row that shares a column with these.
+            // The neighbouring blocks: every row that shares a column with these (none left:
+            // the whole structure was this program, and it has no ray).
             let grow: Vec<usize> = rows
                 .iter()
                 .flat_map(|&i| self.row_cols[i].iter())
                 .flat_map(|&j| self.col_rows[j].iter().copied())
                 .collect();
+            let before = rows.len();
             for i in grow {
                 add(i, &mut rows, &mut in_rows);
+            }
+            if rows.len() == before {
+                return None;
             }
         }
         None
@@ -1467,6 +1475,7 @@ fn ranges_from<S: Assembly>(
         worst_ray: 0.0,
         mirrored: 0,
         local_rays: 0,
+        local_ray_programs: 0,
         without_columns: 0,
     };
     // A mirror symmetry of the program: each side solved gives its mirror image's
@@ -1518,6 +1527,7 @@ fn ranges_from<S: Assembly>(
     // The rows and columns of the program by each other, for rays on a few blocks (made at
     // the first horizontal side).
     let mut local_rays: Option<LocalRays> = None;
+    let mut local_misses = 0;
     for (s, comps) in coefficients.iter().enumerate() {
         // The vertical component first: bounded where the structure stands, so the first
         // program has an optimum for the later ones to start from.
@@ -1604,12 +1614,25 @@ fn ranges_from<S: Assembly>(
                     .filter(|m| certified(&program, m));
                 // A horizontal side: a ray on the blocks around the support first (a small
                 // recession program; [`LocalRays`]), certified on this side's program.
-                if lineality_ray.is_none() && image.is_none() && sequence.is_some() && c != n - 1 {
+                // Until the first is found, at most LOCAL_RAY_SIDES sides are tried (a
+                // structure whose horizontal sides are all bounded, as with friction, pays
+                // for those few small programs only).
+                if lineality_ray.is_none()
+                    && image.is_none()
+                    && sequence.is_some()
+                    && c != n - 1
+                    && (out.local_rays > 0 || local_misses < LOCAL_RAY_SIDES)
+                {
                     let local = local_rays.get_or_insert_with(|| LocalRays::new(&base.lp));
-                    if let Some((d, cert)) = local.find(&program, solver, &mut out.solves) {
+                    let before = out.local_ray_programs;
+                    let found = local.find(&program, solver, &mut out.local_ray_programs);
+                    out.solves += out.local_ray_programs - before;
+                    if let Some((d, cert)) = found {
                         trace(format_args!("range {side}: local ray {cert:?}"), t0);
                         out.local_rays += 1;
                         lineality_ray = Some((d, cert.violation));
+                    } else {
+                        local_misses += 1;
                     }
                 }
                 let mut tried = if lineality_ray.is_some() {

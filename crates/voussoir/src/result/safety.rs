@@ -141,6 +141,8 @@ pub struct ReactionRanges {
     /// Endpoints certified unbounded by a ray found on the blocks around the support (a small
     /// recession program of a few blocks' rows; the ray certified on the side's own program).
     pub local_rays: usize,
+    /// The small recession programs solved to look for them (counted in `solves` too).
+    pub local_ray_programs: usize,
     /// Endpoints of a component with no column (a support without a contact point): 0, no
     /// program.
     pub without_columns: usize,

@@ -103,13 +103,14 @@ fn issue29_facade_stands_at_zero_by_clarabel_on_the_merged_program() {
     .unwrap();
     assert_eq!(s.status, LpStatus::Optimal);
     assert!(point_violation(&merged, &s.x) <= 1e-9);
-    // The bisection: f = 1, 1/2, 1/4, 1/8, 1/16; f = 0 by Clarabel's decision.
+    // The bisection: f = 1, 1/2; f = 0 by Clarabel's decision (session 21: asked once 1 and
+    // 1/2 have stood; before, after 1/4, 1/8 and 1/16 as well: five programs).
     let bisection = solves.iter().filter(|s| s.programs == "bisection").count();
-    assert_eq!(bisection, 5, "{solves:?}");
+    assert_eq!(bisection, 2, "{solves:?}");
 }
 
 #[test]
-#[ignore = "the 0.5 m grid façade's safety with its ranges: 56.4 CPU s (release, load 6 on 2 cores)"]
+#[ignore = "the 0.5 m grid façade's safety with its ranges: 34.3 CPU s (release, load 6 on 2 cores; 56.4 before session 21)"]
 fn issue29_facade_safety_with_mirrored_ranges_gives_session_18s_ranges() {
     // Session 18's run (before the mirror; 104.5 CPU s, 152 solves, every end certified) as
     // the reference, to 1e-6 of each end: f0's vertical reaction in [63.340909, 2763.878448]

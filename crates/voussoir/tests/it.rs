@@ -82,6 +82,8 @@ mod issue29_friction_precision;
 mod issue29_incremental_canonical;
 #[path = "issue29_least_mu.rs"]
 mod issue29_least_mu;
+#[path = "issue29_local_rays.rs"]
+mod issue29_local_rays;
 #[path = "issue29_outcomes.rs"]
 mod issue29_outcomes;
 #[path = "issue29_policy.rs"]

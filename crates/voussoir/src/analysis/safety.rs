@@ -103,6 +103,15 @@ fn decision_warm_limit(lp: &lp::LinearProgram) -> usize {
 /// their joints (an unbounded factor: the façades of docs/performance.md).
 const EARLY_ZERO: f64 = 1.0 / 16.0;
 
+/// The fraction at which a bisection that has found only "stands" first asks Clarabel whether
+/// the structure stands at f = 0 ([`stands_at_zero_directly`]: "stands" by a point that holds
+/// the merged program, never "does not stand"): after 1 and 1/2 stood, a factor above 2. Where
+/// it stands the answer is 0 without the decisions at 1/4, 1/8 and 1/16 (on the 0.5 m grid
+/// façade 7.7 CPU s of 14.6, session 21); where Clarabel does not say so the bisection goes on
+/// as before, and at [`EARLY_ZERO`] the other decisions of [`stands_at_zero`] follow (Clarabel
+/// is not asked twice). A structure with a factor below 2 (an arch, a dome) never gets here.
+const FIRST_ZERO: f64 = 0.5;
+
 /// Largest relative violation of an equilibrium state that still counts as one (round-off).
 const DECISION_TOLERANCE: f64 = 1e-9;
 
@@ -121,6 +130,8 @@ const LAST_RESORT: &str = "the dual simplex from scratch decides what no other a
 const RAYS: &str = "rays of unbounded reactions";
 const RAYS_DESIGN: &str =
     "Clarabel first on the recession programs: a ray need not be a vertex, and it was faster";
+const LOCAL_RAYS: &str = "rays of unbounded reactions on the blocks around the support";
+const LOCAL_RAYS_DESIGN: &str = "the dual simplex on a small recession program: a few blocks' rows, each ray certified on the whole program";
 const SCRATCH_DESIGN: &str = "an end that the warm runs did not certify goes to interior points certified by their duals, Clarabel first";
 
 /// The methods that solve a reaction range's end from scratch, in order: interior points
@@ -434,7 +445,15 @@ fn bisect_fraction<S: Assembly>(
     // structures are decided at f = 1/2.
     let (mut lo, mut hi) = (0.0, 1.0);
     let mut fell = false;
+    // Whether Clarabel has been asked about f = 0 on the merged program (FIRST_ZERO).
+    let mut asked = false;
     while hi - lo > tolerance {
+        if !fell && !asked && hi <= FIRST_ZERO {
+            asked = true;
+            if stands_at_zero_directly(st, &base, &dead, &mut d)? {
+                return Ok((Some(0.0), d.solves, start));
+            }
+        }
         // A structure that has stood at every fraction down to EARLY_ZERO is asked about
         // f = 0 there, once: where it stands at 0 the answer is 0 (as the bisection would end,
         // feasibility growing with f) without the 16 or so decisions below; where it does not,
@@ -442,7 +461,7 @@ fn bisect_fraction<S: Assembly>(
         // 0.5 m grid façade the warm runs failed at f ≈ 2e-6 and the decisions after went to
         // the elastic program (minutes).
         if !fell && hi <= EARLY_ZERO && hi - lo > tolerance {
-            if stands_at_zero(st, &base, &dead, &mut d)? {
+            if stands_at_zero(st, &base, &dead, &mut d, asked)? {
                 return Ok((Some(0.0), d.solves, start));
             }
             fell = true;
@@ -455,7 +474,7 @@ fn bisect_fraction<S: Assembly>(
             fell = true;
         }
     }
-    if !fell && stands_at_zero(st, &base, &dead, &mut d)? {
+    if !fell && stands_at_zero(st, &base, &dead, &mut d, asked)? {
         return Ok((Some(0.0), d.solves, start));
     }
     Ok((Some(hi), d.solves, start))
@@ -469,7 +488,35 @@ fn bisect_fraction<S: Assembly>(
 /// state of the program sums to one of the merged). The program as written is the most
 /// degenerate of the bisection: on the 0.5 m grid façade the warm dual simplex, Clarabel and
 /// HiGHS's interior point on its elastic program each failed or took minutes on it.
+///
+/// `asked`: [`stands_at_zero_directly`] has been asked already (and did not say "stands").
 fn stands_at_zero<S: Assembly>(
+    st: &S,
+    base: &KinematicMap,
+    dead: &[f64],
+    d: &mut Decisions,
+    asked: bool,
+) -> Result<bool> {
+    let fp = programs::equilibrium_program(&shrunk_map(st, base, 0.0), dead);
+    if !fp.cones.is_empty() {
+        return d.stands(&shrunk_map(st, base, 0.0), dead);
+    }
+    let merged = merged_columns(&fp.lp);
+    if !asked && directly(&merged, d)? {
+        return Ok(true);
+    }
+    let mut own = Decisions::new(&d.solver);
+    let stands = own.stands_lp(merged)?;
+    d.solves += own.solves;
+    d.redecided += own.redecided;
+    d.warm += own.warm;
+    Ok(stands)
+}
+
+/// Whether Clarabel on [`merged_columns`] of the equilibrium program at f = 0 finds a point
+/// that holds it ("stands", certified by that point; `false` where it does not: nothing is
+/// decided then). A program with cones is not asked (`false`).
+fn stands_at_zero_directly<S: Assembly>(
     st: &S,
     base: &KinematicMap,
     dead: &[f64],
@@ -477,15 +524,17 @@ fn stands_at_zero<S: Assembly>(
 ) -> Result<bool> {
     let fp = programs::equilibrium_program(&shrunk_map(st, base, 0.0), dead);
     if !fp.cones.is_empty() {
-        return d.stands(&shrunk_map(st, base, 0.0), dead);
+        return Ok(false);
     }
-    let merged = merged_columns(&fp.lp);
+    directly(&merged_columns(&fp.lp), d)
+}
+
+/// Clarabel on the merged program at f = 0 (`merged`) itself: "stands" where its point holds
+/// the program to [`DECISION_TOLERANCE`] ([`lp::sequence::decide_directly`]); `false` decides
+/// nothing.
+fn directly(merged: &lp::LinearProgram, d: &mut Decisions) -> Result<bool> {
     trace(
-        format_args!(
-            "f = 0: {} columns merged into {}",
-            fp.lp.num_cols(),
-            merged.num_cols()
-        ),
+        format_args!("f = 0: merged program of {} columns", merged.num_cols()),
         std::time::Instant::now(),
     );
     // Clarabel on the merged program itself first: its point, held to DECISION_TOLERANCE,
@@ -501,7 +550,7 @@ fn stands_at_zero<S: Assembly>(
         };
         let t0 = std::time::Instant::now();
         d.solves += 1;
-        let direct = lp::sequence::decide_directly(&merged, &o, DECISION_TOLERANCE)?;
+        let direct = lp::sequence::decide_directly(merged, &o, DECISION_TOLERANCE)?;
         trace(
             format_args!(
                 "f = 0: the merged program itself by clarabel: {:?}",
@@ -509,16 +558,8 @@ fn stands_at_zero<S: Assembly>(
             ),
             t0,
         );
-        if direct.is_some_and(|x| x.feasible) {
-            return Ok(true);
-        }
+        Ok(direct.is_some_and(|x| x.feasible))
     }
-    let mut own = Decisions::new(&d.solver);
-    let stands = own.stands_lp(merged)?;
-    d.solves += own.solves;
-    d.redecided += own.redecided;
-    d.warm += own.warm;
-    Ok(stands)
 }
 
 /// `lp` with every set of equal columns (bounds, cost and entries bit for bit) replaced by the
@@ -1186,6 +1227,148 @@ fn isometries_3d<S: Assembly>(
     Ok(candidates.iter().filter_map(build).collect())
 }
 
+/// Blocks of rows around a reaction's columns on which [`LocalRays::find`] looks for a ray:
+/// at most this many rounds of growth (each adds every row that shares a column with the rows
+/// so far: the neighbouring blocks) and this many rows.
+const LOCAL_RAY_ROUNDS: usize = 4;
+const LOCAL_RAY_ROWS: usize = 240;
+/// Sides tried for a local ray before the first is found ([`LocalRays`]): none found on these,
+/// no more are tried.
+const LOCAL_RAY_SIDES: usize = 4;
+
+/// Rays of a reaction's side found on a small part of the equilibrium program (session 21):
+/// the rows of the blocks around the support and the columns that touch no other row. A
+/// direction of that small recession program is one of the whole program (its columns have
+/// no entry elsewhere, and every other column is 0), so a ray of it, padded with zeros, is a
+/// candidate ray of the side, certified on the side's own program ([`lp::sequence::certify_ray`])
+/// before it is used. On the façades a horizontal side is unbounded by a compression between
+/// two neighbouring base blocks (the support's shear against the next support's): two or three
+/// blocks' rows, a program of a few dozen columns, where the warm primal simplex on the whole
+/// program took up to 7 CPU s to say "unbounded".
+struct LocalRays {
+    /// The rows of each column, and the columns of each row.
+    col_rows: Vec<Vec<usize>>,
+    row_cols: Vec<Vec<usize>>,
+}
+
+impl LocalRays {
+    fn new(lp: &lp::LinearProgram) -> LocalRays {
+        let col_rows: Vec<Vec<usize>> = (0..lp.num_cols())
+            .map(|j| {
+                lp.column(j)
+                    .filter(|&(_, v)| v != 0.0)
+                    .map(|(i, _)| i)
+                    .collect()
+            })
+            .collect();
+        let mut row_cols = vec![Vec::new(); lp.num_rows()];
+        for (j, rows) in col_rows.iter().enumerate() {
+            for &i in rows {
+                row_cols[i].push(j);
+            }
+        }
+        LocalRays { col_rows, row_cols }
+    }
+
+    /// A ray of `program` (the side's program: the equilibrium program with the side's
+    /// objective) certified on it, found on the rows around the objective's columns; `None`
+    /// where none is found within [`LOCAL_RAY_ROUNDS`] rounds and [`LOCAL_RAY_ROWS`] rows.
+    /// `solves` counts the small programs.
+    fn find(
+        &self,
+        program: &lp::LinearProgram,
+        solver: &SolverOptions,
+        solves: &mut usize,
+    ) -> Option<(Vec<f64>, lp::sequence::RayCertificate)> {
+        let (m, n) = (program.num_rows(), program.num_cols());
+        let mut in_rows = vec![false; m];
+        let mut rows: Vec<usize> = Vec::new();
+        fn add(i: usize, rows: &mut Vec<usize>, in_rows: &mut [bool]) {
+            if !in_rows[i] {
+                in_rows[i] = true;
+                rows.push(i);
+            }
+        }
+        for j in (0..n).filter(|&j| program.cost[j] != 0.0) {
+            for &i in &self.col_rows[j] {
+                add(i, &mut rows, &mut in_rows);
+            }
+        }
+        if rows.is_empty() {
+            return None;
+        }
+        let rec = |b: f64| if b.is_finite() { 0.0 } else { b };
+        let o = SolverOptions {
+            method: lp::Method::DualSimplex,
+            ..*solver
+        };
+        let _kind = lp::ProgramKind::set(LOCAL_RAYS, LOCAL_RAYS_DESIGN);
+        for _ in 0..LOCAL_RAY_ROUNDS {
+            if rows.len() > LOCAL_RAY_ROWS {
+                return None;
+            }
+            // The columns with every entry on these rows.
+            let mut cols: Vec<usize> = rows
+                .iter()
+                .flat_map(|&i| self.row_cols[i].iter().copied())
+                .filter(|&j| self.col_rows[j].iter().all(|&i| in_rows[i]))
+                .collect();
+            cols.sort_unstable();
+            cols.dedup();
+            if cols.iter().any(|&j| program.cost[j] != 0.0) {
+                let mut pos = vec![usize::MAX; m];
+                let mut small = lp::LinearProgram::new(if program.maximise {
+                    Direction::Maximise
+                } else {
+                    Direction::Minimise
+                });
+                for (k, &i) in rows.iter().enumerate() {
+                    pos[i] = k;
+                    small.add_row(rec(program.row_lower[i]), rec(program.row_upper[i]));
+                }
+                for &j in &cols {
+                    let entries: Vec<(usize, f64)> =
+                        program.column(j).map(|(i, v)| (pos[i], v)).collect();
+                    small.add_column(
+                        program.cost[j],
+                        rec(program.col_lower[j]).max(-1.0),
+                        rec(program.col_upper[j]).min(1.0),
+                        entries,
+                    );
+                }
+                *solves += 1;
+                if let Ok(s) = lp::solve(&small, &o) {
+                    if s.status == LpStatus::Optimal {
+                        let mut d = vec![0.0; n];
+                        for (k, &j) in cols.iter().enumerate() {
+                            d[j] = s.x[k];
+                        }
+                        let cert = lp::sequence::certify_ray(program, &d);
+                        if cert.ok() {
+                            return Some((d, cert));
+                        }
+                    }
+                }
+            }
+            // The neighbouring blocks: every row that shares a column with these (none left:
+            // the whole structure was this program, and it has no ray).
+            let grow: Vec<usize> = rows
+                .iter()
+                .flat_map(|&i| self.row_cols[i].iter())
+                .flat_map(|&j| self.col_rows[j].iter().copied())
+                .collect();
+            let before = rows.len();
+            for i in grow {
+                add(i, &mut rows, &mut in_rows);
+            }
+            if rows.len() == before {
+                return None;
+            }
+        }
+        None
+    }
+}
+
 /// How the reaction ranges are solved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum RangeSolve {
@@ -1291,6 +1474,9 @@ fn ranges_from<S: Assembly>(
         lineality_rays: 0,
         worst_ray: 0.0,
         mirrored: 0,
+        local_rays: 0,
+        local_ray_programs: 0,
+        without_columns: 0,
     };
     // A mirror symmetry of the program: each side solved gives its mirror image's
     // (the mirrored support's side, checked by its certificate on that program) and each ray
@@ -1338,6 +1524,10 @@ fn ranges_from<S: Assembly>(
     // The projection onto the free columns' lineality space (made at the first side that
     // needs it; `Some(None)` where the program has none).
     let mut lineality: Option<Option<lp::sequence::Lineality>> = None;
+    // The rows and columns of the program by each other, for rays on a few blocks (made at
+    // the first horizontal side).
+    let mut local_rays: Option<LocalRays> = None;
+    let mut local_misses = 0;
     for (s, comps) in coefficients.iter().enumerate() {
         // The vertical component first: bounded where the structure stands, so the first
         // program has an optimum for the later ones to start from.
@@ -1356,6 +1546,17 @@ fn ranges_from<S: Assembly>(
                 continue;
             }
             let cost = cost_of(cn, ct);
+            if how == RangeSolve::Sequence && cost.iter().all(|&v| v == 0.0) {
+                // A component with no column (a support without a contact point, under an
+                // opening): 0 in every admissible state, no program.
+                ends[s][c] = [Some(0.0), Some(0.0)];
+                out.without_columns += 2;
+                trace(
+                    format_args!("range {} {}: no column, 0", st.support_name(s), labels[c]),
+                    std::time::Instant::now(),
+                );
+                continue;
+            }
             for (e, direction) in [Direction::Minimise, Direction::Maximise]
                 .into_iter()
                 .enumerate()
@@ -1411,6 +1612,29 @@ fn ranges_from<S: Assembly>(
                 let image = mirrored
                     .remove(&(s, c, e))
                     .filter(|m| certified(&program, m));
+                // A horizontal side: a ray on the blocks around the support first (a small
+                // recession program; [`LocalRays`]), certified on this side's program.
+                // Until the first is found, at most LOCAL_RAY_SIDES sides are tried (a
+                // structure whose horizontal sides are all bounded, as with friction, pays
+                // for those few small programs only).
+                if lineality_ray.is_none()
+                    && image.is_none()
+                    && sequence.is_some()
+                    && c != n - 1
+                    && (out.local_rays > 0 || local_misses < LOCAL_RAY_SIDES)
+                {
+                    let local = local_rays.get_or_insert_with(|| LocalRays::new(&base.lp));
+                    let before = out.local_ray_programs;
+                    let found = local.find(&program, solver, &mut out.local_ray_programs);
+                    out.solves += out.local_ray_programs - before;
+                    if let Some((d, cert)) = found {
+                        trace(format_args!("range {side}: local ray {cert:?}"), t0);
+                        out.local_rays += 1;
+                        lineality_ray = Some((d, cert.violation));
+                    } else {
+                        local_misses += 1;
+                    }
+                }
                 let mut tried = if lineality_ray.is_some() {
                     None
                 } else if let Some(m) = image {

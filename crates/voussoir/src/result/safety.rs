@@ -138,6 +138,14 @@ pub struct ReactionRanges {
     /// Endpoints given by the mirror image of another support's optimum (a structure
     /// symmetric about a vertical line), certified on their own program without solving it.
     pub mirrored: usize,
+    /// Endpoints certified unbounded by a ray found on the blocks around the support (a small
+    /// recession program of a few blocks' rows; the ray certified on the side's own program).
+    pub local_rays: usize,
+    /// The small recession programs solved to look for them (counted in `solves` too).
+    pub local_ray_programs: usize,
+    /// Endpoints of a component with no column (a support without a contact point): 0, no
+    /// program.
+    pub without_columns: usize,
 }
 
 impl ReactionRanges {

@@ -44,6 +44,12 @@
 //! step is a valid starting basis for the next, and hands it to the solver layer's warm start
 //! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
+//!
+//! A step whose step before was certified to have no equilibrium on the same open points is
+//! decided by its own no-equilibrium certificate first (`no_equilibrium_first`, the request
+//! layer's default where no method is named): its limit program is solved only where that
+//! certificate does not hold (docs/performance.md, "Capacity steps without equilibrium
+//! (session 21)").
 
 use crate::analysis::canonical::StepSelection;
 pub use crate::analysis::laws::closing_joints;

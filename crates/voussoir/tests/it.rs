@@ -48,6 +48,8 @@ mod issue29_canonical3d;
 mod issue29_canonical_default_all;
 #[path = "issue29_capacity_cert.rs"]
 mod issue29_capacity_cert;
+#[path = "issue29_capacity_no_equilibrium.rs"]
+mod issue29_capacity_no_equilibrium;
 #[path = "issue29_cert025.rs"]
 mod issue29_cert025;
 #[path = "issue29_crossover.rs"]

@@ -44,6 +44,12 @@
 //! step is a valid starting basis for the next, and hands it to the solver layer's warm start
 //! ([`crate::lp::solve_warm`]; HiGHS's simplex takes it, Clarabel solves from scratch).
 //! What that saves is measured in `docs/capacity.md`.
+//!
+//! A step whose step before was certified to have no equilibrium on the same open points is
+//! decided by its own no-equilibrium certificate first (`no_equilibrium_first`, the request
+//! layer's default where no method is named): its limit program is solved only where that
+//! certificate does not hold (docs/performance.md, "Capacity steps without equilibrium
+//! (session 21)").
 
 use crate::analysis::canonical::StepSelection;
 pub use crate::analysis::laws::closing_joints;
@@ -58,6 +64,7 @@ use crate::lp::{self, SolverOptions};
 use crate::programs;
 use crate::reporting::report;
 pub use crate::result::capacity::*;
+use crate::result::limit::NoEquilibriumCertificate;
 use crate::structure::Assembly;
 
 /// Options of the capacity analysis.
@@ -90,6 +97,14 @@ pub struct CapacityOptions {
     /// step by `solver`'s method. The request layer sets it from the solver policy
     /// ([`lp::policy::curve_warm_method`]) where no method is named.
     pub warm_method: Option<lp::Method>,
+    /// Decide a step by its no-equilibrium certificate first (the elastic program,
+    /// [`crate::analysis::limit::no_equilibrium_certificate`]) where the step before was
+    /// certified without equilibrium on the same open points, and solve its limit program only
+    /// where that certificate does not hold; the same for the root finding's settlements next
+    /// to such a step. A step without equilibrium has no limit program to solve (its answer is
+    /// the certificate, which is computed either way). The request layer sets it where no
+    /// method is named (a named method solves every step's limit program, as before).
+    pub no_equilibrium_first: bool,
     /// The canonical selection (docs/canonical.md) of the settlement mechanism, which deforms
     /// the structure (the mechanism stages only); `None`: the solver's own. Only with the
     /// inscribed polygons and associative friction.
@@ -112,6 +127,7 @@ impl Default for CapacityOptions {
             nonassociative: None,
             solver: SolverOptions::default(),
             warm_method: None,
+            no_equilibrium_first: false,
             canonical: None,
             canonical_steps: false,
         }
@@ -261,6 +277,10 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let mut curve = Vec::with_capacity(opts.steps + 1);
     let mut mechanisms = Vec::new();
     let mut values = Vec::with_capacity(opts.steps + 1);
+    // The open points of the step before where it was certified without equilibrium, and of
+    // every such step (for the root finding).
+    let mut last_without: Option<Vec<bool>> = None;
+    let mut certified_without: Vec<Option<Vec<bool>>> = Vec::with_capacity(opts.steps + 1);
     let (mut solves, mut iterations) = (0usize, 0i64);
     for i in 0..=opts.steps {
         let s = smax * i as f64 / opts.steps as f64;
@@ -275,19 +295,47 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
         // columns, same options, no starting basis), so λ(0) is the plain limit analysis
         // exactly, and its basis starts the next step.
+        let open = open_points(&map);
         let clock = std::time::Instant::now();
-        let mut sol = warm.solve(&dst, &map)?;
-        let solved_in = clock.elapsed().as_secs_f64();
-        let mut certificate = step_certificate(&dst, &map, &sol, opts)?;
+        // The step before had no equilibrium (certified) on these open points: this one is
+        // decided by its certificate first, its limit program solved only where that does not
+        // hold (`no_equilibrium_first`).
+        let first = (opts.no_equilibrium_first && last_without.as_ref() == Some(&open))
+            .then(|| elastic_certificate(&dst, &map, opts))
+            .transpose()?;
+        let by_certificate = first
+            .as_ref()
+            .is_some_and(|c| c.as_ref().is_some_and(|c| c.ok));
+        let (mut sol, mut certificate) = if by_certificate {
+            let c = first.flatten();
+            (
+                without_equilibrium(&map, &opts.solver),
+                c.map(|c| StepCertificate {
+                    kind: StepCertificateKind::NoEquilibrium,
+                    gap: None,
+                    admissibility: None,
+                    violation: c.violation,
+                    ok: c.ok,
+                }),
+            )
+        } else {
+            let sol = warm.solve(&dst, &map)?;
+            let certificate = step_certificate(&dst, &map, &sol, opts, first)?;
+            (sol, certificate)
+        };
         if std::env::var_os("VOUSSOIR_TRACE").is_some() {
             eprintln!(
-                "trace: capacity step {i} s {s:.6} {:?} λ {:?} by {:?} it {} in {solved_in:.3} s; certificate {:?} in {:.3} s",
+                "trace: capacity step {i} s {s:.6} {:?} λ {:?} by {} it {}; certificate {:?}; in {:.3} s",
                 sol.status,
                 sol.lambda,
-                sol.solver.method,
+                if by_certificate {
+                    "its no-equilibrium certificate first".to_string()
+                } else {
+                    format!("{:?}", sol.solver.method)
+                },
                 sol.iterations,
                 certificate.as_ref().map(|c| (c.kind, c.ok)),
-                clock.elapsed().as_secs_f64() - solved_in
+                clock.elapsed().as_secs_f64()
             );
         }
         // A multiplier whose certificate does not hold (the warm simplex stopped short: the
@@ -308,7 +356,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
                     ..opts.solver
                 };
                 let again = crate::analysis::limit::solve_limit(&dst, &map, &o)?;
-                let c = step_certificate(&dst, &map, &again, opts)?;
+                let c = step_certificate(&dst, &map, &again, opts, None)?;
                 if c.as_ref().is_some_and(|c| c.ok) {
                     sol = again;
                     certificate = c;
@@ -326,6 +374,13 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         {
             sol.status = LimitStatus::NoEquilibrium;
         }
+        last_without = (sol.status == LimitStatus::NoEquilibrium
+            && sol.lambda.is_none()
+            && certificate
+                .as_ref()
+                .is_some_and(|c| c.ok && c.kind == StepCertificateKind::NoEquilibrium))
+        .then_some(open);
+        certified_without.push(last_without.clone());
         values.push(signed_lambda(&sol));
         // The canonical collapse mechanism among the step's optima (λ unchanged).
         if let (Some(copts), Some(rec), true) =
@@ -374,6 +429,9 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
                 if values[i] == 0.0 {
                     zero = Some(curve[i].settlement);
                 } else {
+                    // A settlement next to a step certified without equilibrium, on its open
+                    // points, is decided by its certificate first (`no_equilibrium_first`).
+                    let without = certified_without[i].as_ref();
                     let lam = |s: f64, w: &mut WarmLimit| -> Result<f64> {
                         let mut dst = path.deformed(s)?;
                         if opts.release_fixed {
@@ -381,7 +439,36 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
                         }
                         let mut map = KinematicMap::new(&dst);
                         map.facets = opts.facets;
-                        Ok(signed_lambda(&w.solve(&dst, &map)?))
+                        let clock = std::time::Instant::now();
+                        // Clarabel alone: near the root the program is nearly feasible, its
+                        // elastic program undecided by every method (HiGHS's interior point
+                        // on it ran for minutes on the 1.0 m grid façade at s = 2.5 mm).
+                        let first = opts.no_equilibrium_first
+                            && without == Some(&open_points(&map))
+                            && elastic_certificate_by(
+                                &dst,
+                                &map,
+                                opts,
+                                Some(&[lp::Method::Clarabel]),
+                            )?
+                            .is_some_and(|c| c.ok);
+                        let v = if first {
+                            f64::NEG_INFINITY
+                        } else {
+                            signed_lambda(&w.solve(&dst, &map)?)
+                        };
+                        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+                            eprintln!(
+                                "trace: capacity root s {s:.9} λ {v} ({}) in {:.3} s",
+                                if first {
+                                    "by its no-equilibrium certificate first"
+                                } else {
+                                    "by its limit program"
+                                },
+                                clock.elapsed().as_secs_f64()
+                            );
+                        }
+                        Ok(v)
                     };
                     zero = Some(illinois(
                         (curve[i - 1].settlement, values[i - 1]),
@@ -515,11 +602,15 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
 /// program unbounded) is decided the same way: where it has no equilibrium at all, the
 /// certificate says so and the caller corrects the status; where it has one, no certificate
 /// (its ray of unbounded λ is not computed).
+///
+/// `elastic`: the step's no-equilibrium certificate where it was already computed
+/// ([`elastic_certificate`]), then not computed again.
 fn step_certificate<S: Assembly>(
     st: &S,
     map: &KinematicMap,
     sol: &LimitSolution,
     opts: &CapacityOptions,
+    elastic: Option<Option<NoEquilibriumCertificate>>,
 ) -> Result<Option<StepCertificate>> {
     if opts.nonassociative.is_some() || opts.crushing == Crushing::Conic {
         return Ok(None);
@@ -539,9 +630,11 @@ fn step_certificate<S: Assembly>(
         return Ok(None);
     }
     let locked = sol.status == LimitStatus::Locked;
-    let (dead, live) = (st.load_vector(false), st.load_vector(true));
-    let fp = programs::limit_force_program(map, &dead, &live);
-    let Some(c) = crate::analysis::limit::no_equilibrium_certificate(&fp, &opts.solver)? else {
+    let c = match elastic {
+        Some(c) => c,
+        None => elastic_certificate(st, map, opts)?,
+    };
+    let Some(c) = c else {
         return Ok(None);
     };
     // Locked and feasible (decided): the certificate would be a ray of unbounded λ (not
@@ -557,6 +650,58 @@ fn step_certificate<S: Assembly>(
         // Decided infeasible, as the step says; a feasible decision contradicts it.
         ok: c.ok,
     }))
+}
+
+/// The certificate that a step's limit program has no equilibrium at any λ, decided on the step's
+/// own program ([`crate::analysis::limit::no_equilibrium_certificate`]: its elastic program with
+/// a Farkas certificate); `None` for the laws without one.
+fn elastic_certificate<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &CapacityOptions,
+) -> Result<Option<NoEquilibriumCertificate>> {
+    elastic_certificate_by(st, map, opts, None)
+}
+
+/// [`elastic_certificate`] by `methods` in turn (`None`: the whole chain of
+/// [`crate::analysis::limit::no_equilibrium_certificate`]).
+fn elastic_certificate_by<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &CapacityOptions,
+    methods: Option<&[lp::Method]>,
+) -> Result<Option<NoEquilibriumCertificate>> {
+    if opts.nonassociative.is_some() || opts.crushing == Crushing::Conic {
+        return Ok(None);
+    }
+    let (dead, live) = (st.load_vector(false), st.load_vector(true));
+    let fp = programs::limit_force_program(map, &dead, &live);
+    match methods {
+        None => crate::analysis::limit::no_equilibrium_certificate(&fp, &opts.solver),
+        Some(m) => crate::analysis::limit::no_equilibrium_certificate_by(&fp, &opts.solver, m),
+    }
+}
+
+/// The points of a step's map that are open (a gap: fixed at zero in its limit program).
+fn open_points(map: &KinematicMap) -> Vec<bool> {
+    map.gap.iter().map(|g| *g > 0.0).collect()
+}
+
+/// The answer of a step decided by its no-equilibrium certificate alone: no equilibrium at any
+/// λ, no limit program solved.
+fn without_equilibrium(map: &KinematicMap, solver: &SolverOptions) -> LimitSolution {
+    LimitSolution {
+        status: LimitStatus::NoEquilibrium,
+        lambda: None,
+        mechanism: vec![],
+        pn: vec![0.0; map.num_points()],
+        pt: vec![0.0; map.num_tangent_rows()],
+        iterations: 0,
+        solver: solver.info(),
+        least: None,
+        note: String::new(),
+        reduced_accuracy: false,
+    }
 }
 
 /// The steps' certificates summed up.

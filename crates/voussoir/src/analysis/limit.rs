@@ -530,6 +530,16 @@ pub fn no_equilibrium_certificate(
     fp: &ForceProgram,
     solver: &SolverOptions,
 ) -> Result<Option<NoEquilibriumCertificate>> {
+    no_equilibrium_certificate_by(fp, solver, &NO_EQUILIBRIUM_METHODS)
+}
+
+/// [`no_equilibrium_certificate`] by `methods` in turn (a cheap first look: Clarabel alone,
+/// where an undecided answer sends the caller to the limit program).
+pub fn no_equilibrium_certificate_by(
+    fp: &ForceProgram,
+    solver: &SolverOptions,
+    methods: &[lp::Method],
+) -> Result<Option<NoEquilibriumCertificate>> {
     if !fp.cones.is_empty() {
         return Ok(None);
     }
@@ -537,7 +547,7 @@ pub fn no_equilibrium_certificate(
         "no-equilibrium certificates",
         "the elastic program decides with a certificate either way, Clarabel first",
     );
-    for method in NO_EQUILIBRIUM_METHODS {
+    for &method in methods {
         let o = SolverOptions { method, ..*solver };
         let t0 = std::time::Instant::now();
         let d = lp::sequence::decide_feasibility(&fp.lp, &o, 0.0)?;

@@ -167,6 +167,9 @@ impl CapacityRequest {
             } else {
                 crate::lp::policy::curve_warm_method(class)
             },
+            // A step after one certified without equilibrium decided by its certificate
+            // first, unless a method is named (then every step's limit program by it).
+            no_equilibrium_first: req.solver.method.is_none(),
             canonical: self.canonical(req, dims).then(super::mechanism_options),
             canonical_steps: self.canonical_steps,
             ..CapacityOptions::default()

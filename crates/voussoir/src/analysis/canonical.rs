@@ -965,13 +965,14 @@ pub fn canonical_forces<S: Assembly>(
             }) {
                 let theta = mu.unwrap_or(0.0);
                 let (lp, scol) = ratio_program(&fp, map, open, theta, Some(&normal));
-                // Clarabel's tighter settings for large programs first (the duals are read),
-                // then its defaults (`decision`) where the duals do not certify: each fails on
-                // some trials the other decides (the 3,200-block wall at θ = 8: dual violation
-                // 3.7e-6 with the defaults, 2.2e-8 tight; the 0.5 m façade in running bond at
-                // θ = 0.5: 3.5e-5 tight, 1.2e-8 with the defaults).
+                // Clarabel's default settings first (`decision`), then its tighter ones for
+                // large programs where the duals do not certify: each fails on some trials
+                // the other decides (the 3,200-block wall at θ = 8: dual violation 3.7e-6
+                // with the defaults, 2.2e-8 tight; the 0.5 m façade in running bond at
+                // θ = 0.5, 3.49 and 3.68: 3.5e-5 to 9.3e-4 tight, certified with the
+                // defaults, which decide all its trials).
                 let settings: &[bool] = if lp.num_cols() >= lp::clarabel::PRESOLVE_MIN_COLUMNS {
-                    &[false, true]
+                    &[true, false]
                 } else {
                     &[true]
                 };

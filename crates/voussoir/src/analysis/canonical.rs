@@ -27,6 +27,11 @@ pub use crate::result::canonical::*;
 use crate::result::Spatial;
 use crate::structure::Assembly;
 
+/// Largest relative row violation ([`LinearProgram::relative_violation`], after clamping onto
+/// the column bounds) at which the stage-2 vertex counts as a point of the least-crack face in
+/// [`canonical_mechanism`]'s shortcut (the solver layer's certificate tolerance).
+const INSIDE_TOLERANCE: f64 = lp::policy::CERTIFICATE_TOLERANCE;
+
 /// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
 pub const MAX_FRICTION: f64 = 100.0;
 
@@ -105,6 +110,11 @@ pub struct CanonicalOptions {
     /// Reaction ranges only for models of at most this many blocks (each range LP is a full
     /// solve; on the 1,889-block façade, 132 of them take many minutes).
     pub ranges_max_blocks: usize,
+    /// Testing: solve the least-crack face's largest value of the generic functional even where
+    /// the stage-2 vertex already shows that face not to be a point (the independent reference
+    /// of the shortcut in [`canonical_mechanism`]). `false` by default.
+    #[doc(hidden)]
+    pub both_extremes: bool,
     /// Testing: the first this many candidate force fields (least energy, admissible) are
     /// treated as uncertified, to exercise the fallback of [`canonical_forces`]. 0 by default.
     #[doc(hidden)]
@@ -148,6 +158,7 @@ impl Default for CanonicalOptions {
             forces: true,
             ranges_max_blocks: 500,
             reject_fields: 0,
+            both_extremes: false,
             energy_qp_iterations: ENERGY_QP_ITERATIONS,
             friction_search: FrictionSearch::Bisection,
         }
@@ -502,14 +513,38 @@ pub fn canonical_mechanism(
     // tells whether the face is a point. These programs are solved from scratch with presolve:
     // most rows of an exact face are equalities, which presolve removes, where a primal simplex
     // warm-started from stage 2 took thousands of pivots on the façade (346 s for one).
+    //
+    // `inside`: a point known to lie on the face (the stage-2 vertex, on the least-crack face).
+    // Where its `r·y` exceeds the minimum by more than the point tolerance, the face is not a
+    // point, the spread is at least that, and the maximum is not solved (the façade's `settle`:
+    // 1.3e-2 above the minimum, where the point tolerance is 2.5e-7; its maximum by the dual
+    // simplex cost 5 CPU s, docs/performance.md "Tilt and the least-crack face's extremes
+    // (session 21)"). The point is checked on the face first (clamped onto the column bounds,
+    // every row within INSIDE_TOLERANCE of its own scale); where it is not, the maximum is
+    // solved as before.
     let r = generic_functional(nd);
     let extremes = |st: &mut Stages,
                     face: &LinearProgram,
-                    warm: Option<&Basis>|
+                    warm: Option<&Basis>,
+                    inside: Option<&[f64]>|
      -> Result<Option<(Vec<f64>, f64)>> {
         let mut lp = face.clone();
         lp.cost[..nd].copy_from_slice(&r);
         let mut lo = st.solve_fresh(&lp, nd)?;
+        if lo.status == LpStatus::Optimal {
+            let known = inside
+                .map(|x| lp.clamped(x))
+                .filter(|x| lp.relative_violation(x) <= INSIDE_TOLERANCE);
+            if let Some(x) = known {
+                let above = lp.objective(&x) - lo.objective;
+                if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+                    eprintln!("trace: extremes: a point of the face {above:.3e} above the minimum (point tolerance {ptol:.3e})");
+                }
+                if above > ptol {
+                    return Ok(Some((lo.x[..nd].iter().map(|v| -v).collect(), above)));
+                }
+            }
+        }
         lp.maximise = true;
         let mut hi = st.solve_fresh(&lp, nd)?;
         // From scratch, the dual simplex can find a face of nearly dependent held rows
@@ -582,7 +617,8 @@ pub fn canonical_mechanism(
             )));
         }
     }
-    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.as_ref())? else {
+    let inside = (!copts.both_extremes).then_some(s2.x.as_slice());
+    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.as_ref(), inside)? else {
         return Ok(None);
     };
     let face2_point = spread2 <= ptol;
@@ -597,7 +633,7 @@ pub fn canonical_mechanism(
     let unique = !changed2
         && face2_point
         && face1_spread.is_none()
-        && extremes(&mut st, &face1, None)?.is_some_and(|(_, w)| w <= ptol);
+        && extremes(&mut st, &face1, None, None)?.is_some_and(|(_, w)| w <= ptol);
     let selected_by = if unique {
         Selection::Optimum
     } else {

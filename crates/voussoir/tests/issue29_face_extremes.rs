@@ -103,3 +103,40 @@ fn settled_facade_generic_vertex_without_the_maximum() {
     assert_eq!(new.blocks, old.blocks);
     assert_eq!(new.work_dead_loads, old.work_dead_loads);
 }
+
+#[test]
+#[ignore = "0.5 m grid facade (2,654 blocks): 33 CPU s with the direct interior point, 50 without (session 21, load 4-6)"]
+fn grid_facade_tilt_maximum_by_the_interior_point_directly() {
+    // docs/performance.md, "Tilt and the least-crack face's extremes (session 21)": the
+    // stage-2 vertex is at the minimum (8.3e-12 above it, point tolerance 5.2e-10), the face
+    // is a point, and its maximum goes to HiGHS's interior point straight away (7,962 degrees
+    // of freedom) instead of after the dual simplex's uncertified answer: one solve fewer.
+    use voussoir::analysis::tilt::tilt_along_canonical;
+    let st = Structure::new(
+        &facade(&FacadeSpec {
+            live: LiveLoad::None,
+            ..bondeno(0.5, FacadeMesh::Grid)
+        })
+        .unwrap(),
+        BuildOptions::default(),
+    )
+    .unwrap();
+    // The CLI's method for this size (HiGHS's interior point with crossover).
+    let o = voussoir::lp::policy::options_for(&st, &SolverOptions::default(), false);
+    let (a_new, new) = tilt_along_canonical(&st, [1.0, 0.0], &o, &options(false)).unwrap();
+    let (a_old, old) = tilt_along_canonical(&st, [1.0, 0.0], &o, &options(true)).unwrap();
+    let (cn, co) = (
+        &new.canonical.as_ref().unwrap().mechanism,
+        &old.canonical.as_ref().unwrap().mechanism,
+    );
+    // The benchmark's answer (session 19): 43.466713°, least crack area, 52 hinges.
+    let a = a_new.unwrap();
+    assert!((a - 43.466713).abs() <= 1e-6, "{a}");
+    assert_eq!(a_new, a_old);
+    assert_eq!(co.selected_by, Selection::LeastCrackArea);
+    same_selection(cn, co);
+    assert_eq!(cn.solves + 1, co.solves, "new {cn:?}, old {co:?}");
+    assert_eq!(new.hinges.len(), 52);
+    assert_eq!(new.hinges, old.hinges);
+    assert_eq!(new.blocks, old.blocks);
+}

@@ -28,8 +28,8 @@ use crate::result::Spatial;
 use crate::structure::Assembly;
 
 /// Largest row violation (the solver layer's certificate's, [`lp::policy::violation`], after
-/// clamping onto the column bounds) at which the stage-2 vertex counts as a point of the least-crack face in
-/// [`canonical_mechanism`]'s shortcut (the solver layer's certificate tolerance).
+/// clamping onto the column bounds) at which the stage-2 vertex counts as a point of the
+/// least-crack face in [`canonical_mechanism`] (the solver layer's certificate tolerance).
 const INSIDE_TOLERANCE: f64 = lp::policy::CERTIFICATE_TOLERANCE;
 
 /// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
@@ -110,9 +110,10 @@ pub struct CanonicalOptions {
     /// Reaction ranges only for models of at most this many blocks (each range LP is a full
     /// solve; on the 1,889-block façade, 132 of them take many minutes).
     pub ranges_max_blocks: usize,
-    /// Testing: solve the least-crack face's largest value of the generic functional even where
-    /// the stage-2 vertex already shows that face not to be a point (the independent reference
-    /// of the shortcut in [`canonical_mechanism`]). `false` by default.
+    /// Testing: the least-crack face's two extremes of the generic functional as before session
+    /// 21 — the maximum solved even where the stage-2 vertex already shows that face not to be
+    /// a point, and by the dual simplex first where it does not (the independent reference of
+    /// both shortcuts in [`canonical_mechanism`]). `false` by default.
     #[doc(hidden)]
     pub both_extremes: bool,
     /// Testing: the first this many candidate force fields (least energy, admissible) are

@@ -105,7 +105,7 @@ fn settled_facade_generic_vertex_without_the_maximum() {
 }
 
 #[test]
-#[ignore = "0.5 m grid facade (2,654 blocks): 33 CPU s with the direct interior point, 50 without (session 21, load 4-6)"]
+#[ignore = "0.5 m grid facade (2,654 blocks): both selections 88.6 CPU s (session 21, load 2-4)"]
 fn grid_facade_tilt_maximum_by_the_interior_point_directly() {
     // docs/performance.md, "Tilt and the least-crack face's extremes (session 21)": the
     // stage-2 vertex is at the minimum (8.3e-12 above it, point tolerance 5.2e-10), the face

@@ -72,6 +72,8 @@ mod issue29_extremes_fallback;
 mod issue29_facade_sequences;
 #[path = "issue29_facade_shortcuts.rs"]
 mod issue29_facade_shortcuts;
+#[path = "issue29_face_extremes.rs"]
+mod issue29_face_extremes;
 #[path = "issue29_fixes.rs"]
 mod issue29_fixes;
 #[path = "issue29_force_stage.rs"]

@@ -27,6 +27,11 @@ pub use crate::result::canonical::*;
 use crate::result::Spatial;
 use crate::structure::Assembly;
 
+/// Largest row violation (the solver layer's certificate's, [`lp::policy::violation`], after
+/// clamping onto the column bounds) at which the stage-2 vertex counts as a point of the
+/// least-crack face in [`canonical_mechanism`] (the solver layer's certificate tolerance).
+const INSIDE_TOLERANCE: f64 = lp::policy::CERTIFICATE_TOLERANCE;
+
 /// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
 pub const MAX_FRICTION: f64 = 100.0;
 
@@ -105,6 +110,12 @@ pub struct CanonicalOptions {
     /// Reaction ranges only for models of at most this many blocks (each range LP is a full
     /// solve; on the 1,889-block façade, 132 of them take many minutes).
     pub ranges_max_blocks: usize,
+    /// Testing: the least-crack face's two extremes of the generic functional as before session
+    /// 21 — the maximum solved even where the stage-2 vertex already shows that face not to be
+    /// a point, and by the dual simplex first where it does not (the independent reference of
+    /// both shortcuts in [`canonical_mechanism`]). `false` by default.
+    #[doc(hidden)]
+    pub both_extremes: bool,
     /// Testing: the first this many candidate force fields (least energy, admissible) are
     /// treated as uncertified, to exercise the fallback of [`canonical_forces`]. 0 by default.
     #[doc(hidden)]
@@ -152,6 +163,7 @@ impl Default for CanonicalOptions {
             forces: true,
             ranges_max_blocks: 500,
             reject_fields: 0,
+            both_extremes: false,
             energy_qp_iterations: ENERGY_QP_ITERATIONS,
             friction_search: FrictionSearch::Bisection,
             elastic_trials: None,
@@ -317,6 +329,20 @@ impl Stages {
                 r.as_ref().map(|s| s.iterations),
             );
         }
+        r
+    }
+
+    /// Solve from scratch with `method` and presolve, and that method's fallback chain.
+    fn solve_with(&mut self, lp: &LinearProgram, method: Method) -> Result<lp::LpSolution> {
+        let saved = self.opts;
+        self.opts = SolverOptions {
+            method,
+            presolve: true,
+            ..saved
+        };
+        let mut none = None;
+        let r = self.solve(lp, &mut none);
+        self.opts = saved;
         r
     }
 
@@ -508,16 +534,63 @@ pub fn canonical_mechanism(
     // tells whether the face is a point. These programs are solved from scratch with presolve:
     // most rows of an exact face are equalities, which presolve removes, where a primal simplex
     // warm-started from stage 2 took thousands of pivots on the façade (346 s for one).
+    //
+    // `inside`: a point known to lie on the face (the stage-2 vertex, on the least-crack face).
+    // Where its `r·y` exceeds the minimum by more than the point tolerance, the face is not a
+    // point, the spread is at least that, and the maximum is not solved (the façade's `settle`:
+    // 1.3e-2 above the minimum, where the point tolerance is 2.5e-7; its maximum by the dual
+    // simplex cost 5 CPU s, docs/performance.md "Tilt and the least-crack face's extremes
+    // (session 21)"). The point is checked on the face first (clamped onto the column bounds,
+    // its violation by the certificate's measure within INSIDE_TOLERANCE); where it is not,
+    // the maximum is solved as before.
     let r = generic_functional(nd);
     let extremes = |st: &mut Stages,
                     face: &LinearProgram,
-                    warm: Option<&Basis>|
+                    warm: Option<&Basis>,
+                    inside: Option<&[f64]>|
      -> Result<Option<(Vec<f64>, f64)>> {
         let mut lp = face.clone();
         lp.cost[..nd].copy_from_slice(&r);
         let mut lo = st.solve_fresh(&lp, nd)?;
+        let mut likely_point = false;
+        if lo.status == LpStatus::Optimal {
+            let known = inside.map(|x| lp.clamped(x)).map(|x| {
+                let v = lp::policy::violation(&lp, &x);
+                (x, v)
+            });
+            if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+                if let Some((x, v)) = &known {
+                    eprintln!(
+                        "trace: extremes: the stage-2 vertex {:.3e} above the minimum (point tolerance {ptol:.3e}), violation {v:.1e}",
+                        lp.objective(x) - lo.objective
+                    );
+                }
+            }
+            if let Some((x, _)) = known.filter(|(_, v)| *v <= INSIDE_TOLERANCE) {
+                let above = lp.objective(&x) - lo.objective;
+                if above > ptol {
+                    return Ok(Some((lo.x[..nd].iter().map(|v| -v).collect(), above)));
+                }
+                likely_point = true;
+            }
+        }
         lp.maximise = true;
-        let mut hi = st.solve_fresh(&lp, nd)?;
+        // Where the stage-2 vertex is at the minimum too, the face is likely a point. On a
+        // large program its maximum then goes to the method that answers an extreme after the
+        // dual simplex (lp::policy::extremes_fallback) straight away: on the 0.5 m grid
+        // façade's `tilt` (a point) the dual simplex's maximum took 10,944 iterations, about
+        // 13 CPU s, and was not certified, before the interior point answered. Not where the
+        // face is not a point: the same interior point on the settled façade's maximum (a
+        // segment) had not answered after 400 CPU s, where the dual simplex took 5.
+        let direct = if likely_point {
+            lp::policy::extremes_fallback(nd)
+        } else {
+            None
+        };
+        let mut hi = match direct {
+            Some(m) => st.solve_with(&lp, m)?,
+            None => st.solve_fresh(&lp, nd)?,
+        };
         // From scratch, the dual simplex can find a face of nearly dependent held rows
         // empty to its tolerances where the stage-2 vertex lies in it (the 30 × 20 wall with
         // μ = 0.6: both extremes "infeasible"). Then from that vertex's basis, by the primal
@@ -588,7 +661,8 @@ pub fn canonical_mechanism(
             )));
         }
     }
-    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.as_ref())? else {
+    let inside = (!copts.both_extremes).then_some(s2.x.as_slice());
+    let Some((d3, spread2)) = extremes(&mut st, &face2, basis.as_ref(), inside)? else {
         return Ok(None);
     };
     let face2_point = spread2 <= ptol;
@@ -603,7 +677,7 @@ pub fn canonical_mechanism(
     let unique = !changed2
         && face2_point
         && face1_spread.is_none()
-        && extremes(&mut st, &face1, None)?.is_some_and(|(_, w)| w <= ptol);
+        && extremes(&mut st, &face1, None, None)?.is_some_and(|(_, w)| w <= ptol);
     let selected_by = if unique {
         Selection::Optimum
     } else {

@@ -338,7 +338,7 @@ pub fn certificate(lp: &LinearProgram, s: &LpSolution) -> Option<LpCertificate> 
 /// (`LinearProgram::relative_violation`) rejects every interior-point answer with a residual
 /// of 1e-10 of the loads on a row whose terms nearly vanish (measured: Clarabel's settlements
 /// of the paper's arch, 1.8e-2; the vault's, 5.6e-2, whose analyses certify them).
-fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+pub fn violation(lp: &LinearProgram, x: &[f64]) -> f64 {
     let mut act = vec![0.0; lp.num_rows()];
     let mut size = vec![0.0; lp.num_rows()];
     for (j, &xj) in x.iter().enumerate() {

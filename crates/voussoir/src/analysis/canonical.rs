@@ -130,8 +130,9 @@ pub struct CanonicalOptions {
     /// normalised elastic trials (session 17)").
     pub friction_search: FrictionSearch,
     /// Whether the bisection's trials (2D) are asked first as bounded elastic programs
-    /// ([`canonical_forces`]); `None` (the default): as [`lp::policy::elastic_trials`] says
-    /// for the force program's size.
+    /// ([`canonical_forces`]): `Some(true)` from the first trial on, `Some(false)` never;
+    /// `None` (the default): on a program of the size [`lp::policy::elastic_trials`] names,
+    /// after the first trial Clarabel proved infeasible slowly.
     pub elastic_trials: Option<bool>,
 }
 
@@ -734,6 +735,14 @@ pub fn open_points(map: &KinematicMap, d: &[f64], support_scale: f64) -> Vec<boo
         .collect()
 }
 
+/// Whether the least-μ bisection asks its trials as elastic programs ([`canonical_forces`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ElasticTrials {
+    Off,
+    Armed,
+    On,
+}
+
 /// The least dual bound on an elastic trial's optimum `s` (relative to θ) that shows θ
 /// inadmissible in the bisection's elastic trials ([`canonical_forces`]).
 const ELASTIC_MARGIN: f64 = 1e-3;
@@ -999,16 +1008,23 @@ pub fn canonical_forces<S: Assembly>(
     let mut admissible: Option<(Option<f64>, bool, Vec<f64>)> = None;
     // Feasibility at μ (None: the model's own laws), with a warm basis shared by all μ.
     let mut basis: Option<Basis> = None;
-    // Elastic trials first (2D, large programs: lp::policy::elastic_trials), and how many
+    // The elastic trials (2D): `Off` for good, `Armed` (a large program, lp::policy::
+    // elastic_trials: on after the first slow proof of infeasibility) or `On`; and how many
     // trials they decided.
-    let elastic_on = std::cell::Cell::new(copts.elastic_trials.unwrap_or_else(|| {
-        map.tangents_per_point == 1
+    let elastic_on = std::cell::Cell::new(match copts.elastic_trials {
+        Some(true) => ElasticTrials::On,
+        Some(false) => ElasticTrials::Off,
+        None if map.tangents_per_point == 1
             && lp::policy::elastic_trials(
                 programs::physical_force_program(map, &build, value, tol, open, None, false)
                     .lp
                     .num_cols(),
-            )
-    }));
+            ) =>
+        {
+            ElasticTrials::Armed
+        }
+        None => ElasticTrials::Off,
+    });
     let elastic_count = std::cell::Cell::new(0usize);
     let feasible = |stages: &mut Stages,
                     mu: Option<f64>,
@@ -1023,15 +1039,16 @@ pub fn canonical_forces<S: Assembly>(
         // programs go along the fallback chain; one that reaches no conclusion there counts as
         // infeasible (that μ is not imposed).
         let single = mu.is_some_and(|m| m > 0.0);
-        // A large 2D program's trial is asked first as the bounded elastic program of the
+        // On a large 2D program, once Clarabel has proved a trial infeasible slowly (more than
+        // lp::policy::ELASTIC_SWITCH_ITERATIONS iterations: it is slow where a trial is nearly
+        // feasible, 83–101 iterations against 23–37 for a feasible one on the 0.5 m façade in
+        // running bond), every later trial is asked first as the bounded elastic program of the
         // ratio search (`ratio_program`, normalised by the last admissible field's normal
-        // forces): Clarabel proves a trial infeasible slowly where it is nearly feasible
-        // (83–101 iterations against 23–37 for a feasible one on the 0.5 m façade in running
-        // bond), and the elastic program answers the same question as fast as a feasible trial:
-        // `s = 0` (its field's own ratio at most θ) is admissible, an optimum bounded above 0
-        // by certified duals is inadmissible. Otherwise the feasibility trial decides, as on
-        // small programs, and the elastic trials stop for this search (lp::policy).
-        if single && elastic_on.get() && map.tangents_per_point == 1 {
+        // forces), which answers the same question in the time of a feasible trial: `s = 0`
+        // (its field's own ratio at most θ) is admissible, an optimum bounded above 0 by
+        // certified duals is inadmissible. Otherwise the feasibility trial decides, as on small
+        // programs, and the elastic trials stop for this search.
+        if single && elastic_on.get() == ElasticTrials::On && map.tangents_per_point == 1 {
             if let Some(normal) = admissible.as_ref().map(|(m0, r0, x)| {
                 programs::physical_force_program(map, &build, value, tol, open, *m0, *r0)
                     .forces(x)
@@ -1090,7 +1107,7 @@ pub fn canonical_forces<S: Assembly>(
                         _ => {}
                     }
                 }
-                elastic_on.set(false);
+                elastic_on.set(ElasticTrials::Off);
             }
         }
         let solved = if single {
@@ -1099,7 +1116,15 @@ pub fn canonical_forces<S: Assembly>(
             stages.solve(&fp.lp, basis)
         };
         match solved {
-            Ok(s) if s.status == LpStatus::Infeasible => Ok(Trial::Inadmissible),
+            Ok(s) if s.status == LpStatus::Infeasible => {
+                if single
+                    && elastic_on.get() == ElasticTrials::Armed
+                    && s.iterations > lp::policy::ELASTIC_SWITCH_ITERATIONS
+                {
+                    elastic_on.set(ElasticTrials::On);
+                }
+                Ok(Trial::Inadmissible)
+            }
             Ok(s) if s.status == LpStatus::Optimal => {
                 // In 2D the field's own largest |p_t|/p_n (with the tolerance of
                 // `friction_demand` below) is an admissible μ too, often well below the one

@@ -146,14 +146,22 @@ pub fn curve_warm_method(class: &ProblemClass) -> Option<Method> {
         .then_some(Method::DualSimplex)
 }
 
-/// The smallest 2D force program (columns) whose least-μ bisection asks each trial first as a
-/// bounded elastic program (`analysis::canonical`). Clarabel's proof that a nearly feasible
+/// The smallest 2D force program (columns) whose least-μ bisection asks its trials as bounded
+/// elastic programs (`analysis::canonical`) once Clarabel has proved one trial infeasible in
+/// more than [`ELASTIC_SWITCH_ITERATIONS`] iterations. Clarabel's proof that a nearly feasible
 /// trial is infeasible is its slow case: on the 0.5 m façade in running bond (2,672 blocks,
-/// 30,640 columns) 83–101 iterations and 15–20 s each against 23–37 iterations for a feasible
-/// trial, where the elastic program took 26–39 (the force stage 74 → 33 s of wall clock,
-/// docs/performance.md "Least-μ trials as elastic programs (session 21)"). Small programs keep
-/// the feasibility trials, which decide in a second, and their results as before.
+/// 30,640 columns) 83–101 iterations and 8.5–10.5 s each against 23–37 iterations for a
+/// feasible trial, where the elastic program took 26–39. Small programs keep the feasibility
+/// trials, which decide in a second, and their results as before (docs/performance.md
+/// "Least-μ trials as elastic programs (session 21)").
 pub const ELASTIC_TRIAL_MIN_COLUMNS: usize = 20_000;
+
+/// Clarabel's iterations on an infeasible trial above which the least-μ bisection of a large
+/// 2D program turns to elastic trials. From the first trial on, they cost the 3,200-block
+/// stack-bond wall more than they saved (its infeasible trials took 9, 23 and 80 iterations,
+/// 0.9–7.3 s; the elastic trials at the same θ 45, 41 and 129): the switch waits for a trial
+/// that shows the slow case.
+pub const ELASTIC_SWITCH_ITERATIONS: i64 = 50;
 
 /// Whether the least-μ bisection of a 2D force program of `columns` columns asks its trials
 /// first as elastic programs.

@@ -9,13 +9,10 @@
 //!   simplex reaches its pivot cap, instead of solving both faces' extremes from scratch.
 
 mod support;
-use support::{least_friction_by_bisection, readme_wall};
+use support::{least_friction_by_bisection, readme_wall, stack_wall_20x10};
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions, Selection};
 use voussoir::analysis::settlement::{settle, SettlementForm};
 use voussoir::lp::SolverOptions;
-use voussoir::outline_mesh::{mesh_wall, Foundation, MeshKind, MeshOptions, Outline};
-use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::{BuildOptions, Structure};
 
 #[test]
 fn issue29_item5_least_friction_to_its_precision_against_a_bisection() {
@@ -81,33 +78,8 @@ fn issue29_item5_least_friction_to_its_precision_against_a_bisection() {
 /// reference: the solver's own mechanism and work, unchanged, and the uncapped selection.
 #[test]
 fn issue29_item5_early_uniqueness_test_keeps_the_fallback_answer() {
-    let outline = Outline {
-        outer: vec![[0.0, 0.0], [20.0, 0.0], [20.0, 5.0], [0.0, 5.0]],
-        holes: vec![],
-    };
-    let mut m = mesh_wall(
-        &outline,
-        &MeshKind::Grid {
-            length: 1.0,
-            height: 0.5,
-        },
-        18.0,
-        1.0,
-        &Foundation::segments(20, "f", 0.5),
-        &MeshOptions::default(),
-    )
-    .unwrap();
-    assert_eq!(m.blocks.len(), 200);
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 0.0,
-            x1: 6.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
-    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let st = stack_wall_20x10();
+    assert_eq!(st.num_blocks(), 200);
     let o = SolverOptions::default();
     let raw = settle(&st, &o).unwrap();
     let mut results = Vec::new();

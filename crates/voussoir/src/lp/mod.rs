@@ -834,11 +834,18 @@ impl Outcome {
             LpStatus::Infeasible => Outcome::Infeasible,
             LpStatus::Unbounded => Outcome::Unbounded,
             // A feasibility program (no objective): any point that holds its rows is an
-            // optimum, certified by the primal half alone.
+            // optimum, certified by the primal half alone — by the point, whatever the duals,
+            // to the solver layer's certificate tolerance (policy::CERTIFICATE_TOLERANCE, as
+            // `policy::check` accepts an optimum). Regression: the 0.5 m running-bond façade's
+            // `safety` stands at f = 0 by Clarabel's point on the merged program (3.6e-11 of
+            // its largest bound, `sequence::decide_directly`), whose largest row violation
+            // relative to the row's own terms is 2.6e-7: above the sequence's 1e-7, so the
+            // realistic benchmark called the cell "not certified".
             LpStatus::Optimal if lp.cost.iter().all(|&c| c == 0.0) => {
-                match sequence::certify(lp, s) {
-                    Some(c) if c.primal <= sequence::CERTIFICATE_TOLERANCE => Outcome::Certified,
-                    _ => Outcome::NotCertified,
+                if sequence::primal_violation(lp, &s.x) <= policy::CERTIFICATE_TOLERANCE {
+                    Outcome::Certified
+                } else {
+                    Outcome::NotCertified
                 }
             }
             LpStatus::Optimal if sequence::certify(lp, s).is_some_and(|c| c.ok()) => {
@@ -1222,6 +1229,40 @@ mod tests {
         assert_eq!(
             solve(&lp, &SolverOptions::default()).unwrap().status,
             LpStatus::Infeasible
+        );
+    }
+
+    /// Regression (session 21): a feasibility program's answer is certified by its point
+    /// alone, with or without duals; a point off the rows is not.
+    #[test]
+    fn a_feasibility_answer_is_certified_by_its_point() {
+        let mut lp = tiny_lp();
+        lp.cost.iter_mut().for_each(|c| *c = 0.0);
+        let answer = |x: Vec<f64>| LpSolution {
+            status: LpStatus::Optimal,
+            objective: 0.0,
+            x,
+            row_dual: vec![],
+            col_dual: vec![],
+            iterations: 1,
+            dual_objective: f64::NAN,
+            reduced_accuracy: false,
+            method: Method::Clarabel,
+            tried: vec![],
+        };
+        // Rows x0 + 2 x1 ≤ 4 and 3 x0 + x1 ≤ 6 at (1.6, 1.2): both tight.
+        assert_eq!(
+            Outcome::of(&lp, &answer(vec![1.6, 1.2])),
+            Outcome::Certified
+        );
+        // Within the solver layer's tolerance (5e-7 of the row's terms), and 1 % over.
+        assert_eq!(
+            Outcome::of(&lp, &answer(vec![1.6, 1.2 + 1e-6])),
+            Outcome::Certified
+        );
+        assert_eq!(
+            Outcome::of(&lp, &answer(vec![1.6, 1.22])),
+            Outcome::NotCertified
         );
     }
 }

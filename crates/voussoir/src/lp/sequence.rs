@@ -575,7 +575,7 @@ pub fn decide_directly(
 }
 
 /// [`Certificate::primal`].
-fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
+pub(crate) fn primal_violation(lp: &LinearProgram, x: &[f64]) -> f64 {
     violation_with(lp, x, |b| b, |b, _| b)
 }
 

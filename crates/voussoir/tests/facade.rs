@@ -1,11 +1,12 @@
 //! The façade generator: valid geometry (simple polygons, no overlaps, every element touching
 //! something), areas against closed forms, radial voussoirs, and the paper's settlement case.
 
+mod support;
+use support::settle_right_half;
 use voussoir::analysis::settlement::{settle_with, SettlementForm, SettlementStatus};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh, FacadeSpec, Opening};
 use voussoir::geometry::{area_centroid, cross, sub};
 use voussoir::lp::SolverOptions;
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::structure::Body;
 use voussoir::{BuildOptions, Structure};
 
@@ -166,17 +167,8 @@ fn bad_facades_are_refused_in_one_line() {
 fn paper_settlement_of_half_the_facade_fractures_it() {
     // Coarser elements keep the test quick; the example uses 0.5 m.
     let spec = bondeno(0.8, FacadeMesh::Grid);
-    let mut m = facade(&spec).unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 11.0,
-            x1: 22.0,
-            v: -0.2,
-        },
-    )
-    .unwrap();
-    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let m = facade(&spec).unwrap();
+    let st = settle_right_half(m);
     let r = settle_with(&st, &SolverOptions::default(), SettlementForm::ForceOnly).unwrap();
     assert_eq!(r.status, SettlementStatus::Mechanism);
     let c = r.certificate.as_ref().unwrap();

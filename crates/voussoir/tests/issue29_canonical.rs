@@ -6,7 +6,7 @@
 //! fields (a faster search tried for item 5 stopped 1.5 % above it; docs/canonical.md).
 
 mod support;
-use support::{least_friction_by_bisection, readme_wall};
+use support::{least_friction_by_bisection, readme_wall, settle_right_half};
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
 use voussoir::analysis::settlement::settle;
 use voussoir::analysis::settlement::SettlementForm;
@@ -15,8 +15,7 @@ use voussoir::dim::Three;
 use voussoir::generate::ArchSpec;
 use voussoir::generate3d::{dome, vault, Bond, DomeSpec};
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::{BuildOptions, Structure, Structure3d};
+use voussoir::{BuildOptions, Structure3d};
 
 #[test]
 fn issue29_item5_least_friction_equals_a_bisection() {
@@ -52,17 +51,8 @@ fn issue29_item5_least_friction_equals_a_bisection() {
 #[test]
 fn issue29_item5_facade_selection_returns_a_record() {
     use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
-    let mut m = facade(&bondeno(0.6, FacadeMesh::Grid)).unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 11.0,
-            x1: 22.0,
-            v: -0.2,
-        },
-    )
-    .unwrap();
-    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let m = facade(&bondeno(0.6, FacadeMesh::Grid)).unwrap();
+    let st = settle_right_half(m);
     let copts = CanonicalOptions {
         reaction_ranges: false,
         forces: false,

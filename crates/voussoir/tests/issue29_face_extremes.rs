@@ -5,6 +5,8 @@
 //! scratch (`CanonicalOptions::both_extremes`, the path before session 21), and that it was
 //! taken by the count of the selection's solves (one program fewer).
 
+mod support;
+use support::settle_right_half;
 use voussoir::analysis::canonical::{
     limit_canonical, settle_canonical, CanonicalMechanism, CanonicalOptions, Selection,
 };
@@ -12,7 +14,6 @@ use voussoir::analysis::settlement::SettlementForm;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh, FacadeSpec};
 use voussoir::lp::SolverOptions;
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
 
 fn options(both_extremes: bool) -> CanonicalOptions {
@@ -74,21 +75,12 @@ fn settled_facade_generic_vertex_without_the_maximum() {
     // The README's façade (`bondeno`) at 1 m (716 blocks), settling by 0.2 m under
     // x ∈ [11, 22] m (as the 0.5 m façade of docs/performance.md, session 21, whose maximum
     // this saves 5 CPU s; at 2 m the least-crack face is a point).
-    let mut m = facade(&FacadeSpec {
+    let m = facade(&FacadeSpec {
         live: LiveLoad::Horizontal,
         ..bondeno(1.0, FacadeMesh::Grid)
     })
     .unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 11.0,
-            x1: 22.0,
-            v: -0.2,
-        },
-    )
-    .unwrap();
-    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let st = settle_right_half(m);
     let o = SolverOptions::default();
     let new = settle_canonical(&st, &o, SettlementForm::Both, &options(false)).unwrap();
     let old = settle_canonical(&st, &o, SettlementForm::Both, &options(true)).unwrap();

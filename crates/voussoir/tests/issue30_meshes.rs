@@ -8,6 +8,8 @@
 //! λ = b/h (hand calculation below); the paper's façade settlement against the same façade
 //! meshed as a grid and as a running bond.
 
+mod support;
+use support::settle_right_half;
 use voussoir::analysis::limit::limit;
 use voussoir::analysis::settlement::{settle_with, SettlementForm, SettlementStatus};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
@@ -19,7 +21,6 @@ use voussoir::outline_mesh::{
     MeshOptions, Outline,
 };
 use voussoir::result::limit::LimitStatus;
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
 
 /// An 8 × 5 m wall with a door notch (1.2 × 2.2 m) in its base, a rectangular window
@@ -569,17 +570,8 @@ fn issue30_item1_a_triangle_panel_tips_along_its_diagonal_crack_as_by_hand() {
 }
 
 fn settle_facade(element: f64, mesh: FacadeMesh) -> (f64, f64, usize) {
-    let mut m = facade(&bondeno(element, mesh)).unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 11.0,
-            x1: 22.0,
-            v: -0.2,
-        },
-    )
-    .unwrap();
-    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let m = facade(&bondeno(element, mesh)).unwrap();
+    let st = settle_right_half(m);
     let r = settle_with(&st, &SolverOptions::default(), SettlementForm::ForceOnly).unwrap();
     assert_eq!(r.status, SettlementStatus::Mechanism, "{mesh:?}");
     let c = r.certificate.as_ref().unwrap();

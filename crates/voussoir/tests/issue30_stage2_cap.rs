@@ -8,26 +8,17 @@
 //! the fallback reaches the same least crack area and the same canonical mechanism as the
 //! uncapped warm simplex (the reference: a different method on the same program).
 
+mod support;
+use support::settle_right_half;
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions, STAGE2_PIVOTS};
 use voussoir::analysis::settlement::SettlementForm;
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::{collecting, SolverOptions};
-use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::{BuildOptions, Structure};
 
 #[test]
 fn issue30_stage2_beyond_its_pivot_cap_the_fallback_gives_the_same_canonical_mechanism() {
-    let mut m = facade(&bondeno(1.0, FacadeMesh::Grid)).unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 11.0,
-            x1: 22.0,
-            v: -0.2,
-        },
-    )
-    .unwrap();
-    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let m = facade(&bondeno(1.0, FacadeMesh::Grid)).unwrap();
+    let st = settle_right_half(m);
     let base = CanonicalOptions {
         reaction_ranges: false,
         forces: false,

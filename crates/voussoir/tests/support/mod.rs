@@ -207,6 +207,21 @@ pub fn facade_grid(element: f64) -> Structure {
     Structure::new(&m, BuildOptions::default()).unwrap()
 }
 
+/// `m` (the paper's façade, Fig 18) with the right half of its base, x ∈ [11, 22] m, 0.2 m
+/// down (docs/canonical.md, the realistic benchmark's settlement), as a structure.
+pub fn settle_right_half(mut m: voussoir::model::Model) -> Structure {
+    apply_profile(
+        &mut m,
+        &Profile::Uniform {
+            x0: 11.0,
+            x1: 22.0,
+            v: -0.2,
+        },
+    )
+    .unwrap();
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
 /// `gen dome --courses C --segments S --crown-load P`: the other fields default (radius 5 m,
 /// thickness 0.3 m, a hemisphere).
 pub fn dome_model(courses: usize, segments: usize, crown_load: f64) -> Model3d {

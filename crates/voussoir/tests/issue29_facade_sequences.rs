@@ -24,7 +24,7 @@
 //! Times on the 0.5 m façades: docs/performance.md, "Façade safety and capacity (session 18)".
 
 mod support;
-use support::facade_grid;
+use support::{facade_grid, least_fraction_from_scratch};
 use voussoir::analysis::safety::{merged_columns, safety, shrunk_map, Decisions, SafetyOptions};
 use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
@@ -165,25 +165,7 @@ fn issue29_a_bisection_that_falls_below_one_sixteenth_gives_the_same_fraction() 
     let f = r.least_joint_fraction.unwrap();
     assert!((1.0 / f - 1.015886).abs() < 1e-5, "factor {}", 1.0 / f);
     // The bisection by hand on independent programs (each from scratch).
-    let base = KinematicMap::new(&st);
-    let dead = st.load_vector(false);
-    let scratch = |f: f64| {
-        let fp = equilibrium_program(&shrunk_map(&st, &base, f), &dead);
-        voussoir::lp::solve(&fp.lp, &SolverOptions::default())
-            .unwrap()
-            .status
-            != voussoir::lp::LpStatus::Infeasible
-    };
-    let (mut lo, mut hi) = (0.0, 1.0);
-    while hi - lo > 1e-6 {
-        let mid = 0.5 * (lo + hi);
-        if scratch(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    assert_eq!(f, hi);
+    assert_eq!(f, least_fraction_from_scratch(&st));
 }
 
 #[test]

@@ -16,15 +16,11 @@
 //! Times: docs/performance.md, "0.5 m façade safety (session 21)".
 
 mod support;
-use support::same_ranges;
-use voussoir::analysis::safety::{
-    reaction_ranges_by, safety, shrunk_map, RangeSolve, SafetyOptions,
-};
-use voussoir::discretize::KinematicMap;
+use support::{least_fraction_from_scratch, same_ranges, stands_from_scratch};
+use voussoir::analysis::safety::{reaction_ranges_by, safety, RangeSolve, SafetyOptions};
 use voussoir::generate::{arch, ArchSpec, LiveLoad, RadiusAt};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh, FacadeSpec, Opening};
-use voussoir::lp::{collecting, LpStatus, Outcome, SolverOptions};
-use voussoir::programs::equilibrium_program;
+use voussoir::lp::{collecting, Outcome, SolverOptions};
 use voussoir::structure::Body;
 use voussoir::{Assembly, BuildOptions, Structure};
 
@@ -146,24 +142,6 @@ fn issue29_clarabel_at_zero_after_one_half_leaves_a_finite_factor_as_it_was() {
         .filter(|r| r.programs == "elastic decisions")
         .count();
     assert_eq!(asked, 1, "{records:?}");
-    let base = KinematicMap::new(&st);
-    let dead = st.load_vector(false);
-    let scratch = |f: f64| {
-        let fp = equilibrium_program(&shrunk_map(&st, &base, f), &dead);
-        voussoir::lp::solve(&fp.lp, &SolverOptions::default())
-            .unwrap()
-            .status
-            != LpStatus::Infeasible
-    };
-    assert!(!scratch(0.0));
-    let (mut lo, mut hi) = (0.0, 1.0);
-    while hi - lo > 1e-6 {
-        let mid = 0.5 * (lo + hi);
-        if scratch(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    assert_eq!(f, hi);
+    assert!(!stands_from_scratch(&st, 0.0));
+    assert_eq!(f, least_fraction_from_scratch(&st));
 }

@@ -6,13 +6,14 @@
 //! in a release build are `#[ignore]`d with their measured time, and their numbers are in
 //! docs/cracks.md ("The paper's façade: adapted").
 
+mod support;
+use support::right_half_down;
 use voussoir::analysis::adapt::{hausdorff_polylines, settle_adapt, AdaptOptions};
 use voussoir::analysis::canonical::{settle_canonical, CanonicalOptions};
 use voussoir::analysis::settlement::{settle, SettlementForm};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
 use voussoir::lp::SolverOptions;
 use voussoir::model::{Model, Point};
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
 
 /// The Hausdorff distance by hand: two segments, a V and its chord, a point and a segment.
@@ -48,17 +49,7 @@ fn issue30_item2_hausdorff_distance_of_polylines_by_hand() {
 
 /// The façade meshed with `element` (m) and `mesh`, the right half settling 20 cm.
 fn settling_facade(element: f64, mesh: FacadeMesh) -> Model {
-    let mut m = facade(&bondeno(element, mesh)).unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 11.0,
-            x1: 22.0,
-            v: -0.2,
-        },
-    )
-    .unwrap();
-    m
+    right_half_down(facade(&bondeno(element, mesh)).unwrap())
 }
 
 /// The work of the dead loads (the solver's own vertex, certified) and the longest crack.

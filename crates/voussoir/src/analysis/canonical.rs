@@ -1131,23 +1131,7 @@ pub fn canonical_forces<S: Assembly>(
                 // imposed; in 3D the rows are the pyramid's facets, not |p_t|, so μ stands.
                 let mut ratio = mu.unwrap_or(f64::INFINITY);
                 if let (1, Some(_)) = (map.tangents_per_point, mu) {
-                    let (pn, pt) = fp.forces(&s.x);
-                    let eps = 1e-8 * max_abs(&pn).max(max_abs(&pt));
-                    let mut r = 0.0f64;
-                    for k in 0..map.num_points() {
-                        let law = &map.laws[map.points[k].joint];
-                        if law.friction.is_some() || map.bilateral[k] || (relaxed && open[k]) {
-                            continue;
-                        }
-                        if pt[k].abs() > eps {
-                            r = r.max(if pn[k] > 0.0 {
-                                (pt[k].abs() - eps) / pn[k]
-                            } else {
-                                f64::INFINITY
-                            });
-                        }
-                    }
-                    ratio = ratio.min(r);
+                    ratio = ratio.min(field_ratio(map, &fp, &s.x, relaxed, open));
                 }
                 *admissible = Some((mu, relaxed, s.x));
                 Ok(Trial::Admissible(ratio))

@@ -209,7 +209,12 @@ pub fn facade_grid(element: f64) -> Structure {
 
 /// `m` (the paper's façade, Fig 18) with the right half of its base, x ∈ [11, 22] m, 0.2 m
 /// down (docs/canonical.md, the realistic benchmark's settlement), as a structure.
-pub fn settle_right_half(mut m: voussoir::model::Model) -> Structure {
+pub fn settle_right_half(m: voussoir::model::Model) -> Structure {
+    Structure::new(&right_half_down(m), BuildOptions::default()).unwrap()
+}
+
+/// The model of [`settle_right_half`].
+pub fn right_half_down(mut m: voussoir::model::Model) -> voussoir::model::Model {
     apply_profile(
         &mut m,
         &Profile::Uniform {
@@ -219,7 +224,33 @@ pub fn settle_right_half(mut m: voussoir::model::Model) -> Structure {
         },
     )
     .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
+    m
+}
+
+/// Whether `st` stands with every joint shrunk to the fraction `f`: the equilibrium program of
+/// the shrunk joints solved from scratch by the default method (not infeasible).
+pub fn stands_from_scratch(st: &Structure, f: f64) -> bool {
+    let base = KinematicMap::new(st);
+    let fp = programs::equilibrium_program(
+        &voussoir::analysis::safety::shrunk_map(st, &base, f),
+        &st.load_vector(false),
+    );
+    lp::solve(&fp.lp, &SolverOptions::default()).unwrap().status != LpStatus::Infeasible
+}
+
+/// The least joint fraction at which `st` stands, by a bisection by hand to 1e-6 on
+/// [`stands_from_scratch`] (the upper end of the final bracket).
+pub fn least_fraction_from_scratch(st: &Structure) -> f64 {
+    let (mut lo, mut hi) = (0.0, 1.0);
+    while hi - lo > 1e-6 {
+        let mid = 0.5 * (lo + hi);
+        if stands_from_scratch(st, mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
 }
 
 /// `gen dome --courses C --segments S --crown-load P`: the other fields default (radius 5 m,

@@ -96,6 +96,8 @@ mod issue29_policy;
 mod issue29_qp_budget;
 #[path = "issue29_recertify.rs"]
 mod issue29_recertify;
+#[path = "issue29_secant_fraction.rs"]
+mod issue29_secant_fraction;
 #[path = "issue29_sequences.rs"]
 mod issue29_sequences;
 #[path = "issue29_symmetric_ranges3d.rs"]

@@ -14,10 +14,14 @@
 
 mod support;
 use support::{dome_structure, least_fraction_from_scratch, offset_stack};
-use voussoir::analysis::safety::{least_joint_fraction, least_joint_fraction_by, FractionSearch};
+use voussoir::analysis::safety::{
+    least_joint_fraction, least_joint_fraction_by, least_thickness, least_thickness_by,
+    FractionSearch,
+};
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
+use voussoir::generate3d::{dome, DomeSpec};
 use voussoir::lp::SolverOptions;
-use voussoir::{BuildOptions, Structure};
+use voussoir::{BuildOptions, Structure, Structure3d};
 
 const SECANT: FractionSearch = FractionSearch {
     secant: true,
@@ -84,4 +88,36 @@ fn issue29_item6_secant_search_equals_the_bisection_on_a_dome() {
     assert_eq!(fd, fb, "default {fd} against bisection {fb}");
     assert!(fs > 0.0 && fs < 1.0, "{fs}");
     assert!(ns < nb, "{ns} programs against the bisection's {nb}");
+}
+
+#[test]
+fn issue29_item6_secant_search_of_the_least_thickness_equals_the_bisection() {
+    // `least-thickness` of a 4 × 12 dome (R = 5 m, centreline radius): the same bracket bit
+    // for bit with the secant steps and with plain bisection (each thickness asked about a node
+    // of the bisection's tree), and by the default search (warm dual simplex decisions).
+    let build = |t: f64| {
+        Structure3d::new(
+            &dome(&DomeSpec {
+                thickness: t,
+                courses: 4,
+                segments: 12,
+                ..DomeSpec::default()
+            })?,
+            BuildOptions::default(),
+        )
+    };
+    let o = SolverOptions::default();
+    let (lo, hi, tol) = (0.05, 2.5, 5e-6 * 5.0);
+    let s = least_thickness_by(build, lo, hi, tol, &o, SECANT).unwrap();
+    let b = least_thickness_by(build, lo, hi, tol, &o, BISECTION).unwrap();
+    let d = least_thickness(build, lo, hi, tol, &o).unwrap();
+    assert_eq!((s.thickness, s.below), (b.thickness, b.below));
+    assert_eq!((d.thickness, d.below), (b.thickness, b.below));
+    assert!(b.thickness - b.below <= tol && b.thickness > b.below);
+    assert!(
+        s.steps < b.steps,
+        "{} steps against the bisection's {}",
+        s.steps,
+        b.steps
+    );
 }

@@ -471,7 +471,9 @@ fn secant_fraction(below: &[(f64, f64)], lo: f64, hi: f64, grid: f64) -> Option<
     let [.., (f1, v1), (f2, v2)] = below else {
         return None;
     };
-    if *f2 != lo || !(f1 < f2) || !(*v2 > 0.0 && v1 > v2) {
+    // Finite, increasing fractions with falling, positive violations (NaN fails each test).
+    let usable = *f2 == lo && f1 < f2 && *v2 > 0.0 && v1 > v2;
+    if !usable {
         return None;
     }
     let g = f2 + v2 * (f2 - f1) / (v1 - v2);
@@ -587,7 +589,9 @@ fn search_fraction<S: Assembly>(
         } else {
             None
         };
-        let mid = step.unwrap_or(0.5 * (lo + hi));
+        // The midpoint on the grid (after a secant step the bracket need not be a node of the
+        // bisection's tree; within one it is the bisection's midpoint, exactly).
+        let mid = step.unwrap_or(((0.5 * (lo + hi)) / grid).floor() * grid);
         if d.stands(&shrunk_map(st, &base, mid), &dead)? {
             hi = mid;
             if step.is_some() && probing.is_none() {
@@ -2147,12 +2151,38 @@ pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult>
 /// `[lo, hi]` to the absolute tolerance `tolerance`: it must not stand at `lo` and must stand
 /// at `hi`. `build` is any generator with its other parameters fixed, e.g.
 /// `|t| Structure::new(&arch(&ArchSpec { thickness: t, ..spec })?, BuildOptions::default())`.
+/// Secant steps on the elastic program's least violations shorten the bisection to the same
+/// answer, as in [`least_joint_fraction`] (every thickness asked about is a node of the
+/// bisection's tree, computed by the same halvings).
 pub fn least_thickness<S: Assembly>(
     build: impl Fn(f64) -> Result<S>,
     lo: f64,
     hi: f64,
     tolerance: f64,
     solver: &SolverOptions,
+) -> Result<LeastThickness> {
+    least_thickness_by(
+        build,
+        lo,
+        hi,
+        tolerance,
+        solver,
+        FractionSearch {
+            secant: true,
+            elastic: false,
+        },
+    )
+}
+
+/// [`least_thickness`] with the search chosen (for tests, as [`least_joint_fraction_by`]).
+#[doc(hidden)]
+pub fn least_thickness_by<S: Assembly>(
+    build: impl Fn(f64) -> Result<S>,
+    lo: f64,
+    hi: f64,
+    tolerance: f64,
+    solver: &SolverOptions,
+    search: FractionSearch,
 ) -> Result<LeastThickness> {
     if !(lo.is_finite() && hi.is_finite() && 0.0 < lo && lo < hi) {
         return Err(Error::Request(format!(
@@ -2165,30 +2195,105 @@ pub fn least_thickness<S: Assembly>(
         )));
     }
     let mut d = Decisions::new(solver);
-    let mut at = |t: f64| -> Result<bool> {
+    let elastic = search.elastic;
+    // Whether it stands at `t`, and the least violation where the elastic program said not.
+    let mut at = |t: f64| -> Result<(bool, Option<f64>)> {
         let st = build(t)?;
-        d.stands(&KinematicMap::new(&st), &st.load_vector(false))
+        if elastic && d.solves > 0 {
+            d.warm_failed = true;
+        }
+        let stands = d.stands(&KinematicMap::new(&st), &st.load_vector(false))?;
+        Ok((stands, d.last_violation))
     };
-    if at(lo)? {
+    if at(lo)?.0 {
         return Err(Error::Request(format!(
             "the structure already stands at the lower thickness {lo}: give a smaller one"
         )));
     }
-    if !at(hi)? {
+    if !at(hi)?.0 {
         return Err(Error::Request(format!(
             "the structure does not stand at the upper thickness {hi}: give a larger one"
         )));
     }
-    let (mut a, mut b) = (lo, hi);
-    let mut steps = 0;
-    while b - a > tolerance {
-        let mid = 0.5 * (a + b);
-        steps += 1;
-        if at(mid)? {
-            b = mid;
-        } else {
-            a = mid;
+    // The bisection on `[lo, hi]`, with the secant steps of [`search_fraction`] on the
+    // elastic program's least violations: every thickness asked about is a node of the
+    // bisection's tree (`node`: computed by the halvings the bisection would take to it, so
+    // the same number bit for bit), and the search ends with the bisection's last bracket.
+    let depth = {
+        let (mut w, mut m) = (hi - lo, 0u32);
+        while w > tolerance && m < 60 {
+            w *= 0.5;
+            m += 1;
         }
+        m
+    };
+    let top = 1u64 << depth;
+    let node = |k: u64| -> f64 {
+        let (mut a, mut b, mut ia, mut ib) = (lo, hi, 0u64, top);
+        if k == 0 {
+            return lo;
+        }
+        if k == top {
+            return hi;
+        }
+        loop {
+            let im = ia + (ib - ia) / 2;
+            let m = 0.5 * (a + b);
+            if k == im || ib - ia < 2 {
+                return m;
+            }
+            if k < im {
+                (ib, b) = (im, m);
+            } else {
+                (ia, a) = (im, m);
+            }
+        }
+    };
+    let (mut a, mut b) = (lo, hi);
+    let (mut ka, mut kb) = (0u64, top);
+    let mut steps = 0;
+    // The thicknesses at which it did not stand, with their least violations.
+    let mut below: Vec<(f64, f64)> = Vec::new();
+    let mut secant_ok = true;
+    let mut probe: Option<u64> = None;
+    while b - a > tolerance && kb - ka >= 2 {
+        let width = kb - ka;
+        let probing = probe.take().filter(|&k| k > ka && k < kb);
+        let step = probing.or_else(|| {
+            if !search.secant || !secant_ok {
+                return None;
+            }
+            let [.., (t1, v1), (t2, v2)] = below[..] else {
+                return None;
+            };
+            let usable = t2 == a && t1 < t2 && v2 > 0.0 && v1 > v2;
+            if !usable {
+                return None;
+            }
+            let g = t2 + v2 * (t2 - t1) / (v1 - v2);
+            if !(g.is_finite() && g < b) {
+                return None;
+            }
+            let k = ((g - lo) / (hi - lo) * top as f64).ceil();
+            let k = if k.is_finite() { k.max(0.0) as u64 } else { kb };
+            Some(k.clamp(ka + 1, kb - 1))
+        });
+        let k = step.unwrap_or(ka + width / 2);
+        let mid = node(k);
+        steps += 1;
+        let (stands, violation) = at(mid)?;
+        if stands {
+            (b, kb) = (mid, k);
+            if step.is_some() && probing.is_none() {
+                probe = Some(k - 1);
+            }
+        } else {
+            (a, ka) = (mid, k);
+            if let Some(v) = violation {
+                below.push((mid, v));
+            }
+        }
+        secant_ok = step.is_none() || (probing.is_none() && kb - ka <= width / 2);
     }
     Ok(LeastThickness {
         thickness: b,

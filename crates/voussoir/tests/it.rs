@@ -100,6 +100,8 @@ mod issue29_recertify;
 mod issue29_sequences;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
+#[path = "issue29_undecided_ipm.rs"]
+mod issue29_undecided_ipm;
 #[path = "issue29_vault_friction_safety.rs"]
 mod issue29_vault_friction_safety;
 #[path = "issue30_adapt.rs"]

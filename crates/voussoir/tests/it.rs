@@ -94,6 +94,8 @@ mod issue29_outcomes;
 mod issue29_policy;
 #[path = "issue29_qp_budget.rs"]
 mod issue29_qp_budget;
+#[path = "issue29_range_twins.rs"]
+mod issue29_range_twins;
 #[path = "issue29_recertify.rs"]
 mod issue29_recertify;
 #[path = "issue29_sequences.rs"]

@@ -86,6 +86,8 @@ mod issue29_friction_precision;
 mod issue29_incremental_canonical;
 #[path = "issue29_least_mu.rs"]
 mod issue29_least_mu;
+#[path = "issue29_least_twins.rs"]
+mod issue29_least_twins;
 #[path = "issue29_local_rays.rs"]
 mod issue29_local_rays;
 #[path = "issue29_outcomes.rs"]

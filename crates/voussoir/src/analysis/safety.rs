@@ -1382,7 +1382,7 @@ const TWIN_TOLERANCE: f64 = 1e-12;
 /// twins dropped at 0 (the kept column's entries are the program's own: every row holds
 /// exactly as it did), and every answer is expanded so and certified on the whole program
 /// before it is used (a dropped twin's reduced cost is its kept twin's, to round-off).
-struct Twins {
+pub(crate) struct Twins {
     /// The column of the whole program of each column of the reduced one.
     keep: Vec<usize>,
     /// The reduced program's column of each column of the whole (its twin's where dropped),
@@ -1393,7 +1393,7 @@ struct Twins {
 impl Twins {
     /// The twins of `lp`'s columns, where each objective in `costs` gives them the same
     /// coefficient; `None` where there are none.
-    fn of(lp: &lp::LinearProgram, costs: &[Vec<f64>]) -> Option<Twins> {
+    pub(crate) fn of(lp: &lp::LinearProgram, costs: &[Vec<f64>]) -> Option<Twins> {
         use std::collections::HashMap;
         let n = lp.num_cols();
         // Candidates by their bounds, row pattern and costs (bit for bit); their entries are
@@ -1455,7 +1455,7 @@ impl Twins {
         Some(Twins { keep, of })
     }
 
-    fn program(&self, lp: &lp::LinearProgram) -> lp::LinearProgram {
+    pub(crate) fn program(&self, lp: &lp::LinearProgram) -> lp::LinearProgram {
         let mut out = lp::LinearProgram::new(if lp.maximise {
             Direction::Maximise
         } else {
@@ -1471,12 +1471,12 @@ impl Twins {
     }
 
     /// A vector of the whole program's columns (an objective) on the reduced one.
-    fn reduce(&self, v: &[f64]) -> Vec<f64> {
+    pub(crate) fn reduce(&self, v: &[f64]) -> Vec<f64> {
         self.keep.iter().map(|&j| v[j]).collect()
     }
 
     /// A point or direction of the reduced program as one of the whole (the twins at 0).
-    fn expand(&self, v: &[f64]) -> Vec<f64> {
+    pub(crate) fn expand(&self, v: &[f64]) -> Vec<f64> {
         self.of
             .iter()
             .map(|&(k, kept)| if kept { v[k] } else { 0.0 })
@@ -1485,7 +1485,7 @@ impl Twins {
 
     /// A solution of the reduced program as one of the whole: the dropped twins at 0 with
     /// their twin's reduced cost (certified on the whole program by the caller).
-    fn solution(&self, mut s: LpSolution) -> LpSolution {
+    pub(crate) fn solution(&self, mut s: LpSolution) -> LpSolution {
         if s.x.len() == self.keep.len() {
             s.x = self.expand(&s.x);
         }
@@ -1497,7 +1497,7 @@ impl Twins {
 
     /// A basis of the whole program as one of the reduced: a kept column is basic where it
     /// or a dropped twin is (the twins are dependent: at most one of them is basic).
-    fn basis(&self, b: &lp::Basis) -> lp::Basis {
+    pub(crate) fn basis(&self, b: &lp::Basis) -> lp::Basis {
         let mut cols: Vec<BasisStatus> = self.keep.iter().map(|&j| b.cols[j]).collect();
         for (j, &(k, kept)) in self.of.iter().enumerate() {
             if !kept && b.cols[j] == BasisStatus::Basic {

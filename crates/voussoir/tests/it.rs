@@ -86,6 +86,8 @@ mod issue29_friction_precision;
 mod issue29_incremental_canonical;
 #[path = "issue29_least_mu.rs"]
 mod issue29_least_mu;
+#[path = "issue29_least_twins.rs"]
+mod issue29_least_twins;
 #[path = "issue29_local_rays.rs"]
 mod issue29_local_rays;
 #[path = "issue29_outcomes.rs"]
@@ -94,6 +96,8 @@ mod issue29_outcomes;
 mod issue29_policy;
 #[path = "issue29_qp_budget.rs"]
 mod issue29_qp_budget;
+#[path = "issue29_range_twins.rs"]
+mod issue29_range_twins;
 #[path = "issue29_recertify.rs"]
 mod issue29_recertify;
 #[path = "issue29_sequences.rs"]

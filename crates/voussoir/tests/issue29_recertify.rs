@@ -66,7 +66,7 @@ fn issue29_item2_an_uncertified_settlement_is_solved_again_and_says_so() {
             r.solver
                 .tried
                 .iter()
-                .any(|t| t.starts_with("clarabel: the settlement's duality gap")),
+                .any(|t| t.starts_with("clarabel at feasibility tolerance")),
             "{:?}",
             r.solver.tried
         );
@@ -100,4 +100,95 @@ fn issue29_item2_an_uncertified_settlement_is_solved_again_and_says_so() {
         mech.crack_area,
         mech.crack_area_solver
     );
+}
+
+/// The 20 × 10 running-bond wall of 1 × 0.5 m units (205 blocks, 20 foundation segments) with
+/// μ = `mu`, the 6 segments under x ∈ [0, 6] settling 1 cm.
+fn wall_near_least_friction(mu: f64) -> Structure {
+    let mut m = wall(&WallSpec {
+        courses: 10,
+        units: 20,
+        unit: [1.0, 0.5],
+        ..WallSpec::default()
+    })
+    .unwrap();
+    for mat in m.materials.values_mut() {
+        mat.friction = Some(mu);
+    }
+    for s in m.supports.iter_mut().take(6) {
+        s.motion = [0.0, -0.01, 0.0];
+    }
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+/// Found in session 22: near the least friction at which it stands on the other supports
+/// (2.29 on this wall), the settlement's work is small (0.036 kN·m at μ = 2.0, 2e-3 of the
+/// dead load times the settlement), and every method's force LP, optimal to the default
+/// feasibility tolerance 1e-9, left its work 2e-8 to 1e-6 kN·m off the motion LP's: `settle
+/// --friction 2.0` printed "WARNING: the duality gap 2.689e-5 exceeds 1e-7: the result is not
+/// certified" with every method and with the canonical selection. The same method at 1e-10
+/// certifies (gaps below 1e-12); both analyses now retry so and say so.
+#[test]
+fn issue29_item2_a_small_work_uncertified_at_1e9_is_solved_again_at_1e10() {
+    // (μ = 2.2 fails and is recovered the same way: gap 5.0e-7 at 1e-9; one value keeps CI short.)
+    for mu in [2.0] {
+        let st = wall_near_least_friction(mu);
+        // The defect as it was: the dual simplex's pair at 1e-9 does not certify (so that the
+        // retry below is exercised; if HiGHS ever certifies it, this part says so).
+        let map = voussoir::discretize::KinematicMap::new(&st);
+        let first =
+            voussoir::analysis::settlement::solve_settlement(&st, &map, &SolverOptions::default())
+                .unwrap();
+        let first_gap = (first.primal - first.dual).abs() / first.primal.abs();
+        assert!(first_gap > 1e-7, "μ = {mu}: gap {first_gap:e} at 1e-9");
+
+        // The reference: HiGHS's interior point with crossover at 1e-10, a method independent
+        // of the dual simplex, its two LPs' works.
+        let reference = voussoir::analysis::settlement::solve_settlement(
+            &st,
+            &map,
+            &SolverOptions {
+                method: Method::Ipm,
+                feasibility_tolerance: 1e-10,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        let wref = reference.primal;
+        assert!(
+            (reference.primal - reference.dual).abs() <= 1e-9 * wref,
+            "μ = {mu}"
+        );
+
+        let raw = settle_with(&st, &SolverOptions::default(), SettlementForm::Both).unwrap();
+        let canonical = settle_canonical(
+            &st,
+            &SolverOptions::default(),
+            SettlementForm::Both,
+            &CanonicalOptions::default(),
+        )
+        .unwrap();
+        for r in [&raw, &canonical] {
+            let c = r.certificate.as_ref().unwrap();
+            assert!(c.ok && c.relative_gap <= 1e-7, "μ = {mu}: {}", r.message);
+            assert!(!r.message.contains("WARNING"), "{}", r.message);
+            let w = r.work_dead_loads.unwrap();
+            assert!(
+                (w - wref).abs() <= 1e-9 * wref,
+                "μ = {mu}: {w} against {wref}"
+            );
+            assert_eq!(r.solver.method, Method::DualSimplex);
+            assert!(
+                r.solver
+                    .tried
+                    .iter()
+                    .any(|t| t.starts_with("dual-simplex at feasibility tolerance 1e-9:")),
+                "{:?}",
+                r.solver.tried
+            );
+            assert!(r
+                .message
+                .contains("after dual-simplex at feasibility tolerance 1e-9"));
+        }
+    }
 }

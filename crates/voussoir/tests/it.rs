@@ -86,6 +86,8 @@ mod issue29_friction_precision;
 mod issue29_incremental_canonical;
 #[path = "issue29_least_mu.rs"]
 mod issue29_least_mu;
+#[path = "issue29_least_twins.rs"]
+mod issue29_least_twins;
 #[path = "issue29_local_rays.rs"]
 mod issue29_local_rays;
 #[path = "issue29_outcomes.rs"]
@@ -94,6 +96,8 @@ mod issue29_outcomes;
 mod issue29_policy;
 #[path = "issue29_qp_budget.rs"]
 mod issue29_qp_budget;
+#[path = "issue29_range_twins.rs"]
+mod issue29_range_twins;
 #[path = "issue29_recertify.rs"]
 mod issue29_recertify;
 #[path = "issue29_secant_fraction.rs"]
@@ -102,6 +106,8 @@ mod issue29_secant_fraction;
 mod issue29_sequences;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
+#[path = "issue29_undecided_ipm.rs"]
+mod issue29_undecided_ipm;
 #[path = "issue29_vault_friction_safety.rs"]
 mod issue29_vault_friction_safety;
 #[path = "issue30_adapt.rs"]

@@ -1619,11 +1619,50 @@ fn stage_options(opts: &SolverOptions) -> SolverOptions {
 /// solver's own solution is [`settlement::settle_with`]. The motion LP is solved first (its
 /// basis starts the selection; `form` applies to the solver's own solution only), the force
 /// LP only if no physical optimal field is found.
+///
+/// Where the result's certificate fails at the feasibility tolerance asked (two LPs each
+/// optimal to 1e-9 can leave a small work's two sides more than 1e-7 apart), the whole analysis
+/// runs once more at [`lp::policy::RETRY_FEASIBILITY_TOLERANCE`], as the solver's own
+/// settlement does (`settlement::recertify`), and that result is reported if it certifies, its
+/// `tried` naming the first attempt.
 pub fn settle_canonical<S: Assembly>(
     st: &S,
     opts: &SolverOptions,
     form: SettlementForm,
     copts: &CanonicalOptions,
+) -> Result<SettlementResult<S::D>> {
+    let r = settle_canonical_at(st, opts, form, copts, &[])?;
+    let tight = lp::policy::RETRY_FEASIBILITY_TOLERANCE;
+    let gap = match &r.certificate {
+        Some(c) if !c.ok && r.status == SettlementStatus::Mechanism => c.relative_gap,
+        _ => return Ok(r),
+    };
+    if opts.feasibility_tolerance <= tight {
+        return Ok(r);
+    }
+    let why = format!(
+        "{} at feasibility tolerance {:.0e}: the settlement's duality gap {gap:.1e} exceeds {:.0e}",
+        r.solver.method.name(),
+        opts.feasibility_tolerance,
+        FIELD_GAP_TOLERANCE
+    );
+    let o2 = SolverOptions {
+        feasibility_tolerance: tight,
+        ..*opts
+    };
+    match settle_canonical_at(st, &o2, form, copts, &[why]) {
+        Ok(r2) if r2.certificate.as_ref().is_some_and(|c| c.ok) => Ok(r2),
+        _ => Ok(r),
+    }
+}
+
+/// [`settle_canonical`] at the options given, `tried` heading the solver's record.
+fn settle_canonical_at<S: Assembly>(
+    st: &S,
+    opts: &SolverOptions,
+    form: SettlementForm,
+    copts: &CanonicalOptions,
+    tried: &[String],
 ) -> Result<SettlementResult<S::D>> {
     let map = KinematicMap::new(st);
     let dead = st.load_vector(false);
@@ -1668,6 +1707,10 @@ pub fn settle_canonical<S: Assembly>(
         }
         trace("forces", t0);
     }
+    // The method that solved the motion program (after any fallback), as the solver's own
+    // settlement reports it.
+    let mut solver = primal.solver_info();
+    solver.tried.splice(0..0, tried.iter().cloned());
     let (pn, pt) = match pnt {
         Some(p) => p,
         None => {
@@ -1686,9 +1729,7 @@ pub fn settle_canonical<S: Assembly>(
         mechanism: d,
         pn,
         pt,
-        // The method that solved the motion program (after any fallback), as the solver's own
-        // settlement reports it.
-        solver: primal.solver_info(),
+        solver,
     };
     let mut r = settlement::settlement_result_checked(st, &map, &s);
     if mech.is_none() {

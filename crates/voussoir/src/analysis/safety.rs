@@ -25,7 +25,7 @@
 use crate::dim::Dim;
 use crate::discretize::{ContactJoint, KinematicMap};
 use crate::error::{Error, Result};
-use crate::lp::{self, Direction, LpSolution, LpStatus, SolverOptions};
+use crate::lp::{self, BasisStatus, Direction, LpSolution, LpStatus, SolverOptions};
 use crate::programs;
 pub use crate::result::safety::*;
 use crate::structure::{Assembly, Body};
@@ -1516,6 +1516,148 @@ impl LocalRays {
     }
 }
 
+/// Largest difference, relative to the column's largest entry, between two columns that
+/// [`Twins`] takes as one (round-off: in 2D the two shear forces of a joint have the same
+/// entries but for the last bits of the moment's).
+const TWIN_TOLERANCE: f64 = 1e-12;
+
+/// The reaction ranges' sequence on the equilibrium program with one column of each set of
+/// twins: columns with the same bounds (`[0, ∞)` or free), the same entries to
+/// [`TWIN_TOLERANCE`] and the same coefficient in every objective of the ranges. In 2D the two
+/// shear forces of a joint are such twins (on the 0.5 m grid façade a quarter of the
+/// program's 20,992 columns). A point of the reduced program is one of the whole with the
+/// twins dropped at 0 (the kept column's entries are the program's own: every row holds
+/// exactly as it did), and every answer is expanded so and certified on the whole program
+/// before it is used (a dropped twin's reduced cost is its kept twin's, to round-off).
+pub(crate) struct Twins {
+    /// The column of the whole program of each column of the reduced one.
+    keep: Vec<usize>,
+    /// The reduced program's column of each column of the whole (its twin's where dropped),
+    /// and whether it is the kept one.
+    of: Vec<(usize, bool)>,
+}
+
+impl Twins {
+    /// The twins of `lp`'s columns, where each objective in `costs` gives them the same
+    /// coefficient; `None` where there are none.
+    pub(crate) fn of(lp: &lp::LinearProgram, costs: &[Vec<f64>]) -> Option<Twins> {
+        use std::collections::HashMap;
+        let n = lp.num_cols();
+        // Candidates by their bounds, row pattern and costs (bit for bit); their entries are
+        // compared within the tolerance below.
+        let mut groups: HashMap<Vec<u64>, Vec<usize>> = HashMap::new();
+        for j in 0..n {
+            let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
+            if !((lo == 0.0 || lo == f64::NEG_INFINITY) && hi == f64::INFINITY) {
+                continue;
+            }
+            let mut k = vec![lo.to_bits(), lp.cost[j].to_bits()];
+            k.extend(lp.column(j).map(|(i, _)| i as u64));
+            k.push(u64::MAX);
+            for (o, c) in costs.iter().enumerate() {
+                if c[j] != 0.0 {
+                    k.push(o as u64);
+                    k.push(c[j].to_bits());
+                }
+            }
+            groups.entry(k).or_default().push(j);
+        }
+        let mut twin_of: Vec<Option<usize>> = vec![None; n];
+        let mut any = false;
+        for cols in groups.values().filter(|c| c.len() > 1) {
+            let mut kept: Vec<usize> = Vec::new();
+            for &j in cols {
+                let a: Vec<f64> = lp.column(j).map(|(_, v)| v).collect();
+                let scale = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                let same = kept.iter().copied().find(|&r| {
+                    lp.column(r)
+                        .zip(&a)
+                        .all(|((_, v), w)| (v - w).abs() <= TWIN_TOLERANCE * scale)
+                });
+                match same {
+                    Some(r) => {
+                        twin_of[j] = Some(r);
+                        any = true;
+                    }
+                    None => kept.push(j),
+                }
+            }
+        }
+        if !any {
+            return None;
+        }
+        let mut keep = Vec::new();
+        let mut of = vec![(0, false); n];
+        for j in 0..n {
+            if twin_of[j].is_none() {
+                of[j] = (keep.len(), true);
+                keep.push(j);
+            }
+        }
+        for j in 0..n {
+            if let Some(r) = twin_of[j] {
+                of[j] = (of[r].0, false);
+            }
+        }
+        Some(Twins { keep, of })
+    }
+
+    pub(crate) fn program(&self, lp: &lp::LinearProgram) -> lp::LinearProgram {
+        let mut out = lp::LinearProgram::new(if lp.maximise {
+            Direction::Maximise
+        } else {
+            Direction::Minimise
+        });
+        for i in 0..lp.num_rows() {
+            out.add_row(lp.row_lower[i], lp.row_upper[i]);
+        }
+        for &j in &self.keep {
+            out.add_column(lp.cost[j], lp.col_lower[j], lp.col_upper[j], lp.column(j));
+        }
+        out
+    }
+
+    /// A vector of the whole program's columns (an objective) on the reduced one.
+    pub(crate) fn reduce(&self, v: &[f64]) -> Vec<f64> {
+        self.keep.iter().map(|&j| v[j]).collect()
+    }
+
+    /// A point or direction of the reduced program as one of the whole (the twins at 0).
+    pub(crate) fn expand(&self, v: &[f64]) -> Vec<f64> {
+        self.of
+            .iter()
+            .map(|&(k, kept)| if kept { v[k] } else { 0.0 })
+            .collect()
+    }
+
+    /// A solution of the reduced program as one of the whole: the dropped twins at 0 with
+    /// their twin's reduced cost (certified on the whole program by the caller).
+    pub(crate) fn solution(&self, mut s: LpSolution) -> LpSolution {
+        if s.x.len() == self.keep.len() {
+            s.x = self.expand(&s.x);
+        }
+        if s.col_dual.len() == self.keep.len() {
+            s.col_dual = self.of.iter().map(|&(k, _)| s.col_dual[k]).collect();
+        }
+        s
+    }
+
+    /// A basis of the whole program as one of the reduced: a kept column is basic where it
+    /// or a dropped twin is (the twins are dependent: at most one of them is basic).
+    pub(crate) fn basis(&self, b: &lp::Basis) -> lp::Basis {
+        let mut cols: Vec<BasisStatus> = self.keep.iter().map(|&j| b.cols[j]).collect();
+        for (j, &(k, kept)) in self.of.iter().enumerate() {
+            if !kept && b.cols[j] == BasisStatus::Basic {
+                cols[k] = BasisStatus::Basic;
+            }
+        }
+        lp::Basis {
+            cols,
+            rows: b.rows.clone(),
+        }
+    }
+}
+
 /// How the reaction ranges are solved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum RangeSolve {
@@ -1624,6 +1766,7 @@ fn ranges_from<S: Assembly>(
         local_rays: 0,
         local_ray_programs: 0,
         without_columns: 0,
+        twin_columns: 0,
     };
     // A mirror symmetry of the program: each side solved gives its mirror image's
     // (the mirrored support's side, checked by its certificate on that program) and each ray
@@ -1647,14 +1790,43 @@ fn ranges_from<S: Assembly>(
     };
     let mut mirrored: std::collections::HashMap<(usize, usize, usize), LpSolution> =
         std::collections::HashMap::new();
+    // The sequence runs on the program with one column of each set of twins ([`Twins`]).
+    let twins = match how {
+        RangeSolve::Sequence => {
+            let costs: Vec<Vec<f64>> = coefficients
+                .iter()
+                .flat_map(|comps| comps.iter().map(|(cn, ct)| cost_of(cn, ct)))
+                .collect();
+            Twins::of(&base.lp, &costs)
+        }
+        RangeSolve::Independent => None,
+    };
+    out.twin_columns = twins
+        .as_ref()
+        .map_or(0, |t| base.lp.num_cols() - t.keep.len());
+    trace(
+        format_args!(
+            "ranges: {} of {} columns kept (twins dropped)",
+            twins.as_ref().map_or(base.lp.num_cols(), |t| t.keep.len()),
+            base.lp.num_cols()
+        ),
+        std::time::Instant::now(),
+    );
     let mut sequence = match how {
         RangeSolve::Sequence => {
-            let mut seq = lp::sequence::Sequence::new(base.lp.clone(), solver)?;
+            let reduced = match &twins {
+                Some(t) => t.program(&base.lp),
+                None => base.lp.clone(),
+            };
+            let mut seq = lp::sequence::Sequence::new(reduced, solver)?;
             seq.limit_warm_iterations(Some(warm_limit(&base.lp)));
             // A feasible vertex of these constraints (the bisection's first program): the
             // first endpoint goes on from it with the primal simplex.
             if let Some(b) = start {
-                seq.start_from(b);
+                seq.start_from(match &twins {
+                    Some(t) if b.cols.len() == base.lp.num_cols() => t.basis(&b),
+                    _ => b,
+                });
             }
             Some(seq)
         }
@@ -1709,8 +1881,8 @@ fn ranges_from<S: Assembly>(
                 .enumerate()
             {
                 let program = match &sequence {
-                    Some(seq) => {
-                        let mut p = seq.program().clone();
+                    Some(_) => {
+                        let mut p = base.lp.clone();
                         p.cost.copy_from_slice(&cost);
                         p.maximise = direction == Direction::Maximise;
                         p
@@ -1793,10 +1965,16 @@ fn ranges_from<S: Assembly>(
                     Some(m)
                 } else {
                     let tried = match &mut sequence {
-                        Some(seq) => {
-                            seq.set_objective(&cost, direction)?;
-                            seq.try_solve()
-                        }
+                        Some(seq) => match &twins {
+                            Some(t) => {
+                                seq.set_objective(&t.reduce(&cost), direction)?;
+                                seq.try_solve().map(|s| t.solution(s))
+                            }
+                            None => {
+                                seq.set_objective(&cost, direction)?;
+                                seq.try_solve()
+                            }
+                        },
                         None => lp::solve(&program, solver).ok(),
                     };
                     out.solves += 1;
@@ -1824,17 +2002,24 @@ fn ranges_from<S: Assembly>(
                         break;
                     };
                     if let Some(d) = seq.last_ray() {
-                        let cert = lp::sequence::certify_ray(&program, d);
+                        let d = match &twins {
+                            Some(t) => t.expand(d),
+                            None => d.to_vec(),
+                        };
+                        let cert = lp::sequence::certify_ray(&program, &d);
                         trace(format_args!("range {side}: HiGHS's ray {cert:?}"), t0);
                         if cert.ok() {
-                            ray = Some((d.to_vec(), cert.violation));
+                            ray = Some((d, cert.violation));
                             break;
                         }
                     }
                     if attempt == 1 || !seq.restart_from_optimal() {
                         break;
                     }
-                    tried = seq.try_solve();
+                    tried = seq.try_solve().map(|s| match &twins {
+                        Some(t) => t.solution(s),
+                        None => s,
+                    });
                     out.solves += 1;
                     trace(
                         format_args!(

@@ -414,9 +414,10 @@ pub fn settle_with<S: Assembly>(
 }
 
 /// A settlement whose certificate fails (duality gap above [`GAP_TOLERANCE`], or a mechanism
-/// that violates the joints) is solved again by the methods after the one that answered, along
-/// [`lp::fallback_chain`], and the first certified answer is reported, its `tried` naming the
-/// uncertified one. The solver layer's own check ([`lp::policy::check`], each LP alone to 1e-6)
+/// that violates the joints) is solved again: first by the method that answered at the
+/// feasibility tolerance [`lp::policy::RETRY_FEASIBILITY_TOLERANCE`] (where the one asked was
+/// looser), then by the methods after it along [`lp::fallback_chain`], and the first certified
+/// answer is reported, its `tried` naming the uncertified one. The solver layer's own check ([`lp::policy::check`], each LP alone to 1e-6)
 /// can accept both LPs of an interior point and still leave their two works 1e-6 apart: the
 /// 610-block wall with μ = 0.6 under `--method clarabel` ended at a gap of 2.2e-6 where HiGHS's
 /// interior point with crossover certifies it (docs/tolerances.md). Where no later method
@@ -439,8 +440,9 @@ fn recertify<D: crate::result::Spatial>(
         .unwrap_or(0);
     let why = match &r.certificate {
         Some(c) if c.relative_gap > GAP_TOLERANCE => format!(
-            "{}: the settlement's duality gap {:.1e} exceeds {GAP_TOLERANCE:.0e}",
+            "{} at feasibility tolerance {:.0e}: the settlement's duality gap {:.1e} exceeds {GAP_TOLERANCE:.0e}",
             s.solver.method.name(),
+            opts.feasibility_tolerance,
             c.relative_gap
         ),
         _ => format!(
@@ -448,8 +450,22 @@ fn recertify<D: crate::result::Spatial>(
             s.solver.method.name()
         ),
     };
-    for &method in &chain[from + 1..] {
-        let o = SolverOptions { method, ..*opts };
+    // First the same method at a tighter feasibility tolerance (the works of two LPs each
+    // optimal to 1e-9 can differ by more than 1e-7 of a small work), then the methods after it.
+    let tight = lp::policy::RETRY_FEASIBILITY_TOLERANCE;
+    let attempts = (opts.feasibility_tolerance > tight)
+        .then_some(SolverOptions {
+            method: s.solver.method,
+            feasibility_tolerance: tight,
+            ..*opts
+        })
+        .into_iter()
+        .chain(
+            chain[from + 1..]
+                .iter()
+                .map(|&method| SolverOptions { method, ..*opts }),
+        );
+    for o in attempts {
         let Ok(mut s2) = solve(&o) else {
             continue;
         };

@@ -259,6 +259,14 @@ pub fn default_method(class: &ProblemClass) -> Method {
     }
 }
 
+/// The feasibility tolerance of a settlement's second attempt with the same method, where the
+/// two works of its LPs, each optimal to the default 1e-9, stay more than the settlement's
+/// 1e-7 apart (`analysis::settlement`, and the canonical settlement's force program). Found on
+/// a 205-block running-bond wall with μ = 2.0 settling near its least friction (work 0.036
+/// kN·m, 2e-3 of W·u): every method's force LP at 1e-9 was 2e-8 to 1e-6 kN·m off the motion
+/// LP's work (gaps 5e-6 to 2.7e-5), every one at 1e-10 within 6e-13 (docs/tolerances.md).
+pub const RETRY_FEASIBILITY_TOLERANCE: f64 = 1e-10;
+
 /// The tolerance of the solver layer's own certificate: the largest relative row violation
 /// and the largest relative duality gap of an answer that counts as optimal (the analyses'
 /// certificates use 1e-6 too, docs/tolerances.md).

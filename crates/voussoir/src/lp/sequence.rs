@@ -494,6 +494,20 @@ pub fn decide_feasibility(
     };
     if decided.is_some() {
         super::record_run(opts.method, &[], false, || super::Outcome::Certified);
+    } else if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        // Which half of the certificate failed (docs/performance.md, "Façade capacity
+        // (session 22)").
+        eprintln!(
+            "trace: feasibility undecided by {}: primal {:.1e}, violation {:.3e} (feasible up to {:.0e}); dual {:.1e}, bound {:.3e} (infeasible above {:.0e}); reduced accuracy {}",
+            opts.method.name(),
+            certificate.primal,
+            violation,
+            tolerance.max(FEASIBLE_RESOLUTION),
+            certificate.dual,
+            relative(bound),
+            tolerance.max(INFEASIBLE_MARGIN),
+            s.reduced_accuracy
+        );
     }
     Ok(decided.map(|feasible| FeasibilityDecision {
         feasible,

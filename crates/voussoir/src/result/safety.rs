@@ -146,6 +146,10 @@ pub struct ReactionRanges {
     /// Endpoints of a component with no column (a support without a contact point): 0, no
     /// program.
     pub without_columns: usize,
+    /// Columns left out of the sequence's program as twins of another (the same bounds,
+    /// entries to round-off and coefficient in every objective: in 2D the two shear forces of a
+    /// joint); every answer is expanded and certified on the whole program.
+    pub twin_columns: usize,
 }
 
 impl ReactionRanges {

@@ -85,13 +85,16 @@ fn check(d: &Path, model: &str, method: &str) -> (String, serde_json::Value) {
         .filter(|l| l.0 == "bisection")
         .map(|l| l.1)
         .sum();
-    // By the dual simplex each decision has one answer; another method's answer that does
-    // not decide (an interior point's "infeasible" carries no certificate) is followed by
-    // the one that does, both listed.
+    // By the dual simplex each decision has one answer, and without elastic violations to
+    // step by the search is the plain bisection: 21 decisions. With another method the
+    // number depends on its path (since session 22 the search steps by the secant of two
+    // elastic violations where it has them: 10 answers for the arch by Clarabel, with two
+    // fallbacks); an answer that does not decide (an interior point's "infeasible" carries
+    // no certificate) is followed by the one that does, both listed.
     if method == "dual-simplex" {
         assert_eq!(bisection, 21, "{text}");
     } else {
-        assert!(bisection >= 21, "{text}");
+        assert!(bisection >= 2, "{text}");
     }
     let total: usize = lines.iter().map(|l| l.1).sum();
     assert!(total <= v["solves"].as_u64().unwrap() as usize);

@@ -13,23 +13,29 @@ use voussoir::generate::{wall, WallSpec};
 use voussoir::lp::{Method, SolverOptions};
 use voussoir::{BuildOptions, Structure};
 
-/// 30 units of 1 × 0.5 m in 20 courses (610 blocks, 30 foundation segments), μ = 0.6, the
-/// 9 segments under x ∈ [0, 9] settling 1 cm.
-fn friction_wall() -> Structure {
+/// A running-bond wall of `units` units of 1 × 0.5 m in `courses` courses on one foundation
+/// segment per unit, friction `mu` on every joint, the first `settling` segments 1 cm down.
+fn friction_wall_of(courses: usize, units: usize, mu: f64, settling: usize) -> Structure {
     let mut m = wall(&WallSpec {
-        courses: 20,
-        units: 30,
+        courses,
+        units,
         unit: [1.0, 0.5],
         ..WallSpec::default()
     })
     .unwrap();
     for mat in m.materials.values_mut() {
-        mat.friction = Some(0.6);
+        mat.friction = Some(mu);
     }
-    for s in m.supports.iter_mut().take(9) {
+    for s in m.supports.iter_mut().take(settling) {
         s.motion = [0.0, -0.01, 0.0];
     }
     Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+/// 30 units in 20 courses (610 blocks, 30 foundation segments), μ = 0.6, the 9 segments under
+/// x ∈ [0, 9] settling 1 cm.
+fn friction_wall() -> Structure {
+    friction_wall_of(20, 30, 0.6, 9)
 }
 
 #[test]
@@ -102,23 +108,10 @@ fn issue29_item2_an_uncertified_settlement_is_solved_again_and_says_so() {
     );
 }
 
-/// The 20 × 10 running-bond wall of 1 × 0.5 m units (205 blocks, 20 foundation segments) with
-/// μ = `mu`, the 6 segments under x ∈ [0, 6] settling 1 cm.
+/// The 20 × 10 running-bond wall (205 blocks, 20 foundation segments) with μ = `mu`, the 6
+/// segments under x ∈ [0, 6] settling 1 cm.
 fn wall_near_least_friction(mu: f64) -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 10,
-        units: 20,
-        unit: [1.0, 0.5],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    for mat in m.materials.values_mut() {
-        mat.friction = Some(mu);
-    }
-    for s in m.supports.iter_mut().take(6) {
-        s.motion = [0.0, -0.01, 0.0];
-    }
-    Structure::new(&m, BuildOptions::default()).unwrap()
+    friction_wall_of(10, 20, mu, 6)
 }
 
 /// Found in session 22: near the least friction at which it stands on the other supports

@@ -1328,14 +1328,7 @@ type ExtraRow = (Vec<(usize, f64)>, f64, f64);
 /// order after its own.
 fn with_rows(lp: &LinearProgram, rows: &[ExtraRow]) -> LinearProgram {
     let mut by_col: Vec<Vec<(usize, f64)>> = vec![Vec::new(); lp.num_cols()];
-    let mut out = LinearProgram::new(if lp.maximise {
-        Direction::Maximise
-    } else {
-        Direction::Minimise
-    });
-    for i in 0..lp.num_rows() {
-        out.add_row(lp.row_lower[i], lp.row_upper[i]);
-    }
+    let mut out = lp.rows_only();
     for (entries, lo, hi) in rows {
         let r = out.add_row(*lo, *hi);
         for &(j, v) in entries {

@@ -729,14 +729,7 @@ pub fn merged_columns(lp: &lp::LinearProgram) -> lp::LinearProgram {
         k
     };
     let mut seen: HashMap<Vec<u64>, usize> = HashMap::new();
-    let mut out = lp::LinearProgram::new(if lp.maximise {
-        Direction::Maximise
-    } else {
-        Direction::Minimise
-    });
-    for i in 0..lp.num_rows() {
-        out.add_row(lp.row_lower[i], lp.row_upper[i]);
-    }
+    let mut out = lp.rows_only();
     for j in 0..lp.num_cols() {
         let (lo, hi) = (lp.col_lower[j], lp.col_upper[j]);
         let cone = (lo == 0.0 || lo == f64::NEG_INFINITY) && hi == f64::INFINITY;
@@ -1603,14 +1596,7 @@ impl Twins {
     }
 
     pub(crate) fn program(&self, lp: &lp::LinearProgram) -> lp::LinearProgram {
-        let mut out = lp::LinearProgram::new(if lp.maximise {
-            Direction::Maximise
-        } else {
-            Direction::Minimise
-        });
-        for i in 0..lp.num_rows() {
-            out.add_row(lp.row_lower[i], lp.row_upper[i]);
-        }
+        let mut out = lp.rows_only();
         for &j in &self.keep {
             out.add_column(lp.cost[j], lp.col_lower[j], lp.col_upper[j], lp.column(j));
         }

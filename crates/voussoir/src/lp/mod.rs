@@ -57,6 +57,17 @@ impl LinearProgram {
             ..Default::default()
         }
     }
+    /// A program of the same direction and rows (bounds) with no column yet: the start of a
+    /// copy whose columns are chosen (a reduced program, a program with rows added).
+    pub fn rows_only(&self) -> Self {
+        LinearProgram {
+            maximise: self.maximise,
+            row_lower: self.row_lower.clone(),
+            row_upper: self.row_upper.clone(),
+            col_start: vec![0],
+            ..Default::default()
+        }
+    }
     /// Add a row `lo ≤ a·x ≤ hi` (its entries come with the columns); returns its index.
     pub fn add_row(&mut self, lo: f64, hi: f64) -> usize {
         self.row_lower.push(lo);

@@ -228,6 +228,7 @@ fn issue29_item5_readme_vault_capacity_canonical_by_default_with_every_method() 
 /// equilibrium (λ null, `no_equilibrium`, at every s > 0, with every method alike): λ(0) and the
 /// statuses are compared, and the settlement hinges.
 #[test]
+#[ignore = "91 CPU s on an idle machine (session 22), the slowest test of the suite: capacity canonical by default in 3D with every method is tested on the README vault (above), and the README dome's settlement hinges with every method in issue29_canonical and issue29_canonical3d"]
 fn issue29_item5_readme_dome_capacity_canonical_by_default_with_every_method() {
     capacity_same_with_every_method(
         &readme_dome(10.0),

@@ -2,7 +2,7 @@
 //! is (`lp::outcomes_certified`, shared by the results' `answered[]` and the realistic
 //! benchmark). Hand-made lines, each verdict worked out by hand.
 
-use voussoir::lp::outcomes_certified;
+use voussoir::lp::{outcomes_certified, CANDIDATE_WORDS};
 
 #[test]
 fn issue29_item3_every_uncertified_answer_must_be_decided_again_by_its_own_kind() {
@@ -25,6 +25,16 @@ fn issue29_item3_every_uncertified_answer_must_be_decided_again_by_its_own_kind(
     assert!(!outcomes_certified([
         ("bisection", 1, "not certified"),
         ("reaction ranges", 1, "certified"),
+    ]));
+    // A candidate's answer (a ray searched for, used only once certified on the whole
+    // program) neither certifies nor fails the result (session 22).
+    assert!(outcomes_certified([
+        ("rays of unbounded reactions", 2, CANDIDATE_WORDS),
+        ("reaction ranges", 4, "certified"),
+    ]));
+    assert!(!outcomes_certified([
+        ("rays of unbounded reactions", 1, CANDIDATE_WORDS),
+        ("reaction ranges", 1, "not certified"),
     ]));
     // An outcome the layer does not know is not a certificate.
     assert!(!outcomes_certified([("capacity steps", 1, "stalled")]));

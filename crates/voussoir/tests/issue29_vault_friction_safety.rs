@@ -49,6 +49,19 @@ fn issue29_vault_with_friction_safety_ranges_without_the_ipm_recession_program()
         AnyResult::Planar(_) => panic!("dimension lost"),
     };
     assert!(r.stands, "{}", r.message);
+    // Found in session 22: the ray searches' uncertified optima (candidates, each checked on
+    // the whole program before use) were listed "not certified" (4 answers), so the result
+    // counted as not certified though every number in it is.
+    assert!(
+        voussoir::lp::answers_certified(&r.answered),
+        "{:?}",
+        r.answered
+    );
+    assert!(r
+        .answered
+        .iter()
+        .any(|a| a.outcome == voussoir::lp::CANDIDATE_WORDS));
+    assert!(r.answered.iter().all(|a| a.outcome != "not certified"));
     // The paper's arch is near its least thickness: a factor just above 1.
     let f = r.geometric_safety_factor.unwrap();
     assert!(f > 1.0 && f < 1.1, "factor {f}");

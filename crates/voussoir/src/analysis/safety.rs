@@ -1442,7 +1442,7 @@ impl LocalRays {
             method: lp::Method::DualSimplex,
             ..*solver
         };
-        let _kind = lp::ProgramKind::set(LOCAL_RAYS, LOCAL_RAYS_DESIGN);
+        let _kind = lp::ProgramKind::candidates(LOCAL_RAYS, LOCAL_RAYS_DESIGN);
         for _ in 0..LOCAL_RAY_ROUNDS {
             if rows.len() > LOCAL_RAY_ROWS {
                 return None;
@@ -2049,7 +2049,7 @@ fn ranges_from<S: Assembly>(
                         method: lp::Method::Clarabel,
                         ..*solver
                     };
-                    let _kind = lp::ProgramKind::set(RAYS, RAYS_DESIGN);
+                    let _kind = lp::ProgramKind::candidates(RAYS, RAYS_DESIGN);
                     if let Ok(d) = lp::solve_without_fallback(&rp, &o) {
                         let opt = certified(&rp, &d);
                         let cert = lp::sequence::certify_ray(&program, &d.x);

@@ -417,11 +417,12 @@ pub fn settle_with<S: Assembly>(
 /// that violates the joints) is solved again: first by the method that answered at the
 /// feasibility tolerance [`lp::policy::RETRY_FEASIBILITY_TOLERANCE`] (where the one asked was
 /// looser), then by the methods after it along [`lp::fallback_chain`], and the first certified
-/// answer is reported, its `tried` naming the uncertified one. The solver layer's own check ([`lp::policy::check`], each LP alone to 1e-6)
-/// can accept both LPs of an interior point and still leave their two works 1e-6 apart: the
-/// 610-block wall with μ = 0.6 under `--method clarabel` ended at a gap of 2.2e-6 where HiGHS's
-/// interior point with crossover certifies it (docs/tolerances.md). Where no later method
-/// certifies, the first answer stands with its warning.
+/// answer is reported, its `tried` naming the uncertified one. The solver layer's own check
+/// ([`lp::policy::check`], each LP alone to 1e-6) can accept both LPs of an interior point and
+/// still leave their two works 1e-6 apart: the 610-block wall with μ = 0.6 under `--method
+/// clarabel` ended at a gap of 2.2e-6 where HiGHS's interior point with crossover certifies it
+/// (docs/tolerances.md). Where no later method certifies, the first answer stands with its
+/// warning.
 fn recertify<D: crate::result::Spatial>(
     opts: &SolverOptions,
     s: &SettlementSolution,

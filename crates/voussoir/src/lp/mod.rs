@@ -812,9 +812,10 @@ pub struct SolveRecord {
 thread_local! {
     static SOLVES: std::cell::RefCell<Option<Vec<SolveRecord>>> =
         const { std::cell::RefCell::new(None) };
-    static KIND: std::cell::Cell<(&'static str, &'static str)> =
-        const { std::cell::Cell::new(("", "")) };
-    static CANDIDATES: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// The kind of program being solved: its words, its design, and whether its answers are
+    /// candidates ([`ProgramKind`]).
+    static KIND: std::cell::Cell<(&'static str, &'static str, bool)> =
+        const { std::cell::Cell::new(("", "", false)) };
 }
 
 /// Record the answer `s` to `lp` of the fallback chain for [`collecting`].
@@ -832,9 +833,9 @@ pub(crate) fn record_run(
 ) {
     SOLVES.with(|c| {
         if let Some(v) = c.borrow_mut().as_mut() {
-            let (programs, design) = KIND.with(|k| k.get());
+            let (programs, design, candidates) = KIND.with(|k| k.get());
             let outcome = match outcome() {
-                Outcome::NotCertified if CANDIDATES.with(|c| c.get()) => Outcome::Candidate,
+                Outcome::NotCertified if candidates => Outcome::Candidate,
                 o => o,
             };
             v.push(SolveRecord {
@@ -916,8 +917,7 @@ impl Outcome {
 /// with the reason where that kind goes to a method of its own by design (empty: the method
 /// asked for). Dropping it restores the kind before.
 pub struct ProgramKind {
-    before: (&'static str, &'static str),
-    candidates_before: bool,
+    before: (&'static str, &'static str, bool),
 }
 
 impl ProgramKind {
@@ -934,8 +934,7 @@ impl ProgramKind {
 
     fn with(programs: &'static str, design: &'static str, candidates: bool) -> ProgramKind {
         ProgramKind {
-            before: KIND.with(|k| k.replace((programs, design))),
-            candidates_before: CANDIDATES.with(|c| c.replace(candidates)),
+            before: KIND.with(|k| k.replace((programs, design, candidates))),
         }
     }
 }
@@ -943,7 +942,6 @@ impl ProgramKind {
 impl Drop for ProgramKind {
     fn drop(&mut self) {
         KIND.with(|k| k.set(self.before));
-        CANDIDATES.with(|c| c.set(self.candidates_before));
     }
 }
 

@@ -14,7 +14,7 @@ pub enum Fail {
 impl From<voussoir::Error> for Fail {
     fn from(e: voussoir::Error) -> Self {
         match e {
-            voussoir::Error::Solver(_) => Fail::Solver(e.to_string()),
+            voussoir::Error::Solver(_) | voussoir::Error::Undecided => Fail::Solver(e.to_string()),
             voussoir::Error::Invalid(_) => Fail::Option(e.to_string()),
             _ => Fail::Model(e.to_string()),
         }

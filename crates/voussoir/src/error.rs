@@ -19,6 +19,12 @@ pub enum Error {
     /// The LP solver failed for a reason other than infeasibility or unboundedness.
     #[error("solver failure: {}", one_line(.0))]
     Solver(String),
+    /// A solver ended without deciding whether the program is infeasible or unbounded (HiGHS's
+    /// interior point: "unbounded or infeasible"). Not an answer: the fallback chain asks a
+    /// method that decides with a certificate (Clarabel) next (`lp::with_fallback`). A variant of
+    /// its own so that the chain matches the kind, not the text.
+    #[error("solver failure: {}", crate::lp::highs::UNDECIDED)]
+    Undecided,
 }
 
 /// `s` on one line: control characters (line breaks, tabs, NUL, …) written as escapes (`\n`),

@@ -17,10 +17,10 @@ fn opt<V: highs::HighsOptionValue>(m: &mut highs::Model, k: &str, v: V) -> Resul
         .map_err(|e| Error::Solver(format!("HiGHS option {k}: {e:?}")))
 }
 
-/// The failure of a HiGHS run that ended "unbounded or infeasible" without presolve (its
-/// interior point's sign of a program without an optimum, not a decision between the two):
-/// the fallback chain asks Clarabel next, whose answer comes with a certificate either way
-/// ([`super::with_fallback`]).
+/// The words of [`Error::Undecided`]: a HiGHS run that ended "unbounded or infeasible" without
+/// presolve (its interior point's sign of a program without an optimum, not a decision between
+/// the two); the fallback chain asks Clarabel next, whose answer comes with a certificate
+/// either way ([`super::with_fallback`]).
 pub const UNDECIDED: &str =
     "HiGHS found the program unbounded or infeasible without deciding which";
 
@@ -192,9 +192,7 @@ impl Backend for Highs {
                     continue;
                 }
                 HighsModelStatus::ModelEmpty => LpStatus::Optimal,
-                HighsModelStatus::UnboundedOrInfeasible if !warm => {
-                    return Err(Error::Solver(UNDECIDED.to_string()))
-                }
+                HighsModelStatus::UnboundedOrInfeasible if !warm => return Err(Error::Undecided),
                 _ if warm => {
                     // Anything unusual from a warm start: solve again from scratch.
                     start = None;

@@ -770,7 +770,7 @@ fn with_fallback(
             }
             Err(e) => {
                 let why = e.to_string();
-                if why.contains(highs::UNDECIDED) {
+                if e == Error::Undecided {
                     // Clarabel next: it decides infeasibility and unboundedness with a
                     // certificate, where HiGHS's simplex runs from scratch (24 s into "Solve
                     // error" on the README vault with μ = 0.3).

@@ -220,4 +220,15 @@ fn capacity_with_non_associative_friction_keeps_a_settled_wall_together() {
         assert!(l > 0.0 && l < 0.6, "s = {}: λ = {l}", p.settlement);
     }
     assert!(ass.curve[1..].iter().all(|p| p.load_multiplier.is_none()));
+    // Session 23: the associative curve's message says why every settled step lost its
+    // equilibrium (the dilatancy of its sliding joints), once, with the count of such steps;
+    // the non-associative one, which keeps its equilibrium, says nothing of the kind.
+    assert!(
+        ass.message
+            .contains("no equilibrium under the dead loads at 4 of 4 settled steps")
+            && ass.message.contains("(dilatancy)"),
+        "{}",
+        ass.message
+    );
+    assert!(!non.message.contains("dilatancy"), "{}", non.message);
 }

@@ -65,6 +65,7 @@ use crate::programs;
 use crate::reporting::report;
 pub use crate::result::capacity::*;
 use crate::result::limit::NoEquilibriumCertificate;
+use crate::result::JointState;
 use crate::structure::Assembly;
 
 /// Options of the capacity analysis.
@@ -523,6 +524,22 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         ),
         (None, _) => format!("at no settlement: {}", curve[0].status.sentence()),
     };
+    // Steps after the first without any equilibrium: where the settlement mechanism slides
+    // under associative friction, its sliding joints also open by μ per unit slip (dilatancy)
+    // and the deformed blocks come apart, a property of that law rather than of the masonry
+    // (docs/joint-laws.md: an 8 × 5 wall keeps λ ≈ 0.365 without dilatancy). Said in the
+    // message so that the engineer does not read a lost structure where the law is the cause.
+    let without = curve[1..]
+        .iter()
+        .filter(|p| p.status == LimitStatus::NoEquilibrium)
+        .count();
+    let slides = srep.joints.iter().any(|j| j.state == JointState::Sliding);
+    if without > 0 && slides && opts.nonassociative.is_none() {
+        message.push_str(&format!(
+            "; no equilibrium under the dead loads at {without} of {} settled steps: the settlement slides with associative friction, whose sliding joints also open by μ per unit slip (dilatancy) and come apart; non-associative friction slides without opening (docs/joint-laws.md)",
+            curve.len() - 1
+        ));
+    }
     if warm.unconverged > 0 {
         message.push_str(&format!(
             "; WARNING: the non-associative friction iteration did not converge in {} of {} limit analyses",

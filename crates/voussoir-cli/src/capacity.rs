@@ -310,6 +310,18 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
                 sci(c.gap),
                 sci(c.admissibility)
             );
+        } else if c
+            .uncertified_steps
+            .iter()
+            .all(|&i| r.curve.get(i).is_some_and(|p| p.certificate.is_none()))
+        {
+            // No step has a certificate at all (the non-associative iteration, cone programs):
+            // no gap to quote (a gap of 0 would read as one that holds).
+            let _ = writeln!(
+                s,
+                "certificates: NOT every step certified ({} of {}; uncertified steps {:?}, without a certificate: see the first line)",
+                c.certified, c.steps, c.uncertified_steps
+            );
         } else {
             let _ = writeln!(
                 s,

@@ -134,3 +134,54 @@ fn a_cracked_model_warns_when_the_collapse_mechanism_closes_its_crack() {
     );
     assert_eq!(e.trim_end().lines().count(), 1);
 }
+
+/// Session 23: a non-associative capacity curve has no certificate at any step (the iteration
+/// is a heuristic). Its summary said "NOT CERTIFIED … (largest gap 0.0e0, admissibility
+/// 0.0e0)", which reads as a certificate that holds; it now says the steps have none and why.
+/// The wall of docs/joint-laws.md (8 × 5, μ = 0.6, pushed sideways by its own weight): λ(0)
+/// is the base sliding at λ = μ = 0.6 (hand calculation), on either law.
+#[test]
+fn a_non_associative_capacity_says_its_steps_have_no_certificate() {
+    let d = tmpdir("nonassoc-capacity");
+    let w = gen(
+        &d,
+        "wall.json",
+        &[
+            "wall",
+            "--courses",
+            "5",
+            "--units",
+            "8",
+            "--unit",
+            "0.4,0.2",
+            "--live",
+            "horizontal",
+        ],
+    );
+    let args = [
+        "capacity",
+        &w,
+        "--friction",
+        "0.6",
+        "--non-associative",
+        "--profile",
+        "uniform:2.1,3.3,-0.01",
+        "--steps",
+        "1",
+    ];
+    let o = run(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("NOT CERTIFIED at 2 of 2 steps (no certificate: the non-associative friction iteration is a heuristic"),
+        "{text}"
+    );
+    assert!(
+        text.contains("without a certificate: see the first line") && !text.contains("largest gap"),
+        "{text}"
+    );
+    let r = ok_json(&args);
+    let l0 = r["curve"][0]["load_multiplier"].as_f64().unwrap();
+    assert!((l0 - 0.6).abs() < 1e-6, "λ(0) = {l0}");
+    assert_eq!(r["certificate"]["certified"], 0);
+}

@@ -231,4 +231,13 @@ fn capacity_with_non_associative_friction_keeps_a_settled_wall_together() {
         ass.message
     );
     assert!(!non.message.contains("dilatancy"), "{}", non.message);
+    // Its steps have no certificate (a heuristic's fixed point): the message says so instead
+    // of quoting a gap of 0 (session 23).
+    assert!(
+        non.message.starts_with(
+            "NOT CERTIFIED at 5 of 5 steps (no certificate: the non-associative friction iteration is a heuristic"
+        ),
+        "{}",
+        non.message
+    );
 }

@@ -560,12 +560,37 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         message.push_str("; some existing cracks stay open over the whole range");
     }
     if let Some(c) = certificate.as_ref().filter(|c| !c.ok) {
+        // Steps without any certificate are said so, with the reason where the law has none:
+        // "largest gap 0.0e0" read as a certificate that holds (the non-associative curve of
+        // the README wall, session 23).
+        let without = c
+            .uncertified_steps
+            .iter()
+            .filter(|&&i| curve[i].certificate.is_none())
+            .count();
+        let reason = if opts.nonassociative.is_some() {
+            "no certificate: the non-associative friction iteration is a heuristic, its fixed point not an optimum with a dual"
+        } else if opts.crushing == Crushing::Conic {
+            "no certificate: the steps are cone programs, whose answers are not certified here"
+        } else {
+            "no certificate computed"
+        };
+        let failed = c.steps - c.certified - without;
+        let detail = match (failed, without) {
+            (0, _) => reason.to_string(),
+            (_, 0) => format!(
+                "largest gap {:.1e}, admissibility {:.1e}",
+                c.gap, c.admissibility
+            ),
+            (_, w) => format!(
+                "largest gap {:.1e}, admissibility {:.1e}; {w} with {reason}",
+                c.gap, c.admissibility
+            ),
+        };
         message = format!(
-            "NOT CERTIFIED at {} of {} steps (largest gap {:.1e}, admissibility {:.1e}): {message}",
+            "NOT CERTIFIED at {} of {} steps ({detail}): {message}",
             c.steps - c.certified,
             c.steps,
-            c.gap,
-            c.admissibility
         );
     }
     if let Some(c) = selection.as_ref() {

@@ -57,11 +57,10 @@ fn settle_with_the_exact_crushing_cone_is_certified_and_near_the_fine_polygon() 
     );
 }
 
-#[test]
-fn non_associative_settlement_reports_its_iteration() {
-    let d = tmpdir("nonassoc");
-    let w = gen(
-        &d,
+/// The 8 × 5 running-bond wall of docs/joint-laws.md (units 0.4 × 0.2 m) with live load `live`.
+fn wall_8x5(d: &std::path::Path, live: &str) -> String {
+    gen(
+        d,
         "wall.json",
         &[
             "wall",
@@ -71,8 +70,15 @@ fn non_associative_settlement_reports_its_iteration() {
             "8",
             "--unit",
             "0.4,0.2",
+            "--live",
+            live,
         ],
-    );
+    )
+}
+
+#[test]
+fn non_associative_settlement_reports_its_iteration() {
+    let w = wall_8x5(&tmpdir("nonassoc"), "none");
     let r = ok_json(&[
         "settle",
         &w,
@@ -142,22 +148,7 @@ fn a_cracked_model_warns_when_the_collapse_mechanism_closes_its_crack() {
 /// is the base sliding at λ = μ = 0.6 (hand calculation), on either law.
 #[test]
 fn a_non_associative_capacity_says_its_steps_have_no_certificate() {
-    let d = tmpdir("nonassoc-capacity");
-    let w = gen(
-        &d,
-        "wall.json",
-        &[
-            "wall",
-            "--courses",
-            "5",
-            "--units",
-            "8",
-            "--unit",
-            "0.4,0.2",
-            "--live",
-            "horizontal",
-        ],
-    );
+    let w = wall_8x5(&tmpdir("nonassoc-capacity"), "horizontal");
     let args = [
         "capacity",
         &w,

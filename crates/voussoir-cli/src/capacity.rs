@@ -53,6 +53,7 @@ pub struct CapacityArgs {
 }
 
 pub fn run(a: CapacityArgs) -> Result<(), Fail> {
+    a.out.check()?;
     a.draw.check()?;
     let input = a.model.resolve()?;
     let cap = CapacityRequest {

@@ -694,6 +694,12 @@ pub struct OutArgs {
 }
 
 impl OutArgs {
+    /// `-o FILE` checked before any work: the result is JSON, so a name ending in another
+    /// format's extension (`-o r.png`) is refused ([`crate::draw_args::check_format`]).
+    pub fn check(&self) -> Result<(), Fail> {
+        crate::draw_args::check_format("-o", self.output.as_deref(), &["json"])
+    }
+
     /// The one rule of --json and -o: the file (if any) gets the JSON; stdout gets the JSON with
     /// --json, else the summary.
     /// [`OutArgs::emit`] for a result whose model had supports cut (`--split`, a profile's

@@ -288,6 +288,9 @@ impl DrawArgs {
         if let Some(p) = &self.vtk {
             vtk_kind(p)?;
         }
+        check_format("--svg", self.svg.as_deref(), &["svg"])?;
+        check_format("--png", self.png.as_deref(), &["png"])?;
+        check_format("--report", self.report.as_deref(), &["html", "htm"])?;
         Ok(())
     }
 
@@ -393,6 +396,57 @@ impl DrawArgs {
             draw::settlement_report(r, &self.report_options(source))
         })
     }
+}
+
+/// The formats the commands read or write, by file extension, and their names.
+const FORMATS: &[(&str, &str)] = &[
+    ("svg", "SVG"),
+    ("png", "PNG"),
+    ("html", "HTML"),
+    ("htm", "HTML"),
+    ("json", "JSON"),
+    ("pdf", "PDF"),
+    ("csv", "CSV"),
+    ("vtu", "VTK"),
+    ("vtm", "VTK"),
+    ("dxf", "DXF"),
+    ("obj", "OBJ"),
+    ("ply", "PLY"),
+];
+
+/// `flag PATH` checked before any work: a name ending in the extension of another format than
+/// the one the flag writes (`accepted`, the first the usual one) is refused, since the file
+/// would not be what its name says (`--report out.pdf` wrote HTML into a .pdf; session 23).
+/// Other extensions, or none, are the user's choice.
+pub fn check_format(flag: &str, path: Option<&Path>, accepted: &[&str]) -> Result<(), Fail> {
+    let Some(path) = path else { return Ok(()) };
+    let Some(ext) = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+    else {
+        return Ok(());
+    };
+    if accepted.contains(&ext.as_str()) {
+        return Ok(());
+    }
+    let Some((_, other)) = FORMATS.iter().find(|(e, _)| *e == ext) else {
+        return Ok(());
+    };
+    let writes = FORMATS
+        .iter()
+        .find(|(e, _)| *e == accepted[0])
+        .map_or(accepted[0], |(_, n)| n);
+    let hint = if ext == "pdf" && accepted[0] == "html" {
+        "; print the HTML report to PDF from a browser (docs/report3d.md)"
+    } else {
+        ""
+    };
+    Err(Fail(format!(
+        "{flag} {}: {flag} writes {writes}, not {other}; give a name ending in .{}{hint}",
+        path.display(),
+        accepted[0]
+    )))
 }
 
 /// What `--vtk PATH` writes.

@@ -118,6 +118,7 @@ fn annotate(msg: &str, names: &[(usize, String)]) -> String {
 }
 
 pub fn run(a: IdentifyArgs) -> Result<(), Fail> {
+    a.out.check()?;
     a.draw.check()?;
     a.model.survey.check(a.survey.is_some(), "--survey")?;
     if a.cracks.is_none() && a.survey.is_none() {

@@ -106,6 +106,7 @@ fn numbers(s: &str) -> Result<Vec<f64>, Fail> {
 }
 
 pub fn run(a: IncrementalArgs) -> Result<(), Fail> {
+    a.out.check()?;
     let req = a.model.request(
         Analysis::Incremental(IncrementalRequest {
             control: numbers(&a.control)?,

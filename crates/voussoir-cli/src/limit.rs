@@ -65,6 +65,7 @@ impl LimitArgs {
 }
 
 pub fn run(a: LimitArgs) -> Result<(), Fail> {
+    a.out.check()?;
     let c = a.resolve()?;
     let model = c.input.read_any()?;
     if let AnyModel::Planar(_) = model {

@@ -96,6 +96,8 @@ pub struct Bracket {
 }
 
 pub fn run(a: SafetyArgs) -> Result<(), Fail> {
+    a.out.check()?;
+    crate::draw_args::check_format("--report", a.report.as_deref(), &["html", "htm"])?;
     let input = a.model.resolve()?;
     let req = a.model.request(
         Analysis::Safety(SafetyRequest {

@@ -68,6 +68,7 @@ impl SettleCmdArgs {
 }
 
 pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
+    a.out.check()?;
     let c = a.resolve()?;
     let model = c.input.read_any()?;
     if let AnyModel::Planar(_) = model {

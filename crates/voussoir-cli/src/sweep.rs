@@ -120,6 +120,14 @@ fn write_outputs(
 pub fn run(a: SweepArgs) -> Result<(), Fail> {
     // Flags resolved before any work (a DXF flag on a JSON model, bad numbers).
     let input = a.model.resolve()?;
+    {
+        use crate::draw_args::check_format;
+        check_format("--svg", a.svg.as_deref(), &["svg"])?;
+        check_format("--png", a.png.as_deref(), &["png"])?;
+        check_format("--report", a.report.as_deref(), &["html", "htm"])?;
+        check_format("--csv", a.csv.as_deref(), &["csv"])?;
+        check_format("--summary", a.summary.as_deref(), &["json"])?;
+    }
     let drawn = a.summary.is_some() || a.svg.is_some() || a.png.is_some() || a.report.is_some();
     if drawn && !a.capacity {
         return Err(Fail(

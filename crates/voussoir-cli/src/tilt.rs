@@ -34,6 +34,7 @@ pub struct TiltArgs {
 }
 
 pub fn run(a: TiltArgs) -> Result<(), Fail> {
+    a.out.check()?;
     a.draw.check()?;
     let input = a.model.resolve()?;
     let given = a

@@ -80,6 +80,8 @@ mod issue32_surveys;
 mod issue32_vocab;
 #[path = "joint_laws_cli.rs"]
 mod joint_laws_cli;
+#[path = "output_names.rs"]
+mod output_names;
 #[path = "readme.rs"]
 mod readme;
 #[path = "reliability.rs"]

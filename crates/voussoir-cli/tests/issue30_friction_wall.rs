@@ -164,3 +164,21 @@ fn issue30_item4_drawing_says_which_hairlines_it_leaves_out() {
         .count();
     assert_eq!(lines + left.len(), widths.len());
 }
+
+/// Session 23: a vertical crack is called vertical. The paper arch's spreading opens its crown
+/// joint, a vertical crack 0.33 m long (the ring's thickness) whose chord has a run of
+/// round-off (2e-17 m); the summary printed "slope 16331239353195370.000".
+#[test]
+fn a_vertical_longest_crack_is_called_vertical() {
+    let d = common::tmpdir("vertical-crack", "arch");
+    common::gen_model(&d, "arch -o arch.json");
+    let s = common::run(&d, &["settle", "arch.json", "--move", "right=0.01,0"]);
+    let line = s
+        .lines()
+        .find(|l| l.trim_start().starts_with("longest: crack"))
+        .unwrap_or_else(|| panic!("no longest-crack line in\n{s}"));
+    assert!(
+        line.contains("0.3300 m long; its ends rise 0.3300 m over 0.0000 m (vertical)"),
+        "{line}"
+    );
+}

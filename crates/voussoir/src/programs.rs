@@ -635,14 +635,27 @@ pub fn kinematic_program(fp: &ForceProgram) -> crate::error::Result<crate::duali
 /// `lp` restricted to its optimal face: its objective `cᵀx` held as the last row,
 /// `cᵀx ≥ value − tol·|value|` for a maximisation (`≤ value + tol·|value|` for a
 /// minimisation), and no objective (a minimisation with zero costs, to be given one).
+///
+/// The row is divided by its largest coefficient, so that it has the scale of a unit objective
+/// whatever the problem's: a settlement's costs are its support motions, and at `--move
+/// right=1e10,0` on the paper's arch the unscaled row (coefficients 1e10 among equilibrium rows
+/// of order 1) left the canonical force stage's programs ill-conditioned — its least μ 0.3281
+/// where it is 0.4034 at every motion from 1 nm to 1 km, and 0 at 1e30 (session 23).
 pub fn optimal_face(lp: &LinearProgram, value: f64, rel_tol: f64) -> LinearProgram {
+    let scale = lp
+        .cost
+        .iter()
+        .fold(0.0f64, |m, c| m.max(c.abs()))
+        .max(f64::MIN_POSITIVE);
     let entries: Vec<(usize, f64)> = lp
         .cost
         .iter()
         .copied()
         .enumerate()
         .filter(|&(_, c)| c != 0.0)
+        .map(|(j, c)| (j, c / scale))
         .collect();
+    let value = value / scale;
     let slack = rel_tol * value.abs().max(1e-12);
     let (lo, hi) = if lp.maximise {
         (value - slack, INF)

@@ -230,14 +230,26 @@ fn dome_stands(t: f64, courses: usize, segments: usize) -> bool {
 #[test]
 fn a_hemispherical_dome_needs_about_heymans_least_thickness() {
     // Heyman (1977): a hemispherical dome (no hoop tension) stands under its own weight down to
-    // t ≈ 0.042 R. Bisection on the generator's thickness (R = 10 m at the centreline) for
-    // refining discretisations; the discrete values converge to within 10 % of 0.042 R.
+    // t ≈ 0.042 R. For refining discretisations (R = 10 m at the centreline): the dome does not
+    // stand at 0.9 × 0.042 R and stands at 1.1 × 0.042 R, so its least thickness is within
+    // 10 % of Heyman's; then a bisection of that bracket on the generator's thickness to
+    // 0.0084 R / 2⁶ = 1.3e-4 R, printed (the README's 0.0422 R, 0.0427 R). (It bisected
+    // [0.01 R, 0.1 R] 12 times, 14 feasibility programs per dome instead of 8: 165 s of wall at
+    // load 4 in session 23.)
     let r = 10.0;
+    let (t_lo, t_hi) = (0.9 * 0.042 * r, 1.1 * 0.042 * r);
     let mut found = Vec::new();
     for (courses, segments) in [(8, 16), (12, 24), (16, 32)] {
-        let (mut lo, mut hi) = (0.01 * r, 0.1 * r);
-        assert!(!dome_stands(lo, courses, segments) && dome_stands(hi, courses, segments));
-        for _ in 0..12 {
+        assert!(
+            !dome_stands(t_lo, courses, segments),
+            "{courses} × {segments}: stands at 0.9 × 0.042 R"
+        );
+        assert!(
+            dome_stands(t_hi, courses, segments),
+            "{courses} × {segments}: does not stand at 1.1 × 0.042 R"
+        );
+        let (mut lo, mut hi) = (t_lo, t_hi);
+        for _ in 0..6 {
             let mid = 0.5 * (lo + hi);
             if dome_stands(mid, courses, segments) {
                 hi = mid;
@@ -247,9 +259,7 @@ fn a_hemispherical_dome_needs_about_heymans_least_thickness() {
         }
         found.push((courses, segments, hi / r));
     }
-    eprintln!("least thickness t/R (courses, segments, t/R): {found:?}");
-    let finest = found.last().unwrap().2;
-    assert!((finest - 0.042).abs() <= 0.1 * 0.042, "{found:?}");
+    eprintln!("least thickness t/R (courses, segments, t/R to 1.3e-4): {found:?}");
 }
 
 #[test]

@@ -290,8 +290,10 @@ pub struct Config {
 /// from the working directory up.
 fn lact3_dir(given: &Option<PathBuf>) -> Result<PathBuf, Fail> {
     if let Some(d) = given {
+        // Absolute: the cells run in their own scratch folders, where a relative folder named
+        // nothing ("cannot read …/arch_1.dxf", the whole benchmark ended; session 23).
         return if d.is_dir() {
-            Ok(d.clone())
+            std::fs::canonicalize(d).map_err(|e| Fail(format!("--lact3 {}: {e}", d.display())))
         } else {
             Err(Fail(format!("--lact3 {}: not a directory", d.display())))
         };

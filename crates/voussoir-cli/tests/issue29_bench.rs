@@ -18,7 +18,13 @@ fn lact3() -> PathBuf {
 #[test]
 fn issue29_item6_realistic_bench_cells_are_certified_and_match_the_references() {
     let dir = tmpdir("issue29-bench", "subset");
-    let lact3 = lact3();
+    // The drawings given by a folder relative to the working directory, as a user types it:
+    // the cells run in their own scratch folders (`--workdir cells`), where a relative folder
+    // named nothing and ended the whole benchmark (session 23).
+    std::fs::create_dir_all(dir.join("drawings")).unwrap();
+    for f in ["arch_1.dxf", "Portal.dxf", "wall.dxf"] {
+        std::fs::copy(lact3().join(f), dir.join("drawings").join(f)).unwrap();
+    }
     let table = run(
         &dir,
         &[
@@ -30,7 +36,7 @@ fn issue29_item6_realistic_bench_cells_are_certified_and_match_the_references() 
             "--analyses",
             "limit,settle",
             "--lact3",
-            lact3.to_str().unwrap(),
+            "drawings",
             "--workdir",
             "cells",
             "-o",

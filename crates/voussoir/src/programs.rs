@@ -636,35 +636,14 @@ pub fn kinematic_program(fp: &ForceProgram) -> crate::error::Result<crate::duali
 /// `cᵀx ≥ value − tol·|value|` for a maximisation (`≤ value + tol·|value|` for a
 /// minimisation), and no objective (a minimisation with zero costs, to be given one).
 pub fn optimal_face(lp: &LinearProgram, value: f64, rel_tol: f64) -> LinearProgram {
-    face_row(lp, value, rel_tol, 1.0)
-}
-
-/// [`optimal_face`] with the row divided by its largest coefficient (the same constraint), so
-/// that it has the scale of a unit objective whatever the problem's. Used by the canonical force
-/// stage ([`physical_force_program`]): a settlement's costs are its support motions, and at
-/// `--move right=1e10,0` on the paper's arch the unscaled row (coefficients 1e10 among
-/// equilibrium rows of order 1) left the force stage's programs ill-conditioned — its least μ
-/// 0.3281 where it is 0.4034 at every motion from 1 µm to 1 km, and 0 at 1e30 m (session 23).
-/// (Not the mechanism stages: there the scaled row changed which optimal mechanism some
-/// degenerate faces gave, measured on the 1.0 m grid façade's capacity.)
-pub fn optimal_face_scaled(lp: &LinearProgram, value: f64, rel_tol: f64) -> LinearProgram {
-    let scale = lp.cost.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    face_row(lp, value, rel_tol, if scale > 0.0 { scale } else { 1.0 })
-}
-
-/// The optimal face's row `cᵀx` against `value` within `rel_tol·max(|value|, 1e-12)` (in the
-/// objective's own units), divided through by `scale`.
-fn face_row(lp: &LinearProgram, value: f64, rel_tol: f64, scale: f64) -> LinearProgram {
     let entries: Vec<(usize, f64)> = lp
         .cost
         .iter()
         .copied()
         .enumerate()
         .filter(|&(_, c)| c != 0.0)
-        .map(|(j, c)| (j, c / scale))
         .collect();
-    let slack = rel_tol * value.abs().max(1e-12) / scale;
-    let value = value / scale;
+    let slack = rel_tol * value.abs().max(1e-12);
     let (lo, hi) = if lp.maximise {
         (value - slack, INF)
     } else {
@@ -796,7 +775,7 @@ pub fn physical_force_program(
         }
         None => build(map),
     };
-    fp.lp = optimal_face_scaled(&fp.lp, value, rel_tol);
+    fp.lp = optimal_face(&fp.lp, value, rel_tol);
     let nt = map.tangents_per_point;
     for (k, _) in open.iter().enumerate().filter(|(_, &o)| o) {
         let shear = &fp.pt[k * nt..(k + 1) * nt];

@@ -708,6 +708,61 @@ fn moving<const N: usize>(motions: impl Iterator<Item = [f64; N]>) -> bool {
     motions.into_iter().any(|m| m.iter().any(|x| *x != 0.0))
 }
 
+/// Support motions whose largest displacement is below this fraction of the structure's size
+/// are refused by `settle` and `capacity`: within about fifty times the round-off of the
+/// coordinates themselves (2.2e-16 of the size), they cannot be resolved, and the programs'
+/// floors then decide instead of the structure (the paper's arch at 1e-30 m: its energy QP
+/// failed; at 1e-60 m the mechanism was reported uncertified with zero work; session 24).
+pub const MOTION_FLOOR: f64 = 1e-14;
+
+/// The size of a structure (the diagonal of the box around its points) and the largest
+/// displacement its support motions give (`translations`: the first `t` components; the rest
+/// rotations, times the size).
+fn motion_against_size<const N: usize>(
+    points: impl Iterator<Item = Vec<f64>>,
+    motions: impl Iterator<Item = [f64; N]>,
+    t: usize,
+) -> (f64, f64) {
+    let mut lo = vec![f64::INFINITY; t];
+    let mut hi = vec![f64::NEG_INFINITY; t];
+    for p in points {
+        for k in 0..t.min(p.len()) {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let size = lo
+        .iter()
+        .zip(&hi)
+        .map(|(a, b)| if b >= a { (b - a).powi(2) } else { 0.0 })
+        .sum::<f64>()
+        .sqrt();
+    let largest = motions
+        .flat_map(|m| {
+            m.into_iter()
+                .enumerate()
+                .map(move |(k, x)| if k < t { x.abs() } else { x.abs() * size })
+        })
+        .fold(0.0f64, f64::max);
+    (size, largest)
+}
+
+/// Refuse a settlement (or a capacity curve) whose support motions are too small to be
+/// resolved against the structure's own coordinates ([`MOTION_FLOOR`]).
+fn check_motion_size(req: &Request, size: f64, largest: f64) -> Result<()> {
+    let what = match &req.analysis {
+        Analysis::Settle(_) => "settle",
+        Analysis::Capacity(_) => "capacity",
+        _ => return Ok(()),
+    };
+    if largest > 0.0 && size > 0.0 && largest < MOTION_FLOOR * size {
+        return invalid(format!(
+            "{what}: the support motions (largest displacement {largest:.3e} m) are below {MOTION_FLOOR:e} of the structure's size ({size:.4} m), within the round-off of its coordinates: give a motion large enough to resolve (1mm, say)"
+        ));
+    }
+    Ok(())
+}
+
 /// Refuse an analysis that needs a support motion on a model whose supports do not move.
 fn check_motion(req: &Request, dims: usize, moving: bool) -> Result<()> {
     let n = req.names;
@@ -831,6 +886,17 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             }
             let moves = moving(setup.model.supports.iter().map(|s| s.motion));
             check_motion(req, 2, moves)?;
+            let m = &setup.model;
+            let (size, largest) = motion_against_size(
+                m.blocks
+                    .iter()
+                    .flat_map(|b| b.polygon.iter())
+                    .chain(m.supports.iter().flat_map(|s| s.polygon.iter()))
+                    .map(|p| p.to_vec()),
+                m.supports.iter().map(|s| s.motion),
+                2,
+            );
+            check_motion_size(req, size, largest)?;
             check_dead_loads(req, &setup.structure)?;
             let (setup, adapt) = adapted(setup, req, hooks)?;
             let (output, solver) = match &req.analysis {
@@ -856,6 +922,17 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             }
             let moves = moving(setup.model.supports.iter().map(|s| s.motion));
             check_motion(req, 3, moves)?;
+            let m = &setup.model;
+            let (size, largest) = motion_against_size(
+                m.blocks
+                    .iter()
+                    .flat_map(|b| b.vertices.iter())
+                    .chain(m.supports.iter().flat_map(|s| s.vertices.iter()))
+                    .map(|p| p.to_vec()),
+                m.supports.iter().map(|s| s.motion),
+                3,
+            );
+            check_motion_size(req, size, largest)?;
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {

@@ -455,6 +455,33 @@ impl SupportMotion {
             splits.extend(apply_profile_as_drawn(model, p).map_err(|e| {
                 Error::Invalid(format!("{}: {}", names.name("profile"), message(&e)))
             })?);
+            // A profile that settles no support would be a flag without effect: refused.
+            let centres: Vec<f64> = (0..model.support_names().len())
+                .filter_map(|i| model.centroid_x(i))
+                .collect();
+            if centres.iter().all(|&x| {
+                let (v, slope) = p.eval(x);
+                v == 0.0 && slope == 0.0
+            }) {
+                let (lo, hi) = centres
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                        (a.min(x), b.max(x))
+                    });
+                let span = if centres.is_empty() {
+                    "the model has no support".to_string()
+                } else {
+                    format!(
+                        "the supports' centres lie at x = {} … {} m",
+                        crate::settlement_input::short_number(lo),
+                        crate::settlement_input::short_number(hi)
+                    )
+                };
+                return invalid(format!(
+                    "{}: the profile moves no support (it is zero at every support's centre; {span})",
+                    names.name("profile")
+                ));
+            }
         }
         refresh_motions(model, &mut splits);
         Ok(splits)

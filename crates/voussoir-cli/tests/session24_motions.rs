@@ -1,0 +1,82 @@
+//! Session 24, support motions that would be ignored or not resolved (lead):
+//! - a `--profile` that is zero at every support's centre moved nothing, with or without a
+//!   `--move` beside it, and the run went on as if the flag had not been given: refused in one
+//!   line naming the flag, no output written;
+//! - a motion within the round-off of the structure's coordinates (the paper's arch spreading
+//!   1e-30 m: its energy QP failed; 1e-60 m: reported uncertified with zero work) is refused
+//!   by `settle` and `capacity`, 2D and 3D (`request::MOTION_FLOOR`, 1e-14 of the size);
+//! - a small motion above it is resolved: the work is proportional to the motion (the
+//!   settlement programs are positively homogeneous in it), certified.
+
+use crate::common::{gen_model, json, refused, run, tmpdir};
+
+#[test]
+fn session24_a_profile_that_moves_no_support_is_refused() {
+    let d = tmpdir("s24m", "profile");
+    gen_model(
+        &d,
+        "wall --courses 8 --units 10 --unit 0.4,0.2 -o wall.json",
+    );
+    // The wall spans x = 0 … 4 m; the profile settles x = 20 … 30 m.
+    for extra in [&[][..], &["--move", "f9=0,-0.01"][..]] {
+        let mut args = vec![
+            "settle",
+            "wall.json",
+            "--profile",
+            "uniform:20,30,-0.01",
+            "-o",
+            "r.json",
+        ];
+        args.extend_from_slice(extra);
+        refused(&d, &args, "--profile: the profile moves no support");
+        assert!(!d.join("r.json").exists());
+    }
+    // The README's profile under the wall still settles it.
+    let out = run(
+        &d,
+        &["settle", "wall.json", "--profile", "uniform:2.8,4.0,-0.01"],
+    );
+    assert!(out.contains("accommodates the settlement"), "{out}");
+}
+
+#[test]
+fn session24_motions_within_round_off_are_refused_and_small_ones_resolved() {
+    let d = tmpdir("s24m", "floor");
+    gen_model(&d, "arch -o arch.json");
+    for cmd in ["settle", "capacity"] {
+        refused(
+            &d,
+            &[cmd, "arch.json", "--move", "right=1e-30,0", "-o", "r.json"],
+            "below 1e-14 of the structure's size",
+        );
+        assert!(!d.join("r.json").exists());
+    }
+    gen_model(&d, "vault --depth 1 --rings 1 -o vault.json");
+    refused(
+        &d,
+        &["settle", "vault.json", "--move", "right=1e-40,0,0"],
+        "below 1e-14 of the structure's size",
+    );
+    // 1 cm and 1e-12 m (1.4e-13 of the arch's size): the work in the ratio of the motions.
+    let work = |u: &str| {
+        let v = json(&run(
+            &d,
+            &[
+                "settle",
+                "arch.json",
+                "--move",
+                &format!("right={u},0"),
+                "--json",
+            ],
+        ));
+        assert_eq!(v["certificate"]["ok"], true, "{u}: {}", v["certificate"]);
+        v["work_dead_loads"].as_f64().unwrap()
+    };
+    let (w0, w1) = (work("0.01"), work("1e-12"));
+    assert!(w0 > 0.1, "{w0}");
+    assert!(
+        (w1 - w0 * 1e-10).abs() <= 1e-6 * w0 * 1e-10,
+        "{w1} against {}",
+        w0 * 1e-10
+    );
+}

@@ -90,8 +90,8 @@ mod reliability;
 mod safety;
 #[path = "session12_regressions.rs"]
 mod session12_regressions;
-#[path = "session24_motions.rs"]
-mod session24_motions;
+#[path = "session24_extremes.rs"]
+mod session24_extremes;
 #[path = "sweep.rs"]
 mod sweep;
 #[path = "sweep_capacity.rs"]

@@ -303,7 +303,9 @@ fn crushing_rows(
             .collect();
         let t = law.depth;
         let fw = nmax / t;
-        let m_of = |n: f64| n * t / 2.0 - n * n / (2.0 * fw);
+        // n·(t/2 − n/(2 f_c w)), not n·t/2 − n²/(2 f_c w): at f_c = 1e-200 kPa n² underflowed
+        // to 0 and the chords fell on the rigid |M| ≤ N t/2 (λ of the rigid arch; session 24).
+        let m_of = |n: f64| n * (t / 2.0 - n / (2.0 * fw));
         // `facets == 0`: the chords are left to a conic solver (crate::conic).
         if map.facets > 0 {
             let (v, capped) = crushing_vertices(nmax, scale, map.crushing_reach, map.facets);

@@ -1,4 +1,6 @@
-//! Session 24, support motions that would be ignored or not resolved (lead):
+//! Session 24, extreme inputs that were ignored or answered wrongly (lead):
+//! - a compressive strength of 1e-200 kPa gave the rigid arch's λ (n² underflowed in the
+//!   crushing chords, which then lay on the rigid |M| ≤ N t/2): the arch cannot stand;
 //! - a `--profile` that is zero at every support's centre moved nothing, with or without a
 //!   `--move` beside it, and the run went on as if the flag had not been given: refused in one
 //!   line naming the flag, no output written;
@@ -78,5 +80,40 @@ fn session24_motions_within_round_off_are_refused_and_small_ones_resolved() {
         (w1 - w0 * 1e-10).abs() <= 1e-6 * w0 * 1e-10,
         "{w1} against {}",
         w0 * 1e-10
+    );
+}
+
+/// The paper's arch with the live load on its right half: with f_c·w·t of 3e-201 kN against
+/// voussoirs of about 0.5 kN, no joint carries its dead load, so it cannot stand, at 1e-150 as
+/// at 1e-300 kPa (before: 0.218883, the rigid λ, from 1e-200 kPa down); at 1e4 kPa λ lies below
+/// the rigid 0.218883 (crushing only lowers it), the conic model at or above the polygon's.
+#[test]
+fn session24_a_vanishing_compressive_strength_cannot_stand() {
+    let d = tmpdir("s24m", "crushing");
+    gen_model(&d, "arch --live right -o arch.json");
+    let lam = |extra: &[&str]| {
+        let mut a = vec!["limit", "arch.json", "--json"];
+        a.extend_from_slice(extra);
+        let v = json(&run(&d, &a));
+        (
+            v["status"].as_str().unwrap().to_string(),
+            v["load_multiplier"].as_f64(),
+        )
+    };
+    let (_, rigid) = lam(&[]);
+    let rigid = rigid.unwrap();
+    assert!((rigid - 0.218883).abs() < 1e-6, "{rigid}");
+    for fc in ["1e-150", "1e-200", "1e-300"] {
+        for crushing in ["linear", "conic"] {
+            let (status, l) = lam(&["--compressive-strength", fc, "--crushing", crushing]);
+            assert_eq!(status, "no_equilibrium", "f_c {fc} {crushing}: λ {l:?}");
+        }
+    }
+    let (_, poly) = lam(&["--compressive-strength", "1e4"]);
+    let (_, cone) = lam(&["--compressive-strength", "1e4", "--crushing", "conic"]);
+    let (poly, cone) = (poly.unwrap(), cone.unwrap());
+    assert!(
+        poly < rigid && cone < rigid && cone >= poly - 1e-9,
+        "{poly} {cone} {rigid}"
     );
 }

@@ -117,3 +117,59 @@ fn session24_a_vanishing_compressive_strength_cannot_stand() {
         "{poly} {cone} {rigid}"
     );
 }
+
+/// `--keep-fixed` on a model without a fixed support changed nothing and was accepted: now
+/// refused (capacity and incremental); with `--fixed` it runs and the curve keeps its reference
+/// λ (the arch with the live load on its right half, 0.218883 before any settlement).
+#[test]
+fn session24_keep_fixed_without_a_fixed_support_is_refused() {
+    let d = tmpdir("s24m", "keepfixed");
+    gen_model(&d, "arch --live right -o arch.json");
+    refused(
+        &d,
+        &[
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0.02,0",
+            "--steps",
+            "4",
+            "--keep-fixed",
+        ],
+        "--keep-fixed keeps fixed supports fixed, but no support is fixed",
+    );
+    refused(
+        &d,
+        &[
+            "incremental",
+            "arch.json",
+            "--control",
+            "0,3.19",
+            "--direction",
+            "+x",
+            "--max",
+            "1mm",
+            "--step",
+            "0.5mm",
+            "--move",
+            "right=0.001,0",
+            "--keep-fixed",
+        ],
+        "--keep-fixed keeps fixed supports fixed, but no support is fixed",
+    );
+    let out = run(
+        &d,
+        &[
+            "capacity",
+            "arch.json",
+            "--move",
+            "right=0,-0.01",
+            "--fixed",
+            "right",
+            "--steps",
+            "4",
+            "--keep-fixed",
+        ],
+    );
+    assert!(out.contains("from 0.218883 at no settlement"), "{out}");
+}

@@ -763,6 +763,25 @@ fn check_motion_size(req: &Request, size: f64, largest: f64) -> Result<()> {
     Ok(())
 }
 
+/// Refuse `keep_fixed` (capacity, incremental) on a model none of whose supports is fixed
+/// (`--fixed` or a `fixed` connection in the model): it would change nothing (session 24).
+fn check_keep_fixed(req: &Request, any_fixed: bool) -> Result<()> {
+    let keep = match &req.analysis {
+        Analysis::Capacity(c) => c.keep_fixed,
+        Analysis::Incremental(i) => i.keep_fixed,
+        _ => false,
+    };
+    if keep && !any_fixed {
+        let n = req.names;
+        return invalid(format!(
+            "{} keeps fixed supports fixed, but no support is fixed (give {} or a support with connection \"fixed\" in the model)",
+            n.name("keep_fixed"),
+            n.name("fixed")
+        ));
+    }
+    Ok(())
+}
+
 /// Refuse an analysis that needs a support motion on a model whose supports do not move.
 fn check_motion(req: &Request, dims: usize, moving: bool) -> Result<()> {
     let n = req.names;
@@ -897,6 +916,12 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
                 2,
             );
             check_motion_size(req, size, largest)?;
+            check_keep_fixed(
+                req,
+                m.supports
+                    .iter()
+                    .any(|s| s.connection == crate::model::Connection::Fixed),
+            )?;
             check_dead_loads(req, &setup.structure)?;
             let (setup, adapt) = adapted(setup, req, hooks)?;
             let (output, solver) = match &req.analysis {
@@ -933,6 +958,12 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
                 3,
             );
             check_motion_size(req, size, largest)?;
+            check_keep_fixed(
+                req,
+                m.supports
+                    .iter()
+                    .any(|s| s.connection == crate::model::Connection::Fixed),
+            )?;
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {

@@ -460,9 +460,20 @@ pub fn incremental_with<S: IncrementalGeometry>(
     }
     let wanted = (opts.max_displacement / opts.step).ceil();
     if wanted > opts.max_steps as f64 {
+        // Numbers in e-notation when huge (`--max 1e300` printed 300 digits twice; session 24).
+        let num = |x: f64| {
+            if x.abs() >= 1e12 {
+                format!("{x:.3e}")
+            } else {
+                format!("{x}")
+            }
+        };
         return Err(Error::Request(format!(
-            "steps: a largest displacement of {} m in steps of {} m takes {wanted:.0} steps, more than the bound of {} (take a larger step)",
-            opts.max_displacement, opts.step, opts.max_steps
+            "steps: a largest displacement of {} m in steps of {} m takes {} steps, more than the bound of {} (take a larger step)",
+            num(opts.max_displacement),
+            num(opts.step),
+            num(wanted),
+            opts.max_steps
         )));
     }
     if !start.has_live_loads() {
@@ -713,8 +724,8 @@ pub fn incremental_with<S: IncrementalGeometry>(
         .filter(|e| e.kind == EventKind::Closed)
         .count();
     let mut message = format!(
-        "peak λ = {:.6} at a control displacement of {}; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
-        peak_l,
+        "peak λ = {} at a control displacement of {}; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
+        crate::analysis::limit::show_multiplier(peak_l),
         crate::lengths::Length::Motion.show(peak.1),
         steps,
         if steps == 1 { "" } else { "s" },

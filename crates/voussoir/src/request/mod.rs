@@ -166,6 +166,14 @@ impl ModelOptions {
                     names.given("friction", mu)
                 ));
             }
+            if mu > crate::discretize::MAX_FRICTION {
+                return invalid(format!(
+                    "{}: above {}, which no joint has; for joints that do not slide leave {} out (Heyman's law)",
+                    names.given("friction", mu),
+                    crate::discretize::MAX_FRICTION,
+                    names.name("friction")
+                ));
+            }
         }
         if let Some(f) = self.compressive_strength {
             if !(f.is_finite() && f > 0.0) {
@@ -273,6 +281,10 @@ impl SolverRequest {
         })
     }
 }
+
+/// The finest bisection tolerance accepted (`safety`, `least-thickness`): some thousand times a
+/// double's resolution on [0, 1], so that the interval can still halve.
+pub const MIN_BISECTION_TOLERANCE: f64 = 1e-12;
 
 /// Non-associative friction needs a joint that can slide: without any friction coefficient
 /// (`--friction`, or a material's) nothing slides and the iteration would return the

@@ -156,6 +156,19 @@ pub struct ForcesArgs {
     pub pressure_points: Option<PressureArg>,
 }
 
+impl ForcesArgs {
+    /// `--forces` draws on the --svg/--png figure only (a report draws its own figures):
+    /// refused without one, before any work (it was accepted and ignored; session 24).
+    pub fn check(&self, draw: &DrawArgs) -> Result<(), Fail> {
+        if self.forces && draw.svg.is_none() && draw.png.is_none() {
+            return Err(Fail(
+                "--forces draws arrows on the --svg/--png drawing; give --svg or --png (a report draws its own figures)".into(),
+            ));
+        }
+        Ok(())
+    }
+}
+
 impl DrawArgs {
     /// These drawing flags with `--forces`.
     pub fn with(&self, f: &ForcesArgs) -> DrawArgs {
@@ -283,6 +296,19 @@ impl DrawArgs {
         if let Some(s) = self.scale {
             if !(s.is_finite() && s >= 0.0) {
                 return Err(Fail(format!("--scale {s}: expected a finite number ≥ 0")));
+            }
+        }
+        // Without a figure or a report they were accepted and ignored (session 24).
+        if !self.any() {
+            for (given, flag) in [
+                (self.scale.is_some(), "--scale"),
+                (self.title.is_some(), "--title"),
+            ] {
+                if given {
+                    return Err(Fail(format!(
+                        "{flag} shapes the --svg/--png drawing and the --report; give one of them"
+                    )));
+                }
             }
         }
         if let Some(p) = &self.vtk {

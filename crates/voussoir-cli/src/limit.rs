@@ -36,6 +36,7 @@ pub struct LimitConfig {
 impl LimitArgs {
     pub fn resolve(&self) -> Result<LimitConfig, Fail> {
         self.draw.check()?;
+        self.forces.check(&self.draw)?;
         let input = self.model.resolve()?;
         let limit = LimitRequest {
             crushing: self.crushing.crushing(),

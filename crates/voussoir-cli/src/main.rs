@@ -145,6 +145,18 @@ fn one_line(e: &clap::Error) -> String {
     if e.kind() == ErrorKind::UnknownArgument {
         if let Some(ContextValue::String(bad)) = e.get(ContextKind::InvalidArg) {
             let flag = bad.split('=').next().unwrap_or(bad);
+            // `sweep` and `merge` write --jsonl/--csv, not -o: clap's tip ("to pass '-o' as a
+            // value, use '-- -o'") sent the user the wrong way (session 24).
+            if flag == "-o" || flag == "--output" {
+                let takes_jsonl = Cli::command()
+                    .find_subcommand(&sub)
+                    .is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some("jsonl")));
+                if takes_jsonl {
+                    return format!(
+                        "error: {flag} does not apply to `voussoir {sub}`: its results go to --jsonl FILE (JSON lines) and --csv FILE (see `voussoir {sub} --help`)"
+                    );
+                }
+            }
             if let Some(name) = flag.strip_prefix("--") {
                 let mut found = Vec::new();
                 commands_with_flag(&Cli::command(), "", name, &mut found);

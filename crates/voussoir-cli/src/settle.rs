@@ -41,6 +41,7 @@ pub struct SettleConfig {
 impl SettleCmdArgs {
     pub fn resolve(&self) -> Result<SettleConfig, Fail> {
         self.draw.check()?;
+        self.forces.check(&self.draw)?;
         let input = self.model.resolve()?;
         let settle = SettleRequest {
             settlement_form: self.form.settlement_form.form(),

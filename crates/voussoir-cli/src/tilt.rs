@@ -36,6 +36,7 @@ pub struct TiltArgs {
 pub fn run(a: TiltArgs) -> Result<(), Fail> {
     a.out.check()?;
     a.draw.check()?;
+    a.forces.check(&a.draw)?;
     let input = a.model.resolve()?;
     let given = a
         .direction

@@ -90,6 +90,8 @@ mod reliability;
 mod safety;
 #[path = "session12_regressions.rs"]
 mod session12_regressions;
+#[path = "session24_audit.rs"]
+mod session24_audit;
 #[path = "session24_extremes.rs"]
 mod session24_extremes;
 #[path = "sweep.rs"]

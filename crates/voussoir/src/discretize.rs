@@ -31,6 +31,14 @@ pub struct PointRef {
     pub index: usize,
 }
 
+/// The largest friction coefficient accepted. No masonry joint comes near it; a larger μ is
+/// meant as "no sliding", which is Heyman's law (no friction coefficient at all), and it puts
+/// rows of scale μ into the programs: on the paper's arch μ = 1e10 gave λ = 0.434623 with 17
+/// hinges and μ ≥ 1e15 a "certified" no-equilibrium, where λ = 0.434645 (session 24); on a
+/// 2D wall μ = 1e5 was reported uncertified and 1e6 gave 1.999999 for 2. Up to 1e4 both give
+/// the no-sliding answer to 1e-6 (`tests/joint_laws.rs`: μ = 1e4 reproduces Heyman to 1e-9).
+pub const MAX_FRICTION: f64 = 1e4;
+
 /// Joint law of a joint: Heyman's (no sliding, infinite strength) unless a material says
 /// otherwise. A joint takes the weaker of the two blocks' values (block–support: the block's).
 #[derive(Clone, Copy, Debug, PartialEq)]

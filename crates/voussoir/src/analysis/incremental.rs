@@ -460,9 +460,20 @@ pub fn incremental_with<S: IncrementalGeometry>(
     }
     let wanted = (opts.max_displacement / opts.step).ceil();
     if wanted > opts.max_steps as f64 {
+        // Numbers in e-notation when huge (`--max 1e300` printed 300 digits twice; session 24).
+        let num = |x: f64| {
+            if x.abs() >= 1e12 {
+                format!("{x:.3e}")
+            } else {
+                format!("{x}")
+            }
+        };
         return Err(Error::Request(format!(
-            "steps: a largest displacement of {} m in steps of {} m takes {wanted:.0} steps, more than the bound of {} (take a larger step)",
-            opts.max_displacement, opts.step, opts.max_steps
+            "steps: a largest displacement of {} m in steps of {} m takes {} steps, more than the bound of {} (take a larger step)",
+            num(opts.max_displacement),
+            num(opts.step),
+            num(wanted),
+            opts.max_steps
         )));
     }
     if !start.has_live_loads() {
@@ -496,6 +507,8 @@ pub fn incremental_with<S: IncrementalGeometry>(
     // 20 mm ran its 100,000-step cap, minutes of LPs, where 17 mm ended in 0.15 s.
     let mut snaps_in_a_row = 0usize;
     let mut snap_cycle: Option<usize> = None;
+    // Why a `ControlStill` run stopped: how the mechanism moves the control point.
+    let mut still: Option<String> = None;
     for step in 0..opts.max_steps {
         steps = step;
         let map = KinematicMap::new(&st);
@@ -565,6 +578,25 @@ pub fn incremental_with<S: IncrementalGeometry>(
         let dscale = d.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if proj.abs() <= 1e-9 * dscale && !snap {
             status = IncrementalStatus::ControlStill;
+            let m = <S::D as Dim>::dot(uc, uc).sqrt();
+            let show = |v: &[f64], k: f64| {
+                v.iter()
+                    .map(|x| format!("{:.3}", (x * k * 1e3).round() / 1e3 + 0.0))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            let dir_text = show(dir.as_ref(), 1.0);
+            still = Some(if m > 1e-9 * dscale {
+                format!(
+                    "the collapse mechanism moves the control point along ({}), at right angles to the control direction ({}): there is no displacement along the direction to step by; take a control direction with a component along that motion, or another control point",
+                    show(uc.as_ref(), 1.0 / m),
+                    dir_text
+                )
+            } else {
+                format!(
+                    "the collapse mechanism does not move the control point (block {cb} stays still): there is no displacement along the control direction ({dir_text}) to step by; take a control point on a block that moves"
+                )
+            });
             break;
         }
         let remaining = opts.max_displacement - disp.abs();
@@ -683,17 +715,17 @@ pub fn incremental_with<S: IncrementalGeometry>(
             snap_cycle.unwrap_or(0)
         ),
         IncrementalStatus::NoEquilibrium => "no equilibrium on the current geometry".to_string(),
-        IncrementalStatus::ControlStill => {
+        IncrementalStatus::ControlStill => still.clone().unwrap_or_else(|| {
             "the mechanism does not move the control point along the direction".to_string()
-        }
+        }),
     };
     let closed = events
         .iter()
         .filter(|e| e.kind == EventKind::Closed)
         .count();
     let mut message = format!(
-        "peak λ = {:.6} at a control displacement of {}; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
-        peak_l,
+        "peak λ = {} at a control displacement of {}; {} step{}, {} closure{}, {} hinge move{} under the dead loads; {}",
+        crate::analysis::limit::show_multiplier(peak_l),
         crate::lengths::Length::Motion.show(peak.1),
         steps,
         if steps == 1 { "" } else { "s" },

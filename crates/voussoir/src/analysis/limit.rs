@@ -703,10 +703,13 @@ pub fn limit_result<S: Assembly>(
             s.status.sentence(),
             s.least.unwrap_or(f64::NAN)
         ),
-        (LimitStatus::Collapse, Some(l)) => format!("collapse load multiplier λ = {l:.6}"),
+        (LimitStatus::Collapse, Some(l)) => {
+            format!("collapse load multiplier λ = {}", show_multiplier(l))
+        }
         (LimitStatus::NoEquilibrium, Some(l)) => format!(
-            "{} (the largest multiplier in equilibrium is λ = {l:.6} < 0)",
-            s.status.sentence()
+            "{} (the largest multiplier in equilibrium is λ = {} < 0)",
+            s.status.sentence(),
+            show_multiplier(l)
         ),
         (st_, _) => st_.sentence().to_string(),
     };
@@ -765,5 +768,16 @@ pub fn limit_result<S: Assembly>(
         geometry: st.shapes(),
         canonical: None,
         no_equilibrium: None,
+    }
+}
+
+/// A load multiplier as the summaries print it: six decimals, or six significant digits in
+/// e-notation below 1e-3, so that a small structure's λ (the paper's arch scaled by 1e-6:
+/// λ = 4.346453e-7) is not printed as 0.000000 (session 24).
+pub(crate) fn show_multiplier(l: f64) -> String {
+    if l != 0.0 && l.abs() < 1e-3 {
+        format!("{l:.6e}")
+    } else {
+        format!("{l:.6}")
     }
 }

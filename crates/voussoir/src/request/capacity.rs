@@ -195,6 +195,9 @@ impl CapacityRequest {
         req: &Request,
         dims: usize,
     ) -> Result<(Output<S::D>, SolverOptions)> {
+        if self.non_associative {
+            super::check_sliding(st, req.names)?;
+        }
         let opts = self.options(req, dims, &super::class(st, req));
         // Its many programs: the result states which method answered each kind of them (the
         // first limit analysis, the warm-started steps, the certificates of no equilibrium).

@@ -226,6 +226,17 @@ impl IncrementalRequest {
                     n.name("move")
                 ));
             }
+            if self.raw {
+                // It chooses the settlement's mechanism; without a settlement it was accepted
+                // and ignored (session 24): the steps follow the solver's mechanism anyway
+                // unless `canonical_steps`.
+                return invalid(format!(
+                    "{} chooses the solver's own settlement mechanism and only applies with {} or {} (without a settlement the steps follow the solver's mechanism already)",
+                    n.name("raw"),
+                    n.name("move"),
+                    n.name("profile")
+                ));
+            }
         }
         Ok(())
     }

@@ -114,6 +114,15 @@ impl LeastThicknessRequest {
                 names.given("bisection_tolerance", rel)
             ));
         }
+        if rel < super::MIN_BISECTION_TOLERANCE {
+            // Finer than a double resolves in [0, 1]: the bisection never ended (session 24:
+            // 1e-300 ran for minutes until killed).
+            return invalid(format!(
+                "{}: below {:e}, finer than the bisection can resolve (it would never end)",
+                names.given("bisection_tolerance", rel),
+                super::MIN_BISECTION_TOLERANCE
+            ));
+        }
         Ok(())
     }
 }

@@ -147,6 +147,7 @@ impl LimitRequest {
             (self.laws().crushing, self.laws().facets())
         };
         let mut r = if self.laws().non_associative {
+            super::check_sliding(st, n)?;
             if crushing == Crushing::Conic {
                 return invalid(if dims == 3 {
                     format!(
@@ -188,6 +189,12 @@ impl LimitRequest {
         // answer is Clarabel's alone).
         if crushing == Crushing::Linear {
             crate::analysis::limit::certify_no_equilibrium(st, &mut r, &solver, Some(facets))?;
+        }
+        if let Some(it) = &r.friction_iteration {
+            // Say what the number is: the fixed point of a heuristic iteration, not a bound
+            // certified as the associative multiplier is (regression: the summary read like the
+            // associative one).
+            r.message.push_str(&super::nonassociative_note(it, "λ"));
         }
         Ok((Output::Limit(r), solver))
     }

@@ -166,6 +166,14 @@ impl ModelOptions {
                     names.given("friction", mu)
                 ));
             }
+            if mu > crate::discretize::MAX_FRICTION {
+                return invalid(format!(
+                    "{}: above {}, which no joint has; for joints that do not slide leave {} out (Heyman's law)",
+                    names.given("friction", mu),
+                    crate::discretize::MAX_FRICTION,
+                    names.name("friction")
+                ));
+            }
         }
         if let Some(f) = self.compressive_strength {
             if !(f.is_finite() && f > 0.0) {
@@ -272,6 +280,45 @@ impl SolverRequest {
             ..*class
         })
     }
+}
+
+/// The finest bisection tolerance accepted (`safety`, `least-thickness`): some thousand times a
+/// double's resolution on [0, 1], so that the interval can still halve.
+pub const MIN_BISECTION_TOLERANCE: f64 = 1e-12;
+
+/// Non-associative friction needs a joint that can slide: without any friction coefficient
+/// (`--friction`, or a material's) nothing slides and the iteration would return the
+/// associative answer under a heuristic's name. Refused, naming the flag.
+pub(crate) fn check_sliding<S: Assembly>(st: &S, n: Names) -> Result<()> {
+    let map = crate::discretize::KinematicMap::new(st);
+    if map.laws.iter().all(|l| l.friction.is_none()) {
+        return invalid(format!(
+            "{} needs friction: no joint has a friction coefficient ({}, or a material's `friction`), so nothing slides",
+            n.name("non_associative"),
+            n.ask("friction", "MU")
+        ));
+    }
+    Ok(())
+}
+
+/// One sentence after a non-associative result's message: what the number is (the fixed point
+/// of the heuristic iteration of Gilbert, Casapulla and Ahmed, not a certified bound), how the
+/// iteration ended, and the associative value, which bounds the true non-associative one from
+/// above (Radenkovic's first theorem).
+pub(crate) fn nonassociative_note(it: &crate::result::FrictionIteration, what: &str) -> String {
+    let n = it.history.len();
+    let lps = format!("{n} LP{}", if n == 1 { "" } else { "s" });
+    let mut s = if it.converged {
+        format!("; non-associative friction: the fixed point of a heuristic iteration ({lps}), not a certified bound")
+    } else {
+        format!("; non-associative friction: the last iterate of a heuristic fixed-point iteration that did not converge ({lps}), not a certified bound")
+    };
+    if let Some(a) = it.associative {
+        s.push_str(&format!(
+            "; the associative {what} = {a:.6} bounds the true one from above"
+        ));
+    }
+    s
 }
 
 /// Finite compressive strength and non-associative friction: the joint-law options of limit,

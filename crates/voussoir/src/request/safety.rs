@@ -39,6 +39,15 @@ impl SafetyRequest {
                 n.given("bisection_tolerance", tol)
             ));
         }
+        if tol < super::MIN_BISECTION_TOLERANCE {
+            // Finer than a double resolves in [0, 1]: the bisection never ended (session 24:
+            // 1e-300 ran for minutes until killed).
+            return invalid(format!(
+                "{}: below {:e}, finer than the bisection can resolve (it would never end)",
+                n.given("bisection_tolerance", tol),
+                super::MIN_BISECTION_TOLERANCE
+            ));
+        }
         req.model.refuse_exact_cone(
             n,
             " does not apply to `safety` (its programs are LPs: the inscribed pyramid)",

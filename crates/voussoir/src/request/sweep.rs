@@ -150,6 +150,32 @@ impl SweepRequest {
                 n.given("cov", self.cov)
             ));
         }
+        // Options of another mode were accepted and ignored (session 24: `--magnitudes 3
+        // --cov 0.2 --seed 5 --capacity-steps 10` wrote the same lines as `--magnitudes 3`).
+        // The defaults cannot be told from values given, so a value other than the default
+        // is refused where it has no effect.
+        let d = SweepRequest::default();
+        if self.samples.is_none() {
+            for (given, field, value) in [
+                (self.cov != d.cov, "cov", self.cov.to_string()),
+                (self.seed != d.seed, "seed", self.seed.to_string()),
+            ] {
+                if given {
+                    return invalid(format!(
+                        "{}: applies to the Monte Carlo samples of {} only",
+                        n.given(field, value),
+                        n.ask("samples", "N")
+                    ));
+                }
+            }
+        }
+        if !self.capacity && self.capacity_steps != d.capacity_steps {
+            return invalid(format!(
+                "{}: the intervals of the capacity curves of {}; add it",
+                n.given("capacity_steps", self.capacity_steps),
+                n.name("capacity")
+            ));
+        }
         if self.capacity && self.capacity_steps == 0 {
             return invalid(format!(
                 "{}: a capacity curve needs at least one interval",

@@ -981,6 +981,12 @@ pub(crate) fn check_materials(
             "material '{name}': unit_weight ≥ 0, width > 0, compressive_strength > 0, friction ≥ 0 and cohesion ≥ 0 must be finite numbers"
         ));
         }
+        if let Some(mu) = m.friction.filter(|&f| f > crate::discretize::MAX_FRICTION) {
+            return model_err(format!(
+                "material '{name}': friction {mu} is above {}, which no joint has; for joints that do not slide leave friction out (Heyman's law)",
+                crate::discretize::MAX_FRICTION
+            ));
+        }
     }
     Ok(())
 }

@@ -173,3 +173,36 @@ fn session24_keep_fixed_without_a_fixed_support_is_refused() {
     );
     assert!(out.contains("from 0.218883 at no settlement"), "{out}");
 }
+
+/// `settle --non-associative` on a model without friction ran an iteration in which nothing can
+/// slide; `limit` and `capacity` already refused it (h-audit): now `settle` does too. With
+/// friction it runs.
+#[test]
+fn session24_settle_non_associative_without_friction_is_refused() {
+    let d = tmpdir("s24m", "nonassoc");
+    gen_model(&d, "arch -o arch.json");
+    refused(
+        &d,
+        &[
+            "settle",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--non-associative",
+        ],
+        "--non-associative needs friction",
+    );
+    let out = run(
+        &d,
+        &[
+            "settle",
+            "arch.json",
+            "--move",
+            "right=0.01,0",
+            "--non-associative",
+            "--friction",
+            "0.6",
+        ],
+    );
+    assert!(out.contains("accommodates the settlement"), "{out}");
+}

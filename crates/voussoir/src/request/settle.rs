@@ -180,6 +180,9 @@ impl SettleRequest {
             (self.crushing, self.facets())
         };
         if self.non_associative && both {
+            // Without any friction nothing slides: the iteration would be pointless (as
+            // `limit` and `capacity` refuse it).
+            super::check_sliding(st, req.names)?;
             let solver = req.solver.iteration(&super::class(st, req));
             // In 2D (unless `raw`) the canonical mechanism of the last iterate's program
             // (least crack area; analysis::canonical_friction), as for Heyman's rules.

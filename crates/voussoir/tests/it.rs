@@ -90,6 +90,8 @@ mod issue29_least_mu;
 mod issue29_least_twins;
 #[path = "issue29_local_rays.rs"]
 mod issue29_local_rays;
+#[path = "issue29_nonassoc_iteration.rs"]
+mod issue29_nonassoc_iteration;
 #[path = "issue29_outcomes.rs"]
 mod issue29_outcomes;
 #[path = "issue29_policy.rs"]

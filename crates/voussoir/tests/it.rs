@@ -92,6 +92,8 @@ mod issue29_least_twins;
 mod issue29_local_rays;
 #[path = "issue29_motion_scale.rs"]
 mod issue29_motion_scale;
+#[path = "issue29_nonassoc_iteration.rs"]
+mod issue29_nonassoc_iteration;
 #[path = "issue29_outcomes.rs"]
 mod issue29_outcomes;
 #[path = "issue29_policy.rs"]

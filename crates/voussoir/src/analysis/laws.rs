@@ -49,6 +49,13 @@ pub struct NonAssociativeOptions {
     /// Iterations over which the value must stay within `tolerance` (2: consecutive values,
     /// with the normal forces within `√tolerance` too; more: a window of values only).
     pub window: usize,
+    /// With `window` 2, the iteration also ends, converged, once the value has stayed within
+    /// `band_tolerance` (relative) over the last `band_window` iterations (below 3: never):
+    /// where the normal forces wander over a large optimal face, consecutive values never agree
+    /// to `tolerance` (the 1.0 m running-bond façade: λ within ±0.15 % for 170 iterations,
+    /// docs/performance.md, "Non-associative façade (session 24)").
+    pub band_window: usize,
+    pub band_tolerance: f64,
 }
 
 impl Default for NonAssociativeOptions {
@@ -58,6 +65,8 @@ impl Default for NonAssociativeOptions {
             relaxation: 0.5,
             tolerance: 1e-7,
             window: 2,
+            band_window: 8,
+            band_tolerance: 1e-3,
         }
     }
 }
@@ -72,6 +81,8 @@ impl NonAssociativeOptions {
             relaxation: 0.5,
             tolerance: 1e-3,
             window: 8,
+            band_window: 0,
+            band_tolerance: 0.0,
         }
     }
 }

@@ -57,8 +57,17 @@ pub fn iterate<T>(
     mut solve: impl FnMut(&KinematicMap) -> Result<T>,
     read: impl Fn(&T) -> Option<(f64, &[f64])>,
 ) -> Result<(Option<f64>, Iterated<T>)> {
+    let trace = std::env::var_os("VOUSSOIR_TRACE").is_some();
+    let t0 = std::time::Instant::now();
     map.shear_limits = None;
     let first = solve(map)?;
+    if trace {
+        eprintln!(
+            "trace: non-associative: associative program {:?} {:.3} s",
+            read(&first).map(|(v, _)| v),
+            t0.elapsed().as_secs_f64()
+        );
+    }
     let Some((associative, first_pn)) = read(&first).map(|(v, p)| (v, p.to_vec())) else {
         return Ok((None, Iterated::done(first)));
     };
@@ -79,6 +88,7 @@ pub fn iterate<T>(
             })
             .collect();
         map.shear_limits = Some(limits);
+        let t0 = std::time::Instant::now();
         let s = solve(map)?;
         let Some((value, pn)) = read(&s) else {
             last = s;
@@ -92,6 +102,13 @@ pub fn iterate<T>(
             .zip(pn)
             .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
             / scale;
+        if trace {
+            eprintln!(
+                "trace: non-associative: iterate {} value {value:.10} normal forces moved {dn:.2e} {:.3} s",
+                history.len(),
+                t0.elapsed().as_secs_f64()
+            );
+        }
         for (a, b) in nbar.iter_mut().zip(pn) {
             *a = (1.0 - alpha) * *a + alpha * b;
         }
@@ -104,17 +121,15 @@ pub fn iterate<T>(
                     break;
                 }
             }
-        } else if history.len() >= o.window {
-            let w = &history[history.len() - o.window..];
-            let (lo, hi) = w
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                    (a.min(x), b.max(x))
-                });
-            if hi - lo <= o.tolerance * hi.abs().max(lo.abs()).max(1e-12) {
-                converged = true;
-                break;
-            }
+        } else if settled(&history, o.window, o.tolerance) {
+            converged = true;
+            break;
+        }
+        // The band: where the normal forces keep wandering over a large optimal face (the
+        // façades), the value settles within a band long before consecutive values agree.
+        if o.window <= 2 && settled(&history, o.band_window, o.band_tolerance) {
+            converged = true;
+            break;
         }
     }
     Ok((
@@ -125,6 +140,21 @@ pub fn iterate<T>(
             converged,
         },
     ))
+}
+
+/// Whether the last `window` values of `history` lie within `tolerance` of the largest of them
+/// (relative); never for a window below 3 or a history shorter than the window.
+fn settled(history: &[f64], window: usize, tolerance: f64) -> bool {
+    if window < 3 || history.len() < window {
+        return false;
+    }
+    let w = &history[history.len() - window..];
+    let (lo, hi) = w
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    hi - lo <= tolerance * hi.abs().max(lo.abs()).max(1e-12)
 }
 
 impl<T> Iterated<T> {
@@ -190,12 +220,68 @@ pub fn solve_settlement_nonassociative<S: Assembly>(
     crushing: Crushing,
     o: &NonAssociativeOptions,
 ) -> Result<(Option<f64>, Iterated<SettlementSolution>)> {
-    iterate(
+    // The iterates need the normal forces and the work, which the force program alone gives
+    // (its optimum is the work, equal to the motion program's within the duality gap): the
+    // motion program, whose only product is the mechanism, is solved for the associative
+    // solution and for the last iterate only (with the last iterate's capacities, so the forces
+    // and the path are those of solving both programs every time). Half the programs of the
+    // iteration on the 1.0 m running-bond façade (docs/performance.md, "Non-associative façade
+    // (session 24)"). Conic crushing, or a force program without an optimum (no equilibrium,
+    // or the settlement incompatible), takes both programs as before.
+    let first = std::cell::Cell::new(true);
+    let (associative, mut it) = iterate(
         map,
         o,
-        |m| solve_settlement_crushing(st, m, opts, crushing),
-        |s| (s.status == SettlementStatus::Mechanism).then_some((s.primal, s.pn.as_slice())),
-    )
+        |m| {
+            if crushing == Crushing::Linear && !first.replace(false) {
+                if let Some(s) = settlement_forces(st, m, opts)? {
+                    return Ok((s, false));
+                }
+            }
+            Ok((solve_settlement_crushing(st, m, opts, crushing)?, true))
+        },
+        |(s, _)| (s.status == SettlementStatus::Mechanism).then_some((s.primal, s.pn.as_slice())),
+    )?;
+    if !it.last.1 {
+        it.last = (solve_settlement_crushing(st, map, opts, crushing)?, true);
+        // The last value as the pair gives it (the motion program's optimum), as before.
+        if let (Some(v), SettlementStatus::Mechanism) = (it.history.last_mut(), it.last.0.status) {
+            *v = it.last.0.primal;
+        }
+    }
+    Ok((
+        associative,
+        Iterated {
+            last: it.last.0,
+            history: it.history,
+            converged: it.converged,
+        },
+    ))
+}
+
+/// The settlement's force program alone (polygonal statics), solved: the normal and shear
+/// forces and the optimal work, without a mechanism; `None` where it has no optimum.
+fn settlement_forces<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    opts: &SolverOptions,
+) -> Result<Option<SettlementSolution>> {
+    let dead = st.load_vector(false);
+    let fp = crate::programs::settlement_force_program(map, &dead);
+    let s = fp.solve(opts)?;
+    if s.status != crate::lp::LpStatus::Optimal {
+        return Ok(None);
+    }
+    let (pn, pt) = fp.forces(&s.x);
+    Ok(Some(SettlementSolution {
+        status: SettlementStatus::Mechanism,
+        mechanism: vec![],
+        pn,
+        pt,
+        primal: s.objective,
+        dual: s.objective,
+        solver: s.solver_info(),
+    }))
 }
 
 /// Settlement analysis with non-associative friction: the settlement result of the last

@@ -279,7 +279,7 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         }
         let l = p
             .load_multiplier
-            .map_or("—".to_string(), |l| format!("{l:.6}"));
+            .map_or("—".to_string(), voussoir::analysis::limit::show_multiplier);
         let v = if p.valid {
             "yes".to_string()
         } else {

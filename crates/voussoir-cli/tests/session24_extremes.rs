@@ -206,3 +206,34 @@ fn session24_settle_non_associative_without_friction_is_refused() {
     );
     assert!(out.contains("accommodates the settlement"), "{out}");
 }
+
+/// A capacity curve's λ printed as itself when small (h-audit found `limit`'s "0.000000"; the
+/// curve's summary had the same six decimals): the paper's arch drawn a million times smaller
+/// has λ(0) = 1e-6 × 0.218883 (its weight scales with its area, its live load with its span).
+#[test]
+fn session24_a_small_capacity_curve_prints_its_multiplier() {
+    let d = tmpdir("s24m", "smallcap");
+    gen_model(
+        &d,
+        "arch --live right --radius 2.86e-6 --thickness 0.33e-6 -o tiny.json",
+    );
+    let out = run(
+        &d,
+        &[
+            "capacity",
+            "tiny.json",
+            "--move",
+            "right=2e-8,0",
+            "--steps",
+            "4",
+        ],
+    );
+    let line = out.lines().find(|l| l.starts_with("λ falls from")).unwrap();
+    let l: f64 = line["λ falls from ".len()..]
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((l - 0.218883e-6).abs() <= 1e-6 * l, "{line}");
+}

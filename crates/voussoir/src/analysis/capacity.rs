@@ -54,7 +54,8 @@
 use crate::analysis::canonical::StepSelection;
 pub use crate::analysis::laws::closing_joints;
 use crate::analysis::limit::{
-    check_facets, multiplier_certificate, Crushing, LimitSolution, LimitStatus, DEFAULT_FACETS,
+    check_facets, multiplier_certificate, show_multiplier, Crushing, LimitSolution, LimitStatus,
+    DEFAULT_FACETS,
 };
 use crate::analysis::paths::{SettlementPath, WarmLimit};
 use crate::analysis::settlement::SettlementStatus;
@@ -512,13 +513,18 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let unit = SettlementUnit::of(&direction);
     let mut message = match (l0, zero) {
         (Some(l0), Some(z)) => format!(
-            "λ falls from {l0:.6} at no settlement to 0 at a {} of {}",
+            "λ falls from {} at no settlement to 0 at a {} of {}",
+            show_multiplier(l0),
             unit.noun(),
             unit.show(z, 4)
         ),
         (Some(l0), None) => format!(
-            "λ = {l0:.6} at no settlement and {} at the largest {} {}: no zero crossing in the range",
-            curve.last().and_then(|p| p.load_multiplier).map_or("undefined".to_string(), |l| format!("{l:.6}")),
+            "λ = {} at no settlement and {} at the largest {} {}: no zero crossing in the range",
+            show_multiplier(l0),
+            curve
+                .last()
+                .and_then(|p| p.load_multiplier)
+                .map_or("undefined".to_string(), show_multiplier),
             unit.noun(),
             unit.show(smax, 4)
         ),

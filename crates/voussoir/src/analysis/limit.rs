@@ -774,7 +774,7 @@ pub fn limit_result<S: Assembly>(
 /// A load multiplier as the summaries print it: six decimals, or six significant digits in
 /// e-notation below 1e-3, so that a small structure's λ (the paper's arch scaled by 1e-6:
 /// λ = 4.346453e-7) is not printed as 0.000000 (session 24).
-pub(crate) fn show_multiplier(l: f64) -> String {
+pub fn show_multiplier(l: f64) -> String {
     if l != 0.0 && l.abs() < 1e-3 {
         format!("{l:.6e}")
     } else {

@@ -810,6 +810,29 @@ fn check_motion_size(req: &Request, size: f64, largest: f64) -> Result<()> {
     Ok(())
 }
 
+/// The checks of a model's supports before an analysis (a motion where one is needed, one not
+/// too small to resolve, a fixed support where `keep_fixed` asks for one), given the points of
+/// its blocks and supports and the supports' motions (`translations` lengths, then rotations)
+/// and connections. Returns whether any support moves.
+fn check_supports<const N: usize>(
+    req: &Request,
+    points: impl Iterator<Item = Vec<f64>>,
+    supports: Vec<([f64; N], crate::model::Connection)>,
+    dims: usize,
+) -> Result<bool> {
+    let moves = moving(supports.iter().map(|s| s.0));
+    check_motion(req, dims, moves)?;
+    let (size, largest) = motion_against_size(points, supports.iter().map(|s| s.0), dims);
+    check_motion_size(req, size, largest)?;
+    check_keep_fixed(
+        req,
+        supports
+            .iter()
+            .any(|s| s.1 == crate::model::Connection::Fixed),
+    )?;
+    Ok(moves)
+}
+
 /// Refuse `keep_fixed` (capacity, incremental) on a model none of whose supports is fixed
 /// (`--fixed` or a `fixed` connection in the model): it would change nothing (session 24).
 fn check_keep_fixed(req: &Request, any_fixed: bool) -> Result<()> {
@@ -950,24 +973,19 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             if let Some(laws) = joint_laws(&req.analysis) {
                 laws.check_strength(&setup.structure, req.names)?;
             }
-            let moves = moving(setup.model.supports.iter().map(|s| s.motion));
-            check_motion(req, 2, moves)?;
             let m = &setup.model;
-            let (size, largest) = motion_against_size(
+            let moves = check_supports(
+                req,
                 m.blocks
                     .iter()
                     .flat_map(|b| b.polygon.iter())
                     .chain(m.supports.iter().flat_map(|s| s.polygon.iter()))
                     .map(|p| p.to_vec()),
-                m.supports.iter().map(|s| s.motion),
-                2,
-            );
-            check_motion_size(req, size, largest)?;
-            check_keep_fixed(
-                req,
                 m.supports
                     .iter()
-                    .any(|s| s.connection == crate::model::Connection::Fixed),
+                    .map(|s| (s.motion, s.connection))
+                    .collect(),
+                2,
             )?;
             check_dead_loads(req, &setup.structure)?;
             let (setup, adapt) = adapted(setup, req, hooks)?;
@@ -992,24 +1010,19 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
                     req.names.name("adapt")
                 ));
             }
-            let moves = moving(setup.model.supports.iter().map(|s| s.motion));
-            check_motion(req, 3, moves)?;
             let m = &setup.model;
-            let (size, largest) = motion_against_size(
+            let moves = check_supports(
+                req,
                 m.blocks
                     .iter()
                     .flat_map(|b| b.vertices.iter())
                     .chain(m.supports.iter().flat_map(|s| s.vertices.iter()))
                     .map(|p| p.to_vec()),
-                m.supports.iter().map(|s| s.motion),
-                3,
-            );
-            check_motion_size(req, size, largest)?;
-            check_keep_fixed(
-                req,
                 m.supports
                     .iter()
-                    .any(|s| s.connection == crate::model::Connection::Fixed),
+                    .map(|s| (s.motion, s.connection))
+                    .collect(),
+                3,
             )?;
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {

@@ -237,3 +237,38 @@ fn session24_a_small_capacity_curve_prints_its_multiplier() {
         .unwrap();
     assert!((l - 0.218883e-6).abs() <= 1e-6 * l, "{line}");
 }
+
+/// `capacity --cold` asks for every step solved from scratch; with friction (or finite strength)
+/// the steps are solved from scratch anyway, so the flag changed nothing and was accepted:
+/// refused there. On Heyman's joints it runs, and gives the hot-started curve's λ(0).
+#[test]
+fn session24_cold_capacity_with_friction_is_refused() {
+    let d = tmpdir("s24m", "cold");
+    gen_model(&d, "arch --live right -o arch.json");
+    let args = [
+        "capacity",
+        "arch.json",
+        "--move",
+        "right=0.02,0",
+        "--steps",
+        "4",
+    ];
+    let mut with_friction = args.to_vec();
+    with_friction.extend_from_slice(&["--friction", "0.6", "--cold"]);
+    refused(
+        &d,
+        &with_friction,
+        "--cold: the steps of a curve with friction",
+    );
+    let mut cold = args.to_vec();
+    cold.push("--cold");
+    let (a, b) = (run(&d, &args), run(&d, &cold));
+    let first = |s: &str| {
+        s.lines()
+            .find(|l| l.starts_with("λ falls from"))
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(first(&a), first(&b));
+    assert!(first(&a).starts_with("λ falls from 0.218883"), "{a}");
+}

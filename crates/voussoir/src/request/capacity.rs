@@ -199,6 +199,18 @@ impl CapacityRequest {
             super::check_sliding(st, req.names)?;
         }
         let opts = self.options(req, dims, &super::class(st, req));
+        // Only Heyman's joints are hot-started: with friction, finite strength or the conic
+        // programs every step is solved from scratch already, and `cold` would change nothing.
+        if self.cold
+            && (self.non_associative
+                || opts.crushing == Crushing::Conic
+                || crate::discretize::KinematicMap::new(st).has_joint_laws())
+        {
+            return invalid(format!(
+                "{}: the steps of a curve with friction or finite strength are solved from scratch already (only no-sliding, rigid joints are hot-started)",
+                req.names.name("cold")
+            ));
+        }
         // Its many programs: the result states which method answered each kind of them (the
         // first limit analysis, the warm-started steps, the certificates of no equilibrium).
         let (out, solves) = crate::lp::collecting(|| capacity(st, &opts));

@@ -12,6 +12,11 @@
 
 use crate::common::{gen_model, json, refused, run, tmpdir};
 
+/// A command line's words (none of them has a space).
+fn w(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 #[test]
 fn session24_a_profile_that_moves_no_support_is_refused() {
     let d = tmpdir("s24m", "profile");
@@ -21,23 +26,13 @@ fn session24_a_profile_that_moves_no_support_is_refused() {
     );
     // The wall spans x = 0 … 4 m; the profile settles x = 20 … 30 m.
     for extra in [&[][..], &["--move", "f9=0,-0.01"][..]] {
-        let mut args = vec![
-            "settle",
-            "wall.json",
-            "--profile",
-            "uniform:20,30,-0.01",
-            "-o",
-            "r.json",
-        ];
+        let mut args = w("settle wall.json --profile uniform:20,30,-0.01 -o r.json");
         args.extend_from_slice(extra);
         refused(&d, &args, "--profile: the profile moves no support");
         assert!(!d.join("r.json").exists());
     }
     // The README's profile under the wall still settles it.
-    let out = run(
-        &d,
-        &["settle", "wall.json", "--profile", "uniform:2.8,4.0,-0.01"],
-    );
+    let out = run(&d, &w("settle wall.json --profile uniform:2.8,4.0,-0.01"));
     assert!(out.contains("accommodates the settlement"), "{out}");
 }
 
@@ -56,7 +51,7 @@ fn session24_motions_within_round_off_are_refused_and_small_ones_resolved() {
     gen_model(&d, "vault --depth 1 --rings 1 -o vault.json");
     refused(
         &d,
-        &["settle", "vault.json", "--move", "right=1e-40,0,0"],
+        &w("settle vault.json --move right=1e-40,0,0"),
         "below 1e-14 of the structure's size",
     );
     // 1 cm and 1e-12 m (1.4e-13 of the arch's size): the work in the ratio of the motions.
@@ -110,7 +105,7 @@ fn session24_a_vanishing_compressive_strength_cannot_stand() {
         }
     }
     let (_, poly) = lam(&["--compressive-strength", "1e4"]);
-    let (_, cone) = lam(&["--compressive-strength", "1e4", "--crushing", "conic"]);
+    let (_, cone) = lam(&w("--compressive-strength 1e4 --crushing conic"));
     let (poly, cone) = (poly.unwrap(), cone.unwrap());
     assert!(
         poly < rigid && cone < rigid && cone >= poly - 1e-9,
@@ -127,49 +122,17 @@ fn session24_keep_fixed_without_a_fixed_support_is_refused() {
     gen_model(&d, "arch --live right -o arch.json");
     refused(
         &d,
-        &[
-            "capacity",
-            "arch.json",
-            "--move",
-            "right=0.02,0",
-            "--steps",
-            "4",
-            "--keep-fixed",
-        ],
+        &w("capacity arch.json --move right=0.02,0 --steps 4 --keep-fixed"),
         "--keep-fixed keeps fixed supports fixed, but no support is fixed",
     );
     refused(
         &d,
-        &[
-            "incremental",
-            "arch.json",
-            "--control",
-            "0,3.19",
-            "--direction",
-            "+x",
-            "--max",
-            "1mm",
-            "--step",
-            "0.5mm",
-            "--move",
-            "right=0.001,0",
-            "--keep-fixed",
-        ],
+        &w("incremental arch.json --control 0,3.19 --direction +x --max 1mm --step 0.5mm --move right=0.001,0 --keep-fixed"),
         "--keep-fixed keeps fixed supports fixed, but no support is fixed",
     );
     let out = run(
         &d,
-        &[
-            "capacity",
-            "arch.json",
-            "--move",
-            "right=0,-0.01",
-            "--fixed",
-            "right",
-            "--steps",
-            "4",
-            "--keep-fixed",
-        ],
+        &w("capacity arch.json --move right=0,-0.01 --fixed right --steps 4 --keep-fixed"),
     );
     assert!(out.contains("from 0.218883 at no settlement"), "{out}");
 }
@@ -183,26 +146,12 @@ fn session24_settle_non_associative_without_friction_is_refused() {
     gen_model(&d, "arch -o arch.json");
     refused(
         &d,
-        &[
-            "settle",
-            "arch.json",
-            "--move",
-            "right=0.01,0",
-            "--non-associative",
-        ],
+        &w("settle arch.json --move right=0.01,0 --non-associative"),
         "--non-associative needs friction",
     );
     let out = run(
         &d,
-        &[
-            "settle",
-            "arch.json",
-            "--move",
-            "right=0.01,0",
-            "--non-associative",
-            "--friction",
-            "0.6",
-        ],
+        &w("settle arch.json --move right=0.01,0 --non-associative --friction 0.6"),
     );
     assert!(out.contains("accommodates the settlement"), "{out}");
 }
@@ -217,17 +166,7 @@ fn session24_a_small_capacity_curve_prints_its_multiplier() {
         &d,
         "arch --live right --radius 2.86e-6 --thickness 0.33e-6 -o tiny.json",
     );
-    let out = run(
-        &d,
-        &[
-            "capacity",
-            "tiny.json",
-            "--move",
-            "right=2e-8,0",
-            "--steps",
-            "4",
-        ],
-    );
+    let out = run(&d, &w("capacity tiny.json --move right=2e-8,0 --steps 4"));
     let line = out.lines().find(|l| l.starts_with("λ falls from")).unwrap();
     let l: f64 = line["λ falls from ".len()..]
         .split(' ')
@@ -245,22 +184,15 @@ fn session24_a_small_capacity_curve_prints_its_multiplier() {
 fn session24_cold_capacity_with_friction_is_refused() {
     let d = tmpdir("s24m", "cold");
     gen_model(&d, "arch --live right -o arch.json");
-    let args = [
-        "capacity",
-        "arch.json",
-        "--move",
-        "right=0.02,0",
-        "--steps",
-        "4",
-    ];
-    let mut with_friction = args.to_vec();
+    let args = w("capacity arch.json --move right=0.02,0 --steps 4");
+    let mut with_friction = args.clone();
     with_friction.extend_from_slice(&["--friction", "0.6", "--cold"]);
     refused(
         &d,
         &with_friction,
         "--cold: the steps of a curve with friction",
     );
-    let mut cold = args.to_vec();
+    let mut cold = args.clone();
     cold.push("--cold");
     let (a, b) = (run(&d, &args), run(&d, &cold));
     let first = |s: &str| {

@@ -120,6 +120,11 @@ pub trait ModelSupports {
     /// The x range of the support's vertices.
     fn x_range(&self, i: usize) -> [f64; 2];
     fn motion(&self, i: usize) -> &[f64];
+    /// Whether support `i` is tied to its blocks (`fixed`).
+    fn is_fixed(&self, i: usize) -> bool;
+    /// The model's size: the diagonal of the box around every vertex of its blocks and supports
+    /// (0 for a model without any).
+    fn extent(&self) -> f64;
     /// Replace support `i` by its parts cut at `cuts` (increasing, strictly inside its x range),
     /// named `NAME@0`, `NAME@1`, … from the left, in its place in the list. Each part keeps the
     /// support's connection and moves with it rigidly (its motion re-expressed about the part's
@@ -148,6 +153,24 @@ impl ModelSupports for Model {
     }
     fn motion(&self, i: usize) -> &[f64] {
         &self.supports[i].motion
+    }
+    fn is_fixed(&self, i: usize) -> bool {
+        self.supports[i].connection == crate::model::Connection::Fixed
+    }
+    fn extent(&self) -> f64 {
+        let points: Vec<crate::model::Point> = self
+            .blocks
+            .iter()
+            .flat_map(|b| b.polygon.iter())
+            .chain(self.supports.iter().flat_map(|s| s.polygon.iter()))
+            .copied()
+            .collect();
+        let [x0, y0, x1, y1] = crate::geometry::bbox(&points);
+        if points.is_empty() {
+            0.0
+        } else {
+            (x1 - x0).hypot(y1 - y0)
+        }
     }
     fn split(&mut self, i: usize, cuts: &[f64]) -> Result<usize> {
         use crate::geometry::area_centroid;
@@ -204,6 +227,24 @@ impl ModelSupports for Model3d {
     }
     fn motion(&self, i: usize) -> &[f64] {
         &self.supports[i].motion
+    }
+    fn is_fixed(&self, i: usize) -> bool {
+        self.supports[i].connection == crate::model::Connection::Fixed
+    }
+    fn extent(&self) -> f64 {
+        let points: Vec<crate::model3d::Point3> = self
+            .blocks
+            .iter()
+            .flat_map(|b| b.vertices.iter())
+            .chain(self.supports.iter().flat_map(|s| s.vertices.iter()))
+            .copied()
+            .collect();
+        let [lo, hi] = crate::geometry3d::bbox3(&points);
+        if points.is_empty() {
+            0.0
+        } else {
+            crate::vector::norm3(crate::vector::sub3(hi, lo))
+        }
     }
     fn split(&mut self, i: usize, cuts: &[f64]) -> Result<usize> {
         use crate::geometry3d::clean_polyhedron;

@@ -58,7 +58,7 @@ use crate::model3d::{AnyModel, Model3d};
 use crate::result::identify::IdentifyResult;
 use crate::result::incremental::IncrementalResult;
 use crate::result::Spatial;
-use crate::settlement_input::SupportSplit;
+use crate::settlement_input::{ModelSupports, SupportSplit};
 use crate::structure::{Assembly, BuildOptions, Structure, Structure3d};
 use crate::sweep::{MotionSize, SweepRecord};
 use crate::Model;
@@ -751,48 +751,12 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
     }
 }
 
-fn moving<const N: usize>(motions: impl Iterator<Item = [f64; N]>) -> bool {
-    motions.into_iter().any(|m| m.iter().any(|x| *x != 0.0))
-}
-
 /// Support motions whose largest displacement is below this fraction of the structure's size
 /// are refused by `settle` and `capacity`: within about fifty times the round-off of the
 /// coordinates themselves (2.2e-16 of the size), they cannot be resolved, and the programs'
 /// floors then decide instead of the structure (the paper's arch at 1e-30 m: its energy QP
 /// failed; at 1e-60 m the mechanism was reported uncertified with zero work; session 24).
 pub const MOTION_FLOOR: f64 = 1e-14;
-
-/// The size of a structure (the diagonal of the box around its points) and the largest
-/// displacement its support motions give (`translations`: the first `t` components; the rest
-/// rotations, times the size).
-fn motion_against_size<const N: usize>(
-    points: impl Iterator<Item = Vec<f64>>,
-    motions: impl Iterator<Item = [f64; N]>,
-    t: usize,
-) -> (f64, f64) {
-    let mut lo = vec![f64::INFINITY; t];
-    let mut hi = vec![f64::NEG_INFINITY; t];
-    for p in points {
-        for k in 0..t.min(p.len()) {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let size = lo
-        .iter()
-        .zip(&hi)
-        .map(|(a, b)| if b >= a { (b - a).powi(2) } else { 0.0 })
-        .sum::<f64>()
-        .sqrt();
-    let largest = motions
-        .flat_map(|m| {
-            m.into_iter()
-                .enumerate()
-                .map(move |(k, x)| if k < t { x.abs() } else { x.abs() * size })
-        })
-        .fold(0.0f64, f64::max);
-    (size, largest)
-}
 
 /// Refuse a settlement (or a capacity curve) whose support motions are too small to be
 /// resolved against the structure's own coordinates ([`MOTION_FLOOR`]).
@@ -811,25 +775,20 @@ fn check_motion_size(req: &Request, size: f64, largest: f64) -> Result<()> {
 }
 
 /// The checks of a model's supports before an analysis (a motion where one is needed, one not
-/// too small to resolve, a fixed support where `keep_fixed` asks for one), given the points of
-/// its blocks and supports and the supports' motions (`translations` lengths, then rotations)
-/// and connections. Returns whether any support moves.
-fn check_supports<const N: usize>(
-    req: &Request,
-    points: impl Iterator<Item = Vec<f64>>,
-    supports: Vec<([f64; N], crate::model::Connection)>,
-    dims: usize,
-) -> Result<bool> {
-    let moves = moving(supports.iter().map(|s| s.0));
+/// too small to resolve against the model's size, a fixed support where `keep_fixed` asks for
+/// one). Returns whether any support moves. `dims` translations lead each motion; the rotations
+/// after them count times the model's size.
+fn check_supports<M: ModelSupports>(req: &Request, m: &M, dims: usize) -> Result<bool> {
+    let n = m.support_names().len();
+    let moves = (0..n).any(|i| m.motion(i).iter().any(|x| *x != 0.0));
     check_motion(req, dims, moves)?;
-    let (size, largest) = motion_against_size(points, supports.iter().map(|s| s.0), dims);
+    let size = m.extent();
+    let largest = (0..n)
+        .flat_map(|i| m.motion(i).iter().enumerate())
+        .map(|(k, x)| if k < dims { x.abs() } else { x.abs() * size })
+        .fold(0.0f64, f64::max);
     check_motion_size(req, size, largest)?;
-    check_keep_fixed(
-        req,
-        supports
-            .iter()
-            .any(|s| s.1 == crate::model::Connection::Fixed),
-    )?;
+    check_keep_fixed(req, (0..n).any(|i| m.is_fixed(i)))?;
     Ok(moves)
 }
 
@@ -973,20 +932,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
             if let Some(laws) = joint_laws(&req.analysis) {
                 laws.check_strength(&setup.structure, req.names)?;
             }
-            let m = &setup.model;
-            let moves = check_supports(
-                req,
-                m.blocks
-                    .iter()
-                    .flat_map(|b| b.polygon.iter())
-                    .chain(m.supports.iter().flat_map(|s| s.polygon.iter()))
-                    .map(|p| p.to_vec()),
-                m.supports
-                    .iter()
-                    .map(|s| (s.motion, s.connection))
-                    .collect(),
-                2,
-            )?;
+            let moves = check_supports(req, &setup.model, 2)?;
             check_dead_loads(req, &setup.structure)?;
             let (setup, adapt) = adapted(setup, req, hooks)?;
             let (output, solver) = match &req.analysis {
@@ -1010,20 +956,7 @@ pub fn solve_with(prepared: Prepared, req: &Request, hooks: &mut Hooks) -> Resul
                     req.names.name("adapt")
                 ));
             }
-            let m = &setup.model;
-            let moves = check_supports(
-                req,
-                m.blocks
-                    .iter()
-                    .flat_map(|b| b.vertices.iter())
-                    .chain(m.supports.iter().flat_map(|s| s.vertices.iter()))
-                    .map(|p| p.to_vec()),
-                m.supports
-                    .iter()
-                    .map(|s| (s.motion, s.connection))
-                    .collect(),
-                3,
-            )?;
+            let moves = check_supports(req, &setup.model, 3)?;
             check_dead_loads(req, &setup.structure)?;
             let (output, solver) = match &req.analysis {
                 Analysis::Tilt(t) => {

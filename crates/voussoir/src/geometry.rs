@@ -120,6 +120,36 @@ fn touches(a0: Point, a1: Point, b0: Point, b1: Point, tol: f64) -> bool {
         || point_segment_distance(a1, b0, b1) <= tol
 }
 
+/// Whether segment a–b meets the closed box `[x0, y0, x1, y1]` (Liang–Barsky clipping; the
+/// drawings' label placement and the outline mesher both ask it).
+pub fn segment_meets_box(a: Point, b: Point, bx: [f64; 4]) -> bool {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-d[0], a[0] - bx[0]),
+        (d[0], bx[2] - a[0]),
+        (-d[1], a[1] - bx[1]),
+        (d[1], bx[3] - a[1]),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+            if t0 > t1 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
 /// Whether `q` lies strictly inside polygon `p`, farther than `tol` from its boundary.
 pub fn strictly_inside(q: Point, p: &[Point], tol: f64) -> bool {
     let n = p.len();

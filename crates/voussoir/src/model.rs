@@ -53,6 +53,49 @@ impl Default for Width {
     }
 }
 
+impl Width {
+    /// Every width finite and ≥ 0, else the one-line reason (in `unit`).
+    pub fn check(&self, unit: &str) -> Result<(), String> {
+        let all = match self {
+            Width::One(w) => std::slice::from_ref(w),
+            Width::PerPoint(v) => v.as_slice(),
+        };
+        match all.iter().find(|w| !(w.is_finite() && **w >= 0.0)) {
+            Some(w) => Err(format!("width {w} must be a finite number ≥ 0 ({unit})")),
+            None => Ok(()),
+        }
+    }
+
+    /// The crack as `(joint, point, width × scale)` over every point of joint `j`, which has
+    /// `points` points (`None`: there is no joint `j` among `joints`): one width for all, or
+    /// one per point, counted against the joint's. 2D and 3D cracks given by `joint` alike.
+    pub fn on_joint(
+        &self,
+        j: usize,
+        points: Option<usize>,
+        joints: usize,
+        scale: f64,
+    ) -> Result<Vec<(usize, usize, f64)>, String> {
+        let Some(n) = points else {
+            return Err(format!(
+                "joint {j} does not exist (the structure has {joints} joints)"
+            ));
+        };
+        match self {
+            Width::One(w) => Ok((0..n).map(|k| (j, k, *w * scale)).collect()),
+            Width::PerPoint(v) if v.len() != n => Err(format!(
+                "joint {j} has {n} points, {} widths given",
+                v.len()
+            )),
+            Width::PerPoint(v) => Ok(v
+                .iter()
+                .enumerate()
+                .map(|(k, &w)| (j, k, w * scale))
+                .collect()),
+        }
+    }
+}
+
 /// Metres per unit of a length unit named in a crack survey: `"m"`, `"cm"` or `"mm"` (also
 /// spelt out: `"millimetres"`, …). `None` for anything else.
 pub fn length_unit(name: &str) -> Option<f64> {

@@ -23,7 +23,9 @@
 //! named as given (left to right).
 
 use crate::error::{Error, Result};
-use crate::geometry::{area_centroid, bbox, point_segment_distance, signed_area};
+use crate::geometry::{
+    area_centroid, bbox, point_segment_distance, segment_meets_box, signed_area,
+};
 use crate::model::{Block, Loads, Material, Model, Point, Support};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
@@ -611,35 +613,6 @@ fn axis_levels(o: &Outline, axis: usize, eps: f64) -> Vec<f64> {
         }
     }
     out
-}
-
-/// Whether segment a–b meets the closed box `[x0, y0, x1, y1]` (Liang–Barsky).
-fn segment_meets_box(a: Point, b: Point, bx: [f64; 4]) -> bool {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [
-        (-d[0], a[0] - bx[0]),
-        (d[0], bx[2] - a[0]),
-        (-d[1], a[1] - bx[1]),
-        (d[1], bx[3] - a[1]),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-            if t0 > t1 {
-                return false;
-            }
-        }
-    }
-    true
 }
 
 struct Region<'a> {

@@ -21,6 +21,7 @@
 
 use super::svg::{esc, fmt_fixed, nice, num, polyline_path, text_width, FONT};
 use std::fmt::Write as _;
+use voussoir::geometry::segment_meets_box;
 
 /// One curve.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -710,35 +711,6 @@ pub(crate) struct LabelPlace {
     pub anchor: &'static str,
     /// `[x0, y0, x1, y1]` in pixels.
     pub bbox: [f64; 4],
-}
-
-/// Whether segment `a`–`b` meets the box `[x0, y0, x1, y1]` (Liang–Barsky clipping).
-pub(crate) fn segment_meets_box(a: [f64; 2], b: [f64; 2], bx: [f64; 4]) -> bool {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [
-        (-dx, a[0] - bx[0]),
-        (dx, bx[2] - a[0]),
-        (-dy, a[1] - bx[1]),
-        (dy, bx[3] - a[1]),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-            if t0 > t1 {
-                return false;
-            }
-        }
-    }
-    true
 }
 
 /// The place of a label `tw` pixels wide beside a ring of radius `ring` at `(x, y)` in the

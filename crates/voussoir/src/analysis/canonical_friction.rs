@@ -317,18 +317,12 @@ pub fn settle_nonassociative_canonical<S: Assembly>(
         }
         None => settlement_result(st, &map, &it.last),
     };
-    if !it.converged {
-        settlement.message = format!(
-            "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
-            it.history.len(),
-            settlement.message
-        );
-    }
-    settlement.friction_iteration = Some(FrictionIteration {
+    FrictionIteration {
         associative,
         history: it.history,
         converged: it.converged,
-    });
+    }
+    .attach(&mut settlement.message, &mut settlement.friction_iteration);
     Ok(settlement)
 }
 
@@ -378,17 +372,11 @@ pub fn limit_nonassociative_canonical<S: Assembly>(
     }
     let mut r = limit::limit_result(st, &map, &s);
     r.canonical = canonical;
-    if !it.converged {
-        r.message = format!(
-            "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
-            it.history.len(),
-            r.message
-        );
-    }
-    r.friction_iteration = Some(FrictionIteration {
+    FrictionIteration {
         associative,
         history: it.history,
         converged: it.converged,
-    });
+    }
+    .attach(&mut r.message, &mut r.friction_iteration);
     Ok(r)
 }

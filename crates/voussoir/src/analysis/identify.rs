@@ -434,14 +434,9 @@ impl IdentifyGeometry for Structure3d {
     ) -> Result<Vec<(usize, usize, f64)>> {
         use crate::model::Width;
         let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
-        for &w in match &c.opening {
-            Width::One(w) => std::slice::from_ref(w),
-            Width::PerPoint(v) => v.as_slice(),
-        } {
-            if !(w.is_finite() && w >= 0.0) {
-                return bad(format!("width {w} must be a finite number ≥ 0 ({unit})"));
-            }
-        }
+        c.opening
+            .check(unit)
+            .map_err(|m| Error::Request(format!("{what}: {m}")))?;
         if c.polyline.is_some() || c.snap.is_some() {
             return bad("\"polyline\" and \"snap\" (a crack line as drawn) apply to 2D models; on a 3D model give \"at\": [x, y, z] or \"joint\"".into());
         }
@@ -473,25 +468,9 @@ impl IdentifyGeometry for Structure3d {
                 return bad("a crack located by \"at\" takes one width".into())
             }
             (None, Some(j), w) => {
-                let Some(jt) = self.joints.get(j) else {
-                    return bad(format!(
-                        "joint {j} does not exist (the structure has {} joints)",
-                        self.joints.len()
-                    ));
-                };
-                let n = jt.points.len();
-                match w {
-                    Width::One(w) => (0..n).map(|k| (j, k, *w * ws)).collect(),
-                    Width::PerPoint(v) => {
-                        if v.len() != n {
-                            return bad(format!(
-                                "joint {j} has {n} points, {} widths given",
-                                v.len()
-                            ));
-                        }
-                        v.iter().enumerate().map(|(k, &w)| (j, k, w * ws)).collect()
-                    }
-                }
+                let n = self.joints.get(j).map(|jt| jt.points.len());
+                w.on_joint(j, n, self.joints.len(), ws)
+                    .map_err(|m| Error::Request(format!("{what}: {m}")))?
             }
             _ => return bad("give exactly one of \"at\" and \"joint\"".into()),
         })

@@ -298,18 +298,12 @@ pub fn settle_nonassociative<S: Assembly>(
     map.facets = facets;
     let (associative, it) = solve_settlement_nonassociative(st, &mut map, opts, crushing, o)?;
     let mut settlement = settlement_result(st, &map, &it.last);
-    if !it.converged {
-        settlement.message = format!(
-            "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
-            it.history.len(),
-            settlement.message
-        );
-    }
-    settlement.friction_iteration = Some(FrictionIteration {
+    FrictionIteration {
         associative,
         history: it.history,
         converged: it.converged,
-    });
+    }
+    .attach(&mut settlement.message, &mut settlement.friction_iteration);
     Ok(settlement)
 }
 
@@ -321,17 +315,11 @@ pub fn limit_nonassociative_result<S: Assembly>(
 ) -> Result<LimitResult<S::D>> {
     let r = limit_nonassociative(st, opts, o)?;
     let mut limit = r.limit;
-    if !r.converged {
-        limit.message = format!(
-            "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
-            r.history.len(),
-            limit.message
-        );
-    }
-    limit.friction_iteration = Some(FrictionIteration {
+    FrictionIteration {
         associative: r.associative_multiplier,
         history: r.history,
         converged: r.converged,
-    });
+    }
+    .attach(&mut limit.message, &mut limit.friction_iteration);
     Ok(limit)
 }

@@ -55,6 +55,21 @@ pub struct FrictionIteration {
     pub converged: bool,
 }
 
+impl FrictionIteration {
+    /// The iteration attached to a result: `message` (the result's summary line) starts with a
+    /// warning when the iteration did not converge, and the record goes in `slot`.
+    pub fn attach(self, message: &mut String, slot: &mut Option<FrictionIteration>) {
+        if !self.converged {
+            *message = format!(
+                "WARNING: the non-associative friction iteration did not converge in {} iterations (the last iterate is reported); {}",
+                self.history.len(),
+                message
+            );
+        }
+        *slot = Some(self);
+    }
+}
+
 /// Generic result types deref to their components, so that `block.u` or `hinge.x` read as
 /// fields in every dimension.
 macro_rules! deref_to {

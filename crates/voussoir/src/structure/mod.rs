@@ -319,14 +319,9 @@ impl Structure {
         let bad = |m: String| Err(Error::Request(format!("{what}: {m}")));
         let (ws, fc) = (c.width_scale, c.coordinate_scale);
         let unit = c.width_unit;
-        for &w in match c.opening {
-            Width::One(w) => std::slice::from_ref(w),
-            Width::PerPoint(v) => v.as_slice(),
-        } {
-            if !(w.is_finite() && w >= 0.0) {
-                return bad(format!("width {w} must be a finite number ≥ 0 ({unit})"));
-            }
-        }
+        c.opening
+            .check(unit)
+            .map_err(|m| Error::Request(format!("{what}: {m}")))?;
         if c.snap.is_some() && c.polyline.is_none() {
             return bad("\"snap\" applies to a crack given by \"polyline\"".into());
         }
@@ -354,25 +349,9 @@ impl Structure {
                 return bad("a crack located by \"at\" takes one width".into())
             }
             (None, Some(j), None, w) => {
-                let Some(jt) = self.joints.get(j) else {
-                    return bad(format!(
-                        "joint {j} does not exist (the structure has {} joints)",
-                        self.joints.len()
-                    ));
-                };
-                let n = jt.points.len();
-                match w {
-                    Width::One(w) => (0..n).map(|k| (j, k, *w * ws)).collect(),
-                    Width::PerPoint(v) => {
-                        if v.len() != n {
-                            return bad(format!(
-                                "joint {j} has {n} points, {} widths given",
-                                v.len()
-                            ));
-                        }
-                        v.iter().enumerate().map(|(k, &w)| (j, k, w * ws)).collect()
-                    }
-                }
+                let n = self.joints.get(j).map(|jt| jt.points.len());
+                w.on_joint(j, n, self.joints.len(), ws)
+                    .map_err(|m| Error::Request(format!("{what}: {m}")))?
             }
             (None, None, Some(line), w) => self.polyline_points(what, line, c.snap, w, ws, fc)?,
             _ => return bad("give exactly one of \"at\", \"joint\" and \"polyline\"".into()),

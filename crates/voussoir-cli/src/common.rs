@@ -211,10 +211,11 @@ pub enum CrushingArg {
 #[derive(clap::Args, Clone, Copy, Debug)]
 #[command(next_help_heading = "Joint laws")]
 pub struct CrushingArgs {
-    /// Finite-strength (crushing) model; matters only where a compressive strength is given
-    /// (--compressive-strength or the model's materials).
-    #[arg(long, value_enum, default_value = "linear", ignore_case = true)]
-    pub crushing: CrushingArg,
+    /// Finite-strength (crushing) model [default: linear]; matters only where a compressive
+    /// strength is given (--compressive-strength or the model's materials): refused elsewhere,
+    /// and in 3D.
+    #[arg(long, value_enum, ignore_case = true)]
+    pub crushing: Option<CrushingArg>,
     /// Facets (chords) of the inscribed crushing polygon of --crushing linear; more facets,
     /// closer to the exact cone [default: 16].
     #[arg(long, value_name = "N")]
@@ -227,12 +228,12 @@ pub struct CrushingArgs {
 }
 
 impl CrushingArgs {
-    /// The request's crushing model.
-    pub fn crushing(&self) -> Crushing {
-        match self.crushing {
+    /// The request's crushing model, as given (`None`: not given).
+    pub fn crushing(&self) -> Option<Crushing> {
+        self.crushing.map(|c| match c {
             CrushingArg::Linear => Crushing::Linear,
             CrushingArg::Conic => Crushing::Conic,
-        }
+        })
     }
 }
 

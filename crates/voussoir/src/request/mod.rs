@@ -41,7 +41,7 @@ pub use limit::LimitRequest;
 pub use motion::{parse_profile, signed_length, Move, Split, SupportMotion};
 pub use safety::SafetyRequest;
 pub use settle::SettleRequest;
-pub use sweep::SweepRequest;
+pub use sweep::{SweepRequest, DEFAULT_CAPACITY_STEPS, DEFAULT_COV, DEFAULT_SEED};
 pub use tilt::TiltRequest;
 
 use crate::analysis::canonical::CanonicalOptions;
@@ -248,7 +248,7 @@ pub fn class<S: Assembly>(st: &S, req: &Request) -> ProblemClass {
         Analysis::Capacity(_) => Purpose::Curve,
         _ => Purpose::Optimise,
     };
-    let conic = joint_laws(&req.analysis).is_some_and(|l| l.crushing == Crushing::Conic);
+    let conic = joint_laws(&req.analysis).is_some_and(|l| l.crushing == Some(Crushing::Conic));
     ProblemClass {
         cones: req.model.exact_cone() || conic,
         ..policy::class_of(st, purpose)
@@ -325,7 +325,8 @@ pub(crate) fn nonassociative_note(it: &crate::result::FrictionIteration, what: &
 /// settle and capacity. Defaults: the inscribed polygon of 16 facets, associative friction.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct JointLaws {
-    pub crushing: Crushing,
+    /// As given (`None`: not given, the inscribed polygon).
+    pub crushing: Option<Crushing>,
     pub facets: Option<usize>,
     pub non_associative: bool,
 }
@@ -333,7 +334,7 @@ pub struct JointLaws {
 impl JointLaws {
     pub fn validate(&self, names: Names) -> Result<()> {
         match (self.crushing, self.facets) {
-            (Crushing::Conic, Some(_)) => invalid(format!(
+            (Some(Crushing::Conic), Some(_)) => invalid(format!(
                 "{} applies to {} (the conic model is the exact cone)",
                 names.name("facets"),
                 names.given("crushing", "linear")
@@ -351,12 +352,18 @@ impl JointLaws {
         self.facets.unwrap_or(DEFAULT_FACETS)
     }
 
-    /// Whether a finite-strength option was given (they are refused in 3D).
-    pub fn strength_given(&self) -> bool {
-        self.crushing == Crushing::Conic || self.facets.is_some()
+    /// The crushing model (given or the default, the inscribed polygon).
+    pub fn crushing(&self) -> Crushing {
+        self.crushing.unwrap_or_default()
     }
 
-    /// Refuse `crushing: conic` and `facets` on a structure none of whose blocks has a
+    /// Whether a finite-strength option was given (they are refused in 3D), whatever its value
+    /// (session 25: `crushing: linear`, the default's value, passed where `conic` was refused).
+    pub fn strength_given(&self) -> bool {
+        self.crushing.is_some() || self.facets.is_some()
+    }
+
+    /// Refuse `crushing` (either value) and `facets` on a structure none of whose blocks has a
     /// compressive strength: its joints cannot crush, so the crushing model would play no part.
     fn check_strength(&self, st: &Structure, names: Names) -> Result<()> {
         if st
@@ -367,7 +374,8 @@ impl JointLaws {
             return Ok(());
         }
         let flag = match (self.crushing, self.facets) {
-            (Crushing::Conic, _) => names.given("crushing", "conic"),
+            (Some(Crushing::Conic), _) => names.given("crushing", "conic"),
+            (Some(Crushing::Linear), _) => names.given("crushing", "linear"),
             (_, Some(n)) => names.given("facets", n),
             _ => return Ok(()),
         };
@@ -889,7 +897,7 @@ fn adapted(
                 &setup.model,
                 build,
                 &solver,
-                r.crushing,
+                laws.crushing(),
                 laws.facets(),
                 &o,
             )?

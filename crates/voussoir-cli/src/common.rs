@@ -402,10 +402,10 @@ pub fn split_summary(splits: &[SupportSplit]) -> String {
                 .collect();
             let _ = writeln!(
                 s,
-                "  {:<12} x {:.4} … {:.4} m  {}",
+                "  {:<12} x {} … {} m  {}",
                 p.name,
-                p.x_range[0],
-                p.x_range[1],
+                voussoir::lengths::Length::Position.number(p.x_range[0]),
+                voussoir::lengths::Length::Position.number(p.x_range[1]),
                 m.join(", ")
             );
         }
@@ -646,6 +646,14 @@ impl Input {
             })
         };
         let prepared = voussoir::request::prepare(model, req).map_err(annotate)?;
+        // The summaries print lengths at the structure's own scale (voussoir::lengths).
+        {
+            use voussoir::settlement_input::ModelSupports;
+            voussoir::lengths::set_scale(match &prepared {
+                voussoir::request::Prepared::Planar(s) => s.model.extent(),
+                voussoir::request::Prepared::Spatial(s) => s.model.extent(),
+            });
+        }
         let warnings = match &prepared {
             voussoir::request::Prepared::Planar(s) => &s.warnings,
             voussoir::request::Prepared::Spatial(s) => &s.warnings,

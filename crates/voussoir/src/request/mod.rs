@@ -776,7 +776,8 @@ fn check_motion_size(req: &Request, size: f64, largest: f64) -> Result<()> {
     };
     if largest > 0.0 && size > 0.0 && largest < MOTION_FLOOR * size {
         return invalid(format!(
-            "{what}: the support motions (largest displacement {largest:.3e} m) are below {MOTION_FLOOR:e} of the structure's size ({size:.4} m), within the round-off of its coordinates: give a motion large enough to resolve (1mm, say)"
+            "{what}: the support motions (largest displacement {largest:.3e} m) are below {MOTION_FLOOR:e} of the structure's size ({}), within the round-off of its coordinates: give a motion large enough to resolve (1mm, say)",
+            crate::lengths::Length::Position.show(size)
         ));
     }
     Ok(())

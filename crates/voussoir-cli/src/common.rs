@@ -518,10 +518,10 @@ impl ModelArgs {
                 friction: self.friction,
                 compressive_strength: self.compressive_strength,
                 friction_facets: self.friction_facets,
-                friction_cone: match self.friction_cone {
-                    Some(FrictionConeArg::Exact) => FrictionCone::Exact,
-                    _ => FrictionCone::Pyramid,
-                },
+                friction_cone: self.friction_cone.map(|c| match c {
+                    FrictionConeArg::Exact => FrictionCone::Exact,
+                    FrictionConeArg::Pyramid => FrictionCone::Pyramid,
+                }),
             },
             solver: SolverRequest {
                 method: self.solver.method.map(method),

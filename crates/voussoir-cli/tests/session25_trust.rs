@@ -4,6 +4,8 @@
 //!   `--capacity-steps 40`; `--crushing linear` on a model that cannot crush, or in 3D): the
 //!   checks now ask whether the option was given, not whether its value is the default's;
 //!   `gen arch --half-angle`/`--offset` with another `--shape` were ignored: refused;
+//!   `bench --scenario realistic` compared the wall benchmark's flags with their defaults, and
+//!   `--friction-cone pyramid` passed on a 2D model where `exact` was refused: both refused;
 //! - a structure drawn at micrometre size printed its lengths as 0.0000 m / 0.000 mm: small
 //!   lengths above the round-off now print in significant digits (voussoir::lengths);
 //! - the 2D `tilt` summary did not count the supports (3D did).
@@ -262,4 +264,43 @@ fn session25_two_d_tilt_counts_its_supports() {
     // The same line as limit's (its first line counts the same structure).
     let limit = run(&d, &w("limit wall.json"));
     assert_eq!(limit.lines().next().unwrap(), first);
+}
+
+#[test]
+fn session25_bench_and_friction_cone_flags_refused_at_their_default_value() {
+    let d = tmpdir("s25", "bench");
+    // `bench --scenario realistic` refuses the wall benchmark's flags: it compared them with
+    // their defaults, so the defaults' values typed out passed.
+    for (extra, flag) in [
+        ("--sizes 1000,4000,16000,64000", "--sizes"),
+        ("--friction-cone pyramid", "--friction-cone"),
+        ("--solver-tolerance 1e-9", "--solver-tolerance"),
+        ("--form force", "--form"),
+        ("--geometry-sizes 100000", "--geometry-sizes"),
+        ("--analysis both", "--analysis (use --analyses)"),
+    ] {
+        refused(
+            &d,
+            &w(&format!(
+                "bench --scenario realistic --models arch --analyses limit {extra}"
+            )),
+            &format!("{flag}: does not apply to --scenario realistic"),
+        );
+    }
+    // `--friction-cone` on a 2D model: `exact` was refused, `pyramid` passed; both refused.
+    gen_model(&d, "arch --voussoirs 16 --live full -o arch.json");
+    for cone in ["pyramid", "exact"] {
+        refused(
+            &d,
+            &[
+                "limit",
+                "arch.json",
+                "--friction",
+                "0.6",
+                "--friction-cone",
+                cone,
+            ],
+            "--friction-facets and --friction-cone apply to 3D models",
+        );
+    }
 }

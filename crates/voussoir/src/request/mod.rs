@@ -145,8 +145,11 @@ pub struct ModelOptions {
     /// 3D: facets of the friction pyramid (default 8). Refused for a 2D model.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction_facets: Option<usize>,
-    /// 3D: the friction cone (default the pyramid). `exact` is refused for a 2D model.
-    pub friction_cone: FrictionCone,
+    /// 3D: the friction cone (default the pyramid), as given. Given (either value) for a 2D
+    /// model, refused (session 25: `pyramid`, the default's value, passed where `exact` was
+    /// refused).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction_cone: Option<FrictionCone>,
 }
 
 impl ModelOptions {
@@ -192,7 +195,7 @@ impl ModelOptions {
                     FRICTION_FACETS.end()
                 ));
             }
-            if self.friction_cone == FrictionCone::Exact {
+            if self.exact_cone() {
                 return invalid(format!(
                     "{} applies to the pyramid, not to {}",
                     names.name("friction_facets"),
@@ -204,7 +207,7 @@ impl ModelOptions {
     }
 
     fn exact_cone(&self) -> bool {
-        self.friction_cone == FrictionCone::Exact
+        self.friction_cone == Some(FrictionCone::Exact)
     }
 
     /// `friction_cone=exact` refused in one line by an analysis that solves the inscribed
@@ -713,7 +716,7 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
             if let Analysis::Identify(r) = &req.analysis {
                 splits.extend(r.split_profiles(&mut model, n)?);
             }
-            if req.model.friction_facets.is_some() || req.model.exact_cone() {
+            if req.model.friction_facets.is_some() || req.model.friction_cone.is_some() {
                 return invalid(format!(
                     "{} and {} apply to 3D models (a 2D joint's friction is exact)",
                     n.name("friction_facets"),

@@ -215,6 +215,22 @@ fn session25_a_micrometre_arch_prints_its_lengths_in_significant_digits() {
         .unwrap();
     assert!(lambda > 1e-7 && lambda < 1e-6, "{lambda}");
     assert!(lim.contains(&format!("λ = {lambda:.6e}")), "{lim}");
+    // Capacity: the largest settlement in cm and the linear fit's λ(0) as the JSON's (they
+    // printed "0.0000 cm" and "λ ≈ 0 − 0.2941·s").
+    let cap = run(
+        &d,
+        &w("capacity arch.json --move right=1e-8,0 --steps 4 -o c.json"),
+    );
+    let c = json_file(&d.join("c.json"));
+    let first = cap.lines().nth(1).unwrap();
+    agrees(&number_after(first, "largest settlement "), 1e-8, 1e2);
+    let intercept = c["linear_fit"]["intercept"].as_f64().unwrap();
+    assert!(intercept > 1e-7 && intercept < 1e-6, "{intercept}");
+    let fit = cap
+        .lines()
+        .find(|l| l.starts_with("linear fit: λ ≈ "))
+        .unwrap_or_else(|| panic!("{cap}"));
+    agrees(&number_after(fit, "λ ≈ "), intercept, 1.0);
 }
 
 #[test]

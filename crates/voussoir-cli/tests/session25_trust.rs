@@ -231,6 +231,18 @@ fn session25_a_micrometre_arch_prints_its_lengths_in_significant_digits() {
         .find(|l| l.starts_with("linear fit: λ ≈ "))
         .unwrap_or_else(|| panic!("{cap}"));
     agrees(&number_after(fit, "λ ≈ "), intercept, 1.0);
+    // Incremental: λ at the start and in the table as λ (they printed 0.000001 and 0.000000).
+    let inc = run(
+        &d,
+        &w("incremental arch.json --control 0,3.19e-6 --direction -y --max 1e-8 --step 2.5e-9 -o i.json"),
+    );
+    let curve = json_file(&d.join("i.json"))["curve"].clone();
+    let l0 = curve[0]["load_multiplier"].as_f64().unwrap();
+    assert!(l0 > 1e-7 && l0 < 1e-6, "{l0}");
+    assert!(inc.contains(&format!("λ at the start {l0:.6e} ")), "{inc}");
+    let l1 = curve[1]["load_multiplier"].as_f64().unwrap();
+    assert!(l1 > 0.0 && l1 < l0, "{l1}");
+    assert!(inc.contains(&format!("    2.500e-7  {l1:.6e}")), "{inc}");
 }
 
 #[test]

@@ -3,7 +3,7 @@
 
 use clap::Args;
 use std::fmt::Write as _;
-use voussoir::analysis::canonical::{Canonical, ForceSelection, Selection};
+use voussoir::analysis::canonical::{Canonical, Selection};
 use voussoir::result::Spatial;
 
 #[derive(Args, Clone, Debug)]
@@ -94,58 +94,7 @@ pub fn summary<D: Spatial>(c: &Option<Canonical<D>>) -> String {
         m.crack_area, m.crack_area_solver
     );
     if let Some(f) = &c.forces {
-        // What fixed the field: the least energy, or (that program not optimal) admissibility.
-        let crit = match f.selected_by {
-            ForceSelection::LeastEnergy => "least complementary energy",
-            ForceSelection::Admissible => {
-                if f
-                    .rejected
-                    .iter()
-                    .any(|r| r.field == ForceSelection::LeastEnergy && r.gap.is_some())
-                {
-                    "an admissible field (the least-energy field did not certify: not the least-energy field, nor unique)"
-                } else {
-                    "an admissible field (the least-energy program did not end optimal: not the least-energy field, nor unique)"
-                }
-            }
-            ForceSelection::ForceProgram => {
-                "the force program's own optimum (no canonical field certified: not canonical, μ not imposed)"
-            }
-        };
-        match (f.least_friction, f.friction) {
-            (Some(l), _) => {
-                let prec = f
-                    .friction_precision
-                    .map(|p| {
-                        if p >= 1.0 - 1e-12 {
-                            return " (an admissible μ: no smaller one was shown inadmissible)"
-                                .to_string();
-                        }
-                        let pc = if p >= 0.01 {
-                            format!("{:.1}", 100.0 * p)
-                        } else {
-                            format!("{:.4}", 100.0 * p)
-                        };
-                        let pc = pc.trim_end_matches('0').trim_end_matches('.');
-                        format!(" (to {pc} %)")
-                    })
-                    .unwrap_or_default();
-                let _ = writeln!(
-                    s,
-                    "canonical forces: {crit}, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}{prec}"
-                );
-            }
-            (None, None) if f.physical => {
-                let _ = writeln!(s, "canonical forces: {crit}, open points unloaded");
-            }
-            _ => {
-                let _ = writeln!(
-                    s,
-                    "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); {crit}",
-                    f.largest_open_force
-                );
-            }
-        }
+        let _ = writeln!(s, "{}", f.summary_line());
         for r in &f.rejected {
             if let (None, Some(why)) = (r.gap, &r.reason) {
                 let _ = writeln!(

@@ -92,7 +92,7 @@ pub fn run(a: CapacityArgs) -> Result<(), Fail> {
                         &run.solver,
                         crate::report_inputs::Laws {
                             cone: None,
-                            crushing: Some(match cap.crushing {
+                            crushing: Some(match cap.laws().crushing() {
                                 Crushing::Linear => {
                                     voussoir_io::report_parts::CrushingModel::Linear(
                                         cap.laws().facets(),

@@ -211,10 +211,11 @@ pub enum CrushingArg {
 #[derive(clap::Args, Clone, Copy, Debug)]
 #[command(next_help_heading = "Joint laws")]
 pub struct CrushingArgs {
-    /// Finite-strength (crushing) model; matters only where a compressive strength is given
-    /// (--compressive-strength or the model's materials).
-    #[arg(long, value_enum, default_value = "linear", ignore_case = true)]
-    pub crushing: CrushingArg,
+    /// Finite-strength (crushing) model [default: linear]; matters only where a compressive
+    /// strength is given (--compressive-strength or the model's materials): refused elsewhere,
+    /// and in 3D.
+    #[arg(long, value_enum, ignore_case = true)]
+    pub crushing: Option<CrushingArg>,
     /// Facets (chords) of the inscribed crushing polygon of --crushing linear; more facets,
     /// closer to the exact cone [default: 16].
     #[arg(long, value_name = "N")]
@@ -227,12 +228,12 @@ pub struct CrushingArgs {
 }
 
 impl CrushingArgs {
-    /// The request's crushing model.
-    pub fn crushing(&self) -> Crushing {
-        match self.crushing {
+    /// The request's crushing model, as given (`None`: not given).
+    pub fn crushing(&self) -> Option<Crushing> {
+        self.crushing.map(|c| match c {
             CrushingArg::Linear => Crushing::Linear,
             CrushingArg::Conic => Crushing::Conic,
-        }
+        })
     }
 }
 
@@ -401,10 +402,10 @@ pub fn split_summary(splits: &[SupportSplit]) -> String {
                 .collect();
             let _ = writeln!(
                 s,
-                "  {:<12} x {:.4} … {:.4} m  {}",
+                "  {:<12} x {} … {} m  {}",
                 p.name,
-                p.x_range[0],
-                p.x_range[1],
+                voussoir::lengths::Length::Position.number(p.x_range[0]),
+                voussoir::lengths::Length::Position.number(p.x_range[1]),
                 m.join(", ")
             );
         }
@@ -517,10 +518,10 @@ impl ModelArgs {
                 friction: self.friction,
                 compressive_strength: self.compressive_strength,
                 friction_facets: self.friction_facets,
-                friction_cone: match self.friction_cone {
-                    Some(FrictionConeArg::Exact) => FrictionCone::Exact,
-                    _ => FrictionCone::Pyramid,
-                },
+                friction_cone: self.friction_cone.map(|c| match c {
+                    FrictionConeArg::Exact => FrictionCone::Exact,
+                    FrictionConeArg::Pyramid => FrictionCone::Pyramid,
+                }),
             },
             solver: SolverRequest {
                 method: self.solver.method.map(method),
@@ -645,6 +646,14 @@ impl Input {
             })
         };
         let prepared = voussoir::request::prepare(model, req).map_err(annotate)?;
+        // The summaries print lengths at the structure's own scale (voussoir::lengths).
+        {
+            use voussoir::settlement_input::ModelSupports;
+            voussoir::lengths::set_scale(match &prepared {
+                voussoir::request::Prepared::Planar(s) => s.model.extent(),
+                voussoir::request::Prepared::Spatial(s) => s.model.extent(),
+            });
+        }
         let warnings = match &prepared {
             voussoir::request::Prepared::Planar(s) => &s.warnings,
             voussoir::request::Prepared::Spatial(s) => &s.warnings,

@@ -180,13 +180,14 @@ pub struct ArchArgs {
     /// no intensity).
     #[arg(long)]
     pub live_load: Option<f64>,
-    /// Segmental arch: half of the angle the arch subtends, in degrees.
-    #[arg(long, default_value_t = 60.0)]
-    pub half_angle: f64,
+    /// Segmental arch: half of the angle the arch subtends, in degrees [default: 60]; refused
+    /// with another --shape.
+    #[arg(long)]
+    pub half_angle: Option<f64>,
     /// Pointed arch: distance of each arc's centre from the middle, as a fraction of the
-    /// intrados radius (0.5: equilateral).
-    #[arg(long, default_value_t = 0.5)]
-    pub offset: f64,
+    /// intrados radius (0.5: equilateral) [default: 0.5]; refused with another --shape.
+    #[arg(long)]
+    pub offset: Option<f64>,
     #[command(flatten)]
     pub out: Output,
 }
@@ -482,13 +483,30 @@ impl ArchArgs {
                 }
             )));
         }
+        // Each shape's own parameter; given with another shape it was accepted and ignored
+        // (session 25: `--half-angle 30` drew the semicircular arch).
+        for (flag, given, shape, own) in [
+            (
+                "--half-angle",
+                self.half_angle,
+                "segmental",
+                ShapeArg::Segmental,
+            ),
+            ("--offset", self.offset, "pointed", ShapeArg::Pointed),
+        ] {
+            if let Some(v) = given {
+                if std::mem::discriminant(&self.shape) != std::mem::discriminant(&own) {
+                    return Err(Fail(format!("{flag} {v}: applies to --shape {shape} only")));
+                }
+            }
+        }
         let shape = match self.shape {
             ShapeArg::Semicircular => ArchShape::Semicircular,
             ShapeArg::Segmental => ArchShape::Segmental {
-                half_angle: self.half_angle.to_radians(),
+                half_angle: self.half_angle.unwrap_or(60.0).to_radians(),
             },
             ShapeArg::Pointed => ArchShape::Pointed {
-                offset: self.offset,
+                offset: self.offset.unwrap_or(0.5),
             },
         };
         Ok(ArchSpec {

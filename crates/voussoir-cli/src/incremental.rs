@@ -6,6 +6,7 @@ use clap::Args;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use voussoir::analysis::incremental::{EventKind, IncrementalPoint, IncrementalResult};
+use voussoir::analysis::limit::show_multiplier;
 use voussoir::model3d::AnyModel;
 use voussoir::request::{Analysis, AnyResult, Hooks, IncrementalRequest};
 use voussoir::result::Spatial;
@@ -323,8 +324,9 @@ where
     if let Some(p) = r.curve.first() {
         let _ = writeln!(
             s,
-            "λ at the start {:.6} (by virtual work {:.6})",
-            p.load_multiplier, p.equilibrium_multiplier
+            "λ at the start {} (by virtual work {})",
+            show_multiplier(p.load_multiplier),
+            show_multiplier(p.equilibrium_multiplier)
         );
     }
     for e in &r.events {
@@ -353,9 +355,9 @@ where
         if i % every == 0 || i + 1 == r.curve.len() || p.before_closure {
             let _ = writeln!(
                 s,
-                "{:>12}  {:>10.6}",
+                "{:>12}  {:>10}",
                 Length::Motion.number(p.displacement),
-                p.load_multiplier
+                show_multiplier(p.load_multiplier)
             );
         }
     }

@@ -97,7 +97,7 @@ pub fn run(a: LimitArgs) -> Result<(), Fail> {
                         &run.solver,
                         crate::report_inputs::Laws {
                             cone: None,
-                            crushing: Some(match lr.crushing {
+                            crushing: Some(match lr.laws().crushing() {
                                 Crushing::Linear => {
                                     voussoir_io::report_parts::CrushingModel::Linear(
                                         lr.laws().facets(),

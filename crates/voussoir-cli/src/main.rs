@@ -22,7 +22,7 @@ mod sweep;
 mod tilt;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
-use clap::{CommandFactory, Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use common::Fail;
 
 #[derive(Parser)]
@@ -94,14 +94,22 @@ enum Command {
     Bench(bench::BenchArgs),
 }
 
-fn run(cli: Cli) -> Result<(), Fail> {
+/// `matches`: the parsed command line, for the flags whose check needs to know whether they
+/// were typed (not only their value: a default's value typed where it does nothing is refused
+/// as any other value is).
+fn run(cli: Cli, matches: &clap::ArgMatches) -> Result<(), Fail> {
     match cli.command {
         Command::Gen(g) => gen::run(g),
         Command::Import(a) => import::run(a),
         Command::Export(a) => import::export(a),
         Command::Sweep(a) => sweep::run(a),
         Command::Merge(a) => sweep::merge(a),
-        Command::Bench(a) => bench::run(a),
+        Command::Bench(a) => bench::run(
+            a,
+            matches
+                .subcommand_matches("bench")
+                .expect("the bench command's matches"),
+        ),
         Command::Limit(a) => limit::run(a),
         Command::Settle(a) => settle::run(a),
         Command::Capacity(a) => capacity::run(a),
@@ -192,7 +200,10 @@ fn one_line(e: &clap::Error) -> String {
 }
 
 fn main() {
-    let cli = match Cli::try_parse() {
+    let parsed = Cli::command()
+        .try_get_matches()
+        .and_then(|m| Cli::from_arg_matches(&m).map(|c| (c, m)));
+    let (cli, matches) = match parsed {
         Ok(c) => c,
         Err(e) => match e.kind() {
             ErrorKind::DisplayHelp
@@ -204,7 +215,7 @@ fn main() {
             }
         },
     };
-    if let Err(e) = run(cli).and_then(|()| outputs::commit()) {
+    if let Err(e) = run(cli, &matches).and_then(|()| outputs::commit()) {
         eprintln!("error: {e}");
         std::process::exit(1);
     }

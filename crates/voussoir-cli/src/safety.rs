@@ -229,12 +229,12 @@ pub fn run_least(g: Generated) -> Result<(), Fail> {
         crate::common::out(&voussoir_io::files::to_json(r)?);
     } else {
         crate::common::out(&format!(
-            "least thickness of the {}: {:.8} m (t/R = {:.6} with R = {:.6} m at the centreline); it does not stand at {:.8} m; {} bisection steps\n",
+            "least thickness of the {}: {} m (t/R = {:.6} with R = {} m at the centreline); it does not stand at {} m; {} bisection steps\n",
             r.generator,
-            r.found.thickness,
+            voussoir::lengths::fine(r.found.thickness, 8),
             r.thickness_over_radius,
-            r.centreline_radius,
-            r.found.below,
+            voussoir::lengths::fine(r.centreline_radius, 6),
+            voussoir::lengths::fine(r.found.below, 8),
             r.found.steps
         ));
         // How each decision was answered (the JSON's `answered`), as `safety` prints it.

@@ -97,7 +97,7 @@ pub fn run(a: SettleCmdArgs) -> Result<(), Fail> {
                         &run.solver,
                         crate::report_inputs::Laws {
                             cone: None,
-                            crushing: Some(match sr.crushing {
+                            crushing: Some(match sr.laws().crushing() {
                                 Crushing::Linear => {
                                     voussoir_io::report_parts::CrushingModel::Linear(
                                         sr.laws().facets(),

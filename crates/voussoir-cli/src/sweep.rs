@@ -31,12 +31,14 @@ pub struct SweepArgs {
     /// Monte Carlo: N analyses, random settlement fields around the base motions.
     #[arg(long, value_name = "N")]
     pub samples: Option<usize>,
-    /// Monte Carlo: coefficient of variation of each support's motion (dimensionless).
-    #[arg(long, default_value_t = 0.3, value_name = "COV")]
-    pub cov: f64,
-    /// Monte Carlo: random seed (the same seed gives the same samples on any machine).
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    /// Monte Carlo: coefficient of variation of each support's motion (dimensionless)
+    /// [default: 0.3]; refused without --samples.
+    #[arg(long, value_name = "COV")]
+    pub cov: Option<f64>,
+    /// Monte Carlo: random seed (the same seed gives the same samples on any machine)
+    /// [default: 1]; refused without --samples.
+    #[arg(long)]
+    pub seed: Option<u64>,
     /// Run only the tasks with index ≡ I (mod N): `--shard I/N`, I from 0.
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
@@ -45,9 +47,10 @@ pub struct SweepArgs {
     /// per record; quantiles of λ on stderr (docs/sweep.md). The model needs live loads.
     #[arg(long)]
     pub capacity: bool,
-    /// --capacity: intervals of each capacity curve (as `capacity --steps`).
-    #[arg(long, default_value_t = 40, value_name = "N")]
-    pub capacity_steps: usize,
+    /// --capacity: intervals of each capacity curve (as `capacity --steps`) [default: 40];
+    /// refused without --capacity.
+    #[arg(long, value_name = "N")]
+    pub capacity_steps: Option<usize>,
     /// Worker threads (default: one per core).
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
@@ -329,7 +332,8 @@ fn settings(a: &SweepArgs, n: usize) -> Vec<(String, String)> {
         }
         (_, _, Some(k)) => format!(
             "Monte Carlo (--samples {k}): coefficient of variation {} (--cov), seed {} (--seed)",
-            a.cov, a.seed
+            a.cov.unwrap_or(voussoir::request::DEFAULT_COV),
+            a.seed.unwrap_or(voussoir::request::DEFAULT_SEED)
         ),
         _ => String::new(),
     };
@@ -338,7 +342,11 @@ fn settings(a: &SweepArgs, n: usize) -> Vec<(String, String)> {
         ("analyses".to_string(), n.to_string()),
         (
             "capacity curve of each analysis (--capacity-steps)".to_string(),
-            format!("{} intervals", a.capacity_steps),
+            format!(
+                "{} intervals",
+                a.capacity_steps
+                    .unwrap_or(voussoir::request::DEFAULT_CAPACITY_STEPS)
+            ),
         ),
     ];
     if !a.settle.moves.is_empty() {

@@ -124,7 +124,7 @@ pub fn run(a: TiltArgs) -> Result<(), Fail> {
                 .emit_tilt(r, &input.path)?;
             a.out.emit(r, || {
                 let mut s = String::new();
-                let _ = writeln!(s, "blocks {}, joints {}", st.blocks.len(), st.joints.len());
+                let _ = writeln!(s, "{}", crate::common::structure_line(st));
                 match r.tilt_angle {
                     Some(t) => {
                         let _ = writeln!(

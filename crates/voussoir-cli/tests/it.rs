@@ -94,6 +94,8 @@ mod session12_regressions;
 mod session24_audit;
 #[path = "session24_extremes.rs"]
 mod session24_extremes;
+#[path = "session25_trust.rs"]
+mod session25_trust;
 #[path = "sweep.rs"]
 mod sweep;
 #[path = "sweep_capacity.rs"]

@@ -9,7 +9,35 @@
 //! Each kind has a fixed number of decimals (openings and motions to 1 µm, positions to
 //! 0.1 mm); the unit is always printed, and a value never comes out in bare e-notation
 //! metres. Values too large for fixed notation (≥ 10⁷ in the unit shown, i.e. absurd inputs)
-//! keep the unit with e-notation.
+//! keep the unit with e-notation. A length too small for the fixed decimals (it would print as
+//! zero) is printed with four significant digits in e-notation, in the same unit, when it is
+//! above 1e-9 of the structure's size ([`set_scale`]; below that it is round-off and prints as
+//! zero): a structure drawn at micrometre size printed its thickness "0.0000 m" and its crack
+//! widths "0.000 mm" (session 25). Rotations keep their fixed decimals.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// The size (m) of the structure whose lengths are printed: the bits of an `f64`, 1 m until
+/// [`set_scale`] is called.
+static SCALE: AtomicU64 = AtomicU64::new(0x3FF0_0000_0000_0000);
+
+/// Lengths below this fraction of the structure's size are its coordinates' round-off: printed
+/// as zero when the fixed decimals show zero.
+pub const ROUND_OFF: f64 = 1e-9;
+
+/// Set the size (m) of the structure whose lengths the summaries print (a front end calls it
+/// once it has built the structure; the diagonal of its bounding box). Ignored unless finite
+/// and positive.
+pub fn set_scale(size: f64) {
+    if size.is_finite() && size > 0.0 {
+        SCALE.store(size.to_bits(), Ordering::Relaxed);
+    }
+}
+
+/// The size set by [`set_scale`] (1 m by default).
+pub fn scale() -> f64 {
+    f64::from_bits(SCALE.load(Ordering::Relaxed))
+}
 
 /// What a length is, which sets its unit and its decimals.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,13 +86,24 @@ impl Length {
     /// The number of `si` (m or rad) in this kind's unit, without the unit (for tables whose
     /// heading names it): fixed decimals, no "-0".
     pub fn number(self, si: f64) -> String {
-        number(si * self.factor(), self.decimals())
+        self.number_to(si, self.decimals())
     }
 
     /// [`Length::number`] with more (or fewer) decimals, for a table that needs them (the
     /// capacity curve's settlements).
     pub fn number_to(self, si: f64, decimals: usize) -> String {
-        number(si * self.factor(), decimals)
+        let x = si * self.factor();
+        let s = number(x, decimals);
+        // A nonzero length above the round-off that the fixed decimals show as zero.
+        if self != Length::Rotation
+            && si.is_finite()
+            && si.abs() > ROUND_OFF * scale()
+            && s.chars().all(|c| c == '0' || c == '.')
+        {
+            format!("{x:.3e}")
+        } else {
+            s
+        }
     }
 
     /// The value with its unit: `1.250 mm`, `-0.2500 cm`, `3.1900 m`.
@@ -80,6 +119,17 @@ impl Length {
         } else {
             format!("+{n} {}", self.unit())
         }
+    }
+}
+
+/// A length (m) printed with `decimals` decimals, or with six significant digits in
+/// e-notation below 1 mm (as a load multiplier below 1e-3, `analysis::limit::show_multiplier`):
+/// the least thickness of an arch drawn at micrometre size printed as 0.00000031 m (session 25).
+pub fn fine(si: f64, decimals: usize) -> String {
+    if si != 0.0 && si.abs() < 1e-3 {
+        format!("{si:.5e}")
+    } else {
+        format!("{si:.decimals$}")
     }
 }
 
@@ -118,5 +168,12 @@ mod tests {
         assert_eq!(Length::Opening.show_signed(-1e-5), "-0.010 mm");
         assert_eq!(Length::Motion.show(1e300), "1.000e302 cm");
         assert_eq!(Length::Motion.number(f64::NAN), "—");
+        // Below the fixed decimals: significant digits above 1e-9 of the size (1 m here),
+        // zero below (round-off).
+        assert_eq!(Length::Position.show(3.3e-7), "3.300e-7 m");
+        assert_eq!(Length::Opening.show(-2.5e-7), "-2.500e-4 mm");
+        assert_eq!(Length::Opening.show(6e-7), "0.001 mm");
+        assert_eq!(Length::Position.show(1.7e-16), "0.0000 m");
+        assert_eq!(Length::Rotation.show(1e-8), "0.0000 mrad");
     }
 }

@@ -158,6 +158,8 @@ mod properties;
 mod regressions;
 #[path = "safety.rs"]
 mod safety;
+#[path = "session25_trust.rs"]
+mod session25_trust;
 #[path = "settlement.rs"]
 mod settlement;
 #[path = "solver_fallback.rs"]

@@ -31,7 +31,13 @@ pub fn linear_fit_text<D: Spatial>(r: &CapacityResult<D>) -> Option<LinearFitTex
         // s in the unit of the curve's axis and of the summaries (cm, or mrad for rotations).
         Some(LinearFitText::Fits(format!(
             "λ ≈ {} {} {}·s (s in {}); largest deviation {} % of λ(0)",
-            fmt_fixed(f.intercept, 4),
+            // λ(0) below 1e-3 in significant digits, as the summaries' λ (session 25: the arch
+            // at micrometre size printed "λ ≈ 0 − 0.2941·s").
+            if f.intercept != 0.0 && f.intercept.abs() < 1e-3 {
+                voussoir::analysis::limit::show_multiplier(f.intercept)
+            } else {
+                fmt_fixed(f.intercept, 4)
+            },
             if f.slope < 0.0 { "−" } else { "+" },
             human(f.slope.abs() / r.unit().factor(), 4),
             r.unit().shown(),

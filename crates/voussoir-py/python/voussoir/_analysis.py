@@ -128,7 +128,7 @@ def limit(
     method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
-    crushing: str = "linear",
+    crushing: Optional[str] = None,
     facets: Optional[int] = None,
     non_associative: bool = False,
     canonical: bool = False,
@@ -146,7 +146,9 @@ def limit(
     ``"ipm"``, ``"choose"``, ``"ipm-no-crossover"``, ``"pdlp"``, ``"clarabel"``; default: the
     library's solver policy for the model, docs/performance.md). ``friction``: Coulomb μ for every
     joint (default: no sliding). ``compressive_strength``: f_c in kPa (default: infinite).
-    ``crushing``: ``"linear"`` (inscribed polygon of ``facets`` sides, default 16) or
+    ``crushing`` (default ``"linear"``; given on a model without a compressive strength, or in
+    3D, refused as the CLI's ``--crushing``): ``"linear"`` (inscribed polygon of ``facets``
+    sides, default 16) or
     ``"conic"`` (exact, SOCP); both need a compressive strength. ``non_associative``: friction
     without dilatancy (``--non-associative``). ``canonical``: the canonical mechanism and forces
     (``--canonical``), ``ranges=False`` without the reaction ranges,
@@ -202,7 +204,7 @@ def settle(
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
     settlement_form: str = "both",
-    crushing: str = "linear",
+    crushing: Optional[str] = None,
     facets: Optional[int] = None,
     non_associative: bool = False,
     raw: bool = False,
@@ -288,7 +290,7 @@ def capacity(
     method: Optional[str] = None,
     friction: Optional[float] = None,
     compressive_strength: Optional[float] = None,
-    crushing: str = "linear",
+    crushing: Optional[str] = None,
     facets: Optional[int] = None,
     non_associative: bool = False,
     split: Union[str, Iterable[str], None] = None,
@@ -495,8 +497,8 @@ def sweep(
     samples: Optional[int] = None,
     steps: Optional[int] = None,
     directions: Optional[int] = None,
-    cov: float = 0.3,
-    seed: int = 1,
+    cov: Optional[float] = None,
+    seed: Optional[int] = None,
     shard: Union[str, Tuple[int, int], None] = None,
     threads: Optional[int] = None,
     executor=None,
@@ -515,7 +517,8 @@ def sweep(
     * ``magnitudes=N``: the base motions (``move``/``profile``) scaled by k/N, k = 1 … N;
     * ``angles=N``: the ``move`` vectors (u, v) rotated through 360°·k/N;
     * ``samples=N``: Monte Carlo, each support's motion times (1 + ``cov``·ξ), ξ standard
-      normal, from ``seed`` (the same seed gives the CLI's samples on any machine).
+      normal, from ``seed`` (the same seed gives the CLI's samples on any machine); defaults
+      0.3 and 1, refused without ``samples`` (as the CLI's ``--cov``/``--seed``).
 
     Without ``executor`` the scenarios run on ``threads`` Rust threads (default: one per core);
     with one, each scenario is a task submitted to it (e.g. a Dask ``Client`` or
@@ -546,19 +549,23 @@ def sweep(
     kind, n = modes[0][0], int(modes[0][1])
     if n < 1:
         raise ValueError("the number of analyses must be at least 1")
-    seed = int(seed)
-    if not 0 <= seed < 2**64:
-        raise ValueError(f"seed={seed}: expected an integer in [0, 2⁶⁴)")
+    if seed is not None:
+        seed = int(seed)
+        if not 0 <= seed < 2**64:
+            raise ValueError(f"seed={seed}: expected an integer in [0, 2⁶⁴)")
     m = _model(model)
     i, shards = _shard(shard)
     tasks = [k for k in range(n) if k % shards == i]
     a = {
         "type": "sweep",
         {"steps": "magnitudes", "directions": "angles", "samples": "samples"}[kind]: n,
-        "cov": float(cov),
-        "seed": seed,
         "settlement_form": o.choice("settlement_form", settlement_form, o.SETTLEMENT_FORMS),
     }
+    # Given or not: the request layer refuses them without samples (session 25).
+    if cov is not None:
+        a["cov"] = float(cov)
+    if seed is not None:
+        a["seed"] = seed
     if raw:
         a["raw"] = True
     req = json.loads(_request(
@@ -712,11 +719,12 @@ def least_thickness(
             raise ValueError(
                 f"live_load={d['live_load']}: applies to a vertical live load (live='full', 'left' or 'right')"
             )
+        half_angle, offset = generate._shape_parameters(d["shape"], d["half_angle"], d["offset"])
         arch = (
             d["shape"], float(d["radius"]), d["radius_at"], 0.0, int(d["voussoirs"]),
             float(d["unit_weight"]), float(d["width"]), d["live"],
             float(1.0 if d["live_load"] is None else d["live_load"]),
-            float(d["half_angle"]), float(d["offset"]),
+            half_angle, offset,
         )
         text, model_json = _native.least_thickness_any("arch", arch, None, lo, hi, float(bisection_tolerance), m)
     else:

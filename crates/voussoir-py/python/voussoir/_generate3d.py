@@ -20,8 +20,8 @@ def vault(
     unit_weight: float = 18.0,
     live: str = "none",
     live_load: Optional[float] = None,
-    half_angle: float = 60.0,
-    offset: float = 0.5,
+    half_angle: Optional[float] = None,
+    offset: Optional[float] = None,
     depth: float = 1.0,
     rings: int = 1,
     bond: str = "stack",
@@ -35,6 +35,9 @@ def vault(
             f"live_load={live_load}: applies to a vertical live load (live='full', 'left' or "
             f"'right'); live='{live}' has no intensity"
         )
+    from .generate import _shape_parameters
+
+    half_angle, offset = _shape_parameters(shape, half_angle, offset)
     return Model(
         _native.gen_vault(
             shape,
@@ -45,8 +48,8 @@ def vault(
             float(unit_weight),
             live,
             float(1.0 if live_load is None else live_load),
-            float(half_angle),
-            float(offset),
+            half_angle,
+            offset,
             float(depth),
             int(rings),
             str(bond).lower().replace("_", "-"),

@@ -175,9 +175,12 @@ def request(
     return json.dumps(req)
 
 
-def laws(crushing: str = "linear", facets: Optional[int] = None, non_associative: bool = False) -> dict:
-    """The joint-law options of limit, settle and capacity requests."""
-    out = {"crushing": choice("crushing", crushing, CRUSHING)}
+def laws(crushing: Optional[str] = None, facets: Optional[int] = None, non_associative: bool = False) -> dict:
+    """The joint-law options of limit, settle and capacity requests (each only when given: the
+    request layer refuses a crushing model where nothing can crush, whatever its value)."""
+    out = {}
+    if crushing is not None:
+        out["crushing"] = choice("crushing", crushing, CRUSHING)
     if facets is not None:
         if int(facets) != facets or facets < 0:
             raise ValueError(f"facets={facets!r}: expected a non-negative integer")

@@ -17,6 +17,19 @@ from ._model import Model
 __all__ = ["arch", "lintel", "wall", "facade", "vault", "dome", "block", "walls"]
 
 
+def _shape_parameters(shape, half_angle, offset) -> Tuple[float, float]:
+    """An arch's ``half_angle`` (segmental, default 60°) and ``offset`` (pointed, default 0.5),
+    each refused with another shape as the CLI refuses ``--half-angle``/``--offset`` (it was
+    ignored: session 25)."""
+    for name, given, own in (("half_angle", half_angle, "segmental"), ("offset", offset, "pointed")):
+        if given is not None and str(shape).lower() != own:
+            raise ValueError(f"{name}={given}: applies to shape='{own}' only")
+    return (
+        float(60.0 if half_angle is None else half_angle),
+        float(0.5 if offset is None else offset),
+    )
+
+
 def arch(
     *,
     shape: str = "semicircular",
@@ -28,14 +41,15 @@ def arch(
     width: float = 1.0,
     live: str = "none",
     live_load: Optional[float] = None,
-    half_angle: float = 60.0,
-    offset: float = 0.5,
+    half_angle: Optional[float] = None,
+    offset: Optional[float] = None,
 ) -> Model:
     """An arch of voussoirs with radial joints on two supports ``left`` and ``right``.
 
     ``shape``: ``"semicircular"``, ``"segmental"`` (``half_angle``: half the angle it subtends,
-    degrees) or ``"pointed"`` (``offset``: each arc's centre from the middle, fraction of the
-    intrados radius; 0.5 is equilateral). ``radius_at``: ``"intrados"``, ``"centreline"`` or
+    degrees, default 60) or ``"pointed"`` (``offset``: each arc's centre from the middle,
+    fraction of the intrados radius, default 0.5: equilateral); each refused with another shape,
+    as the CLI's ``--half-angle``/``--offset``. ``radius_at``: ``"intrados"``, ``"centreline"`` or
     ``"extrados"``. ``live``: ``"none"``, ``"full"``, ``"left"``, ``"right"`` (vertical, on the
     extrados, ``live_load`` kN/m² per unit horizontal projection, default 1) or
     ``"horizontal"`` (each block's weight). ``live_load`` with ``"none"`` or ``"horizontal"``
@@ -45,6 +59,7 @@ def arch(
             f"live_load={live_load}: applies to a vertical live load (live='full', 'left' or "
             f"'right'); live='{live}' has no intensity"
         )
+    half_angle, offset = _shape_parameters(shape, half_angle, offset)
     return Model(
         _native.gen_arch(
             shape,
@@ -56,8 +71,8 @@ def arch(
             float(width),
             live,
             float(1.0 if live_load is None else live_load),
-            float(half_angle),
-            float(offset),
+            half_angle,
+            offset,
         )
     )
 

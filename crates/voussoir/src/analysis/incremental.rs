@@ -703,8 +703,8 @@ pub fn incremental_with<S: IncrementalGeometry>(
     let what = match status {
         IncrementalStatus::Collapsed => "λ fell to zero after its peak".to_string(),
         IncrementalStatus::MaxDisplacement => format!(
-            "reached the maximum control displacement {:.4} m",
-            opts.max_displacement
+            "reached the maximum control displacement {}",
+            crate::lengths::Length::Position.show(opts.max_displacement)
         ),
         IncrementalStatus::MaxSteps => format!("stopped after {} steps", opts.max_steps),
         IncrementalStatus::Locked => {

@@ -28,8 +28,10 @@ pub struct CapacityRequest {
     /// Solve every step from scratch (no hot start).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub cold: bool,
-    /// The crushing model (2D; default linear).
-    pub crushing: Crushing,
+    /// The crushing model (2D; default linear). Given (either value) on a model without a
+    /// compressive strength, or in 3D, refused.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crushing: Option<Crushing>,
     /// Facets of the inscribed crushing polygon of `crushing: linear` (default 16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub facets: Option<usize>,
@@ -53,7 +55,7 @@ impl Default for CapacityRequest {
             keep_fixed: false,
             no_mechanisms: false,
             cold: false,
-            crushing: Crushing::Linear,
+            crushing: None,
             facets: None,
             non_associative: false,
             raw: false,
@@ -147,7 +149,7 @@ impl CapacityRequest {
                     Crushing::Linear
                 }
             } else {
-                self.crushing
+                self.laws().crushing()
             },
             facets: self.laws().facets(),
             nonassociative,
@@ -185,7 +187,7 @@ impl CapacityRequest {
             && if dims == 3 {
                 !req.model.exact_cone()
             } else {
-                self.crushing == Crushing::Linear
+                self.laws().crushing() == Crushing::Linear
             }
     }
 

@@ -16,8 +16,10 @@ use serde::{Deserialize, Serialize};
 #[serde(deny_unknown_fields, default)]
 pub struct LimitRequest {
     /// The crushing model (2D; matters only where a compressive strength is given; default
-    /// linear, the inscribed polygon).
-    pub crushing: Crushing,
+    /// linear, the inscribed polygon). Given (either value) on a model without a compressive
+    /// strength, or in 3D, refused.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crushing: Option<Crushing>,
     /// Facets of the inscribed crushing polygon of `crushing: linear` (default 16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub facets: Option<usize>,
@@ -98,7 +100,7 @@ impl LimitRequest {
         let conic = if dims == 3 {
             req.model.exact_cone()
         } else {
-            self.crushing == Crushing::Conic
+            self.crushing == Some(Crushing::Conic)
         };
         if self.canonical && conic && !self.non_associative {
             // A cone program's optimum is an interior point: no vertex to select among.
@@ -144,7 +146,7 @@ impl LimitRequest {
             };
             (cone, crate::analysis::limit::DEFAULT_FACETS)
         } else {
-            (self.laws().crushing, self.laws().facets())
+            (self.laws().crushing(), self.laws().facets())
         };
         let mut r = if self.laws().non_associative {
             super::check_sliding(st, n)?;

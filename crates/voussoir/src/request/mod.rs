@@ -41,7 +41,7 @@ pub use limit::LimitRequest;
 pub use motion::{parse_profile, signed_length, Move, Split, SupportMotion};
 pub use safety::SafetyRequest;
 pub use settle::SettleRequest;
-pub use sweep::SweepRequest;
+pub use sweep::{SweepRequest, DEFAULT_CAPACITY_STEPS, DEFAULT_COV, DEFAULT_SEED};
 pub use tilt::TiltRequest;
 
 use crate::analysis::canonical::CanonicalOptions;
@@ -145,8 +145,11 @@ pub struct ModelOptions {
     /// 3D: facets of the friction pyramid (default 8). Refused for a 2D model.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction_facets: Option<usize>,
-    /// 3D: the friction cone (default the pyramid). `exact` is refused for a 2D model.
-    pub friction_cone: FrictionCone,
+    /// 3D: the friction cone (default the pyramid), as given. Given (either value) for a 2D
+    /// model, refused (session 25: `pyramid`, the default's value, passed where `exact` was
+    /// refused).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction_cone: Option<FrictionCone>,
 }
 
 impl ModelOptions {
@@ -192,7 +195,7 @@ impl ModelOptions {
                     FRICTION_FACETS.end()
                 ));
             }
-            if self.friction_cone == FrictionCone::Exact {
+            if self.exact_cone() {
                 return invalid(format!(
                     "{} applies to the pyramid, not to {}",
                     names.name("friction_facets"),
@@ -204,7 +207,7 @@ impl ModelOptions {
     }
 
     fn exact_cone(&self) -> bool {
-        self.friction_cone == FrictionCone::Exact
+        self.friction_cone == Some(FrictionCone::Exact)
     }
 
     /// `friction_cone=exact` refused in one line by an analysis that solves the inscribed
@@ -248,7 +251,7 @@ pub fn class<S: Assembly>(st: &S, req: &Request) -> ProblemClass {
         Analysis::Capacity(_) => Purpose::Curve,
         _ => Purpose::Optimise,
     };
-    let conic = joint_laws(&req.analysis).is_some_and(|l| l.crushing == Crushing::Conic);
+    let conic = joint_laws(&req.analysis).is_some_and(|l| l.crushing == Some(Crushing::Conic));
     ProblemClass {
         cones: req.model.exact_cone() || conic,
         ..policy::class_of(st, purpose)
@@ -325,7 +328,8 @@ pub(crate) fn nonassociative_note(it: &crate::result::FrictionIteration, what: &
 /// settle and capacity. Defaults: the inscribed polygon of 16 facets, associative friction.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct JointLaws {
-    pub crushing: Crushing,
+    /// As given (`None`: not given, the inscribed polygon).
+    pub crushing: Option<Crushing>,
     pub facets: Option<usize>,
     pub non_associative: bool,
 }
@@ -333,7 +337,7 @@ pub struct JointLaws {
 impl JointLaws {
     pub fn validate(&self, names: Names) -> Result<()> {
         match (self.crushing, self.facets) {
-            (Crushing::Conic, Some(_)) => invalid(format!(
+            (Some(Crushing::Conic), Some(_)) => invalid(format!(
                 "{} applies to {} (the conic model is the exact cone)",
                 names.name("facets"),
                 names.given("crushing", "linear")
@@ -351,12 +355,18 @@ impl JointLaws {
         self.facets.unwrap_or(DEFAULT_FACETS)
     }
 
-    /// Whether a finite-strength option was given (they are refused in 3D).
-    pub fn strength_given(&self) -> bool {
-        self.crushing == Crushing::Conic || self.facets.is_some()
+    /// The crushing model (given or the default, the inscribed polygon).
+    pub fn crushing(&self) -> Crushing {
+        self.crushing.unwrap_or_default()
     }
 
-    /// Refuse `crushing: conic` and `facets` on a structure none of whose blocks has a
+    /// Whether a finite-strength option was given (they are refused in 3D), whatever its value
+    /// (session 25: `crushing: linear`, the default's value, passed where `conic` was refused).
+    pub fn strength_given(&self) -> bool {
+        self.crushing.is_some() || self.facets.is_some()
+    }
+
+    /// Refuse `crushing` (either value) and `facets` on a structure none of whose blocks has a
     /// compressive strength: its joints cannot crush, so the crushing model would play no part.
     fn check_strength(&self, st: &Structure, names: Names) -> Result<()> {
         if st
@@ -367,7 +377,8 @@ impl JointLaws {
             return Ok(());
         }
         let flag = match (self.crushing, self.facets) {
-            (Crushing::Conic, _) => names.given("crushing", "conic"),
+            (Some(Crushing::Conic), _) => names.given("crushing", "conic"),
+            (Some(Crushing::Linear), _) => names.given("crushing", "linear"),
             (_, Some(n)) => names.given("facets", n),
             _ => return Ok(()),
         };
@@ -705,7 +716,7 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
             if let Analysis::Identify(r) = &req.analysis {
                 splits.extend(r.split_profiles(&mut model, n)?);
             }
-            if req.model.friction_facets.is_some() || req.model.exact_cone() {
+            if req.model.friction_facets.is_some() || req.model.friction_cone.is_some() {
                 return invalid(format!(
                     "{} and {} apply to 3D models (a 2D joint's friction is exact)",
                     n.name("friction_facets"),
@@ -768,7 +779,8 @@ fn check_motion_size(req: &Request, size: f64, largest: f64) -> Result<()> {
     };
     if largest > 0.0 && size > 0.0 && largest < MOTION_FLOOR * size {
         return invalid(format!(
-            "{what}: the support motions (largest displacement {largest:.3e} m) are below {MOTION_FLOOR:e} of the structure's size ({size:.4} m), within the round-off of its coordinates: give a motion large enough to resolve (1mm, say)"
+            "{what}: the support motions (largest displacement {largest:.3e} m) are below {MOTION_FLOOR:e} of the structure's size ({}), within the round-off of its coordinates: give a motion large enough to resolve (1mm, say)",
+            crate::lengths::Length::Position.show(size)
         ));
     }
     Ok(())
@@ -889,7 +901,7 @@ fn adapted(
                 &setup.model,
                 build,
                 &solver,
-                r.crushing,
+                laws.crushing(),
                 laws.facets(),
                 &o,
             )?

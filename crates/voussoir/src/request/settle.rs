@@ -21,8 +21,11 @@ use serde::{Deserialize, Serialize};
 pub struct SettleRequest {
     /// Which programs are solved (default both).
     pub settlement_form: SettlementForm,
-    /// The crushing model (2D; matters only where a compressive strength is given).
-    pub crushing: Crushing,
+    /// The crushing model (2D; matters only where a compressive strength is given; default
+    /// linear). Given (either value) on a model without a compressive strength, or in 3D,
+    /// refused.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crushing: Option<Crushing>,
     /// Facets of the inscribed crushing polygon of `crushing: linear` (default 16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub facets: Option<usize>,
@@ -150,7 +153,7 @@ impl SettleRequest {
             && if dims == 3 {
                 !req.model.exact_cone()
             } else {
-                self.crushing == Crushing::Linear && self.facets() == DEFAULT_FACETS
+                self.laws().crushing() == Crushing::Linear && self.facets() == DEFAULT_FACETS
             }
     }
 
@@ -177,7 +180,7 @@ impl SettleRequest {
             };
             (cone, DEFAULT_FACETS)
         } else {
-            (self.crushing, self.facets())
+            (self.laws().crushing(), self.facets())
         };
         if self.non_associative && both {
             // Without any friction nothing slides: the iteration would be pointless (as

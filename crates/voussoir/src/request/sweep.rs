@@ -28,17 +28,22 @@ pub struct SweepRequest {
     /// N Monte Carlo analyses, random settlement fields around the base motions.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub samples: Option<usize>,
-    /// Monte Carlo: coefficient of variation of each support's motion (default 0.3).
-    pub cov: f64,
-    /// Monte Carlo: the random seed (default 1; the same seed gives the same samples anywhere).
-    pub seed: u64,
+    /// Monte Carlo: coefficient of variation of each support's motion (default 0.3; given
+    /// without `samples`, refused).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cov: Option<f64>,
+    /// Monte Carlo: the random seed (default 1; the same seed gives the same samples anywhere;
+    /// given without `samples`, refused).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
     /// Which programs each settlement analysis solves (default both).
     pub settlement_form: SettlementForm,
     /// After each settlement, the capacity analysis of the same settlement.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub capacity: bool,
-    /// Intervals of each capacity curve (default 40).
-    pub capacity_steps: usize,
+    /// Intervals of each capacity curve (default 40; given without `capacity`, refused).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub capacity_steps: Option<usize>,
     /// Run only the tasks with index ≡ i (mod n): `[i, n]` (default: every task).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shard: Option<[usize; 2]>,
@@ -58,11 +63,11 @@ impl Default for SweepRequest {
             magnitudes: None,
             angles: None,
             samples: None,
-            cov: 0.3,
-            seed: 1,
+            cov: None,
+            seed: None,
             settlement_form: SettlementForm::Both,
             capacity: false,
-            capacity_steps: 40,
+            capacity_steps: None,
             shard: None,
             tasks: None,
             raw: false,
@@ -70,7 +75,29 @@ impl Default for SweepRequest {
     }
 }
 
+/// The Monte Carlo coefficient of variation when none is given.
+pub const DEFAULT_COV: f64 = 0.3;
+/// The Monte Carlo seed when none is given.
+pub const DEFAULT_SEED: u64 = 1;
+/// The intervals of each capacity curve when none are given.
+pub const DEFAULT_CAPACITY_STEPS: usize = 40;
+
 impl SweepRequest {
+    /// The coefficient of variation (given or the default).
+    pub fn cov(&self) -> f64 {
+        self.cov.unwrap_or(DEFAULT_COV)
+    }
+
+    /// The seed (given or the default).
+    pub fn seed(&self) -> u64 {
+        self.seed.unwrap_or(DEFAULT_SEED)
+    }
+
+    /// The intervals of each capacity curve (given or the default).
+    pub fn capacity_steps(&self) -> usize {
+        self.capacity_steps.unwrap_or(DEFAULT_CAPACITY_STEPS)
+    }
+
     /// What the sweep varies.
     pub fn kind(&self) -> Option<SweepKind> {
         match (self.magnitudes, self.angles, self.samples) {
@@ -78,8 +105,8 @@ impl SweepRequest {
             (None, Some(n), None) => Some(SweepKind::Direction(n)),
             (None, None, Some(n)) => Some(SweepKind::Sample {
                 count: n,
-                cov: self.cov,
-                seed: self.seed,
+                cov: self.cov(),
+                seed: self.seed(),
             }),
             _ => None,
         }
@@ -116,7 +143,7 @@ impl SweepRequest {
                 })),
             form: self.settlement_form,
             capacity: self.capacity.then_some(CapacityOptions {
-                steps: self.capacity_steps,
+                steps: self.capacity_steps(),
                 mechanisms: false,
                 ..CapacityOptions::default()
             }),
@@ -144,23 +171,23 @@ impl SweepRequest {
         if kind.count() == 0 {
             return invalid("the number of analyses must be at least 1".into());
         }
-        if !(self.cov.is_finite() && self.cov >= 0.0) {
+        let cov = self.cov();
+        if !(cov.is_finite() && cov >= 0.0) {
             return invalid(format!(
                 "{}: must be a finite number ≥ 0",
-                n.given("cov", self.cov)
+                n.given("cov", cov)
             ));
         }
         // Options of another mode were accepted and ignored (session 24: `--magnitudes 3
         // --cov 0.2 --seed 5 --capacity-steps 10` wrote the same lines as `--magnitudes 3`).
-        // The defaults cannot be told from values given, so a value other than the default
-        // is refused where it has no effect.
-        let d = SweepRequest::default();
+        // Refused when given, whatever the value (session 25: the default's value, `--seed 1`,
+        // passed where `--seed 2` was refused).
         if self.samples.is_none() {
-            for (given, field, value) in [
-                (self.cov != d.cov, "cov", self.cov.to_string()),
-                (self.seed != d.seed, "seed", self.seed.to_string()),
+            for (field, value) in [
+                ("cov", self.cov.map(|c| c.to_string())),
+                ("seed", self.seed.map(|s| s.to_string())),
             ] {
-                if given {
+                if let Some(value) = value {
                     return invalid(format!(
                         "{}: applies to the Monte Carlo samples of {} only",
                         n.given(field, value),
@@ -169,14 +196,14 @@ impl SweepRequest {
                 }
             }
         }
-        if !self.capacity && self.capacity_steps != d.capacity_steps {
+        if let (false, Some(k)) = (self.capacity, self.capacity_steps) {
             return invalid(format!(
                 "{}: the intervals of the capacity curves of {}; add it",
-                n.given("capacity_steps", self.capacity_steps),
+                n.given("capacity_steps", k),
                 n.name("capacity")
             ));
         }
-        if self.capacity && self.capacity_steps == 0 {
+        if self.capacity && self.capacity_steps() == 0 {
             return invalid(format!(
                 "{}: a capacity curve needs at least one interval",
                 n.given("capacity_steps", 0)

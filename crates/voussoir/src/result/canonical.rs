@@ -59,7 +59,8 @@ pub struct CanonicalForces<D: Spatial = Two> {
     /// has `|p_t| ≤ μ p_n` at every point of the joints without friction of their own, from
     /// above to the relative precision `friction_precision`: an optimal field needs no more,
     /// and none admits `least_friction · (1 − friction_precision)` (`null` when every joint has
-    /// its own friction, or when no μ ≤ 100 admits one).
+    /// its own friction, or when no μ ≤ 100 admits one). Not certified where `selected_by` is
+    /// `force_program`: no field at that μ certified with the mechanism (the summary says so).
     pub least_friction: Option<f64>,
     /// The relative precision to which `least_friction` is shown to be the least: `1 − lo /
     /// least_friction`, `lo` the largest μ a program showed inadmissible. At most the request's
@@ -147,6 +148,76 @@ impl ForceSelection {
             ForceSelection::LeastEnergy => "the least-energy field",
             ForceSelection::Admissible => "the admissible field",
             ForceSelection::ForceProgram => "the force program's optimum",
+        }
+    }
+}
+
+impl<D: Spatial> CanonicalForces<D> {
+    /// The summary's line on the reported field: what fixed it, its open points, and the least
+    /// admissible μ with the precision shown. Where no canonical field certified (the force
+    /// program's own optimum is reported) that μ, the bisection's, is said to be uncertified
+    /// instead of printed as the least (session 25: it read as a certified bound).
+    pub fn summary_line(&self) -> String {
+        // What fixed the field: the least energy, or (that program not optimal) admissibility.
+        let crit = match self.selected_by {
+            ForceSelection::LeastEnergy => "least complementary energy",
+            ForceSelection::Admissible => {
+                if self
+                    .rejected
+                    .iter()
+                    .any(|r| r.field == ForceSelection::LeastEnergy && r.gap.is_some())
+                {
+                    "an admissible field (the least-energy field did not certify: not the least-energy field, nor unique)"
+                } else {
+                    "an admissible field (the least-energy program did not end optimal: not the least-energy field, nor unique)"
+                }
+            }
+            ForceSelection::ForceProgram => {
+                "the force program's own optimum (no canonical field certified: not canonical, μ not imposed)"
+            }
+        };
+        let precision = || {
+            self.friction_precision
+                .map(|p| {
+                    if p >= 1.0 - 1e-12 {
+                        return " (an admissible μ: no smaller one was shown inadmissible)"
+                            .to_string();
+                    }
+                    let pc = if p >= 0.01 {
+                        format!("{:.1}", 100.0 * p)
+                    } else {
+                        format!("{:.4}", 100.0 * p)
+                    };
+                    let pc = pc.trim_end_matches('0').trim_end_matches('.');
+                    format!(" (to {pc} %)")
+                })
+                .unwrap_or_default()
+        };
+        match (self.least_friction, self.friction) {
+            (Some(l), _) if self.selected_by == ForceSelection::ForceProgram => {
+                let open = if self.physical {
+                    "open points unloaded".to_string()
+                } else {
+                    format!(
+                        "open points carry up to {:.4} kN of shear",
+                        self.largest_open_force
+                    )
+                };
+                format!(
+                    "canonical forces: {crit}, {open}; the least μ is not certified: the bisection's least admissible μ ({l:.4}) has no certified field"
+                )
+            }
+            (Some(l), _) => format!(
+                "canonical forces: {crit}, open points unloaded, |shear| ≤ μ·normal with the least admissible μ = {l:.4}{}",
+                precision()
+            ),
+            (None, None) if self.physical => {
+                format!("canonical forces: {crit}, open points unloaded")
+            }
+            _ => format!(
+                "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); {crit}",
+                self.largest_open_force
+            ),
         }
     }
 }

@@ -172,9 +172,20 @@ impl SettlementUnit {
             SettlementUnit::Rotation => "support rotation",
         }
     }
-    /// `s` written in the shown unit with `decimals` decimals: "1.4142 cm", "8.7266 mrad".
+    /// `s` written in the shown unit with `decimals` decimals: "1.4142 cm", "8.7266 mrad"; a
+    /// settlement too small for them in significant digits, as every length
+    /// ([`crate::lengths`]: the arch at micrometre size printed "0.0000 cm", session 25).
     pub fn show(self, s: f64, decimals: usize) -> String {
-        format!("{:.*} {}", decimals, s * self.factor(), self.shown())
+        match self {
+            SettlementUnit::Translation => format!(
+                "{} {}",
+                crate::lengths::Length::Motion.number_to(s, decimals),
+                self.shown()
+            ),
+            SettlementUnit::Rotation => {
+                format!("{:.*} {}", decimals, s * self.factor(), self.shown())
+            }
+        }
     }
 }
 

@@ -856,12 +856,13 @@ pub trait CrackText {
     }
 }
 
-/// A width in mm (the summaries' unit for openings, [`crate::lengths`]; "< 0.001 mm" below
-/// half a micrometre), or an opening relative to the largest.
+/// A width in mm (the summaries' unit for openings, [`crate::lengths`]: below half a
+/// micrometre in significant digits, "< 0.001 mm" only within the round-off of the structure's
+/// size, session 25), or an opening relative to the largest.
 fn width_text(w: f64, widths: bool, largest: f64) -> String {
-    use crate::lengths::Length;
+    use crate::lengths::{scale, Length, ROUND_OFF};
     if widths {
-        if w * 1000.0 < 0.0005 {
+        if w * 1000.0 < 0.0005 && w <= ROUND_OFF * scale() {
             "< 0.001 mm wide".to_string()
         } else {
             format!("{} wide", Length::Opening.show(w))

@@ -61,12 +61,12 @@ fn issue29_session25_least_multiplier_of_a_symmetric_tilt_is_the_mirror_image() 
     let reference = least_from_scratch(&st);
     for o in methods() {
         let r = limit(&st, &o).unwrap();
-        let (hi, lo) = (
-            r.load_multiplier.unwrap(),
-            r.least_load_multiplier.unwrap(),
+        let (hi, lo) = (r.load_multiplier.unwrap(), r.least_load_multiplier.unwrap());
+        println!(
+            "{:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
+            o.method
         );
-        println!("{:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}", o.method);
-        // The arch tilts by 0.370082° (the realistic benchmark's cell): λ_max = tan of it.
+        // The arch tilts by 0.370082° (the realistic benchmark's cell): λ_max = tan of it (to its printed digits).
         assert!((hi.atan().to_degrees() - 0.370082).abs() <= 1e-6, "{hi}");
         // The image of the largest multiplier's optimum: exactly −λ_max (a program solved
         // would agree only to its tolerance).
@@ -76,9 +76,7 @@ fn issue29_session25_least_multiplier_of_a_symmetric_tilt_is_the_mirror_image() 
     // The 2.0 m grid façade (223 blocks, 44 supports) on the tilting table both ways.
     let st = facade_grid(2.0);
     for direction in [1.0, -1.0] {
-        let tilted = st
-            .with_weight_as_live_load([direction, 0.0])
-            .unwrap();
+        let tilted = st.with_weight_as_live_load([direction, 0.0]).unwrap();
         let reference = least_from_scratch(&tilted);
         for o in methods() {
             let r = tilt(&st, direction, &o).unwrap();
@@ -109,8 +107,14 @@ fn issue29_session25_no_mirror_where_the_live_load_is_not_flipped() {
             let r = limit(&st, &o).unwrap();
             let hi = r.load_multiplier.unwrap();
             let lo = r.least_load_multiplier.unwrap();
-            println!("{live:?} {:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}", o.method);
-            assert!((lo - reference).abs() <= 1e-9 * hi.abs().max(reference.abs()), "{lo}");
+            println!(
+                "{live:?} {:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
+                o.method
+            );
+            assert!(
+                (lo - reference).abs() <= 1e-9 * hi.abs().max(reference.abs()),
+                "{lo}"
+            );
             // −λ_max would be wrong here by far.
             assert!((lo + hi).abs() > 1e-3 * hi, "{lo} {hi}");
         }

@@ -108,6 +108,10 @@ mod issue29_recertify;
 mod issue29_secant_fraction;
 #[path = "issue29_sequences.rs"]
 mod issue29_sequences;
+#[path = "issue29_session25_as_written_first.rs"]
+mod issue29_session25_as_written_first;
+#[path = "issue29_session25_least_mirror.rs"]
+mod issue29_session25_least_mirror;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

@@ -339,6 +339,7 @@ impl Stages {
         self.opts = SolverOptions {
             method,
             presolve: true,
+            as_written_first: true,
             ..saved
         };
         let mut none = None;
@@ -354,9 +355,12 @@ impl Stages {
     /// chain; the result's `tried` says why.
     fn solve_fresh(&mut self, lp: &LinearProgram, dofs: usize) -> Result<lp::LpSolution> {
         let saved = self.opts;
+        // As written first: the face programs equilibrated came out worse conditioned than
+        // as written on the 0.5 m grid façade's `tilt` (SolverOptions::as_written_first).
         self.opts = SolverOptions {
             method: Method::DualSimplex,
             presolve: true,
+            as_written_first: true,
             ..saved
         };
         let r = match lp::policy::extremes_fallback(dofs) {

@@ -43,14 +43,22 @@ pub fn solve_limit<S: Assembly>(
     Ok(solve_static(st, map, opts)?.0)
 }
 
-/// The static program of `st`, solved: the solution, the program, and the optimal basis the
+/// The static program of `st`, solved: the solution, the program, the optimal basis the
 /// solve left where the method keeps one (a simplex, or HiGHS's interior point with
-/// crossover), for the least multiplier's program ([`solve_limit_checked`]).
+/// crossover), and the solver's answer where the solution is read from it unchanged (not
+/// after a cleanup or a widening), for the least multiplier's program
+/// ([`solve_limit_checked`]).
+#[allow(clippy::type_complexity)]
 fn solve_static<S: Assembly>(
     st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
-) -> Result<(LimitSolution, ForceProgram, Option<lp::Basis>)> {
+) -> Result<(
+    LimitSolution,
+    ForceProgram,
+    Option<lp::Basis>,
+    Option<LpSolution>,
+)> {
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
     let mut basis = None;
@@ -61,10 +69,12 @@ fn solve_static<S: Assembly>(
     };
     if sol.status == LpStatus::Optimal && programs::crushing_cap_reached(map, &fp, &sol.x) {
         let (s, fp) = solve_widened(map, &dead, &live, opts)?;
-        return Ok((s, fp, None));
+        return Ok((s, fp, None, None));
     }
     let s = limit_solution(map, &fp, &live, &sol, opts.info());
-    Ok((cleaned_up(map, &fp, &dead, &live, s, &sol, opts), fp, basis))
+    let c = cleaned_up(map, &fp, &dead, &live, s, &sol, opts);
+    let raw = (c.lambda == sol.x.get(fp.lambda.unwrap_or(usize::MAX)).copied()).then_some(sol);
+    Ok((c, fp, basis, raw))
 }
 
 /// The cleanup pass: when an interior point's collapse multiplier fails its certificate (or
@@ -151,7 +161,7 @@ pub fn solve_limit_checked<S: Assembly>(
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
     let t0 = std::time::Instant::now();
-    let (s, fp, basis) = solve_static(st, map, opts)?;
+    let (s, fp, basis, largest) = solve_static(st, map, opts)?;
     let trace = std::env::var_os("VOUSSOIR_TRACE").is_some();
     if trace {
         eprintln!(
@@ -165,7 +175,26 @@ pub fn solve_limit_checked<S: Assembly>(
     }
     let t0 = std::time::Instant::now();
     let lambda = fp.lambda.filter(|_| <S::D as crate::dim::Dim>::N == 3);
-    let r = with_least_multiplier(s, &fp, |lp| least_program(lp, opts, basis, lambda));
+    // A structure symmetric about a vertical line under a horizontal live load (the tilting
+    // table): the least multiplier is the mirror image of the largest's optimum, certified on
+    // its own program, without solving it (safety::least_by_mirror; the 0.5 m grid façade's
+    // `tilt`: about 6 CPU s, docs/performance.md "Façade tilt, safety and capacity (session
+    // 25)"). Otherwise, or where the image does not certify, its program as before.
+    let r = with_least_multiplier(s, &fp, |lp| {
+        let image = largest
+            .as_ref()
+            .and_then(|l| super::safety::least_by_mirror(st, map, &fp, l, lp));
+        if trace {
+            eprintln!(
+                "trace: limit: the least multiplier by the mirror image of the largest's optimum: {}",
+                if image.is_some() { "certified" } else { "none" }
+            );
+        }
+        match image {
+            Some(m) => Ok(m),
+            None => least_program(lp, opts, basis, lambda),
+        }
+    });
     if trace {
         eprintln!(
             "trace: limit: the least multiplier {:?} {:.3} s",
@@ -341,7 +370,7 @@ pub fn solve_limit_conic<S: Assembly>(
         .map(|sol| limit_solution(map, &fp, &live, &sol, solver));
     let mut fine = map.clone();
     fine.facets = CHECK_FACETS;
-    let (poly, _, _) = solve_static(st, &fine, opts)?;
+    let (poly, _, _, _) = solve_static(st, &fine, opts)?;
     let why = match &conic {
         Err(e) => format!("the cone program failed ({e})"),
         Ok(c) => match (c.status, c.lambda, poly.status, poly.lambda) {

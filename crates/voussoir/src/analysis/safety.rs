@@ -950,6 +950,11 @@ impl Mirror {
             }
         }
         let mut col = vec![(usize::MAX, 0.0); lp.num_cols()];
+        // The load multiplier's column (a limit program): its own image, the sign from its
+        // entries (the live load mirrored: −1 for a horizontal load, [`least_by_mirror`]).
+        if let Some(l) = base.lambda {
+            col[l] = (l, 0.0);
+        }
         let mirrored_body = |b: Body| match b {
             Body::Block(i) => Body::Block(sigma[i]),
             Body::Support(s) => Body::Support(support[s]),
@@ -1039,7 +1044,11 @@ impl Mirror {
             }
             let (l, u) = (lp.col_lower[j], lp.col_upper[j]);
             let (l, u) = if alpha > 0.0 { (l, u) } else { (-u, -l) };
-            if l != lp.col_lower[j2] || u != lp.col_upper[j2] || lp.cost[j] * alpha != lp.cost[j2] {
+            // The multiplier's cost is λ itself on both sides: a mirror that flips λ maps the
+            // largest multiplier's optimum onto the least's ([`Symmetry::optimum`] flips the
+            // sense where the image of the cost is minus the target's).
+            let cost_differs = Some(j) != base.lambda && lp.cost[j] * alpha != lp.cost[j2];
+            if l != lp.col_lower[j2] || u != lp.col_upper[j2] || cost_differs {
                 return Err("a column and its image: bounds or cost differ");
             }
             col[j].1 = alpha;
@@ -1058,6 +1067,40 @@ impl Mirror {
         }
         Ok(Mirror { col, row, support })
     }
+}
+
+/// The least load multiplier of a planar limit program `fp` (of `st` on `map`; `least` is its
+/// program minimised) as the mirror image of the largest multiplier's optimum `largest`, where
+/// the structure, its supports and its dead loads are symmetric about a vertical line and the
+/// live load is mirrored onto minus itself (a horizontal load: the tilting table). The image of
+/// a state under `λ·F_L` is one under `−λ·F_L`, so the multipliers in equilibrium form
+/// `[−λ_max, λ_max]`; the image of the optimum (its duals too) is returned only where it is
+/// certified on `least` itself (its primal and dual feasibility and gap,
+/// [`lp::sequence::certify`], and the solver policy's check), so nothing rests on the
+/// symmetry's detection. `None` where there is no such mirror or the image does not certify.
+pub(crate) fn least_by_mirror<S: Assembly>(
+    st: &S,
+    map: &KinematicMap,
+    fp: &programs::ForceProgram,
+    largest: &LpSolution,
+    least: &lp::LinearProgram,
+) -> Option<LpSolution> {
+    let lambda = fp.lambda?;
+    if largest.status != LpStatus::Optimal
+        || !fp.cones.is_empty()
+        || !fp.lp.maximise
+        || least.maximise
+        || largest.x.len() != fp.lp.num_cols()
+    {
+        return None;
+    }
+    let m = Mirror::of(st, map, fp).ok()?;
+    if m.col[lambda].1 >= 0.0 {
+        return None; // the live load is its own mirror image: λ is not flipped
+    }
+    let (flipped, image) = Symmetry::from(m).optimum(largest, &fp.lp.cost, &least.cost)?;
+    (flipped && certified(least, &image) && lp::policy::check(least, &image).is_none())
+        .then_some(image)
 }
 
 impl From<Mirror> for Symmetry {

@@ -310,6 +310,14 @@ pub struct SolverOptions {
     /// two trials of the least-μ bisection on the façade in running bond ended in Clarabel's
     /// numerical stop, where the defaults decide them in 6 s). Off by default.
     pub decision: bool,
+    /// Where the program would be equilibrated ([`scale`]), solve it as written first and the
+    /// equilibrated program only where that answer is not a certified optimum ([`policy::check`]):
+    /// the canonical selection's extremes of `r·y` on an optimal face (`analysis::canonical`),
+    /// whose equilibrated programs came out worse conditioned than as written (the 0.5 m grid
+    /// façade's `tilt`: coefficients over 7e8 against 3e4; HiGHS's dual simplex and interior
+    /// point failed on them after 4.2 and 13.3 s, then solved them as written in 2.9 and 2.1 s;
+    /// docs/performance.md "Façade tilt, safety and capacity (session 25)"). Off by default.
+    pub as_written_first: bool,
 }
 
 impl Default for SolverOptions {
@@ -324,6 +332,7 @@ impl Default for SolverOptions {
             cleanup: true,
             iteration_limit: None,
             decision: false,
+            as_written_first: false,
         }
     }
 }
@@ -963,17 +972,30 @@ pub fn collecting<T>(f: impl FnOnce() -> T) -> (T, Vec<SolveRecord>) {
 /// [`solve`] with `opts.method` alone.
 fn solve_once(lp: &LinearProgram, opts: &SolverOptions) -> Result<LpSolution> {
     let backend = opts.method.backend();
-    Ok(match Scaling::needed(lp, &[]) {
+    let scaling = Scaling::needed(lp, &[]);
+    // As written first where asked (SolverOptions::as_written_first): kept where it is a
+    // certified optimum; otherwise the equilibrated program as below, with this answer as the
+    // one as written (not solved twice).
+    let mut written = None;
+    if scaling.is_some() && opts.as_written_first {
+        let r = backend.solve(lp, &[], opts, None).map(|r| r.solution);
+        if let Ok(s) = &r {
+            if s.status == LpStatus::Optimal && policy::check(lp, s).is_none() {
+                return r;
+            }
+        }
+        written = Some(r);
+    }
+    let mut as_written = || match written.take() {
+        Some(r) => r,
+        None => backend.solve(lp, &[], opts, None).map(|r| r.solution),
+    };
+    Ok(match scaling {
         None => backend.solve(lp, &[], opts, None)?.solution,
         Some(s) => match backend.solve(&s.apply(lp), &[], opts, None) {
-            Ok(solved) => {
-                as_written_if_better(lp, s.unscale(solved.solution), || {
-                    backend.solve(lp, &[], opts, None).map(|r| r.solution)
-                })
-                .0
-            }
+            Ok(solved) => as_written_if_better(lp, s.unscale(solved.solution), as_written).0,
             // The equilibrated program refused: once more as written.
-            Err(_) => backend.solve(lp, &[], opts, None)?.solution,
+            Err(_) => as_written()?,
         },
     })
 }
@@ -1122,6 +1144,16 @@ fn solve_warm_once(
         .map(|b| b.adapted(lp));
     let backend = opts.method.backend();
     let scaling = Scaling::needed(lp, &[]);
+    // As written first where asked (SolverOptions::as_written_first), from the same start:
+    // kept with its basis where it is a certified optimum; otherwise the path below.
+    if scaling.is_some() && opts.as_written_first {
+        if let Ok(r) = backend.solve(lp, &[], opts, start.as_ref()) {
+            if r.solution.status == LpStatus::Optimal && policy::check(lp, &r.solution).is_none() {
+                *basis = r.basis;
+                return Ok(r.solution);
+            }
+        }
+    }
     let first = match &scaling {
         None => backend.solve(lp, &[], opts, start.as_ref()),
         Some(s) => backend.solve(&s.apply(lp), &[], opts, start.as_ref()),

@@ -1,0 +1,122 @@
+//! Issue 29 item 6 (session 25): the least load multiplier of a 2D limit analysis as the mirror
+//! image of the largest multiplier's optimum, where the structure and its dead loads are
+//! symmetric about a vertical line and the live load is mirrored onto minus itself (a
+//! horizontal load: the tilting table). The image is certified on the least multiplier's own
+//! program (`safety::least_by_mirror`, called from `limit::solve_limit_checked`); otherwise the
+//! program is solved as before. On the 0.5 m grid façade's `tilt` the least multiplier's
+//! program took about 6 CPU s.
+//!
+//! The reference everywhere is the least multiplier's program itself (the limit program
+//! minimised, twins and all) solved from scratch by the dual simplex: a different method.
+//! Times: docs/performance.md, "Façade tilt, safety and capacity (session 25)".
+
+mod support;
+use support::facade_grid;
+use voussoir::analysis::limit::limit;
+use voussoir::analysis::tilt::tilt;
+use voussoir::discretize::KinematicMap;
+use voussoir::generate::{arch, ArchSpec, LiveLoad};
+use voussoir::lp::{self, LpStatus, Method, SolverOptions};
+use voussoir::programs::limit_force_program;
+use voussoir::{Assembly, BuildOptions, Structure};
+
+/// The least multiplier of `st` (its own live loads) by the dual simplex from scratch.
+fn least_from_scratch(st: &Structure) -> f64 {
+    let map = KinematicMap::new(st);
+    let mut fp = limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
+    fp.lp.maximise = false;
+    let o = SolverOptions {
+        method: Method::DualSimplex,
+        ..SolverOptions::default()
+    };
+    let s = lp::solve(&fp.lp, &o).unwrap();
+    assert_eq!(s.status, LpStatus::Optimal);
+    s.x[fp.lambda.unwrap()]
+}
+
+fn paper_arch(live: LiveLoad) -> Structure {
+    let m = arch(&ArchSpec {
+        live,
+        ..ArchSpec::default()
+    })
+    .unwrap();
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+fn methods() -> [SolverOptions; 2] {
+    [
+        SolverOptions::default(),
+        SolverOptions {
+            method: Method::Ipm,
+            ..SolverOptions::default()
+        },
+    ]
+}
+
+#[test]
+fn issue29_session25_least_multiplier_of_a_symmetric_tilt_is_the_mirror_image() {
+    // The paper's arch under horizontal loads equal to its voussoirs' weights (the tilting
+    // table), by the 2D default (dual simplex) and by HiGHS's interior point (the CLI's).
+    let st = paper_arch(LiveLoad::Horizontal);
+    let reference = least_from_scratch(&st);
+    for o in methods() {
+        let r = limit(&st, &o).unwrap();
+        let (hi, lo) = (r.load_multiplier.unwrap(), r.least_load_multiplier.unwrap());
+        println!(
+            "{:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
+            o.method
+        );
+        // The arch tilts by 0.370082° (the realistic benchmark's cell): λ_max = tan of it (to its printed digits).
+        assert!((hi.atan().to_degrees() - 0.370082).abs() <= 1e-6, "{hi}");
+        // The image of the largest multiplier's optimum: exactly −λ_max (a program solved
+        // would agree only to its tolerance).
+        assert_eq!(lo, -hi);
+        assert!((lo - reference).abs() <= 1e-9 * hi, "{lo} {reference}");
+    }
+    // The 2.0 m grid façade (223 blocks, 44 supports) on the tilting table both ways.
+    let st = facade_grid(2.0);
+    for direction in [1.0, -1.0] {
+        let tilted = st.with_weight_as_live_load([direction, 0.0]).unwrap();
+        let reference = least_from_scratch(&tilted);
+        for o in methods() {
+            let r = tilt(&st, direction, &o).unwrap();
+            let (hi, lo) = (
+                r.limit.load_multiplier.unwrap(),
+                r.limit.least_load_multiplier.unwrap(),
+            );
+            println!(
+                "façade {direction}, {:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
+                o.method
+            );
+            assert!(hi > 0.1, "{hi}");
+            assert_eq!(lo, -hi);
+            assert!((lo - reference).abs() <= 1e-9 * hi, "{lo} {reference}");
+        }
+    }
+}
+
+#[test]
+fn issue29_session25_no_mirror_where_the_live_load_is_not_flipped() {
+    // The same symmetric arch under a vertical live load on the whole span (its own mirror
+    // image: λ keeps its sign) and on the left half (not symmetric): the least multiplier is
+    // its program's, not −λ_max.
+    for live in [LiveLoad::Full, LiveLoad::Left] {
+        let st = paper_arch(live);
+        let reference = least_from_scratch(&st);
+        for o in methods() {
+            let r = limit(&st, &o).unwrap();
+            let hi = r.load_multiplier.unwrap();
+            let lo = r.least_load_multiplier.unwrap();
+            println!(
+                "{live:?} {:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
+                o.method
+            );
+            assert!(
+                (lo - reference).abs() <= 1e-9 * hi.abs().max(reference.abs()),
+                "{lo}"
+            );
+            // −λ_max would be wrong here by far.
+            assert!((lo + hi).abs() > 1e-3 * hi, "{lo} {hi}");
+        }
+    }
+}

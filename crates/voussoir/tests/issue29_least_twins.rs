@@ -46,3 +46,36 @@ fn issue29_least_multiplier_without_twins_equals_the_program_from_scratch() {
     assert!((lo - reference).abs() <= 1e-9 * hi, "{lo} {reference}");
     assert!((lo + hi).abs() <= 1e-9 * hi, "{lo} {hi}");
 }
+
+#[test]
+fn issue29_least_multiplier_without_twins_on_an_asymmetric_live_load() {
+    // Since session 25 the symmetric façade's tilt takes its least multiplier from the mirror
+    // image of the largest's optimum (`safety::least_by_mirror`), so the test above no longer
+    // reaches the twins' path. Here the live load is the weight along (1, 0.25): its mirror
+    // image (−1, 0.25) is not a multiple of it, so no mirror applies and the least multiplier
+    // comes from `limit::least_program` (the crossover basis, the twins) — shown by the range
+    // itself, which is not symmetric (λ_min ≠ −λ_max). Reference: the least multiplier's
+    // program by the dual simplex from scratch.
+    let st = facade_grid(2.0)
+        .with_weight_as_live_load([1.0, 0.25])
+        .unwrap();
+    let map = KinematicMap::new(&st);
+    let ipm = SolverOptions {
+        method: Method::Ipm,
+        ..SolverOptions::default()
+    };
+    let r = voussoir::analysis::limit::solve_limit_checked(&st, &map, &ipm).unwrap();
+    let (hi, lo) = (r.lambda.unwrap(), r.least.unwrap());
+    let mut fp = limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
+    fp.lp.maximise = false;
+    let s = lp::solve(&fp.lp, &SolverOptions::default()).unwrap();
+    assert_eq!(s.status, LpStatus::Optimal);
+    let reference = s.x[fp.lambda.unwrap()];
+    println!("λ_max {hi}, λ_min {lo}, from scratch {reference}");
+    assert!(hi > 0.1, "{hi}");
+    assert!(
+        (lo + hi).abs() > 1e-3 * hi,
+        "the range is symmetric: {lo} {hi}"
+    );
+    assert!((lo - reference).abs() <= 1e-9 * hi, "{lo} {reference}");
+}

@@ -646,14 +646,6 @@ impl Input {
             })
         };
         let prepared = voussoir::request::prepare(model, req).map_err(annotate)?;
-        // The summaries print lengths at the structure's own scale (voussoir::lengths).
-        {
-            use voussoir::settlement_input::ModelSupports;
-            voussoir::lengths::set_scale(match &prepared {
-                voussoir::request::Prepared::Planar(s) => s.model.extent(),
-                voussoir::request::Prepared::Spatial(s) => s.model.extent(),
-            });
-        }
         let warnings = match &prepared {
             voussoir::request::Prepared::Planar(s) => &s.warnings,
             voussoir::request::Prepared::Spatial(s) => &s.warnings,

@@ -25,8 +25,9 @@ static SCALE: AtomicU64 = AtomicU64::new(0x3FF0_0000_0000_0000);
 /// as zero when the fixed decimals show zero.
 pub const ROUND_OFF: f64 = 1e-9;
 
-/// Set the size (m) of the structure whose lengths the summaries print (a front end calls it
-/// once it has built the structure; the diagonal of its bounding box). Ignored unless finite
+/// Set the size (m) of the structure whose lengths the summaries print (`request::prepare`
+/// calls it once it has built the structure, for the CLI and Python alike; the diagonal of its
+/// bounding box). Ignored unless finite
 /// and positive.
 pub fn set_scale(size: f64) {
     if size.is_finite() && size > 0.0 {

@@ -730,6 +730,9 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
                 },
             )?;
             let warnings = model.warnings();
+            // The summaries and messages print lengths at this structure's own scale
+            // (crate::lengths), whichever front end asked.
+            crate::lengths::set_scale(crate::settlement_input::ModelSupports::extent(&model));
             Ok(Prepared::Planar(Setup {
                 model,
                 structure,
@@ -752,6 +755,9 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
                 structure.friction_facets = k;
             }
             let warnings = model.warnings();
+            // The summaries and messages print lengths at this structure's own scale
+            // (crate::lengths), whichever front end asked.
+            crate::lengths::set_scale(crate::settlement_input::ModelSupports::extent(&model));
             Ok(Prepared::Spatial(Setup {
                 model,
                 structure,

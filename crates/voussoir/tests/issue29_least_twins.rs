@@ -14,11 +14,23 @@ use voussoir::lp::{self, LpStatus, Method, SolverOptions};
 use voussoir::programs::limit_force_program;
 use voussoir::Assembly;
 
+/// The least multiplier's program of `st` (the limit program minimised), twins and all, by the
+/// dual simplex from scratch.
+fn least_from_scratch(st: &voussoir::Structure) -> f64 {
+    let map = KinematicMap::new(st);
+    let mut fp = limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
+    fp.lp.maximise = false;
+    let s = lp::solve(&fp.lp, &SolverOptions::default()).unwrap();
+    assert_eq!(s.status, LpStatus::Optimal);
+    s.x[fp.lambda.unwrap()]
+}
+
 #[test]
 fn issue29_least_multiplier_without_twins_equals_the_program_from_scratch() {
     // The 2.0 m grid façade (223 blocks) on the tilting table towards +x, by HiGHS's interior
-    // point (the CLI's 2D default for limit analysis): the least multiplier comes from the
-    // crossover basis.
+    // point (the CLI's 2D default for limit analysis): the least multiplier came from the
+    // crossover basis; since session 25 it is the mirror image of the largest's optimum (the
+    // test below reaches the basis path).
     let st = facade_grid(2.0);
     let ipm = SolverOptions {
         method: Method::Ipm,
@@ -31,13 +43,7 @@ fn issue29_least_multiplier_without_twins_equals_the_program_from_scratch() {
     );
     // Reference 1: the least multiplier's program itself (the whole program, twins and all)
     // by the dual simplex from scratch.
-    let tilted = st.with_weight_as_live_load([1.0, 0.0]).unwrap();
-    let map = KinematicMap::new(&tilted);
-    let mut fp = limit_force_program(&map, &tilted.load_vector(false), &tilted.load_vector(true));
-    fp.lp.maximise = false;
-    let s = lp::solve(&fp.lp, &SolverOptions::default()).unwrap();
-    assert_eq!(s.status, LpStatus::Optimal);
-    let reference = s.x[fp.lambda.unwrap()];
+    let reference = least_from_scratch(&st.with_weight_as_live_load([1.0, 0.0]).unwrap());
     // Reference 2, by symmetry: the façade is symmetric about its vertical midline, and the
     // mirror image of a state under the load λ·W(+1, 0) is one under −λ·W(+1, 0), so the
     // multipliers in equilibrium form [−λ_max, λ_max].
@@ -66,11 +72,7 @@ fn issue29_least_multiplier_without_twins_on_an_asymmetric_live_load() {
     };
     let r = voussoir::analysis::limit::solve_limit_checked(&st, &map, &ipm).unwrap();
     let (hi, lo) = (r.lambda.unwrap(), r.least.unwrap());
-    let mut fp = limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
-    fp.lp.maximise = false;
-    let s = lp::solve(&fp.lp, &SolverOptions::default()).unwrap();
-    assert_eq!(s.status, LpStatus::Optimal);
-    let reference = s.x[fp.lambda.unwrap()];
+    let reference = least_from_scratch(&st);
     println!("λ_max {hi}, λ_min {lo}, from scratch {reference}");
     assert!(hi > 0.1, "{hi}");
     assert!(

@@ -9,38 +9,20 @@
 //!    where the normal forces wander and consecutive values never agree to 1e-7; a λ that
 //!    still drifts does not stop there.
 
+mod support;
 use voussoir::analysis::nonassociative::{
     iterate, solve_settlement_nonassociative, NonAssociativeOptions,
 };
 use voussoir::analysis::settlement::solve_settlement_crushing;
 use voussoir::analysis::{Crushing, SettlementStatus};
 use voussoir::discretize::KinematicMap;
-use voussoir::generate::{wall, WallSpec};
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::{BuildOptions, Structure};
+use voussoir::Structure;
 
 /// 20 units × 10 courses of 0.4 × 0.2 m, μ = 0.6, the right third of the foundation 1 cm down
 /// (tests/nonassociative_settlement.rs).
 fn friction_wall() -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 10,
-        units: 20,
-        unit: [0.4, 0.2],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    m.override_joint_laws(Some(0.6), None);
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 20.0 * 0.4 * 2.0 / 3.0,
-            x1: 20.0 * 0.4 + 1.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
+    support::friction_wall_20x10(20.0 * 0.4 * 2.0 / 3.0, 20.0 * 0.4 + 1.0)
 }
 
 #[test]

@@ -5,6 +5,7 @@
 //! (`gen wall --courses 10 --units 20 --unit 0.4,0.2`, `settle --profile
 //! uniform:5.2,8.0,-0.01 --friction 0.6 --non-associative`).
 
+mod support;
 use std::sync::OnceLock;
 use voussoir::analysis::canonical::CanonicalOptions;
 use voussoir::analysis::canonical_friction::{
@@ -16,7 +17,6 @@ use voussoir::analysis::nonassociative::{
 use voussoir::analysis::{Crushing, LimitStatus, SettlementResult, SettlementStatus};
 use voussoir::generate::{wall, LiveLoad, WallSpec};
 use voussoir::lp::{Method, SolverOptions};
-use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure};
 
 const B: f64 = 0.4;
@@ -24,24 +24,7 @@ const H: f64 = 0.2;
 const SETTLEMENT: f64 = 0.01;
 
 fn friction_wall() -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 10,
-        units: 20,
-        unit: [B, H],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    m.override_joint_laws(Some(0.6), None);
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 5.2,
-            x1: 8.0,
-            v: -SETTLEMENT,
-        },
-    )
-    .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
+    support::friction_wall_20x10(5.2, 8.0)
 }
 
 /// The solver options the CLI gives the iteration (Clarabel, docs/joint-laws.md).

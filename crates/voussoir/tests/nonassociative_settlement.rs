@@ -6,6 +6,7 @@
 //! of 2h/b. With associative friction the sliding joints open as they slide (dilatancy
 //! μ·|slip|); with the non-associative law they slide closed.
 
+mod support;
 use voussoir::analysis::nonassociative::{settle_nonassociative, NonAssociativeOptions};
 use voussoir::analysis::settlement::settle_crushing;
 use voussoir::analysis::{Crushing, SettlementResult, SettlementStatus};
@@ -20,25 +21,7 @@ const SETTLEMENT: f64 = 0.01;
 
 /// 20 units × 10 courses, μ = 0.6, the right third of the foundation (x ≥ 16/3 m) down 1 cm.
 fn friction_wall() -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 10,
-        units: 20,
-        unit: [B, H],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    m.override_joint_laws(Some(0.6), None);
-    let x0 = 20.0 * B * 2.0 / 3.0;
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0,
-            x1: 20.0 * B + 1.0,
-            v: -SETTLEMENT,
-        },
-    )
-    .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
+    support::friction_wall_20x10(20.0 * B * 2.0 / 3.0, 20.0 * B + 1.0)
 }
 
 /// The crack: per course, the x between the last block that stays (|v| < ½ of the settlement

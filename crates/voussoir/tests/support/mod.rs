@@ -13,6 +13,22 @@ use voussoir::programs;
 use voussoir::settlement_input::{apply_profile, Profile};
 use voussoir::{BuildOptions, Structure, Structure3d};
 
+/// The 20 × 10 running-bond wall of 0.4 × 0.2 m units with μ = 0.6 on every joint, the
+/// foundation under x ∈ [x0, x1] 1 cm down (docs/joint-laws.md, docs/cracks.md: the friction
+/// wall of the non-associative tests).
+pub fn friction_wall_20x10(x0: f64, x1: f64) -> Structure {
+    let mut m = wall(&WallSpec {
+        courses: 10,
+        units: 20,
+        unit: [0.4, 0.2],
+        ..WallSpec::default()
+    })
+    .unwrap();
+    m.override_joint_laws(Some(0.6), None);
+    apply_profile(&mut m, &Profile::Uniform { x0, x1, v: -0.01 }).unwrap();
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
 /// A 20 × 10 stack-bond wall of 1 × 0.5 m blocks on 20 foundation segments, the left 6 m of
 /// its base 1 cm down: the 3,200-block wall of issue 29 at a sixteenth of its size.
 pub fn stack_wall_20x10() -> Structure {

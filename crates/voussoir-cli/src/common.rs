@@ -948,7 +948,10 @@ pub fn settle_summary<S: Assembly>(st: &S, r: &SettlementResult<S::D>) -> String
     for re in &r.reactions {
         let parts: Vec<String> = <S::D as Spatial>::wrench_components(&re.wrench)
             .iter()
-            .map(|(label, v, unit)| format!("{label} {v:>10.4} {unit}"))
+            .map(|(label, v, unit)| {
+                let v = voussoir::lengths::force(*v, 4, *unit != "kN");
+                format!("{label} {v:>10} {unit}")
+            })
             .collect();
         let _ = writeln!(s, "reaction {:>8}: {}", re.support, parts.join("  "));
     }

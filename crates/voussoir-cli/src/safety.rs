@@ -272,8 +272,11 @@ fn summary<S: Assembly>(st: &S, r: &SafetyResult) -> String {
         if r.stands { "yes" } else { "no" }
     );
     let _ = writeln!(s, "{}", r.message);
-    let show =
-        |v: Option<f64>, side: &str| v.map_or(format!("unbounded {side}"), |x| format!("{x:.4}"));
+    let show = |v: Option<f64>, side: &str| {
+        v.map_or(format!("unbounded {side}"), |x| {
+            voussoir::lengths::force(x, 4, false)
+        })
+    };
     for re in &r.reactions {
         let parts: Vec<String> = re
             .components

@@ -96,6 +96,8 @@ mod session24_audit;
 mod session24_extremes;
 #[path = "session25_trust.rs"]
 mod session25_trust;
+#[path = "session26_trust.rs"]
+mod session26_trust;
 #[path = "sweep.rs"]
 mod sweep;
 #[path = "sweep_capacity.rs"]

@@ -40,6 +40,55 @@ pub fn scale() -> f64 {
     f64::from_bits(SCALE.load(Ordering::Relaxed))
 }
 
+/// The total load (kN) of the structure whose forces are printed: the bits of an `f64`, 1 kN
+/// until [`set_force_scale`] is called.
+static FORCE_SCALE: AtomicU64 = AtomicU64::new(0x3FF0_0000_0000_0000);
+
+/// Forces below this fraction of the structure's load are the solvers' round-off (their
+/// feasibility tolerances are relative, about 1e-7 of the loads): printed as zero when the
+/// fixed decimals show zero. Larger than [`ROUND_OFF`], which is the coordinates'.
+pub const FORCE_ROUND_OFF: f64 = 1e-7;
+
+/// Set the total load (kN) of the structure whose forces the summaries print
+/// (`request::prepare`: its dead loads, or its live loads where it has no weight). Ignored
+/// unless finite and positive.
+pub fn set_force_scale(load: f64) {
+    if load.is_finite() && load > 0.0 {
+        FORCE_SCALE.store(load.to_bits(), Ordering::Relaxed);
+    }
+}
+
+/// The load set by [`set_force_scale`] (1 kN by default).
+pub fn force_scale() -> f64 {
+    f64::from_bits(FORCE_SCALE.load(Ordering::Relaxed))
+}
+
+/// A force (kN) or a moment (kN·m, `moment`) with `decimals` decimals, as the summaries print
+/// reactions and shear: a value the fixed decimals would print as zero gets four significant
+/// digits when it is above [`FORCE_ROUND_OFF`] of the structure's load (times its size for a
+/// moment); below, round-off, zero. A structure drawn at micrometre size printed every reaction
+/// "0.0000 kN" (session 26). No "-0.0000"; e-notation beyond 10⁷ as for lengths.
+pub fn force(kn: f64, decimals: usize, moment: bool) -> String {
+    force_at(
+        kn,
+        decimals,
+        force_scale() * if moment { scale() } else { 1.0 },
+    )
+}
+
+/// [`force`] against the scale `scale` (kN or kN·m).
+fn force_at(kn: f64, decimals: usize, scale: f64) -> String {
+    let s = number(kn, decimals);
+    if kn.is_finite()
+        && kn.abs() > FORCE_ROUND_OFF * scale
+        && s.chars().all(|c| c == '0' || c == '.')
+    {
+        format!("{kn:.3e}")
+    } else {
+        s
+    }
+}
+
 /// What a length is, which sets its unit and its decimals.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Length {
@@ -176,5 +225,19 @@ mod tests {
         assert_eq!(Length::Opening.show(6e-7), "0.001 mm");
         assert_eq!(Length::Position.show(1.7e-16), "0.0000 m");
         assert_eq!(Length::Rotation.show(1e-8), "0.0000 mrad");
+    }
+
+    #[test]
+    fn forces_against_the_load() {
+        // A 1 kN structure: fixed decimals, significant digits above 1e-7 kN, zero below.
+        assert_eq!(force_at(12.345678, 4, 1.0), "12.3457");
+        assert_eq!(force_at(-1e-12, 4, 1.0), "0.0000");
+        assert_eq!(force_at(-3.5e-6, 4, 1.0), "-3.500e-6");
+        assert_eq!(force_at(5e-8, 4, 1.0), "0.0000");
+        assert_eq!(force_at(f64::NAN, 4, 1.0), "—");
+        // A 300 kN wall: 3.5e-6 kN is 1.2e-8 of its load, round-off.
+        assert_eq!(force_at(3.5e-6, 4, 300.0), "0.0000");
+        // A micrometre arch of 2e-11 kN: its reactions in significant digits.
+        assert_eq!(force_at(1.04e-11, 4, 2e-11), "1.040e-11");
     }
 }

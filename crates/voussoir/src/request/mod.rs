@@ -704,6 +704,19 @@ fn check_dimension(req: &Request, dims: usize) -> Result<()> {
 
 /// Validate the request, check it against the model's dimension, apply its material
 /// overrides and support motion to a model and build the structure.
+/// The summaries print forces at this structure's own load (crate::lengths::force): its dead
+/// loads' total, or its live loads' where it has no weight.
+fn set_force_scale<S: Assembly>(st: &S) {
+    let dofs = <S::D as crate::dim::Dim>::DOFS;
+    let dead = crate::scale::force_scale(dofs, &st.load_vector(false));
+    let load = if dead > 0.0 {
+        dead
+    } else {
+        crate::scale::force_scale(dofs, &st.load_vector(true))
+    };
+    crate::lengths::set_force_scale(load);
+}
+
 pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
     req.validate()?;
     let n = req.names;
@@ -733,6 +746,7 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
             // The summaries and messages print lengths at this structure's own scale
             // (crate::lengths), whichever front end asked.
             crate::lengths::set_scale(crate::settlement_input::ModelSupports::extent(&model));
+            set_force_scale(&structure);
             Ok(Prepared::Planar(Setup {
                 model,
                 structure,
@@ -758,6 +772,7 @@ pub fn prepare(model: &AnyModel, req: &Request) -> Result<Prepared> {
             // The summaries and messages print lengths at this structure's own scale
             // (crate::lengths), whichever front end asked.
             crate::lengths::set_scale(crate::settlement_input::ModelSupports::extent(&model));
+            set_force_scale(&structure);
             Ok(Prepared::Spatial(Setup {
                 model,
                 structure,

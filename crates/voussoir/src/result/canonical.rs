@@ -199,8 +199,8 @@ impl<D: Spatial> CanonicalForces<D> {
                     "open points unloaded".to_string()
                 } else {
                     format!(
-                        "open points carry up to {:.4} kN of shear",
-                        self.largest_open_force
+                        "open points carry up to {} kN of shear",
+                        crate::lengths::force(self.largest_open_force, 4, false)
                     )
                 };
                 format!(
@@ -215,8 +215,8 @@ impl<D: Spatial> CanonicalForces<D> {
                 format!("canonical forces: {crit}, open points unloaded")
             }
             _ => format!(
-                "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {:.4} kN: the no-sliding rule holds at open joints); {crit}",
-                self.largest_open_force
+                "canonical forces: open points carry no normal force, but every optimal field needs shear at some of them (up to {} kN: the no-sliding rule holds at open joints); {crit}",
+                crate::lengths::force(self.largest_open_force, 4, false)
             ),
         }
     }

@@ -3,11 +3,10 @@
 use crate::common::Fail;
 use clap::{Args, Subcommand, ValueEnum};
 use std::path::PathBuf;
-use voussoir::generate::{
-    self, ArchShape, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec,
-};
+use voussoir::generate::{self, ArchSpec, FirstCourse, LintelSpec, LiveLoad, RadiusAt, WallSpec};
 use voussoir::generate3d::{self, Bond, DomeSpec, Plan, WallsLive, WallsSpec};
 use voussoir::model3d::Model3d;
+use voussoir::request::{ArchRequest, Names, ShapeName};
 use voussoir::Model;
 
 #[derive(Subcommand)]
@@ -472,44 +471,16 @@ fn write_json<T: serde::Serialize>(
 }
 
 impl ArchArgs {
+    /// The library's generator request checks it ([`voussoir::request::ArchRequest`]: a
+    /// shape's own parameter or the live load's intensity given where it does nothing is
+    /// refused), for the CLI and Python alike.
     pub fn spec(&self) -> Result<ArchSpec, Fail> {
-        if let (Some(q), LiveArg::None | LiveArg::Horizontal) = (self.live_load, self.live) {
-            return Err(Fail(format!(
-                "--live-load {q}: applies to a vertical live load (--live full, left or right); \
-                 --live {} has no intensity",
-                match self.live {
-                    LiveArg::None => "none",
-                    _ => "horizontal",
-                }
-            )));
-        }
-        // Each shape's own parameter; given with another shape it was accepted and ignored
-        // (session 25: `--half-angle 30` drew the semicircular arch).
-        for (flag, given, shape, own) in [
-            (
-                "--half-angle",
-                self.half_angle,
-                "segmental",
-                ShapeArg::Segmental,
-            ),
-            ("--offset", self.offset, "pointed", ShapeArg::Pointed),
-        ] {
-            if let Some(v) = given {
-                if std::mem::discriminant(&self.shape) != std::mem::discriminant(&own) {
-                    return Err(Fail(format!("{flag} {v}: applies to --shape {shape} only")));
-                }
-            }
-        }
         let shape = match self.shape {
-            ShapeArg::Semicircular => ArchShape::Semicircular,
-            ShapeArg::Segmental => ArchShape::Segmental {
-                half_angle: self.half_angle.unwrap_or(60.0).to_radians(),
-            },
-            ShapeArg::Pointed => ArchShape::Pointed {
-                offset: self.offset.unwrap_or(0.5),
-            },
+            ShapeArg::Semicircular => ShapeName::Semicircular,
+            ShapeArg::Segmental => ShapeName::Segmental,
+            ShapeArg::Pointed => ShapeName::Pointed,
         };
-        Ok(ArchSpec {
+        Ok(ArchRequest {
             shape,
             radius: self.radius,
             radius_at: self.radius_at.into(),
@@ -518,8 +489,11 @@ impl ArchArgs {
             unit_weight: self.unit_weight,
             width: self.width,
             live: self.live.into(),
-            live_load: self.live_load.unwrap_or(1.0),
-        })
+            live_load: self.live_load,
+            half_angle: self.half_angle,
+            offset: self.offset,
+        }
+        .spec(Names::Flags)?)
     }
 }
 

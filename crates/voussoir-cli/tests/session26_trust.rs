@@ -20,7 +20,12 @@ fn reaction_line(out: &str, support: &str) -> Vec<f64> {
         .iter()
         .map(|k| {
             let at = line.find(k).unwrap() + k.len();
-            line[at..].split_whitespace().next().unwrap().parse().unwrap()
+            line[at..]
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
         })
         .collect()
 }
@@ -38,8 +43,14 @@ fn session26_a_micrometre_arch_prints_its_reactions_in_significant_digits() {
         &d,
         "arch --voussoirs 16 --radius 2.86e-6 --thickness 0.33e-6 --live full -o small.json",
     );
-    let big = run(&d, &w("settle big.json --move right=1e-2,0 -o b.json --raw"));
-    let small = run(&d, &w("settle small.json --move right=1e-8,0 -o s.json --raw"));
+    let big = run(
+        &d,
+        &w("settle big.json --move right=1e-2,0 -o b.json --raw"),
+    );
+    let small = run(
+        &d,
+        &w("settle small.json --move right=1e-8,0 -o s.json --raw"),
+    );
     let (rb, rs) = (json_file(&d.join("b.json")), json_file(&d.join("s.json")));
     for (i, support) in ["left", "right"].iter().enumerate() {
         let b = reaction_line(&big, support);
@@ -52,13 +63,22 @@ fn session26_a_micrometre_arch_prints_its_reactions_in_significant_digits() {
         for (k, factor) in [(0, 1e-12), (1, 1e-12), (2, 1e-18)] {
             assert!(s[k] != 0.0, "{support}: {small}");
             let rel = (s[k] - b[k] * factor).abs() / (b[k] * factor).abs();
-            assert!(rel < 6e-4, "{support} {k}: {} against {}", s[k], b[k] * factor);
+            assert!(
+                rel < 6e-4,
+                "{support} {k}: {} against {}",
+                s[k],
+                b[k] * factor
+            );
         }
         // And the JSON's own numbers are the printed ones.
         let j = &rs["reactions"][i];
         for (k, key) in ["fx", "fy", "m"].iter().enumerate() {
             let v = j[key].as_f64().unwrap();
-            assert!((s[k] - v).abs() <= 5e-4 * v.abs(), "{key}: {} against {v}", s[k]);
+            assert!(
+                (s[k] - v).abs() <= 5e-4 * v.abs(),
+                "{key}: {} against {v}",
+                s[k]
+            );
         }
         assert!(rb["reactions"][i]["fx"].as_f64().unwrap().abs() > 10.0);
     }
@@ -78,14 +98,21 @@ fn session26_round_off_forces_still_print_as_zero() {
     // The paper's arch at metre size prints its reactions with four decimals as before (the
     // rule changes only what would print as zero above 1e-7 of the load).
     gen_model(&d, "arch --voussoirs 16 --live full -o arch.json");
-    let out = run(&d, &w("settle arch.json --move right=1e-2,0 -o r.json --raw"));
+    let out = run(
+        &d,
+        &w("settle arch.json --move right=1e-2,0 -o r.json --raw"),
+    );
     let r = json_file(&d.join("r.json"));
     for (i, support) in ["left", "right"].iter().enumerate() {
         let printed = reaction_line(&out, support);
         for (k, key) in ["fx", "fy", "m"].iter().enumerate() {
             let v = r["reactions"][i][key].as_f64().unwrap();
             // Four decimals at this scale (the weight is about 56 kN): the JSON rounded.
-            assert!((printed[k] - v).abs() <= 5e-5 + 1e-12, "{key} {v} printed {}", printed[k]);
+            assert!(
+                (printed[k] - v).abs() <= 5e-5 + 1e-12,
+                "{key} {v} printed {}",
+                printed[k]
+            );
         }
     }
     for l in out.lines().filter(|l| l.starts_with("reaction")) {

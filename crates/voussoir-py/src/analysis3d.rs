@@ -109,7 +109,7 @@ pub fn run_request(
 }
 
 /// The arguments of `gen_arch` (shape, radius, radius_at, thickness, voussoirs, unit_weight,
-/// width, live, live_load, half_angle, offset).
+/// width, live, live_load, half_angle, offset; the last three `None` where not given).
 type ArchArgs = (
     String,
     f64,
@@ -119,9 +119,9 @@ type ArchArgs = (
     f64,
     f64,
     String,
-    f64,
-    f64,
-    f64,
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
 );
 /// The arguments of `gen_dome` (radius, radius_at, thickness, courses, segments, half_angle,
 /// oculus, unit_weight, crown_load).

@@ -193,6 +193,7 @@ fn model_check(
 
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (shape, radius, radius_at, thickness, voussoirs, unit_weight, width, live, live_load, half_angle, offset))]
 fn gen_arch(
     shape: &str,
     radius: f64,
@@ -202,9 +203,9 @@ fn gen_arch(
     unit_weight: f64,
     width: f64,
     live: &str,
-    live_load: f64,
-    half_angle: f64,
-    offset: f64,
+    live_load: Option<f64>,
+    half_angle: Option<f64>,
+    offset: Option<f64>,
 ) -> PyResult<String> {
     let spec = model3d::arch_spec(
         shape,

@@ -7,7 +7,7 @@ use crate::detached;
 use crate::options::Fail;
 use pyo3::prelude::*;
 use std::path::PathBuf;
-use voussoir::generate::{ArchShape, ArchSpec, LiveLoad, RadiusAt};
+use voussoir::generate::{ArchSpec, LiveLoad, RadiusAt};
 use voussoir::generate3d::{self, Bond, DomeSpec, Plan, WallsLive, WallsSpec};
 use voussoir::model3d::AnyModel;
 use voussoir::{BuildOptions, Structure, Structure3d};
@@ -179,24 +179,15 @@ pub fn arch_spec(
     unit_weight: f64,
     width: f64,
     live: &str,
-    live_load: f64,
-    half_angle: f64,
-    offset: f64,
+    live_load: Option<f64>,
+    half_angle: Option<f64>,
+    offset: Option<f64>,
 ) -> Result<ArchSpec, Fail> {
-    let shape = match shape {
-        "semicircular" => ArchShape::Semicircular,
-        "segmental" => ArchShape::Segmental {
-            half_angle: half_angle.to_radians(),
-        },
-        "pointed" => ArchShape::Pointed { offset },
-        s => {
-            return Err(Fail::Model(format!(
-                "shape={s}: expected semicircular, segmental or pointed"
-            )))
-        }
-    };
-    Ok(ArchSpec {
-        shape,
+    // Checked by the library's generator request, in Python's words (the CLI's `gen arch`
+    // asks the same request).
+    let n = voussoir::request::Names::Keywords;
+    Ok(voussoir::request::ArchRequest {
+        shape: voussoir::request::ShapeName::parse(shape, n)?,
         radius,
         radius_at: radius_at_of(radius_at)?,
         thickness,
@@ -205,12 +196,16 @@ pub fn arch_spec(
         width,
         live: live_of(live)?,
         live_load,
-    })
+        half_angle,
+        offset,
+    }
+    .spec(n)?)
 }
 
 /// `voussoir gen vault`: the arch extruded along +y over `depth` in `rings` rings.
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (shape, radius, radius_at, thickness, voussoirs, unit_weight, live, live_load, half_angle, offset, depth, rings, bond))]
 pub fn gen_vault(
     shape: &str,
     radius: f64,
@@ -219,9 +214,9 @@ pub fn gen_vault(
     voussoirs: usize,
     unit_weight: f64,
     live: &str,
-    live_load: f64,
-    half_angle: f64,
-    offset: f64,
+    live_load: Option<f64>,
+    half_angle: Option<f64>,
+    offset: Option<f64>,
     depth: f64,
     rings: usize,
     bond: &str,

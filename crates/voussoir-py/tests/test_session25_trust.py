@@ -54,9 +54,9 @@ def test_session25_crushing_and_shape_parameters_where_they_do_nothing(arch, cli
         same_words(line, e.value, "needs a compressive strength")
     plain = v.limit(str(arch), compressive_strength=5000).load_multiplier
     assert plain == v.limit(str(arch), compressive_strength=5000, crushing="linear").load_multiplier
-    with pytest.raises(ValueError, match=re.escape("half_angle=60: applies to shape='segmental' only")):
+    with pytest.raises(ValueError, match=re.escape("half_angle=60: applies to shape=segmental only")):
         v.generate.arch(half_angle=60)
-    with pytest.raises(ValueError, match=re.escape("offset=0.5: applies to shape='pointed' only")):
+    with pytest.raises(ValueError, match=re.escape("offset=0.5: applies to shape=pointed only")):
         v.generate.vault(shape="segmental", offset=0.5)
     assert v.generate.arch(shape="segmental", half_angle=60) == v.generate.arch(shape="segmental")
 

@@ -715,16 +715,11 @@ def least_thickness(
     lo = None if lower is None else float(lower)
     hi = None if upper is None else float(upper)
     if g == "arch":
-        if d["live_load"] is not None and str(d["live"]).lower() in ("none", "horizontal"):
-            raise ValueError(
-                f"live_load={d['live_load']}: applies to a vertical live load (live='full', 'left' or 'right')"
-            )
-        half_angle, offset = generate._shape_parameters(d["shape"], d["half_angle"], d["offset"])
         arch = (
             d["shape"], float(d["radius"]), d["radius_at"], 0.0, int(d["voussoirs"]),
             float(d["unit_weight"]), float(d["width"]), d["live"],
-            float(1.0 if d["live_load"] is None else d["live_load"]),
-            half_angle, offset,
+            generate._given(d["live_load"]), generate._given(d["half_angle"]),
+            generate._given(d["offset"]),
         )
         text, model_json = _native.least_thickness_any("arch", arch, None, lo, hi, float(bisection_tolerance), m)
     else:

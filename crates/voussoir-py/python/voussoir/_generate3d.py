@@ -30,14 +30,8 @@ def vault(
     but ``width``) in the plane x–z, extruded along +y over ``depth`` in ``rings`` rings,
     ``bond`` ``"stack"`` (joints straight through) or ``"running"`` (odd rings shifted by half a
     voussoir); supports ``left`` and ``right``."""
-    if live_load is not None and str(live).lower() in ("none", "horizontal"):
-        raise ValueError(
-            f"live_load={live_load}: applies to a vertical live load (live='full', 'left' or "
-            f"'right'); live='{live}' has no intensity"
-        )
-    from .generate import _shape_parameters
+    from .generate import _given
 
-    half_angle, offset = _shape_parameters(shape, half_angle, offset)
     return Model(
         _native.gen_vault(
             shape,
@@ -47,9 +41,9 @@ def vault(
             int(voussoirs),
             float(unit_weight),
             live,
-            float(1.0 if live_load is None else live_load),
-            half_angle,
-            offset,
+            _given(live_load),
+            _given(half_angle),
+            _given(offset),
             float(depth),
             int(rings),
             str(bond).lower().replace("_", "-"),

@@ -17,17 +17,11 @@ from ._model import Model
 __all__ = ["arch", "lintel", "wall", "facade", "vault", "dome", "block", "walls"]
 
 
-def _shape_parameters(shape, half_angle, offset) -> Tuple[float, float]:
-    """An arch's ``half_angle`` (segmental, default 60°) and ``offset`` (pointed, default 0.5),
-    each refused with another shape as the CLI refuses ``--half-angle``/``--offset`` (it was
-    ignored: session 25)."""
-    for name, given, own in (("half_angle", half_angle, "segmental"), ("offset", offset, "pointed")):
-        if given is not None and str(shape).lower() != own:
-            raise ValueError(f"{name}={given}: applies to shape='{own}' only")
-    return (
-        float(60.0 if half_angle is None else half_angle),
-        float(0.5 if offset is None else offset),
-    )
+def _given(x) -> Optional[float]:
+    """A keyword given (as a float) or not (None): the library's generator request refuses a
+    shape's own parameter or a live load's intensity given where it does nothing, whatever its
+    value, in the same words for the CLI and Python."""
+    return None if x is None else float(x)
 
 
 def arch(
@@ -53,13 +47,8 @@ def arch(
     ``"extrados"``. ``live``: ``"none"``, ``"full"``, ``"left"``, ``"right"`` (vertical, on the
     extrados, ``live_load`` kN/m² per unit horizontal projection, default 1) or
     ``"horizontal"`` (each block's weight). ``live_load`` with ``"none"`` or ``"horizontal"``
-    raises ``ValueError`` (they have no intensity), as the CLI refuses it."""
-    if live_load is not None and str(live).lower() in ("none", "horizontal"):
-        raise ValueError(
-            f"live_load={live_load}: applies to a vertical live load (live='full', 'left' or "
-            f"'right'); live='{live}' has no intensity"
-        )
-    half_angle, offset = _shape_parameters(shape, half_angle, offset)
+    raises ``ValueError`` (they have no intensity), as the CLI refuses it (the library's
+    ``request::ArchRequest`` decides for both)."""
     return Model(
         _native.gen_arch(
             shape,
@@ -70,9 +59,9 @@ def arch(
             float(unit_weight),
             float(width),
             live,
-            float(1.0 if live_load is None else live_load),
-            half_angle,
-            offset,
+            _given(live_load),
+            _given(half_angle),
+            _given(offset),
         )
     )
 

@@ -19,6 +19,7 @@
 //! [`run`] is [`prepare`] (model options and support motion applied, structure built; its
 //! warnings) then [`solve`], for front ends that print the model's warnings before solving.
 
+pub mod generate;
 pub mod motion;
 
 mod capacity;
@@ -32,6 +33,7 @@ mod sweep;
 mod tilt;
 
 pub use capacity::CapacityRequest;
+pub use generate::{ArchRequest, ShapeName};
 pub use identify::{parse_unknown, IdentifyRequest, UnknownSpec};
 pub use incremental::{IncrementalRequest, Toward};
 pub use least::{

@@ -17,50 +17,61 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// The size (m) of the structure whose lengths are printed: the bits of an `f64`, 1 m until
-/// [`set_scale`] is called.
-static SCALE: AtomicU64 = AtomicU64::new(0x3FF0_0000_0000_0000);
+/// A positive scale held process-wide (the bits of an `f64`, 1 until set), for the summaries
+/// of the structure being analysed.
+struct Scale(AtomicU64);
+
+impl Scale {
+    const fn one() -> Scale {
+        Scale(AtomicU64::new(0x3FF0_0000_0000_0000))
+    }
+    /// Ignored unless finite and positive.
+    fn set(&self, v: f64) {
+        if v.is_finite() && v > 0.0 {
+            self.0.store(v.to_bits(), Ordering::Relaxed);
+        }
+    }
+    fn get(&self) -> f64 {
+        f64::from_bits(self.0.load(Ordering::Relaxed))
+    }
+}
+
+/// The size (m) of the structure whose lengths are printed.
+static SIZE: Scale = Scale::one();
+/// The total load (kN) of the structure whose forces are printed.
+static LOAD: Scale = Scale::one();
 
 /// Lengths below this fraction of the structure's size are its coordinates' round-off: printed
 /// as zero when the fixed decimals show zero.
 pub const ROUND_OFF: f64 = 1e-9;
-
-/// Set the size (m) of the structure whose lengths the summaries print (`request::prepare`
-/// calls it once it has built the structure, for the CLI and Python alike; the diagonal of its
-/// bounding box). Ignored unless finite
-/// and positive.
-pub fn set_scale(size: f64) {
-    if size.is_finite() && size > 0.0 {
-        SCALE.store(size.to_bits(), Ordering::Relaxed);
-    }
-}
-
-/// The size set by [`set_scale`] (1 m by default).
-pub fn scale() -> f64 {
-    f64::from_bits(SCALE.load(Ordering::Relaxed))
-}
-
-/// The total load (kN) of the structure whose forces are printed: the bits of an `f64`, 1 kN
-/// until [`set_force_scale`] is called.
-static FORCE_SCALE: AtomicU64 = AtomicU64::new(0x3FF0_0000_0000_0000);
 
 /// Forces below this fraction of the structure's load are the solvers' round-off (their
 /// feasibility tolerances are relative, about 1e-7 of the loads): printed as zero when the
 /// fixed decimals show zero. Larger than [`ROUND_OFF`], which is the coordinates'.
 pub const FORCE_ROUND_OFF: f64 = 1e-7;
 
+/// Set the size (m) of the structure whose lengths the summaries print (`request::prepare`
+/// calls it once it has built the structure, for the CLI and Python alike; the diagonal of its
+/// bounding box). Ignored unless finite and positive.
+pub fn set_scale(size: f64) {
+    SIZE.set(size)
+}
+
+/// The size set by [`set_scale`] (1 m by default).
+pub fn scale() -> f64 {
+    SIZE.get()
+}
+
 /// Set the total load (kN) of the structure whose forces the summaries print
 /// (`request::prepare`: its dead loads, or its live loads where it has no weight). Ignored
 /// unless finite and positive.
 pub fn set_force_scale(load: f64) {
-    if load.is_finite() && load > 0.0 {
-        FORCE_SCALE.store(load.to_bits(), Ordering::Relaxed);
-    }
+    LOAD.set(load)
 }
 
 /// The load set by [`set_force_scale`] (1 kN by default).
 pub fn force_scale() -> f64 {
-    f64::from_bits(FORCE_SCALE.load(Ordering::Relaxed))
+    LOAD.get()
 }
 
 /// A force (kN) or a moment (kN·m, `moment`) with `decimals` decimals, as the summaries print

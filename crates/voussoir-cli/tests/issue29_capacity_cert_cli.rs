@@ -335,8 +335,13 @@ fn issue29_facade_settled_step_without_equilibrium_is_certified() {
     assert_eq!(step["status"], "no_equilibrium", "{step}");
     let cert = &step["certificate"];
     assert_eq!(cert["ok"], true, "{cert}");
+    // Certified: the least violation's dual bound above the margin of 1e-6 of the largest
+    // load. Before session 26 it was 3.0e-6 on one solver path and 16.8 on the other: the
+    // settlement mechanism's round-off turned the deformed joints and steered the step
+    // program's scaling (docs/performance.md, "Capacity step round-off and the as-written
+    // face extremes (session 26)"); the structure's own value is the latter.
     let violation = cert["violation"].as_f64().unwrap();
-    assert!(violation > 1e-7 && violation < 1e-3, "{violation}");
+    assert!(violation > 1.0, "{violation}");
     // λ before any settlement: the façade's collapse load under the tilting table, certified.
     assert!(v["curve"][0]["load_multiplier"].as_f64().unwrap() > 1.0);
 }

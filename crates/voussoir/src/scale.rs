@@ -59,6 +59,34 @@ pub fn motion_scale(map: &KinematicMap, d: &[f64], support_scale: f64) -> f64 {
     m
 }
 
+/// Block motions `d` with their round-off set to zero: a component whose largest effect on a
+/// contact point (`|a_c d_c|` over column `c` of the kinematic map, normal and tangent rows)
+/// is within [`OPEN_TOLERANCE`] of the [`motion_scale`] is zero, as an opening that small is
+/// closed. An LP vertex of the same mechanism has exact zeros there or 1e-9 of round-off,
+/// depending on the path the solver took (docs/performance.md, "Capacity step round-off and
+/// the as-written face extremes (session 26)"); a structure deformed by a round-off rotation
+/// has joints turned by it, whose map entries of 1e-11 steered the scaling of its programs
+/// and so their least violation. Both dimensions (a column is a translation or a rotation).
+pub fn without_round_off(map: &KinematicMap, d: &[f64], support_scale: f64) -> Vec<f64> {
+    let tol = open_threshold(map, d, support_scale);
+    let mut reach = vec![0.0f64; d.len()];
+    for rows in [&map.normal, &map.tangent] {
+        for k in 0..rows.rows() {
+            if let Some(row) = rows.outer_view(k) {
+                for (c, &a) in row.iter() {
+                    if let Some(r) = reach.get_mut(c) {
+                        *r = r.max(a.abs());
+                    }
+                }
+            }
+        }
+    }
+    d.iter()
+        .zip(&reach)
+        .map(|(&x, &r)| if (x * r).abs() <= tol { 0.0 } else { x })
+        .collect()
+}
+
 /// The opening (or slip) below which a point counts as closed, for motions `d` with the
 /// supports' motions scaled by `support_scale`: [`OPEN_TOLERANCE`] of the [`motion_scale`].
 pub fn open_threshold(map: &KinematicMap, d: &[f64], support_scale: f64) -> f64 {

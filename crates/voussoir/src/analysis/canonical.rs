@@ -339,7 +339,7 @@ impl Stages {
         self.opts = SolverOptions {
             method,
             presolve: true,
-            as_written_first: false,
+            as_written_first: true,
             ..saved
         };
         let mut none = None;
@@ -355,17 +355,17 @@ impl Stages {
     /// chain; the result's `tried` says why.
     fn solve_fresh(&mut self, lp: &LinearProgram, dofs: usize) -> Result<lp::LpSolution> {
         let saved = self.opts;
-        // Not as written first (SolverOptions::as_written_first, off here since session 25's
-        // merge): it saved about 18 CPU s of the 0.5 m grid façade's `tilt`, but the vertex it
-        // gives differs from the equilibrated path's by round-off (1e-8 relative), and on the
-        // 1.0 m grid façade's `capacity --steps 1` that moved the settled step's no-equilibrium
-        // certificate from a violation of 3.0e-6 to 16.8 (tests/issue29_capacity_cert_cli.rs),
-        // not understood yet (docs/performance.md, "Façade tilt, safety and capacity (session
-        // 25)").
+        // As written first: the face programs equilibrated came out worse conditioned than
+        // as written on the 0.5 m grid façade's `tilt` (SolverOptions::as_written_first). Off
+        // in session 25's merge, when the 1.0 m grid façade's settled capacity step changed
+        // with it; that was the mechanism's round-off (1e-9 where this path has exact zeros)
+        // turning the deformed joints and steering the step programs' scaling, now set to zero
+        // by the settlement path (docs/performance.md, "Capacity step round-off and the
+        // as-written face extremes (session 26)").
         self.opts = SolverOptions {
             method: Method::DualSimplex,
             presolve: true,
-            as_written_first: false,
+            as_written_first: true,
             ..saved
         };
         let r = match lp::policy::extremes_fallback(dofs) {

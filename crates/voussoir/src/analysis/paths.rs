@@ -277,10 +277,30 @@ impl<S: Assembly> SettlementPath<S> {
         Ok((at, map, sol, selection))
     }
 
+    /// One settlement solve under the path's joint laws ([`SettlementPath::solve_selected`]),
+    /// its mechanism's round-off set to zero ([`crate::scale::without_round_off`]): the
+    /// structures deformed by it then do not depend on the path the solver took to its vertex
+    /// (docs/performance.md, "Capacity step round-off and the as-written face extremes
+    /// (session 26)").
+    fn solve(
+        &self,
+        st: &S,
+        map: &mut KinematicMap,
+    ) -> Result<(
+        SettlementSolution,
+        Option<crate::analysis::canonical::CanonicalMechanism>,
+    )> {
+        let (mut sol, selection) = self.solve_selected(st, map)?;
+        if sol.status == SettlementStatus::Mechanism && sol.mechanism.len() == map.num_dofs {
+            sol.mechanism = crate::scale::without_round_off(map, &sol.mechanism, 1.0);
+        }
+        Ok((sol, selection))
+    }
+
     /// One settlement solve under the path's joint laws; with the canonical selection (the
     /// inscribed polygons, associative friction) its mechanism replaced by the canonical one,
     /// with how it was selected.
-    fn solve(
+    fn solve_selected(
         &self,
         st: &S,
         map: &mut KinematicMap,

@@ -316,10 +316,11 @@ pub struct SolverOptions {
     /// whose equilibrated programs came out worse conditioned than as written (the 0.5 m grid
     /// façade's `tilt`: coefficients over 7e8 against 3e4; HiGHS's dual simplex and interior
     /// point failed on them after 4.2 and 13.3 s, then solved them as written in 2.9 and 2.1 s;
-    /// docs/performance.md "Façade tilt, safety and capacity (session 25)"). Off by default,
-    /// and no analysis sets it since that session's merge: the vertex it gave changed a
-    /// capacity step's no-equilibrium certificate on the 1.0 m grid façade, not understood yet
-    /// (`analysis::canonical`, `Stages::solve_fresh`).
+    /// docs/performance.md "Façade tilt, safety and capacity (session 25)"). Off by default;
+    /// the canonical selection sets it (`analysis::canonical`, `Stages`). Its vertex differs
+    /// from the equilibrated path's by round-off, which the settlement path removes before it
+    /// deforms a structure (`scale::without_round_off`; docs/performance.md "Capacity step
+    /// round-off and the as-written face extremes (session 26)").
     pub as_written_first: bool,
 }
 

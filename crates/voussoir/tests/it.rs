@@ -112,6 +112,8 @@ mod issue29_sequences;
 mod issue29_session25_as_written_first;
 #[path = "issue29_session25_least_mirror.rs"]
 mod issue29_session25_least_mirror;
+#[path = "issue29_session26_capacity_steps.rs"]
+mod issue29_session26_capacity_steps;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

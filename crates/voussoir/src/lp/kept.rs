@@ -13,6 +13,9 @@
 //! most steps take no pivot, and those runs were 0.9–1.9 s each (docs/performance.md,
 //! "`capacity` on the 0.5 m façades (session 26)").
 
+// The loops run over several arrays indexed alike (rows, columns, pivots).
+#![allow(clippy::needless_range_loop)]
+
 use super::lu::{Csc, Lu};
 use super::scale::Scaling;
 use super::{policy, Basis, BasisStatus, LinearProgram, LpSolution, LpStatus, SolverOptions};

@@ -4,6 +4,9 @@
 //! duals of a program that a kept basis may already solve. Nothing here decides an answer: the
 //! point and duals it gives are certified by the solver layer's checks like any backend's.
 
+// The loops run over several arrays indexed alike (rows, columns, pivots).
+#![allow(clippy::needless_range_loop)]
+
 /// A square sparse matrix by columns.
 pub struct Csc {
     pub n: usize,

@@ -114,6 +114,8 @@ mod issue29_session25_as_written_first;
 mod issue29_session25_least_mirror;
 #[path = "issue29_session26_capacity_roundoff.rs"]
 mod issue29_session26_capacity_roundoff;
+#[path = "issue29_session26_capacity_steps.rs"]
+mod issue29_session26_capacity_steps;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

@@ -113,17 +113,24 @@ impl WarmLimit {
             // dual feasible where the geometry moved little) goes on from that basis by the
             // warm method where one is set; every other one by the method asked for.
             let bounds = [fp.lp.col_lower.clone(), fp.lp.col_upper.clone()];
-            let o = match self.warm_method {
-                Some(method) if self.basis.is_some() && self.bounds.as_ref() == Some(&bounds) => {
+            // Such a program's kept basis is looked at first: where it is still optimal
+            // (certified by the solver layer), no backend runs (`lp::solve_warm_kept`).
+            let (o, kept) = match self.warm_method {
+                Some(method) if self.basis.is_some() && self.bounds.as_ref() == Some(&bounds) => (
                     SolverOptions {
                         method,
                         ..self.solver
-                    }
-                }
-                _ => self.solver,
+                    },
+                    true,
+                ),
+                _ => (self.solver, false),
             };
             self.bounds = Some(bounds);
-            let sol = lp::solve_warm(&fp.lp, &o, &mut self.basis)?;
+            let sol = if kept {
+                lp::solve_warm_kept(&fp.lp, &o, &mut self.basis)?
+            } else {
+                lp::solve_warm(&fp.lp, &o, &mut self.basis)?
+            };
             limit_solution(map, &fp, &live, &sol, o.info())
         } else {
             solve_limit(st, map, &self.solver)?

@@ -18,6 +18,8 @@
 pub mod clarabel;
 pub mod free_columns;
 pub mod highs;
+pub mod kept;
+pub mod lu;
 pub mod policy;
 pub mod scale;
 pub mod sequence;
@@ -1134,6 +1136,47 @@ pub fn solve_warm(
 ) -> Result<LpSolution> {
     check_numbers(lp)?;
     with_fallback(lp, opts, |o| solve_warm_once(lp, o, basis))
+}
+
+/// [`solve_warm`] for the next program of a sequence whose kept basis may still be optimal (a
+/// capacity curve's steps: only coefficients changed): the basis is looked at on `lp` first
+/// ([`kept::answer`]: its basic solution and duals by the solver layer's own LU, feasible within
+/// the backend's tolerance and certified by [`policy::check`]); where it solves `lp`, that is
+/// the answer (the simplex's after zero iterations, stated as `opts.method`'s) and the basis
+/// stays; otherwise [`solve_warm`] as before.
+pub fn solve_warm_kept(
+    lp: &LinearProgram,
+    opts: &SolverOptions,
+    basis: &mut Option<Basis>,
+) -> Result<LpSolution> {
+    check_numbers(lp)?;
+    let kept = basis
+        .as_ref()
+        .filter(|b| b.cols.len() == lp.num_cols() && b.rows.len() == lp.num_rows())
+        .map(|b| b.adapted(lp));
+    if let Some(b) = kept {
+        let clock = std::time::Instant::now();
+        let answer = kept::answer(lp, opts, &b);
+        if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            eprintln!(
+                "trace: kept basis rows {} cols {}: {} in {:.3} s",
+                lp.num_rows(),
+                lp.num_cols(),
+                if answer.is_some() {
+                    "optimal, certified: no backend run"
+                } else {
+                    "not optimal or not certified: the warm simplex runs"
+                },
+                clock.elapsed().as_secs_f64()
+            );
+        }
+        if let Some(s) = answer {
+            record(lp, &s);
+            *basis = Some(b);
+            return Ok(s);
+        }
+    }
+    solve_warm(lp, opts, basis)
 }
 
 /// [`solve_warm`] with `opts.method` alone.

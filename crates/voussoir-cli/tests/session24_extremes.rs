@@ -10,12 +10,7 @@
 //! - a small motion above it is resolved: the work is proportional to the motion (the
 //!   settlement programs are positively homogeneous in it), certified.
 
-use crate::common::{gen_model, json, refused, run, tmpdir};
-
-/// A command line's words (none of them has a space).
-fn w(line: &str) -> Vec<&str> {
-    line.split_whitespace().collect()
-}
+use crate::common::{gen_model, json, refused, run, tmpdir, w};
 
 #[test]
 fn session24_a_profile_that_moves_no_support_is_refused() {

@@ -10,12 +10,7 @@
 //!   lengths above the round-off now print in significant digits (voussoir::lengths);
 //! - the 2D `tilt` summary did not count the supports (3D did).
 
-use crate::common::{gen_model, json, json_file, refused, run, tmpdir};
-
-/// A command line's words (none of them has a space).
-fn w(line: &str) -> Vec<&str> {
-    line.split_whitespace().collect()
-}
+use crate::common::{gen_model, json, json_file, refused, run, tmpdir, w};
 
 #[test]
 fn session25_sweep_options_of_another_mode_refused_at_their_default_value() {

@@ -4,11 +4,7 @@
 //! prints in significant digits when it is above 1e-7 of the structure's load
 //! (`voussoir::lengths::force`); below that it is the solvers' round-off and prints as zero.
 
-use crate::common::{gen_model, json_file, run, tmpdir};
-
-fn w(line: &str) -> Vec<&str> {
-    line.split_whitespace().collect()
-}
+use crate::common::{gen_model, json_file, run, tmpdir, w};
 
 /// The three numbers of a `reaction <name>:` line (fx, fy, m).
 fn reaction_line(out: &str, support: &str) -> Vec<f64> {

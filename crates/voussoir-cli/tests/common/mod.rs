@@ -28,6 +28,11 @@ pub fn run(dir: &Path, args: &[&str]) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
+/// A command line's words (none of them has a space).
+pub fn w(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 /// Run `voussoir gen WORDS` in `dir` and expect success; stdout. `words` is the command line
 /// after `gen`, its words apart at white space (none of them has a space).
 pub fn gen_model(dir: &Path, words: &str) -> String {

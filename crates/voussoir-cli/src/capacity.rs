@@ -245,8 +245,20 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
         &r.cracks,
         true,
     ));
-    if let Some(z) = r.zero_capacity_settlement {
-        let _ = writeln!(s, "zero-capacity {}: {}", unit.noun(), len.show(z));
+    match (r.zero_capacity_settlement, r.zero_capacity_bracket) {
+        (Some(_), Some([lo, hi])) => {
+            let _ = writeln!(
+                s,
+                "zero-capacity {}: between {} and {} (the root tolerance)",
+                unit.noun(),
+                len.show(lo),
+                len.show(hi)
+            );
+        }
+        (Some(z), None) => {
+            let _ = writeln!(s, "zero-capacity {}: {}", unit.noun(), len.show(z));
+        }
+        _ => {}
     }
     match voussoir_io::draw::capacity::linear_fit_text(r) {
         Some(LinearFitText::Fits(t)) => {

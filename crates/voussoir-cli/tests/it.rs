@@ -98,6 +98,8 @@ mod session24_extremes;
 mod session25_trust;
 #[path = "session26_trust.rs"]
 mod session26_trust;
+#[path = "session27_capacity.rs"]
+mod session27_capacity;
 #[path = "sweep.rs"]
 mod sweep;
 #[path = "sweep_capacity.rs"]

@@ -448,6 +448,12 @@ class CapacityResult(Result):
         return self._d().get("zero_capacity_settlement")
 
     @property
+    def zero_capacity_bracket(self) -> Optional[list]:
+        """[from, to] (m): where the zero is known only to a bracket wider than a tenth of it
+        (no settlement tried next to 0 carries the dead loads), that bracket; else None."""
+        return self._d().get("zero_capacity_bracket")
+
+    @property
     def linear_fit(self) -> Optional[dict]:
         """λ ≈ intercept + slope·s: intercept, slope, max_relative_deviation."""
         f = self._d().get("linear_fit")

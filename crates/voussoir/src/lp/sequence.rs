@@ -407,6 +407,13 @@ pub const FEASIBLE_RESOLUTION: f64 = 1e-7;
 /// largest finite row bound, to call a program infeasible.
 pub const INFEASIBLE_MARGIN: f64 = 1e-6;
 
+/// The least violation, relative to the largest finite row bound, above which
+/// [`decide_feasibility`] accepts a Farkas certificate whose halves (the elastic point, the
+/// duals) and gap hold only to the solver layer's answer tolerance
+/// ([`super::policy::CERTIFICATE_TOLERANCE`]): a program that far from feasible is not made
+/// feasible by round-off.
+pub const FAR_INFEASIBLE: f64 = 1e-3;
+
 /// A decision of feasibility with its certificate, either way ([`decide_feasibility`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FeasibilityDecision {
@@ -425,7 +432,9 @@ pub struct FeasibilityDecision {
 /// elastic rows (primal certificate) with a least total violation, relative to the largest
 /// finite row bound, of at most `tolerance.max(FEASIBLE_RESOLUTION)`. Infeasible: its duals are
 /// dual feasible (dual certificate) and bound that violation from below by more than
-/// `tolerance.max(INFEASIBLE_MARGIN)` (a Farkas certificate). `None` in between, where neither
+/// `tolerance.max(INFEASIBLE_MARGIN)` (a Farkas certificate); far from feasible (a bound above
+/// [`FAR_INFEASIBLE`]), duals feasible to the solver layer's answer tolerance with the primal
+/// half and the gap agreeing are enough. `None` in between, where neither
 /// half certifies, or where the method fails: `opts.method` alone is run, without its
 /// fallback chain (the caller chains methods; a chain that ended in HiGHS's simplex stalled for
 /// minutes in phase 1 on the 24 × 24 dome's elastic programs).
@@ -481,17 +490,7 @@ pub fn decide_feasibility(
     // duals bound it only to that resolution: "feasible" within FEASIBLE_RESOLUTION,
     // "infeasible" only with a bound INFEASIBLE_MARGIN above 0 (a bound of 1e-9 with duals
     // certified to 1e-7 once declared a feasible program infeasible); in between, undecided.
-    let decided = if certificate.primal <= CERTIFICATE_TOLERANCE
-        && violation <= tolerance.max(FEASIBLE_RESOLUTION)
-    {
-        Some(true)
-    } else if certificate.dual <= CERTIFICATE_TOLERANCE
-        && relative(bound) > tolerance.max(INFEASIBLE_MARGIN)
-    {
-        Some(false)
-    } else {
-        None
-    };
+    let decided = decision(&certificate, violation, relative(bound), tolerance);
     if decided.is_some() {
         super::record_run(opts.method, &[], false, || super::Outcome::Certified);
     } else if std::env::var_os("VOUSSOIR_TRACE").is_some() {
@@ -514,6 +513,36 @@ pub fn decide_feasibility(
         violation,
         certificate,
     }))
+}
+
+/// [`decide_feasibility`]'s rule: feasible (`Some(true)`), infeasible (`Some(false)`) or
+/// undecided, from the elastic optimum's certificate `c`, its least violation and the dual
+/// bound on it (both relative to the largest finite row bound) and the caller's `tolerance`.
+fn decision(c: &Certificate, violation: f64, bound: f64, tolerance: f64) -> Option<bool> {
+    if c.primal <= CERTIFICATE_TOLERANCE && violation <= tolerance.max(FEASIBLE_RESOLUTION) {
+        Some(true)
+    } else if c.dual <= CERTIFICATE_TOLERANCE && bound > tolerance.max(INFEASIBLE_MARGIN) {
+        Some(false)
+    } else if c.dual <= super::policy::CERTIFICATE_TOLERANCE
+        && c.primal <= super::policy::CERTIFICATE_TOLERANCE
+        && c.gap <= super::policy::CERTIFICATE_TOLERANCE
+        && bound > tolerance.max(FAR_INFEASIBLE)
+    {
+        // Far from feasible, both halves agreeing: the elastic point and the duals feasible
+        // to the solver layer's certificate tolerance (1e-6, that of every answer,
+        // `policy::check`) rather than 1e-7, where the bound the duals give and the point's
+        // own violation agree and exceed a thousandth of the largest load. Clarabel's answers
+        // on the 0.5 m grid façade's settled capacity steps stop at primal 5e-8–3.4e-7 and
+        // dual 1.2e-7–1.9e-7 at reduced accuracy with a violation and a bound of 217–267
+        // times the largest load (undecided before: the chain went on to the simplex, 35–107
+        // s a step, to decide the same), docs/
+        // performance.md "Capacity of the 0.5 m grid façade (session 27)". Duals off by 1e-6
+        // of their terms move a bound by about 1e-6 of the forces' size, not by a thousandth
+        // of the load, unless the forces were a thousand million times the load.
+        Some(false)
+    } else {
+        None
+    }
 }
 
 /// How far `x` is from a point of `lp` (its objective ignored), measured as
@@ -1025,5 +1054,46 @@ impl Sequence {
         self.costs_changed = false;
         self.bounds_changed = false;
         Ok(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cert(primal: f64, dual: f64, gap: f64) -> Certificate {
+        Certificate { primal, dual, gap }
+    }
+
+    /// The rule of [`decision`], case by case: the numbers of the 0.5 m grid façade's settled
+    /// capacity steps (Clarabel at reduced accuracy: primal 4.8e-8, dual 1.6e-7, violation and
+    /// bound 216.9 times the largest load; primal 3.4e-7, dual 1.2e-7, 266.6) decide
+    /// "infeasible"; duals that far off do not where the bound is small, nor halves beyond
+    /// 1e-6, nor a gap beyond it.
+    #[test]
+    fn far_infeasible_needs_both_halves_and_a_large_bound() {
+        let grid = cert(4.8e-8, 1.6e-7, 1e-9);
+        assert_eq!(decision(&grid, 216.9, 216.9, 0.0), Some(false));
+        // Certified duals (1e-7) decide at any bound above the margin, as before.
+        assert_eq!(
+            decision(&cert(1.0, 5e-8, 1.0), 1e-5, 2e-6, 0.0),
+            Some(false)
+        );
+        // Duals between 1e-7 and 1e-6: only far from feasible, with both halves agreeing.
+        assert_eq!(decision(&grid, 5e-4, 5e-4, 0.0), None);
+        assert_eq!(
+            decision(&cert(3.4e-7, 1.2e-7, 1e-9), 266.6, 266.6, 0.0),
+            Some(false)
+        );
+        assert_eq!(decision(&cert(2e-6, 1.6e-7, 1e-9), 216.9, 216.9, 0.0), None);
+        assert_eq!(
+            decision(&cert(4.8e-8, 1.6e-7, 2e-6), 216.9, 216.9, 0.0),
+            None
+        );
+        assert_eq!(decision(&cert(4.8e-8, 2e-6, 1e-9), 216.9, 216.9, 0.0), None);
+        // The caller's tolerance raises the threshold (here above the bound: then within it).
+        assert_eq!(decision(&grid, 216.9, 216.9, 300.0), Some(true));
+        // Feasible: the primal half and a violation within the resolution.
+        assert_eq!(decision(&cert(1e-8, 1.0, 1.0), 5e-8, 0.0, 0.0), Some(true));
     }
 }

@@ -222,6 +222,11 @@ pub struct CapacityResult<D: Spatial = Two> {
     pub answered: Vec<crate::lp::ProgramAnswers>,
     /// The settlement at which λ reaches 0 (`null` if λ does not change sign in the range).
     pub zero_capacity_settlement: Option<f64>,
+    /// Where the zero is known only to a bracket wider than a tenth of it (every settlement
+    /// tried next to 0 without equilibrium, to the root tolerance): that bracket `[from, to]`
+    /// (m), the answer; `zero_capacity_settlement` is then a point of it. Not written otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub zero_capacity_bracket: Option<[f64; 2]>,
     /// The settlement at which the last point of the model's existing cracks closes (to the
     /// root tolerance), when it happens within the range.
     #[serde(default, skip_serializing_if = "Option::is_none")]

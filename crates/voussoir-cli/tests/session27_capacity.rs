@@ -1,0 +1,105 @@
+//! Session 27 (lead), issue 29: a capacity curve whose first settled step has no equilibrium.
+//! The 0.5 m grid façade's step 1 ran its limit program for 467 s before every method failed
+//! and its no-equilibrium certificate decided it (session 26); the first settled step is now
+//! decided by that certificate first (Clarabel alone), where no method is named. And where
+//! every settlement tried next to 0 has no equilibrium, the zero of λ is known only to the
+//! root tolerance: the summary printed it as "3.052e-5 cm" from a bracket [0, 6.1e-5] cm; the
+//! bracket is now the answer (`zero_capacity_bracket`, "within the first …").
+//!
+//! The reference is independent of the certificate-first path: the same curve with a named
+//! method (`--method dual-simplex`), which solves every step's limit program (and the root
+//! finding's) and decides each from it.
+
+use crate::common::{gen_model, json_file, run, tmpdir, w};
+
+#[test]
+fn session27_a_first_settled_step_without_equilibrium_is_decided_by_its_certificate() {
+    let d = tmpdir("s27", "grid-capacity");
+    gen_model(&d, "facade --element 2.0 --live horizontal -o grid.json");
+    let args = "capacity grid.json --steps 6 --profile uniform:11,22,-0.2";
+    run(&d, &w(&format!("{args} -o default.json")));
+    run(
+        &d,
+        &w(&format!("{args} --method dual-simplex -o named.json")),
+    );
+    let (a, b) = (
+        json_file(&d.join("default.json")),
+        json_file(&d.join("named.json")),
+    );
+    let (ca, cb) = (
+        a["curve"].as_array().unwrap(),
+        b["curve"].as_array().unwrap(),
+    );
+    assert_eq!(ca.len(), 7);
+    assert_eq!(cb.len(), 7);
+    // Step 0 stands (the plain limit analysis, the same λ both ways); every settled step has no
+    // equilibrium both ways, each certified.
+    let l0 = ca[0]["load_multiplier"].as_f64().unwrap();
+    assert!((l0 - cb[0]["load_multiplier"].as_f64().unwrap()).abs() < 1e-9 * l0);
+    for (i, (p, q)) in ca.iter().zip(cb).enumerate().skip(1) {
+        for r in [p, q] {
+            assert_eq!(r["status"], "no_equilibrium", "step {i}: {r}");
+            assert_eq!(r["certificate"]["kind"], "no_equilibrium", "step {i}");
+            assert_eq!(r["certificate"]["ok"], true, "step {i}");
+        }
+    }
+    // The default solved one step's limit program (step 0); the named method all of them.
+    let step_answers = |r: &serde_json::Value| -> u64 {
+        r["answered"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|x| x["programs"] == "steps")
+            .map(|x| x["answers"].as_u64().unwrap())
+            .sum()
+    };
+    assert_eq!(step_answers(&a), 1, "{}", a["answered"]);
+    assert!(step_answers(&b) >= 7, "{}", b["answered"]);
+    // The zero: a bracket from 0 to within the root tolerance (1e-6 m), the same both ways.
+    for r in [&a, &b] {
+        let br = r["zero_capacity_bracket"].as_array().expect("a bracket");
+        let (lo, hi) = (br[0].as_f64().unwrap(), br[1].as_f64().unwrap());
+        assert_eq!(lo, 0.0);
+        assert!(hi > 0.0 && hi <= 1e-6, "{hi}");
+        let z = r["zero_capacity_settlement"].as_f64().unwrap();
+        assert!(lo <= z && z <= hi, "{z}");
+        let m = r["message"].as_str().unwrap();
+        assert!(
+            m.contains("to 0 within the first 0.0001 cm of settlement"),
+            "{m}"
+        );
+    }
+    assert_eq!(a["zero_capacity_bracket"], b["zero_capacity_bracket"]);
+    let text = run(&d, &w(args));
+    assert!(
+        text.contains(
+            "zero-capacity settlement: between 0.0000 cm and 0.0001 cm (the root tolerance)"
+        ),
+        "{text}"
+    );
+}
+
+/// A zero found to the root tolerance is a number, as before: the README's arch pushed 2 cm
+/// out has no bracket in its result and prints its zero as one value.
+#[test]
+fn session27_a_zero_refined_to_the_tolerance_has_no_bracket() {
+    let d = tmpdir("s27", "arch-capacity");
+    gen_model(
+        &d,
+        "arch --radius 2.86 --radius-at intrados --thickness 0.33 --voussoirs 64 --unit-weight 18 --live full --live-load 1 -o arch.json",
+    );
+    run(
+        &d,
+        &w("capacity arch.json --move right=0.02,0 --steps 40 -o r.json"),
+    );
+    let r = json_file(&d.join("r.json"));
+    let z = r["zero_capacity_settlement"].as_f64().expect("a zero");
+    assert!(z > 1e-3, "{z}");
+    assert!(r.get("zero_capacity_bracket").is_none(), "{r}");
+    let text = run(&d, &w("capacity arch.json --move right=0.02,0 --steps 40"));
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("zero-capacity"))
+        .expect("a zero line");
+    assert!(!line.contains("between"), "{line}");
+}

@@ -255,6 +255,16 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
                 len.show(hi)
             );
         }
+        // λ positive at no settlement and 0 at once: the onset (the message says why).
+        (Some(z), None)
+            if z == 0.0
+                && r.curve
+                    .first()
+                    .and_then(|p| p.load_multiplier)
+                    .is_some_and(|l| l > 0.0) =>
+        {
+            let _ = writeln!(s, "zero-capacity {}: at its onset", unit.noun());
+        }
         (Some(z), None) => {
             let _ = writeln!(s, "zero-capacity {}: {}", unit.noun(), len.show(z));
         }

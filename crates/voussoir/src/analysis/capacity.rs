@@ -464,6 +464,8 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let mut zero = None;
     // The refined bracket of the zero (where it was refined).
     let mut bracket: Option<[f64; 2]> = None;
+    // The zero at the onset of settlement, certified ([`without_equilibrium_at_onset`]).
+    let mut at_onset = false;
     if values[0] == 0.0 {
         zero = Some(0.0);
     } else {
@@ -471,6 +473,15 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
             if values[i - 1] > 0.0 && values[i] <= 0.0 {
                 if values[i] == 0.0 {
                     zero = Some(curve[i].settlement);
+                } else if i == 1
+                    && certified_without[1]
+                        .as_ref()
+                        .map(|open| without_equilibrium_at_onset(&path, open, opts))
+                        .transpose()?
+                        .unwrap_or(false)
+                {
+                    zero = Some(0.0);
+                    at_onset = true;
                 } else {
                     // A settlement next to a step certified without equilibrium, on its open
                     // points, is decided by its certificate first (`no_equilibrium_first`).
@@ -555,11 +566,13 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let invalid = curve.iter().filter(|p| !p.valid).count();
     let unit = SettlementUnit::of(&direction);
     // The bracket where it is the answer (wider than a tenth of the zero).
-    let wide_bracket = match (zero, bracket) {
-        (Some(z), Some([lo, hi])) if hi - lo > 0.1 * z.abs() => Some([lo, hi]),
-        _ => None,
-    };
+    let wide_bracket = wide(zero, bracket);
     let mut message = match (l0, zero, wide_bracket) {
+        (Some(l0), Some(_), _) if at_onset => format!(
+            "λ falls from {} at no settlement to 0 at its onset: with the cracks the {} opens, however small, the dead loads have no equilibrium (certified)",
+            show_multiplier(l0),
+            unit.noun()
+        ),
         // The zero known only to a bracket wider than a tenth of it (every settlement tried
         // next to 0 without equilibrium: the 0.5 m grid façade's curve, whose zero was printed
         // as 3.052e-5 cm from a bracket [0, 6.104e-5] cm): the bracket is the answer.
@@ -811,6 +824,60 @@ fn decided_after_failure(
     }
 }
 
+/// The bracket of a zero where it, not the zero, is the answer: wider than a tenth of it.
+fn wide(zero: Option<f64>, bracket: Option<[f64; 2]>) -> Option<[f64; 2]> {
+    match (zero, bracket) {
+        (Some(z), Some([lo, hi])) if hi - lo > 0.1 * z.abs() => Some([lo, hi]),
+        _ => None,
+    }
+}
+
+/// Whether the structure has no equilibrium at the onset of the settlement (`s → 0+`), decided
+/// by a certificate: the undeformed geometry with the points that the first settled step opens
+/// carrying nothing. Without existing cracks a deformed structure's openings scale with `s`
+/// and so does the tolerance that counts one open ([`SettlementPath::deformed`]), so every
+/// `s > 0` has the same open points; the programs differ only by the geometry, which tends to
+/// the undeformed one. A program without equilibrium by a certified margin stays so near that
+/// limit, so λ is negative or undefined just after 0: the first zero is the onset itself.
+/// (The 0.5 m grid façade: its root finding took 10 limit programs and 112 s to find it within
+/// the root tolerance of 0, docs/performance.md "Capacity of the 0.5 m grid façade (session
+/// 27)".) `false` where the certificate does not hold or with existing cracks.
+fn without_equilibrium_at_onset<S: Assembly>(
+    path: &SettlementPath<S>,
+    open: &[bool],
+    opts: &CapacityOptions,
+) -> Result<bool> {
+    if !path.existing_cracks.is_empty() {
+        return Ok(false);
+    }
+    let mut dst = path.deformed(0.0)?;
+    if opts.release_fixed {
+        dst.release_fixed();
+    }
+    let mut map = KinematicMap::new(&dst);
+    map.facets = opts.facets;
+    if map.gap.len() != open.len() || map.gap.iter().any(|g| *g > 0.0) {
+        return Ok(false);
+    }
+    // Open: a gap, which fixes the point's forces at zero (its size plays no part in a limit
+    // program).
+    for (g, &o) in map.gap.iter_mut().zip(open) {
+        if o {
+            *g = 1.0;
+        }
+    }
+    let t0 = std::time::Instant::now();
+    let c = elastic_certificate(&dst, &map, opts)?;
+    if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        eprintln!(
+            "trace: capacity onset (s → 0+): no-equilibrium certificate {:?} in {:.3} s",
+            c.as_ref().map(|c| (c.ok, c.violation)),
+            t0.elapsed().as_secs_f64()
+        );
+    }
+    Ok(c.is_some_and(|c| c.ok))
+}
+
 /// The points of a step's map that are open (a gap: fixed at zero in its limit program).
 fn open_points(map: &KinematicMap) -> Vec<bool> {
     map.gap.iter().map(|g| *g > 0.0).collect()
@@ -944,6 +1011,29 @@ fn fit<D: crate::result::Spatial>(curve: &[CapacityPoint<D>]) -> Option<LinearFi
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A zero the root finding cannot place away from 0 (every settlement tried without
+    /// equilibrium, λ = −∞): the bracket ends at 0 and is within the tolerance, so the bracket
+    /// is the answer; a zero found at 1.3753 cm to 1e-6 m is a number.
+    #[test]
+    fn a_zero_at_the_tolerance_of_0_is_a_bracket() {
+        let (z, br) = illinois((0.0, 0.9), (0.01, f64::NEG_INFINITY), 1e-6, |_| {
+            Ok(f64::NEG_INFINITY)
+        })
+        .unwrap();
+        // Bisection from 1 cm: 0.01 / 2^14 = 6.1e-7 m is the first width within 1e-6.
+        assert_eq!(br, [0.0, 0.01 / 16384.0]);
+        assert_eq!(z, 0.5 * br[1]);
+        assert_eq!(wide(Some(z), Some(br)), Some(br));
+        // λ = 1 − s/0.013753 crosses at 0.013753 m, found by regula falsi to 1e-6.
+        let (z, br) = illinois((0.0, 1.0), (0.02, 1.0 - 0.02 / 0.013753), 1e-6, |s| {
+            Ok(1.0 - s / 0.013753)
+        })
+        .unwrap();
+        assert!((z - 0.013753).abs() < 1e-9, "{z}");
+        assert!(br[0] <= z && z <= br[1]);
+        assert_eq!(wide(Some(z), Some(br)), None);
+    }
 
     #[test]
     fn a_failed_step_is_answered_only_by_a_certified_no_equilibrium() {

@@ -116,6 +116,8 @@ mod issue29_session25_least_mirror;
 mod issue29_session26_capacity_roundoff;
 #[path = "issue29_session26_capacity_steps.rs"]
 mod issue29_session26_capacity_steps;
+#[path = "issue29_session27_kept_pivots.rs"]
+mod issue29_session27_kept_pivots;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

@@ -821,6 +821,9 @@ pub struct SolveRecord {
     pub design: &'static str,
     /// A warm run from the basis of the program before ([`sequence::Sequence`]).
     pub warm: bool,
+    /// Answered from a kept basis by the solver layer itself, after this many dual simplex
+    /// pivots ([`solve_warm_kept`]); `None` where a backend answered.
+    pub kept_pivots: Option<usize>,
     pub outcome: Outcome,
 }
 
@@ -838,12 +841,29 @@ fn record(lp: &LinearProgram, s: &LpSolution) {
     record_run(s.method, &s.tried, false, || Outcome::of(lp, s));
 }
 
+/// [`record`] for an answer from a kept basis after `pivots` pivots ([`solve_warm_kept`]).
+fn record_kept(lp: &LinearProgram, s: &LpSolution, pivots: usize) {
+    push_record(s.method, &s.tried, false, Some(pivots), || {
+        Outcome::of(lp, s)
+    });
+}
+
 /// Record one answer for [`collecting`]: `method` answered (after `tried` failed), warm or not,
 /// with its `outcome` (evaluated only while collecting).
 pub(crate) fn record_run(
     method: Method,
     tried: &[String],
     warm: bool,
+    outcome: impl FnOnce() -> Outcome,
+) {
+    push_record(method, tried, warm, None, outcome)
+}
+
+fn push_record(
+    method: Method,
+    tried: &[String],
+    warm: bool,
+    kept_pivots: Option<usize>,
     outcome: impl FnOnce() -> Outcome,
 ) {
     SOLVES.with(|c| {
@@ -859,6 +879,7 @@ pub(crate) fn record_run(
                 programs,
                 design,
                 warm,
+                kept_pivots,
                 outcome,
             });
         }
@@ -1138,12 +1159,15 @@ pub fn solve_warm(
     with_fallback(lp, opts, |o| solve_warm_once(lp, o, basis))
 }
 
-/// [`solve_warm`] for the next program of a sequence whose kept basis may still be optimal (a
-/// capacity curve's steps: only coefficients changed): the basis is looked at on `lp` first
-/// ([`kept::answer`]: its basic solution and duals by the solver layer's own LU, feasible within
-/// the backend's tolerance and certified by [`policy::check`]); where it solves `lp`, that is
-/// the answer (the simplex's after zero iterations, stated as `opts.method`'s) and the basis
-/// stays; otherwise [`solve_warm`] as before.
+/// [`solve_warm`] for the next program of a sequence whose kept basis may still be optimal or
+/// nearly so (a capacity curve's steps: only coefficients changed): the basis is looked at on
+/// `lp` first ([`kept::answer_pivoting`]: its basic solution and duals by the solver layer's
+/// own LU and, where it is dual feasible but not primal feasible, at most
+/// [`kept::MAX_PIVOTS`] bounded dual simplex pivots from it, each basis refactorised; the
+/// basis reached feasible in both senses within the backend's tolerance and its answer
+/// certified by [`policy::check`]); where that solves `lp`, it is the answer (stated as
+/// `opts.method`'s, the pivots its iterations) and the basis reached is kept; otherwise
+/// [`solve_warm`] as before, from the kept basis.
 pub fn solve_warm_kept(
     lp: &LinearProgram,
     opts: &SolverOptions,
@@ -1156,24 +1180,30 @@ pub fn solve_warm_kept(
         .map(|b| b.adapted(lp));
     if let Some(b) = kept {
         let clock = std::time::Instant::now();
-        let answer = kept::answer(lp, opts, &b);
+        let answer = kept::answer_pivoting(lp, opts, &b, kept::MAX_PIVOTS);
         if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+            let what = match &answer {
+                Some(a) if a.pivots == 0 => "optimal, certified: no backend run".to_string(),
+                Some(a) => format!(
+                    "optimal after {} dual pivot{}, certified: no backend run",
+                    a.pivots,
+                    if a.pivots == 1 { "" } else { "s" }
+                ),
+                None => "not optimal within its pivots or not certified: the warm simplex runs"
+                    .to_string(),
+            };
             eprintln!(
                 "trace: kept basis rows {} cols {}: {} in {:.3} s",
                 lp.num_rows(),
                 lp.num_cols(),
-                if answer.is_some() {
-                    "optimal, certified: no backend run"
-                } else {
-                    "not optimal or not certified: the warm simplex runs"
-                },
+                what,
                 clock.elapsed().as_secs_f64()
             );
         }
-        if let Some(s) = answer {
-            record(lp, &s);
-            *basis = Some(b);
-            return Ok(s);
+        if let Some(a) = answer {
+            record_kept(lp, &a.solution, a.pivots);
+            *basis = Some(a.basis);
+            return Ok(a.solution);
         }
     }
     solve_warm(lp, opts, basis)

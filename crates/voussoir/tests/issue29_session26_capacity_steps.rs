@@ -119,30 +119,6 @@ fn curves(st: &Structure, steps: usize) -> (CapacityResult<Two>, CapacityResult<
     (kept, scratch)
 }
 
-/// λ at every step within `tol` (relative) of the reference (or no multiplier in both), the
-/// same status and validity at every step, and every step certified. (Not the hinges: where
-/// the optimum is not unique, the mechanism is the method's, here from scratch against warm.)
-fn same_curve(a: &CapacityResult<Two>, b: &CapacityResult<Two>, tol: f64) {
-    assert_eq!(a.curve.len(), b.curve.len());
-    for r in [a, b] {
-        let c = r.certificate.as_ref().unwrap();
-        assert!(c.ok && c.certified == r.curve.len(), "{c:?}");
-    }
-    for (p, q) in a.curve.iter().zip(&b.curve) {
-        assert_eq!(p.status, q.status, "s {}", p.settlement);
-        assert_eq!(p.valid, q.valid, "s {}", p.settlement);
-        match (p.load_multiplier, q.load_multiplier) {
-            (Some(lp), Some(lq)) => assert!(
-                (lp - lq).abs() <= tol * lq.abs(),
-                "s {}: {lp} against {lq}",
-                p.settlement
-            ),
-            (None, None) => {}
-            (x, y) => panic!("s {}: {x:?} against {y:?}", p.settlement),
-        }
-    }
-}
-
 #[test]
 fn issue29_kept_basis_curve_of_the_arch_equals_the_curve_from_scratch() {
     // The paper's arch, live load on the whole span, the right springing moving out and down
@@ -155,7 +131,7 @@ fn issue29_kept_basis_curve_of_the_arch_equals_the_curve_from_scratch() {
     m.supports[1].motion = [0.01, -0.005, 0.0];
     let st = Structure::new(&m, BuildOptions::default()).unwrap();
     let (kept, scratch) = curves(&st, 8);
-    same_curve(&kept, &scratch, 1e-9);
+    support::same_curve(&kept, &scratch, 1e-9);
     assert!((kept.curve[0].load_multiplier.unwrap() - 0.434645).abs() < 1e-6);
 }
 
@@ -175,7 +151,7 @@ fn issue29_kept_basis_curve_of_the_2m_running_bond_equals_the_curve_from_scratch
     // (1e-6). Measured: 7.7e-7 at the first settled step, which the interior point with
     // crossover answers (not this path, and as before), and 2.6e-8 or less at the steps after
     // it, each the optimum at the basis that step left (feasible to the simplex's 1e-9).
-    same_curve(&kept, &scratch, 1e-6);
+    support::same_curve(&kept, &scratch, 1e-6);
     // The way before, from the same start: steps 0 and 1 by the dual simplex, and each later
     // step by HiGHS's dual simplex warm from the basis of the step before (no warm method of
     // its own, so the kept basis is not looked at), against the same with the warm method
@@ -193,5 +169,5 @@ fn issue29_kept_basis_curve_of_the_2m_running_bond_equals_the_curve_from_scratch
         )
         .unwrap()
     };
-    same_curve(&by(Some(Method::DualSimplex)), &by(None), 1e-10);
+    support::same_curve(&by(Some(Method::DualSimplex)), &by(None), 1e-10);
 }

@@ -236,27 +236,6 @@ fn curve(
     (r, pivots)
 }
 
-/// λ at every step within `tol` (relative) of the reference, the same status and validity, and
-/// every step certified. (Not the hinges: where the optimum is not unique, the mechanism is
-/// the vertex's.)
-fn same_curve(a: &CapacityResult<Two>, b: &CapacityResult<Two>, tol: f64) {
-    assert_eq!(a.curve.len(), b.curve.len());
-    for r in [a, b] {
-        let c = r.certificate.as_ref().unwrap();
-        assert!(c.ok && c.certified == r.curve.len(), "{c:?}");
-    }
-    for (p, q) in a.curve.iter().zip(&b.curve) {
-        assert_eq!(p.status, q.status, "s {}", p.settlement);
-        assert_eq!(p.valid, q.valid, "s {}", p.settlement);
-        let (lp, lq) = (p.load_multiplier.unwrap(), q.load_multiplier.unwrap());
-        assert!(
-            (lp - lq).abs() <= tol * lq.abs(),
-            "s {}: {lp} against {lq}",
-            p.settlement
-        );
-    }
-}
-
 #[test]
 fn issue29_kept_basis_pivots_on_the_2m_running_bond_curve() {
     // The paper's façade (Fig 18) in running bond of 2.0 m (231 blocks) under the horizontal
@@ -289,13 +268,13 @@ fn issue29_kept_basis_pivots_on_the_2m_running_bond_curve() {
     // same at every step.
     let (before, none) = curve(&st, 20, Method::DualSimplex, None, true);
     assert!(none.iter().all(|p| p.is_none()));
-    same_curve(&kept, &before, 1e-10);
+    support::same_curve(&kept, &before, 1e-10);
     // Against every step's limit program from scratch by the dual simplex (no basis kept).
     // Measured: 9.2e-10 relative at the pivot step, 2.4e-9 at most (s = 0.12 m, a step without
     // a pivot): each warm step's vertex is feasible to the simplex's 1e-9, and λ there is
     // determined only to about that; HiGHS's warm path above is as far from it (to 1e-12).
     let (scratch, _) = curve(&st, 20, Method::DualSimplex, None, false);
-    same_curve(&kept, &scratch, 1e-8);
+    support::same_curve(&kept, &scratch, 1e-8);
 }
 
 mod support;

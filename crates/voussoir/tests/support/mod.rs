@@ -330,3 +330,33 @@ pub fn same_ranges(
         }
     }
 }
+
+/// Two capacity curves: λ at every step within `tol` (relative) of the reference `b` (or no
+/// multiplier in both), the same status and validity at every step, and every step of both
+/// certified. (Not the hinges: where the optimum is not unique, the mechanism is the vertex's
+/// of each method.)
+#[allow(dead_code)]
+pub fn same_curve(
+    a: &voussoir::analysis::capacity::CapacityResult<voussoir::dim::Two>,
+    b: &voussoir::analysis::capacity::CapacityResult<voussoir::dim::Two>,
+    tol: f64,
+) {
+    assert_eq!(a.curve.len(), b.curve.len());
+    for r in [a, b] {
+        let c = r.certificate.as_ref().unwrap();
+        assert!(c.ok && c.certified == r.curve.len(), "{c:?}");
+    }
+    for (p, q) in a.curve.iter().zip(&b.curve) {
+        assert_eq!(p.status, q.status, "s {}", p.settlement);
+        assert_eq!(p.valid, q.valid, "s {}", p.settlement);
+        match (p.load_multiplier, q.load_multiplier) {
+            (Some(lp), Some(lq)) => assert!(
+                (lp - lq).abs() <= tol * lq.abs(),
+                "s {}: {lp} against {lq}",
+                p.settlement
+            ),
+            (None, None) => {}
+            (x, y) => panic!("s {}: {x:?} against {y:?}", p.settlement),
+        }
+    }
+}

@@ -576,21 +576,26 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
         // The zero known only to a bracket wider than a tenth of it (every settlement tried
         // next to 0 without equilibrium: the 0.5 m grid façade's curve, whose zero was printed
         // as 3.052e-5 cm from a bracket [0, 6.104e-5] cm): the bracket is the answer.
-        (Some(l0), Some(_), Some([lo, hi])) if lo == 0.0 => format!(
-            "λ falls from {} at no settlement to 0 within the first {} of {} (the root tolerance: no {} tried carries the dead loads)",
-            show_multiplier(l0),
-            unit.show(hi, 4),
-            unit.noun(),
-            unit.noun()
-        ),
-        (Some(l0), Some(_), Some([lo, hi])) => format!(
-            "λ falls from {} at no settlement to 0 at a {} between {} and {} (the root tolerance, {})",
-            show_multiplier(l0),
-            unit.noun(),
-            unit.show(lo, 4),
-            unit.show(hi, 4),
-            unit.show(opts.root_tolerance, 4)
-        ),
+        (Some(l0), Some(_), Some([lo, hi])) => {
+            if lo == 0.0 {
+                format!(
+                    "λ falls from {} at no settlement to 0 within the first {} of {} (the root tolerance: no {} tried carries the dead loads)",
+                    show_multiplier(l0),
+                    unit.show(hi, 4),
+                    unit.noun(),
+                    unit.noun()
+                )
+            } else {
+                format!(
+                    "λ falls from {} at no settlement to 0 at a {} between {} and {} (the root tolerance, {})",
+                    show_multiplier(l0),
+                    unit.noun(),
+                    unit.show(lo, 4),
+                    unit.show(hi, 4),
+                    unit.show(opts.root_tolerance, 4)
+                )
+            }
+        }
         (Some(l0), Some(z), _) => format!(
             "λ falls from {} at no settlement to 0 at a {} of {}",
             show_multiplier(l0),

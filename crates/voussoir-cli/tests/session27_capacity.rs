@@ -80,11 +80,21 @@ fn session27_a_first_settled_step_without_equilibrium_is_decided_by_its_certific
     assert_eq!(p["status"], "no_equilibrium", "{p}");
     assert_eq!(p["certificate"]["ok"], true, "{p}");
     assert!(step_answers(&micro) >= 2, "{}", micro["answered"]);
-    let text = run(&d, &w(args));
+    let text = run(&d, &w(&format!("{args} --svg cap.svg")));
     assert!(
         text.contains("zero-capacity settlement: at its onset"),
         "{text}"
     );
+    // The figure spans the settlements analysed (to 20 cm), with the steps without equilibrium
+    // marked on the axis (it drew a lone point on an axis from −1 to 1 cm) and the onset named.
+    let svg = std::fs::read_to_string(d.join("cap.svg")).unwrap();
+    assert!(svg.contains(">20<"), "no tick at 20 cm");
+    assert!(!svg.contains(">−1<"), "an axis from −1 cm");
+    assert!(
+        svg.contains("λ(s): no equilibrium<"),
+        "no series of the steps without equilibrium"
+    );
+    assert!(svg.contains("λ = 0 from the onset of settlement<"));
 }
 
 /// A zero found to the root tolerance is a number, as before: the README's arch pushed 2 cm

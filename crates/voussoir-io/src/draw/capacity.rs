@@ -6,6 +6,7 @@ use super::plot::{plot, Mark, Plot, PlotSpec, Series, SERIES_COLOURS};
 use super::report::{model_summary, Report, ReportOptions};
 use super::scene::{draw, DrawOptions, MotionUnits, Scene};
 use super::svg::{fmt_fixed, human};
+use voussoir::analysis::LimitStatus;
 use voussoir::dim::{Three, Two};
 use voussoir::result::{BlockMotion, Spatial};
 use voussoir::result::{CapacityResult, CapacityStatus, SettlementUnit, SupportDirection};
@@ -105,8 +106,30 @@ pub fn capacity_series<D: Spatial>(
             colour: Some(colour.to_string()),
         });
     }
+    // The steps without equilibrium under the dead loads (no λ): markers on the axis, each on
+    // its own (no line between them), so that the figure spans the settlements analysed and
+    // shows where the structure cannot stand (a grid façade that has no equilibrium after any
+    // settlement drew a lone point at s = 0 on an axis from −1 to 1 cm).
+    let without: Vec<[f64; 2]> = r
+        .curve
+        .iter()
+        .filter(|p| p.status == LimitStatus::NoEquilibrium && p.settlement.is_finite())
+        .flat_map(|p| [[p.settlement * k, 0.0], [f64::NAN, f64::NAN]])
+        .collect();
+    if !without.is_empty() {
+        out.push(Series {
+            label: format!("{label}: no equilibrium"),
+            points: without,
+            markers: true,
+            dashed: false,
+            colour: Some(NO_EQUILIBRIUM_COLOUR.to_string()),
+        });
+    }
     out
 }
+
+/// The markers of the steps without equilibrium: grey, apart from the curves' palette.
+const NO_EQUILIBRIUM_COLOUR: &str = "#8c8c8c";
 
 /// What a capacity figure draws of a result, whatever its dimension: the curve's series and
 /// marks, and the unit of its settlement axis.
@@ -126,11 +149,21 @@ impl CapacityCurve {
         let series = capacity_series(r, label, colour);
         let mut marks = Vec::new();
         if let Some(s0) = r.zero_capacity_settlement {
+            // λ positive at no settlement and zero at once: the onset (the message says why).
+            let onset = s0 == 0.0
+                && r.curve
+                    .first()
+                    .and_then(|p| p.load_multiplier)
+                    .is_some_and(|l| l > 0.0);
             if s0.is_finite() {
                 marks.push(Mark::new(
                     s0 * k,
                     0.0,
-                    format!("λ = 0 at s = {} {u}", fmt_fixed(s0 * k, 3)),
+                    if onset {
+                        "λ = 0 from the onset of settlement".to_string()
+                    } else {
+                        format!("λ = 0 at s = {} {u}", fmt_fixed(s0 * k, 3))
+                    },
                 ));
             }
         }

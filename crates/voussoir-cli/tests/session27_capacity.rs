@@ -88,6 +88,8 @@ fn session27_a_first_settled_step_without_equilibrium_is_decided_by_its_certific
     // The figure spans the settlements analysed (to 20 cm), with the steps without equilibrium
     // marked on the axis (it drew a lone point on an axis from −1 to 1 cm) and the onset named.
     let svg = std::fs::read_to_string(d.join("cap.svg")).unwrap();
+    // (The README's arch below: its steps past the zero have a negative λ, drawn on the curve,
+    // and no such series.)
     assert!(svg.contains(">20<"), "no tick at 20 cm");
     assert!(!svg.contains(">−1<"), "an axis from −1 cm");
     assert!(
@@ -114,7 +116,15 @@ fn session27_a_zero_refined_to_the_tolerance_has_no_bracket() {
     let z = r["zero_capacity_settlement"].as_f64().expect("a zero");
     assert!(z > 1e-3, "{z}");
     assert!(r.get("zero_capacity_bracket").is_none(), "{r}");
-    let text = run(&d, &w("capacity arch.json --move right=0.02,0 --steps 40"));
+    let text = run(
+        &d,
+        &w("capacity arch.json --move right=0.02,0 --steps 40 --svg a.svg"),
+    );
+    let svg = std::fs::read_to_string(d.join("a.svg")).unwrap();
+    assert!(
+        !svg.contains("no equilibrium<"),
+        "the negative λ drawn twice"
+    );
     let line = text
         .lines()
         .find(|l| l.starts_with("zero-capacity"))

@@ -106,14 +106,19 @@ pub fn capacity_series<D: Spatial>(
             colour: Some(colour.to_string()),
         });
     }
-    // The steps without equilibrium under the dead loads (no λ): markers on the axis, each on
-    // its own (no line between them), so that the figure spans the settlements analysed and
-    // shows where the structure cannot stand (a grid façade that has no equilibrium after any
+    // The steps without equilibrium at any λ (no λ to draw; a negative λ, the reversed live
+    // load the dead loads would need, is on the curve): markers on the axis, each on its own
+    // (no line between them), so that the figure spans the settlements analysed and shows
+    // where the structure cannot stand (a grid façade that has no equilibrium after any
     // settlement drew a lone point at s = 0 on an axis from −1 to 1 cm).
     let without: Vec<[f64; 2]> = r
         .curve
         .iter()
-        .filter(|p| p.status == LimitStatus::NoEquilibrium && p.settlement.is_finite())
+        .filter(|p| {
+            p.status == LimitStatus::NoEquilibrium
+                && p.load_multiplier.is_none()
+                && p.settlement.is_finite()
+        })
         .flat_map(|p| [[p.settlement * k, 0.0], [f64::NAN, f64::NAN]])
         .collect();
     if !without.is_empty() {

@@ -255,14 +255,8 @@ fn summary<S: Assembly>(st: &S, r: &CapacityResult<S::D>) -> String {
                 len.show(hi)
             );
         }
-        // λ positive at no settlement and 0 at once: the onset (the message says why).
-        (Some(z), None)
-            if z == 0.0
-                && r.curve
-                    .first()
-                    .and_then(|p| p.load_multiplier)
-                    .is_some_and(|l| l > 0.0) =>
-        {
+        // The onset (the message says why).
+        (Some(_), None) if r.zero_at_onset() => {
             let _ = writeln!(s, "zero-capacity {}: at its onset", unit.noun());
         }
         (Some(z), None) => {

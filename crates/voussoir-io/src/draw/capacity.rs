@@ -154,17 +154,11 @@ impl CapacityCurve {
         let series = capacity_series(r, label, colour);
         let mut marks = Vec::new();
         if let Some(s0) = r.zero_capacity_settlement {
-            // λ positive at no settlement and zero at once: the onset (the message says why).
-            let onset = s0 == 0.0
-                && r.curve
-                    .first()
-                    .and_then(|p| p.load_multiplier)
-                    .is_some_and(|l| l > 0.0);
             if s0.is_finite() {
                 marks.push(Mark::new(
                     s0 * k,
                     0.0,
-                    if onset {
+                    if r.zero_at_onset() {
                         "λ = 0 from the onset of settlement".to_string()
                     } else {
                         format!("λ = 0 at s = {} {u}", fmt_fixed(s0 * k, 3))

@@ -287,12 +287,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let (mut solves, mut iterations) = (0usize, 0i64);
     for i in 0..=opts.steps {
         let s = smax * i as f64 / opts.steps as f64;
-        let mut dst = path.deformed(s)?;
-        if opts.release_fixed {
-            dst.release_fixed();
-        }
-        let mut map = KinematicMap::new(&dst);
-        map.facets = opts.facets;
+        let (dst, map) = step_structure(&path, s, opts)?;
         let cracks_open =
             (!path.existing_cracks.is_empty()).then(|| path.existing_cracks_open(&map));
         // At s = 0 no point has a gap: the warm LP is then the plain limit LP itself (same
@@ -487,12 +482,7 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
                     // points, is decided by its certificate first (`no_equilibrium_first`).
                     let without = certified_without[i].as_ref();
                     let lam = |s: f64, w: &mut WarmLimit| -> Result<f64> {
-                        let mut dst = path.deformed(s)?;
-                        if opts.release_fixed {
-                            dst.release_fixed();
-                        }
-                        let mut map = KinematicMap::new(&dst);
-                        map.facets = opts.facets;
+                        let (dst, map) = step_structure(&path, s, opts)?;
                         let clock = std::time::Instant::now();
                         // Clarabel alone: near the root the program is nearly feasible, its
                         // elastic program undecided by every method (HiGHS's interior point
@@ -829,6 +819,22 @@ fn decided_after_failure(
     }
 }
 
+/// The structure deformed by the settlement `s` as the curve analyses it (its `fixed` supports
+/// released where `opts` says so), and its kinematic map with the curve's crushing facets.
+fn step_structure<S: Assembly>(
+    path: &SettlementPath<S>,
+    s: f64,
+    opts: &CapacityOptions,
+) -> Result<(S, KinematicMap)> {
+    let mut dst = path.deformed(s)?;
+    if opts.release_fixed {
+        dst.release_fixed();
+    }
+    let mut map = KinematicMap::new(&dst);
+    map.facets = opts.facets;
+    Ok((dst, map))
+}
+
 /// The bracket of a zero where it, not the zero, is the answer: wider than a tenth of it.
 fn wide(zero: Option<f64>, bracket: Option<[f64; 2]>) -> Option<[f64; 2]> {
     match (zero, bracket) {
@@ -855,12 +861,7 @@ fn without_equilibrium_at_onset<S: Assembly>(
     if !path.existing_cracks.is_empty() {
         return Ok(false);
     }
-    let mut dst = path.deformed(0.0)?;
-    if opts.release_fixed {
-        dst.release_fixed();
-    }
-    let mut map = KinematicMap::new(&dst);
-    map.facets = opts.facets;
+    let (dst, mut map) = step_structure(path, 0.0, opts)?;
     if map.gap.len() != open.len() || map.gap.iter().any(|g| *g > 0.0) {
         return Ok(false);
     }

@@ -278,6 +278,18 @@ impl<D: Spatial> CapacityResult<D> {
     pub fn unit(&self) -> SettlementUnit {
         SettlementUnit::of(&self.direction)
     }
+
+    /// Whether λ reaches zero at the onset of settlement: positive at no settlement and zero at
+    /// once (`zero_capacity_settlement` 0; docs/capacity.md, "A zero at the onset of
+    /// settlement"). The summaries and the figure say so instead of "at 0 cm".
+    pub fn zero_at_onset(&self) -> bool {
+        self.zero_capacity_settlement == Some(0.0)
+            && self
+                .curve
+                .first()
+                .and_then(|p| p.load_multiplier)
+                .is_some_and(|l| l > 0.0)
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -100,6 +100,8 @@ mod session25_trust;
 mod session26_trust;
 #[path = "session27_capacity.rs"]
 mod session27_capacity;
+#[path = "session28_trust.rs"]
+mod session28_trust;
 #[path = "sweep.rs"]
 mod sweep;
 #[path = "sweep_capacity.rs"]

@@ -118,6 +118,8 @@ mod issue29_session26_capacity_roundoff;
 mod issue29_session26_capacity_steps;
 #[path = "issue29_session27_kept_pivots.rs"]
 mod issue29_session27_kept_pivots;
+#[path = "issue29_session28_friction_limit.rs"]
+mod issue29_session28_friction_limit;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

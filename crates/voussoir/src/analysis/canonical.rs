@@ -35,6 +35,15 @@ const INSIDE_TOLERANCE: f64 = lp::policy::CERTIFICATE_TOLERANCE;
 /// The largest friction coefficient the bisection tries: beyond it, no finite μ is reported.
 pub const MAX_FRICTION: f64 = 100.0;
 
+/// The friction coefficient above which the default search of the least μ stops
+/// ([`CanonicalOptions::friction_search_limit`]): twice the friction coefficient of rough stone
+/// joints (about 1; mortar and brick joints 0.6–0.8). A field that needs more is carried by
+/// Heyman's no-sliding rule, not by any masonry's friction: that it needs more is the answer,
+/// and the μ to 5 % above it cost the 3,200-block stack-bond wall two thirds of its `settle`
+/// (the bisection between 8 and 28.7, docs/performance.md "The least μ above masonry's
+/// friction (session 28)").
+pub const FRICTION_SEARCH_LIMIT: f64 = 2.0;
+
 /// Default relative precision of the least friction coefficient: 5 %. At 1e-4 the 3,200-block
 /// stack-bond wall's bisection took 18 programs and 89 s, most of it in programs at a μ just
 /// short of the least (up to 20 s each); at 5 % it takes 8 programs and 13 s.
@@ -134,6 +143,20 @@ pub struct CanonicalOptions {
     /// `None` (the default): on a program of the size [`lp::policy::elastic_trials`] names,
     /// after the first trial Clarabel proved infeasible slowly.
     pub elastic_trials: Option<bool>,
+    /// The bisection's least μ is searched to `friction_precision` up to this μ (default
+    /// [`FRICTION_SEARCH_LIMIT`]). Where the limit itself is shown inadmissible, the search
+    /// climbs to the first admissible μ (16× the limit, then [`MAX_FRICTION`]) and stops
+    /// there: the reported field is the least-energy one at that admissible field's own ratio,
+    /// and the result states the bracket (`least_friction_above`: the limit shown
+    /// inadmissible; `least_friction`: the admissible ratio). `None`: to the precision at any
+    /// μ, as before session 28 (the request layer's choice where a precision is asked for).
+    /// Not used by [`FrictionSearch::Ratio`]. Only on force programs of at least
+    /// `friction_limit_min_columns` columns.
+    pub friction_search_limit: Option<f64>,
+    /// Testing: the smallest force program (columns) on which `friction_search_limit` applies
+    /// (default [`lp::policy::FRICTION_LIMIT_MIN_COLUMNS`]: the solver policy's).
+    #[doc(hidden)]
+    pub friction_limit_min_columns: usize,
 }
 
 /// How the force stage searches the least friction coefficient (docs/canonical.md, "The
@@ -168,6 +191,8 @@ impl Default for CanonicalOptions {
             energy_qp_iterations: ENERGY_QP_ITERATIONS,
             friction_search: FrictionSearch::Bisection,
             elastic_trials: None,
+            friction_search_limit: Some(FRICTION_SEARCH_LIMIT),
+            friction_limit_min_columns: lp::policy::FRICTION_LIMIT_MIN_COLUMNS,
         }
     }
 }
@@ -1178,6 +1203,7 @@ pub fn canonical_forces<S: Assembly>(
     let mut solves;
     let (least, mu, relaxed, fp, qs);
     let precision_shown: Option<f64>;
+    let least_above: Option<f64>;
     let precision = copts.friction_precision;
     {
         // Without a physical optimal field under the model's own laws (open points unloaded),
@@ -1202,6 +1228,9 @@ pub fn canonical_forces<S: Assembly>(
         // `shown`: the largest μ shown inadmissible (the precision the result states is
         // measured from it; an undecided trial moves `lo` but not `shown`).
         let mut shown = 0.0f64;
+        // The search stopped above its limit (`friction_search_limit`): the largest μ shown
+        // inadmissible, which the least exceeds.
+        let mut beyond: Option<f64> = None;
         let (l, m) = if !needs_mu {
             (None, None)
         } else if map.tangents_per_point == 1 && copts.friction_search == FrictionSearch::Ratio {
@@ -1243,6 +1272,15 @@ pub fn canonical_forces<S: Assembly>(
             let (mut lo, mut hi) = (0.0, 0.5);
             let mut least = f64::INFINITY;
             let mut found = false;
+            // The policy's size class (`lp::policy::FRICTION_LIMIT_MIN_COLUMNS`; a test may
+            // lower it).
+            let columns =
+                programs::physical_force_program(map, &build, value, tol, open, None, rel)
+                    .lp
+                    .num_cols();
+            let limit = copts
+                .friction_search_limit
+                .filter(|_| columns >= copts.friction_limit_min_columns);
             while hi <= MAX_FRICTION {
                 match feasible(&mut stages, Some(hi), &mut basis, rel, &mut admissible)? {
                     Trial::Admissible(r) => {
@@ -1254,11 +1292,23 @@ pub fn canonical_forces<S: Assembly>(
                     Trial::Undecided => {}
                 }
                 lo = hi;
-                hi *= 4.0;
+                // Past the search's limit the climb only looks for an admissible field: 16×,
+                // past the trials just above the limit, which are the slow ones where the
+                // least μ lies near them (the 3,200-block wall's at 8: 80 iterations, 11 s).
+                hi *= if limit.is_some_and(|l| lo >= l) {
+                    16.0
+                } else {
+                    4.0
+                };
             }
             if found {
                 let mut at_hi = admissible.clone();
-                while least - lo > precision * least {
+                // Above the limit (shown inadmissible there, or undecided) the bracket is the
+                // answer: no bisection.
+                if limit.is_some_and(|l| lo >= l && least > l) {
+                    beyond = Some(shown);
+                }
+                while beyond.is_none() && least - lo > precision * least {
                     let mid = 0.5 * (lo + least);
                     match feasible(&mut stages, Some(mid), &mut basis, rel, &mut admissible)? {
                         Trial::Admissible(r) => {
@@ -1279,6 +1329,7 @@ pub fn canonical_forces<S: Assembly>(
                 (None, None)
             }
         };
+        least_above = beyond.filter(|_| l.is_some());
         precision_shown = l.map(|l| {
             if l > 0.0 {
                 (1.0 - shown / l).max(0.0)
@@ -1592,6 +1643,7 @@ pub fn canonical_forces<S: Assembly>(
         pt,
         CanonicalForces {
             least_friction: least,
+            least_friction_above: least_above,
             friction_precision: precision_shown,
             friction: mu,
             friction_demand: demand,

@@ -559,7 +559,12 @@ pub fn capacity<S: Assembly>(st: &S, opts: &CapacityOptions) -> Result<CapacityR
     let wide_bracket = wide(zero, bracket);
     let mut message = match (l0, zero, wide_bracket) {
         (Some(l0), Some(_), _) if at_onset => format!(
-            "λ falls from {} at no settlement to 0 at its onset: with the cracks the {} opens, however small, the dead loads have no equilibrium (certified)",
+            // Every optimal field of the settlement is complementary to its mechanism (no
+            // normal force at its open points): one without shear there would be an
+            // equilibrium of this very program. So the settlement analysis's forces need shear
+            // across open joints, which its no-sliding rule allows (`settle`'s canonical forces
+            // say "physical: false").
+            "λ falls from {} at no settlement to 0 at its onset: with the cracks the {} opens, however small, the dead loads have no equilibrium (certified); the settlement analysis carries them only by shear across its open joints (its no-sliding rule holds at open joints)",
             show_multiplier(l0),
             unit.noun()
         ),

@@ -416,6 +416,13 @@ fn canonical_options(
     let d = CanonicalOptions::default();
     CanonicalOptions {
         friction_precision: friction_precision.unwrap_or(d.friction_precision),
+        // A precision asked for is searched to at any μ; the default stops above masonry's
+        // friction (`FRICTION_SEARCH_LIMIT`, docs/canonical.md "The forces").
+        friction_search_limit: if friction_precision.is_some() {
+            None
+        } else {
+            d.friction_search_limit
+        },
         reaction_ranges: ranges.unwrap_or(dims == 2),
         ranges_max_blocks: if ranges == Some(true) {
             usize::MAX

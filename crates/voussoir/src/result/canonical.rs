@@ -62,6 +62,12 @@ pub struct CanonicalForces<D: Spatial = Two> {
     /// its own friction, or when no μ ≤ 100 admits one). Not certified where `selected_by` is
     /// `force_program`: no field at that μ certified with the mechanism (the summary says so).
     pub least_friction: Option<f64>,
+    /// Where the search stopped above its limit (the default, 2: above masonry's friction;
+    /// docs/canonical.md "The forces"): the largest μ shown inadmissible. The least μ then lies
+    /// above it and at most `least_friction`, the admissible field's own ratio; absent
+    /// otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub least_friction_above: Option<f64>,
     /// The relative precision to which `least_friction` is shown to be the least: `1 − lo /
     /// least_friction`, `lo` the largest μ a program showed inadmissible. At most the request's
     /// `least_friction_precision` (default 0.05) when every trial of the bisection was decided;
@@ -205,6 +211,19 @@ impl<D: Spatial> CanonicalForces<D> {
                 };
                 format!(
                     "canonical forces: {crit}, {open}; the least μ is not certified: the bisection's least admissible μ ({l:.4}) has no certified field"
+                )
+            }
+            (Some(l), m) if self.least_friction_above.is_some() => {
+                let above = self.least_friction_above.unwrap_or(0.0);
+                // Masonry joints: μ about 0.6–0.8, rough stone about 1.
+                let masonry = if above >= 1.0 {
+                    ": more than masonry's friction, so Heyman's no-sliding rule carries this settlement"
+                } else {
+                    ""
+                };
+                format!(
+                    "canonical forces: {crit}, open points unloaded, |shear| ≤ μ·normal with μ = {:.4}; the least μ lies between {above:.4} (shown inadmissible) and {l:.4}{masonry} (the default search stops there; --least-friction-precision searches on)",
+                    m.unwrap_or(l)
                 )
             }
             (Some(l), _) => format!(

@@ -1,0 +1,175 @@
+//! Issue 29 (session 28, lead): above masonry's friction the least-μ search stops
+//! (`CanonicalOptions::friction_search_limit`, docs/canonical.md "The forces"). Where μ = 2 is
+//! shown inadmissible, the search climbs to the first admissible μ and reports the bracket
+//! instead of bisecting it to 5 %: the 3,200-block stack-bond wall's `settle` spent two thirds
+//! of its time there.
+//!
+//! The reference is independent of the force stage: `support::least_friction_by_bisection`,
+//! a bisection to 1e-6 written out on the public programs. What each check catches: a lower
+//! end above the reference would be a false certificate of inadmissibility; an upper end below
+//! it a misread field; a reported field that breaks Coulomb's rule at the μ it states would be
+//! a wrong field; a changed mechanism or work would mean the limit touched more than the
+//! forces.
+
+mod support;
+use support::{least_friction_by_bisection, readme_wall};
+use voussoir::analysis::canonical::{
+    settle_canonical, CanonicalForces, CanonicalOptions, FRICTION_SEARCH_LIMIT,
+};
+use voussoir::analysis::settlement::SettlementForm;
+use voussoir::analysis::SettlementResult;
+use voussoir::generate::{wall, WallSpec};
+use voussoir::lp::SolverOptions;
+use voussoir::settlement_input::{apply_profile, Profile};
+use voussoir::{BuildOptions, Structure};
+
+/// `gen wall --courses 10 --units 20 --unit 1,0.5`, `settle --profile uniform:0,6,-0.01`: the
+/// 3,200-block wall's case at a sixteenth of its size, whose least μ is above 2.
+fn stack_wall() -> Structure {
+    let mut m = wall(&WallSpec {
+        courses: 10,
+        units: 20,
+        unit: [1.0, 0.5],
+        ..WallSpec::default()
+    })
+    .unwrap();
+    apply_profile(
+        &mut m,
+        &Profile::Uniform {
+            x0: 0.0,
+            x1: 6.0,
+            v: -0.01,
+        },
+    )
+    .unwrap();
+    Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+fn settle(st: &Structure, o: CanonicalOptions) -> SettlementResult {
+    let r = settle_canonical(st, &SolverOptions::default(), SettlementForm::Both, &o).unwrap();
+    assert!(r.certificate.as_ref().unwrap().ok, "certified");
+    r
+}
+
+fn forces(r: &SettlementResult) -> &CanonicalForces<voussoir::dim::Two> {
+    r.canonical.as_ref().unwrap().forces.as_ref().unwrap()
+}
+
+/// The largest `|p_t| − μ p_n` (kN) over the points of the result's field, and its largest
+/// force.
+fn friction_excess(r: &SettlementResult, mu: f64) -> (f64, f64) {
+    let mut excess = f64::NEG_INFINITY;
+    let mut big = 0.0f64;
+    for p in r.joints.iter().flat_map(|j| j.points.iter()) {
+        excess = excess.max(p.shear_force.abs() - mu * p.normal_force);
+        big = big.max(p.normal_force.abs()).max(p.shear_force.abs());
+    }
+    (excess, big)
+}
+
+#[test]
+fn issue29_session28_above_the_limit_the_bracket_holds_the_least_mu() {
+    let st = stack_wall();
+    let limited = settle(
+        &st,
+        CanonicalOptions {
+            reaction_ranges: false,
+            // The policy applies it to force programs of 20,000 columns and more; this wall's
+            // has about 2,400.
+            friction_limit_min_columns: 0,
+            ..CanonicalOptions::default()
+        },
+    );
+    let full = settle(
+        &st,
+        CanonicalOptions {
+            reaction_ranges: false,
+            friction_search_limit: None,
+            ..CanonicalOptions::default()
+        },
+    );
+    let reference = least_friction_by_bisection(&st, &full);
+    // Measured 2.2306 (to 1e-6): the case the limit is for.
+    assert!(reference > FRICTION_SEARCH_LIMIT, "reference {reference}");
+
+    // The limit touches the forces only: the same mechanism and work.
+    assert_eq!(limited.blocks, full.blocks);
+    assert_eq!(limited.work_dead_loads, full.work_dead_loads);
+
+    let f = forces(&limited);
+    assert_eq!(f.least_friction_above, Some(FRICTION_SEARCH_LIMIT));
+    let upper = f.least_friction.expect("an admissible μ");
+    assert!(
+        upper >= reference * (1.0 - 1e-6),
+        "upper end {upper} < {reference}"
+    );
+    let mu = f.friction.expect("the μ imposed");
+    assert!(mu >= upper, "imposed {mu} below the upper end {upper}");
+    // The field holds Coulomb's rule at the μ it states, to 1e-7 of its largest force.
+    let (excess, big) = friction_excess(&limited, mu);
+    assert!(excess <= 1e-7 * big, "excess {excess} kN of {big}");
+    assert!(f.physical);
+
+    // Without the limit: the least μ to 5 % above the reference, no bracket.
+    let g = forces(&full);
+    assert_eq!(g.least_friction_above, None);
+    let least = g.least_friction.unwrap();
+    assert!(
+        least >= reference * (1.0 - 1e-6) && least <= reference * 1.05,
+        "least {least}, reference {reference}"
+    );
+    let text = f.summary_line();
+    assert!(
+        text.contains("the least μ lies between 2.0000 (shown inadmissible) and")
+            && text.contains("Heyman's no-sliding rule carries this settlement"),
+        "{text}"
+    );
+}
+
+#[test]
+fn issue29_session28_below_the_size_class_and_below_the_limit_nothing_changes() {
+    // The default on a small model: the policy keeps the whole search (the result identical to
+    // the one without a limit, to the bit).
+    let st = stack_wall();
+    let base = CanonicalOptions {
+        reaction_ranges: false,
+        ..CanonicalOptions::default()
+    };
+    let default = settle(&st, base);
+    let none = settle(
+        &st,
+        CanonicalOptions {
+            friction_search_limit: None,
+            ..base
+        },
+    );
+    assert_eq!(
+        serde_json::to_string(&default).unwrap(),
+        serde_json::to_string(&none).unwrap()
+    );
+    // A least μ below 2 (the README wall: 1.2028 by the reference, 1.2189 to 5 % in the
+    // README's verification table), with the limit applied at any size: the same result.
+    let st = readme_wall();
+    let limited = settle(
+        &st,
+        CanonicalOptions {
+            friction_limit_min_columns: 0,
+            ..base
+        },
+    );
+    let none = settle(
+        &st,
+        CanonicalOptions {
+            friction_search_limit: None,
+            ..base
+        },
+    );
+    assert_eq!(
+        serde_json::to_string(&limited).unwrap(),
+        serde_json::to_string(&none).unwrap()
+    );
+    let f = forces(&limited);
+    assert_eq!(f.least_friction_above, None);
+    let least = f.least_friction.unwrap();
+    assert!((least - 1.2189).abs() < 1e-4, "least {least}");
+}

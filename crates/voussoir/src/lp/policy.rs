@@ -167,7 +167,7 @@ pub const ELASTIC_SWITCH_ITERATIONS: i64 = 50;
 /// friction where no precision is asked for (`CanonicalOptions::friction_search_limit`,
 /// docs/canonical.md "The forces"): about 1,800 blocks in 2D, where the bisection above μ = 2
 /// cost the stack-bond walls and the façades most of their `settle` (the 1,800-block wall:
-/// 20.3 CPU s against 6.8 with the limit; the 3,200-block one 50.8 against 16.5). Below it
+/// 21.7 CPU s against 5.7 with the limit; the 3,200-block one 55.0 against 16.5). Below it
 /// the search costs seconds and goes on to its precision: there the field at the first
 /// admissible μ above 2 made the reaction ranges slower, not faster (a 300-block stack-bond
 /// wall: 48.6 CPU s against 23.4 without the limit; docs/performance.md "The least μ above

@@ -29,7 +29,9 @@ pub struct CanonicalArgs {
     /// needs on the joints without friction of their own (a bisection; default 0.05: the field
     /// is selected at a μ within 5 % of the least). Finer precision costs programs at μ just
     /// short of the least, the costly ones: 1e-4 took 89 s instead of 13 s on a 3,200-block
-    /// wall (docs/canonical.md).
+    /// wall (docs/canonical.md). Without it, on large models (force programs of 20,000 columns
+    /// and more, about 1,800 blocks in 2D) the search stops where μ = 2, above masonry's
+    /// friction, is shown inadmissible, and states the bracket; given, it searches on.
     #[arg(long, value_name = "REL")]
     pub least_friction_precision: Option<f64>,
 }
@@ -67,7 +69,8 @@ pub struct LimitCanonicalArgs {
     /// needs on the joints without friction of their own (a bisection; default 0.05: the field
     /// is selected at a μ within 5 % of the least). Finer precision costs programs at μ just
     /// short of the least, the costly ones: 1e-4 took 89 s instead of 13 s on a 3,200-block
-    /// wall (docs/canonical.md).
+    /// wall (docs/canonical.md). Without it, on large models the search stops where μ = 2 is
+    /// shown inadmissible, and states the bracket (as `settle`).
     #[arg(long, value_name = "REL")]
     pub least_friction_precision: Option<f64>,
 }

@@ -23,7 +23,7 @@ fn session28_the_least_mu_above_masonrys_friction_is_a_bracket() {
     assert!(
         text.contains("the least μ lies between 2.0000 (shown inadmissible) and")
             && text.contains(
-                "more than masonry's friction, so Heyman's no-sliding rule carries this settlement"
+                "more than masonry's friction, so Heyman's no-sliding rule carries this field"
             ),
         "{text}"
     );

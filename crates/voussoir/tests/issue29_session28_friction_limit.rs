@@ -121,7 +121,7 @@ fn issue29_session28_above_the_limit_the_bracket_holds_the_least_mu() {
     let text = f.summary_line();
     assert!(
         text.contains("the least μ lies between 2.0000 (shown inadmissible) and")
-            && text.contains("Heyman's no-sliding rule carries this settlement"),
+            && text.contains("Heyman's no-sliding rule carries this field"),
         "{text}"
     );
 }

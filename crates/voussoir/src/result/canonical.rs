@@ -217,7 +217,7 @@ impl<D: Spatial> CanonicalForces<D> {
                 let above = self.least_friction_above.unwrap_or(0.0);
                 // Masonry joints: μ about 0.6–0.8, rough stone about 1.
                 let masonry = if above >= 1.0 {
-                    ": more than masonry's friction, so Heyman's no-sliding rule carries this settlement"
+                    ": more than masonry's friction, so Heyman's no-sliding rule carries this field"
                 } else {
                     ""
                 };

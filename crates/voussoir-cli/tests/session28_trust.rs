@@ -93,3 +93,33 @@ fn session28_capacity_at_the_onset_says_why_settle_stands() {
     assert_eq!(f["physical"], false, "{f}");
     assert!(f["largest_open_force"].as_f64().unwrap() > 1.0, "{f}");
 }
+
+/// Found by the realistic benchmark's re-run (h-bench, session 28): where the dead loads have no
+/// field in Coulomb's cone (the 0.5 m grid façade with μ = 0.6: its gable cannot stand), the
+/// non-associative `limit` printed the certified "no equilibrium" and then called it "the fixed
+/// point of a heuristic iteration (0 LPs), not a certified bound". No iteration ran; the
+/// statics decide it whatever the flow rule.
+#[test]
+fn session28_no_equilibrium_is_not_called_a_heuristic_fixed_point() {
+    let d = tmpdir("s28", "nonassoc-cannot-stand");
+    gen_model(&d, "facade --element 0.5 --live horizontal -o grid.json");
+    run(
+        &d,
+        &w("limit grid.json --friction 0.6 --non-associative -o l.json"),
+    );
+    let r = json_file(&d.join("l.json"));
+    let m = r["message"].as_str().unwrap();
+    assert!(
+        m.contains("no equilibrium under the dead loads") && m.contains("a Farkas certificate"),
+        "{m}"
+    );
+    assert!(!m.contains("heuristic"), "{m}");
+    assert!(
+        m.contains("non-associative friction: no iteration ran"),
+        "{m}"
+    );
+    assert!(r["friction_iteration"]["history"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+}

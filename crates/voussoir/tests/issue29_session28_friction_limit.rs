@@ -12,37 +12,19 @@
 //! forces.
 
 mod support;
-use support::{least_friction_by_bisection, readme_wall};
+use support::{least_friction_by_bisection, readme_wall, wall_settled};
 use voussoir::analysis::canonical::{
     settle_canonical, CanonicalForces, CanonicalOptions, FRICTION_SEARCH_LIMIT,
 };
 use voussoir::analysis::settlement::SettlementForm;
 use voussoir::analysis::SettlementResult;
-use voussoir::generate::{wall, WallSpec};
 use voussoir::lp::SolverOptions;
-use voussoir::settlement_input::{apply_profile, Profile};
-use voussoir::{BuildOptions, Structure};
+use voussoir::Structure;
 
 /// `gen wall --courses 10 --units 20 --unit 1,0.5`, `settle --profile uniform:0,6,-0.01`: the
 /// 3,200-block wall's case at a sixteenth of its size, whose least μ is above 2.
 fn stack_wall() -> Structure {
-    let mut m = wall(&WallSpec {
-        courses: 10,
-        units: 20,
-        unit: [1.0, 0.5],
-        ..WallSpec::default()
-    })
-    .unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 0.0,
-            x1: 6.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
-    Structure::new(&m, BuildOptions::default()).unwrap()
+    wall_settled(10, 20, [1.0, 0.5], 0.0, 6.0, -0.01)
 }
 
 fn settle(st: &Structure, o: CanonicalOptions) -> SettlementResult {

@@ -312,6 +312,13 @@ pub(crate) fn check_sliding<S: Assembly>(st: &S, n: Names) -> Result<()> {
 /// above (Radenkovic's first theorem).
 pub(crate) fn nonassociative_note(it: &crate::result::FrictionIteration, what: &str) -> String {
     let n = it.history.len();
+    // No iteration ran: the dead loads have no statically admissible field at all (Coulomb's
+    // cone bounds the forces whatever the flow rule), and that answer is certified on its own.
+    // Calling it "the fixed point of a heuristic iteration (0 LPs)" contradicted it (the μ = 0.6
+    // grid façade's `limit`, session 28).
+    if n == 0 {
+        return "; non-associative friction: no iteration ran (without a field in Coulomb's cone under the dead loads, the flow rule plays no part)".to_string();
+    }
     let lps = format!("{n} LP{}", if n == 1 { "" } else { "s" });
     let mut s = if it.converged {
         format!("; non-associative friction: the fixed point of a heuristic iteration ({lps}), not a certified bound")

@@ -60,26 +60,30 @@ pub fn stack_wall_20x10() -> Structure {
     Structure::new(&stack, BuildOptions::default()).unwrap()
 }
 
-/// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
-/// `settle --profile uniform:2.8,4.0,-0.01`.
-pub fn readme_wall() -> Structure {
+/// `gen wall --courses C --units U --unit L,H`, settled by `--profile uniform:X0,X1,V`.
+pub fn wall_settled(
+    courses: usize,
+    units: usize,
+    unit: [f64; 2],
+    x0: f64,
+    x1: f64,
+    v: f64,
+) -> Structure {
     let mut m = wall(&WallSpec {
-        courses: 8,
-        units: 10,
-        unit: [0.4, 0.2],
+        courses,
+        units,
+        unit,
         ..WallSpec::default()
     })
     .unwrap();
-    apply_profile(
-        &mut m,
-        &Profile::Uniform {
-            x0: 2.8,
-            x1: 4.0,
-            v: -0.01,
-        },
-    )
-    .unwrap();
+    apply_profile(&mut m, &Profile::Uniform { x0, x1, v }).unwrap();
     Structure::new(&m, BuildOptions::default()).unwrap()
+}
+
+/// The README's wall: `gen wall --courses 8 --units 10 --unit 0.4,0.2`,
+/// `settle --profile uniform:2.8,4.0,-0.01`.
+pub fn readme_wall() -> Structure {
+    wall_settled(8, 10, [0.4, 0.2], 2.8, 4.0, -0.01)
 }
 
 /// The least friction coefficient μ for which an optimal force field of the settlement `r`

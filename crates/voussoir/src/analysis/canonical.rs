@@ -1042,19 +1042,24 @@ pub fn canonical_forces<S: Assembly>(
     let mut admissible: Option<(Option<f64>, bool, Vec<f64>)> = None;
     // Feasibility at μ (None: the model's own laws), with a warm basis shared by all μ.
     let mut basis: Option<Basis> = None;
+    // The size of the force program (its columns; the same under every μ and relaxation, which
+    // change bounds and rows only): the solver policy's size classes of the elastic trials and
+    // of the least-μ search's limit. Built once, where one of them asks.
+    let columns = std::cell::OnceCell::new();
+    let columns = || {
+        *columns.get_or_init(|| {
+            programs::physical_force_program(map, &build, value, tol, open, None, false)
+                .lp
+                .num_cols()
+        })
+    };
     // The elastic trials (2D): `Off` for good, `Armed` (a large program, lp::policy::
     // elastic_trials: on after the first slow proof of infeasibility) or `On`; and how many
     // trials they decided.
     let elastic_on = std::cell::Cell::new(match copts.elastic_trials {
         Some(true) => ElasticTrials::On,
         Some(false) => ElasticTrials::Off,
-        None if map.tangents_per_point == 1
-            && lp::policy::elastic_trials(
-                programs::physical_force_program(map, &build, value, tol, open, None, false)
-                    .lp
-                    .num_cols(),
-            ) =>
-        {
+        None if map.tangents_per_point == 1 && lp::policy::elastic_trials(columns()) => {
             ElasticTrials::Armed
         }
         None => ElasticTrials::Off,
@@ -1274,13 +1279,9 @@ pub fn canonical_forces<S: Assembly>(
             let mut found = false;
             // The policy's size class (`lp::policy::FRICTION_LIMIT_MIN_COLUMNS`; a test may
             // lower it).
-            let columns =
-                programs::physical_force_program(map, &build, value, tol, open, None, rel)
-                    .lp
-                    .num_cols();
             let limit = copts
                 .friction_search_limit
-                .filter(|_| columns >= copts.friction_limit_min_columns);
+                .filter(|_| columns() >= copts.friction_limit_min_columns);
             // With a limit the climb starts at it (after μ = 0): a trial at 0.5 brackets
             // nothing the limit's trial does not, where the least μ is above the limit (the
             // case the limit is for), and costs a program (1.2 s on the 3,200-block wall).

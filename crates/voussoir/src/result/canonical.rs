@@ -213,8 +213,7 @@ impl<D: Spatial> CanonicalForces<D> {
                     "canonical forces: {crit}, {open}; the least μ is not certified: the bisection's least admissible μ ({l:.4}) has no certified field"
                 )
             }
-            (Some(l), m) if self.least_friction_above.is_some() => {
-                let above = self.least_friction_above.unwrap_or(0.0);
+            (Some(l), m) if let Some(above) = self.least_friction_above => {
                 // Masonry joints: μ about 0.6–0.8, rough stone about 1.
                 let masonry = if above >= 1.0 {
                     ": more than masonry's friction, so Heyman's no-sliding rule carries this field"

@@ -157,6 +157,14 @@ pub struct CanonicalOptions {
     /// (default [`lp::policy::FRICTION_LIMIT_MIN_COLUMNS`]: the solver policy's).
     #[doc(hidden)]
     pub friction_limit_min_columns: usize,
+    /// Testing: the smallest force program (columns) whose elastic trials are armed where
+    /// `elastic_trials` is `None` (default [`lp::policy::ELASTIC_TRIAL_MIN_COLUMNS`]).
+    #[doc(hidden)]
+    pub elastic_trial_min_columns: usize,
+    /// Testing: the iterations at which an armed trial turns into an elastic trial (default
+    /// [`lp::policy::ELASTIC_SWITCH_ITERATIONS`]).
+    #[doc(hidden)]
+    pub elastic_switch_iterations: usize,
 }
 
 /// How the force stage searches the least friction coefficient (docs/canonical.md, "The
@@ -193,6 +201,8 @@ impl Default for CanonicalOptions {
             elastic_trials: None,
             friction_search_limit: Some(FRICTION_SEARCH_LIMIT),
             friction_limit_min_columns: lp::policy::FRICTION_LIMIT_MIN_COLUMNS,
+            elastic_trial_min_columns: lp::policy::ELASTIC_TRIAL_MIN_COLUMNS,
+            elastic_switch_iterations: lp::policy::ELASTIC_SWITCH_ITERATIONS as usize,
         }
     }
 }
@@ -333,13 +343,23 @@ impl Stages {
     /// bisection's trials: one that Clarabel does not decide is left undecided); `decision`:
     /// the status is the answer ([`SolverOptions::decision`]).
     fn solve_single(&mut self, lp: &LinearProgram, decision: bool) -> Result<lp::LpSolution> {
+        self.solve_single_capped(lp, decision, None)
+    }
+
+    /// [`Stages::solve_single`] with at most `cap` iterations (`None`: the method's own limit).
+    fn solve_single_capped(
+        &mut self,
+        lp: &LinearProgram,
+        decision: bool,
+        cap: Option<usize>,
+    ) -> Result<lp::LpSolution> {
         self.solves += 1;
         let t0 = std::time::Instant::now();
         // Without a chain behind it, the trial runs to Clarabel's own limit (an iteration
-        // limit is the requested method's, SolverOptions::iteration_limit).
+        // limit is the requested method's, SolverOptions::iteration_limit), or to `cap`.
         let o = SolverOptions {
             decision,
-            iteration_limit: None,
+            iteration_limit: cap,
             ..self.opts
         };
         let r = lp::solve_without_fallback(lp, &o);
@@ -1059,7 +1079,7 @@ pub fn canonical_forces<S: Assembly>(
     let elastic_on = std::cell::Cell::new(match copts.elastic_trials {
         Some(true) => ElasticTrials::On,
         Some(false) => ElasticTrials::Off,
-        None if map.tangents_per_point == 1 && lp::policy::elastic_trials(columns()) => {
+        None if map.tangents_per_point == 1 && columns() >= copts.elastic_trial_min_columns => {
             ElasticTrials::Armed
         }
         None => ElasticTrials::Off,
@@ -1087,96 +1107,118 @@ pub fn canonical_forces<S: Assembly>(
         // (its field's own ratio at most θ) is admissible, an optimum bounded above 0 by
         // certified duals is inadmissible. Otherwise the feasibility trial decides, as on small
         // programs, and the elastic trials stop for this search.
-        if single && elastic_on.get() == ElasticTrials::On && map.tangents_per_point == 1 {
-            if let Some(normal) = admissible.as_ref().map(|(m0, r0, x)| {
-                programs::physical_force_program(map, &build, value, tol, open, *m0, *r0)
-                    .forces(x)
-                    .0
-            }) {
-                let theta = mu.unwrap_or(0.0);
-                let (lp, scol) = ratio_program(&fp, map, open, theta, Some(&normal));
-                // Clarabel's default settings first (`decision`), then its tighter ones for
-                // large programs where the duals do not certify: each fails on some trials
-                // the other decides (the 3,200-block wall at θ = 8: dual violation 3.7e-6
-                // with the defaults, 2.2e-8 tight; the 0.5 m façade in running bond at
-                // θ = 0.5, 3.49 and 3.68: 3.5e-5 to 9.3e-4 tight, certified with the
-                // defaults, which decide all its trials).
-                let settings: &[bool] = if lp.num_cols() >= lp::clarabel::PRESOLVE_MIN_COLUMNS {
-                    &[true, false]
-                } else {
-                    &[true]
-                };
-                for &decision in settings {
-                    match stages.solve_single(&lp, decision) {
-                        Ok(s) if s.status == LpStatus::Optimal && s.x.len() == lp.num_cols() => {
-                            let x = &s.x[..fp.lp.num_cols()];
-                            let r = field_ratio(map, &fp, x, relaxed, open);
-                            let cert = lp::sequence::certify_with_bound(&lp, &s);
-                            if std::env::var_os("VOUSSOIR_TRACE").is_some() {
-                                eprintln!(
+        // At most two passes: an Armed trial that reaches its cap switches the elastic trials
+        // on and is asked again as one (below).
+        loop {
+            if single && elastic_on.get() == ElasticTrials::On && map.tangents_per_point == 1 {
+                if let Some(normal) = admissible.as_ref().map(|(m0, r0, x)| {
+                    programs::physical_force_program(map, &build, value, tol, open, *m0, *r0)
+                        .forces(x)
+                        .0
+                }) {
+                    let theta = mu.unwrap_or(0.0);
+                    let (lp, scol) = ratio_program(&fp, map, open, theta, Some(&normal));
+                    // Clarabel's default settings first (`decision`), then its tighter ones for
+                    // large programs where the duals do not certify: each fails on some trials
+                    // the other decides (the 3,200-block wall at θ = 8: dual violation 3.7e-6
+                    // with the defaults, 2.2e-8 tight; the 0.5 m façade in running bond at
+                    // θ = 0.5, 3.49 and 3.68: 3.5e-5 to 9.3e-4 tight, certified with the
+                    // defaults, which decide all its trials).
+                    let settings: &[bool] = if lp.num_cols() >= lp::clarabel::PRESOLVE_MIN_COLUMNS {
+                        &[true, false]
+                    } else {
+                        &[true]
+                    };
+                    for &decision in settings {
+                        match stages.solve_single(&lp, decision) {
+                            Ok(s)
+                                if s.status == LpStatus::Optimal && s.x.len() == lp.num_cols() =>
+                            {
+                                let x = &s.x[..fp.lp.num_cols()];
+                                let r = field_ratio(map, &fp, x, relaxed, open);
+                                let cert = lp::sequence::certify_with_bound(&lp, &s);
+                                if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+                                    eprintln!(
                                     "trace: elastic trial θ {theta:.6}: s {:.3e}, certificate {:?}, field ratio {r:.6}",
                                     s.x[scol], cert
                                 );
+                                }
+                                // Duals dual feasible to the solver layer's certificate tolerance,
+                                // and a bound well above what that tolerance leaves uncertain:
+                                // `s` is the excess of a ratio over θ, so 1e-3·θ. (At 1e-6·θ, a
+                                // tight trial at θ = 4.2378 on the 0.5 m façade in running bond,
+                                // s = 6.1e-6 and bound 4.4e-6 where s = 0 is the optimum, counted
+                                // a μ inadmissible that a field of ratio 3.8653 admits.)
+                                let bound = cert
+                                    .filter(|(c, _)| c.dual <= lp::policy::CERTIFICATE_TOLERANCE)
+                                    .map(|(_, b)| b);
+                                if bound.is_some_and(|b| b > ELASTIC_MARGIN * theta) {
+                                    elastic_count.set(elastic_count.get() + 1);
+                                    return Ok(Trial::Inadmissible);
+                                }
+                                if r <= theta * (1.0 + 1e-9) {
+                                    elastic_count.set(elastic_count.get() + 1);
+                                    *admissible = Some((mu, relaxed, x.to_vec()));
+                                    return Ok(Trial::Admissible(r));
+                                }
                             }
-                            // Duals dual feasible to the solver layer's certificate tolerance,
-                            // and a bound well above what that tolerance leaves uncertain:
-                            // `s` is the excess of a ratio over θ, so 1e-3·θ. (At 1e-6·θ, a
-                            // tight trial at θ = 4.2378 on the 0.5 m façade in running bond,
-                            // s = 6.1e-6 and bound 4.4e-6 where s = 0 is the optimum, counted
-                            // a μ inadmissible that a field of ratio 3.8653 admits.)
-                            let bound = cert
-                                .filter(|(c, _)| c.dual <= lp::policy::CERTIFICATE_TOLERANCE)
-                                .map(|(_, b)| b);
-                            if bound.is_some_and(|b| b > ELASTIC_MARGIN * theta) {
+                            // The elastic program relaxes the trial's rows: without a point,
+                            // neither has one (Clarabel's certificate, as for a feasibility trial).
+                            Ok(s) if s.status == LpStatus::Infeasible => {
                                 elastic_count.set(elastic_count.get() + 1);
                                 return Ok(Trial::Inadmissible);
                             }
-                            if r <= theta * (1.0 + 1e-9) {
-                                elastic_count.set(elastic_count.get() + 1);
-                                *admissible = Some((mu, relaxed, x.to_vec()));
-                                return Ok(Trial::Admissible(r));
-                            }
+                            _ => {}
                         }
-                        // The elastic program relaxes the trial's rows: without a point,
-                        // neither has one (Clarabel's certificate, as for a feasibility trial).
-                        Ok(s) if s.status == LpStatus::Infeasible => {
-                            elastic_count.set(elastic_count.get() + 1);
-                            return Ok(Trial::Inadmissible);
-                        }
-                        _ => {}
                     }
+                    elastic_on.set(ElasticTrials::Off);
                 }
-                elastic_on.set(ElasticTrials::Off);
             }
-        }
-        let solved = if single {
-            stages.solve_single(&fp.lp, true)
-        } else {
-            stages.solve(&fp.lp, basis)
-        };
-        match solved {
-            Ok(s) if s.status == LpStatus::Infeasible => {
-                if single
-                    && elastic_on.get() == ElasticTrials::Armed
-                    && s.iterations > lp::policy::ELASTIC_SWITCH_ITERATIONS
-                {
-                    elastic_on.set(ElasticTrials::On);
+            // Armed (a large 2D program, no slow proof yet): the trial runs to at most
+            // lp::policy::ELASTIC_SWITCH_ITERATIONS iterations; one that reaches them is the slow
+            // proof that switches the elastic trials on, and is asked again as one, at the same μ,
+            // instead of being run to its end (the 0.5 m façade in running bond: its trial at
+            // μ = 2 took 101 iterations, 9.4 s, where its elastic program decides in 33, 1.8 s;
+            // docs/performance.md, "The force stage's trials in the size class (session 29)").
+            let cap = (single
+                && elastic_on.get() == ElasticTrials::Armed
+                && map.tangents_per_point == 1
+                && admissible.is_some())
+            .then_some(copts.elastic_switch_iterations);
+            let solved = if single {
+                stages.solve_single_capped(&fp.lp, true, cap)
+            } else {
+                stages.solve(&fp.lp, basis)
+            };
+            if cap.is_some() && matches!(&solved, Err(e) if e.to_string().contains("MaxIterations"))
+            {
+                elastic_on.set(ElasticTrials::On);
+                continue;
+            }
+            return match solved {
+                Ok(s) if s.status == LpStatus::Infeasible => {
+                    if single
+                        && elastic_on.get() == ElasticTrials::Armed
+                        && s.iterations > copts.elastic_switch_iterations as i64
+                    {
+                        elastic_on.set(ElasticTrials::On);
+                    }
+                    Ok(Trial::Inadmissible)
                 }
-                Ok(Trial::Inadmissible)
-            }
-            Ok(s) if s.status == LpStatus::Optimal => {
-                // In 2D the field's own largest |p_t|/p_n (with the tolerance of
-                // `friction_demand` below) is an admissible μ too, often well below the one
-                // imposed; in 3D the rows are the pyramid's facets, not |p_t|, so μ stands.
-                let mut ratio = mu.unwrap_or(f64::INFINITY);
-                if let (1, Some(_)) = (map.tangents_per_point, mu) {
-                    ratio = ratio.min(field_ratio(map, &fp, &s.x, relaxed, open));
+                Ok(s) if s.status == LpStatus::Optimal => {
+                    // In 2D the field's own largest |p_t|/p_n (with the tolerance of
+                    // `friction_demand` below) is an admissible μ too, often well below the one
+                    // imposed; in 3D the rows are the pyramid's facets, not |p_t|, so μ stands.
+                    let mut ratio = mu.unwrap_or(f64::INFINITY);
+                    if let (1, Some(_)) = (map.tangents_per_point, mu) {
+                        ratio = ratio.min(field_ratio(map, &fp, &s.x, relaxed, open));
+                    }
+                    *admissible = Some((mu, relaxed, s.x));
+                    Ok(Trial::Admissible(ratio))
                 }
-                *admissible = Some((mu, relaxed, s.x));
-                Ok(Trial::Admissible(ratio))
-            }
-            _ if single => Ok(Trial::Undecided),
-            _ => Ok(Trial::Inadmissible),
+                _ if single => Ok(Trial::Undecided),
+                _ => Ok(Trial::Inadmissible),
+            };
         }
     };
     // The energy QP's iterations: at most `energy_qp_iterations` (and the solver options' own
@@ -1265,75 +1307,96 @@ pub fn canonical_forces<S: Assembly>(
                 }
                 _ => (None, None),
             }
-        } else if feasible(&mut stages, Some(0.0), &mut basis, rel, &mut admissible)?
-            .ratio()
-            .is_some()
-        {
-            (Some(0.0), Some(0.0))
         } else {
-            // `hi` the least μ imposed on a feasible program, `least` the least admissible μ
-            // shown (a feasible field's own largest ratio, ≤ hi), `lo` the largest μ not
-            // shown admissible.
-            let (mut lo, mut hi) = (0.0, 0.5);
-            let mut least = f64::INFINITY;
-            let mut found = false;
             // The policy's size class (`lp::policy::FRICTION_LIMIT_MIN_COLUMNS`; a test may
             // lower it).
             let limit = copts
                 .friction_search_limit
                 .filter(|_| columns() >= copts.friction_limit_min_columns);
-            // With a limit the climb starts at it (after μ = 0): a trial at 0.5 brackets
-            // nothing the limit's trial does not, where the least μ is above the limit (the
-            // case the limit is for), and costs a program (1.2 s on the 3,200-block wall).
-            if let Some(l) = limit {
-                hi = l.min(MAX_FRICTION);
-            }
-            while hi <= MAX_FRICTION {
-                match feasible(&mut stages, Some(hi), &mut basis, rel, &mut admissible)? {
-                    Trial::Admissible(r) => {
-                        least = r;
-                        found = true;
-                        break;
-                    }
-                    Trial::Inadmissible => shown = hi,
-                    Trial::Undecided => {}
-                }
-                lo = hi;
-                // Past the search's limit the climb only looks for an admissible field: 16×,
-                // past the trials just above the limit, which are the slow ones where the
-                // least μ lies near them (the 3,200-block wall's at 8: 80 iterations, 11 s).
-                hi *= if limit.is_some_and(|l| lo >= l) {
-                    16.0
-                } else {
-                    4.0
-                };
-            }
-            if found {
-                let mut at_hi = admissible.clone();
-                // Above the limit (shown inadmissible there, or undecided) the bracket is the
-                // answer: no bisection.
-                if limit.is_some_and(|l| lo >= l && least > l) {
-                    beyond = Some(shown);
-                }
-                while beyond.is_none() && least - lo > precision * least {
-                    let mid = 0.5 * (lo + least);
-                    match feasible(&mut stages, Some(mid), &mut basis, rel, &mut admissible)? {
-                        Trial::Admissible(r) => {
-                            hi = mid;
-                            least = least.min(r);
-                            at_hi = admissible.clone();
-                        }
-                        Trial::Inadmissible => {
-                            shown = mid;
-                            lo = mid;
-                        }
-                        Trial::Undecided => lo = mid,
-                    }
-                }
-                admissible = at_hi;
-                (Some(least), Some(hi))
+            // μ = 0 is tried first, except with a limit: there the limit's trial comes first,
+            // and μ = 0 only where it is admissible (the admissible sets are nested in μ, so a
+            // limit shown inadmissible shows 0 inadmissible too; the same trials and answers
+            // otherwise, in another order). A trial at μ = 0 cost 11.2 s of wall clock on the
+            // 0.25 m façade in running bond, whose least μ lies above the limit
+            // (docs/performance.md, "The force stage's trials in the size class (session 29)").
+            let zero = |stages: &mut Stages,
+                        basis: &mut Option<Basis>,
+                        admissible: &mut Option<(Option<f64>, bool, Vec<f64>)>|
+             -> Result<bool> {
+                Ok(feasible(stages, Some(0.0), basis, rel, admissible)?
+                    .ratio()
+                    .is_some())
+            };
+            if limit.is_none() && zero(&mut stages, &mut basis, &mut admissible)? {
+                (Some(0.0), Some(0.0))
             } else {
-                (None, None)
+                // `hi` the least μ imposed on a feasible program, `least` the least admissible μ
+                // shown (a feasible field's own largest ratio, ≤ hi), `lo` the largest μ not
+                // shown admissible.
+                let (mut lo, mut hi) = (0.0, 0.5);
+                let mut least = f64::INFINITY;
+                let mut found = false;
+                // With a limit the climb starts at it (μ = 0 after it): a trial at 0.5 brackets
+                // nothing the limit's trial does not, where the least μ is above the limit (the
+                // case the limit is for), and costs a program (1.2 s on the 3,200-block wall).
+                if let Some(l) = limit {
+                    hi = l.min(MAX_FRICTION);
+                }
+                while hi <= MAX_FRICTION {
+                    match feasible(&mut stages, Some(hi), &mut basis, rel, &mut admissible)? {
+                        Trial::Admissible(r) => {
+                            least = r;
+                            found = true;
+                            break;
+                        }
+                        Trial::Inadmissible => shown = hi,
+                        Trial::Undecided => {}
+                    }
+                    lo = hi;
+                    // Past the search's limit the climb only looks for an admissible field: 16×,
+                    // past the trials just above the limit, which are the slow ones where the
+                    // least μ lies near them (the 3,200-block wall's at 8: 80 iterations, 11 s).
+                    hi *= if limit.is_some_and(|l| lo >= l) {
+                        16.0
+                    } else {
+                        4.0
+                    };
+                }
+                // With a limit, μ = 0 where no trial of the climb has shown its μ inadmissible.
+                let at_climb = admissible.clone();
+                if limit.is_some()
+                    && shown == 0.0
+                    && zero(&mut stages, &mut basis, &mut admissible)?
+                {
+                    (Some(0.0), Some(0.0))
+                } else if found {
+                    admissible = at_climb;
+                    let mut at_hi = admissible.clone();
+                    // Above the limit (shown inadmissible there, or undecided) the bracket is the
+                    // answer: no bisection.
+                    if limit.is_some_and(|l| lo >= l && least > l) {
+                        beyond = Some(shown);
+                    }
+                    while beyond.is_none() && least - lo > precision * least {
+                        let mid = 0.5 * (lo + least);
+                        match feasible(&mut stages, Some(mid), &mut basis, rel, &mut admissible)? {
+                            Trial::Admissible(r) => {
+                                hi = mid;
+                                least = least.min(r);
+                                at_hi = admissible.clone();
+                            }
+                            Trial::Inadmissible => {
+                                shown = mid;
+                                lo = mid;
+                            }
+                            Trial::Undecided => lo = mid,
+                        }
+                    }
+                    admissible = at_hi;
+                    (Some(least), Some(hi))
+                } else {
+                    (None, None)
+                }
             }
         };
         least_above = beyond.filter(|_| l.is_some());

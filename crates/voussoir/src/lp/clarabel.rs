@@ -99,14 +99,36 @@ pub fn presolve_pays(lp: &LinearProgram) -> bool {
 /// on the program as it is.
 fn solve_presolved(lp: &LinearProgram, o: &SolverOptions) -> Result<LpSolution> {
     // A presolve that fails is no reason not to solve: the program goes to Clarabel as it is.
+    let tracing = std::env::var_os("VOUSSOIR_TRACE").is_some();
+    let t0 = std::time::Instant::now();
     if let Ok(Some(pre)) = super::highs::presolve(lp, o) {
         let reduced = solve_clarabel(&pre.lp, &[], o, true)?;
-        if reduced.status == LpStatus::Optimal {
-            if let Some(s) = pre.postsolve(lp, &reduced) {
-                if super::policy::check(lp, &s).is_none() {
-                    return Ok(s);
-                }
+        let (rows, cols) = (pre.lp.num_rows(), pre.lp.num_cols());
+        let why = if reduced.status == LpStatus::Optimal {
+            match pre.postsolve(lp, &reduced) {
+                Some(s) => match super::policy::check(lp, &s) {
+                    None => {
+                        if tracing {
+                            eprintln!(
+                                "trace: clarabel on the presolved program ({rows} × {cols}): {} iterations, {:.3} s",
+                                reduced.iterations,
+                                t0.elapsed().as_secs_f64()
+                            );
+                        }
+                        return Ok(s);
+                    }
+                    Some(why) => why,
+                },
+                None => "no postsolve".to_string(),
             }
+        } else {
+            format!("status {:?}", reduced.status)
+        };
+        if tracing {
+            eprintln!(
+                "trace: clarabel on the presolved program ({rows} × {cols}) not used after {:.3} s: {why}",
+                t0.elapsed().as_secs_f64()
+            );
         }
     }
     solve_clarabel(lp, &[], o, true)

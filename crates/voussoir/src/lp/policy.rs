@@ -160,7 +160,11 @@ pub const ELASTIC_TRIAL_MIN_COLUMNS: usize = 20_000;
 /// 2D program turns to elastic trials. From the first trial on, they cost the 3,200-block
 /// stack-bond wall more than they saved (its infeasible trials took 9, 23 and 80 iterations,
 /// 0.9–7.3 s; the elastic trials at the same θ 45, 41 and 129): the switch waits for a trial
-/// that shows the slow case.
+/// that shows the slow case. Since session 29 an armed trial is run to at most this many
+/// iterations: one that reaches them is that slow case, asked again at once as an elastic
+/// trial instead of being run to its end (the 0.5 m façade in running bond's trial at μ = 2:
+/// 101 iterations, 9.4 s; capped, 5.3 s and its elastic trial 2.0 s; docs/performance.md "The
+/// force stage's trials in the size class (session 29)").
 pub const ELASTIC_SWITCH_ITERATIONS: i64 = 50;
 
 /// The smallest force program (columns; 2D or 3D) whose least-μ search stops above masonry's

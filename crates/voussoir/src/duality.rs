@@ -10,7 +10,7 @@
 //! is first turned into the minimisation of `−cᵀx`; its dual objective is then the negated one.
 
 use crate::error::{Error, Result};
-use crate::lp::{Direction, LinearProgram};
+use crate::lp::{Basis, BasisStatus, Direction, LinearProgram};
 
 const INF: f64 = f64::INFINITY;
 
@@ -71,6 +71,47 @@ pub fn dual(p: &LinearProgram) -> Result<DualProgram> {
     })
 }
 
+/// The basis of [`dual`]`(p)` complementary to a basis `b` of `p`: a dual column (a primal
+/// row) is basic where the primal row is not, and a dual row (a primal column) is nonbasic, at
+/// its bound, where the primal column is basic. An optimal basis of `p` gives an optimal basis
+/// of its dual (primal feasibility of one is dual feasibility of the other), so a simplex
+/// started from it ends at once: the limit's kinematic program after its static one
+/// (`analysis::canonical::limit_mechanism`), which was solved a second time from scratch (73 s
+/// of the 0.25 m façade in running bond's `tilt`; docs/performance.md, "The kinematic program
+/// from the static program's basis (session 29)"). `None` where `b` does not fit `p`.
+pub fn dual_basis(p: &LinearProgram, b: &Basis) -> Option<Basis> {
+    if b.cols.len() != p.num_cols() || b.rows.len() != p.num_rows() {
+        return None;
+    }
+    // Dual rows = primal columns: `(−∞, c]` for `x ≥ 0`, `[c, ∞)` for `x ≤ 0`, `[c, c]` free.
+    let rows = (0..p.num_cols())
+        .map(|j| {
+            if b.cols[j] != BasisStatus::Basic {
+                BasisStatus::Basic
+            } else if p.col_lower[j] == 0.0 && p.col_upper[j] == INF {
+                BasisStatus::Upper
+            } else {
+                BasisStatus::Lower
+            }
+        })
+        .collect();
+    // Dual columns = primal rows: `y` free for an equation, `≤ 0` for a `≤` row, `≥ 0` for `≥`.
+    let cols = (0..p.num_rows())
+        .map(|i| {
+            if b.rows[i] != BasisStatus::Basic {
+                BasisStatus::Basic
+            } else if p.row_lower[i] == p.row_upper[i] {
+                BasisStatus::Zero
+            } else if p.row_lower[i] == -INF {
+                BasisStatus::Upper
+            } else {
+                BasisStatus::Lower
+            }
+        })
+        .collect();
+    Some(Basis { cols, rows })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -98,5 +139,41 @@ mod tests {
             "{}",
             q.objective
         );
+    }
+
+    #[test]
+    fn the_complementary_basis_of_an_optimal_basis_is_optimal_for_the_dual() {
+        // The program above, solved by the dual simplex for its optimal basis; its dual from
+        // the complementary basis by the primal simplex: no pivot, the same optimum (2.75, by
+        // hand above).
+        let mut lp = LinearProgram::new(Direction::Maximise);
+        let r0 = lp.add_row(-INF, 4.0);
+        let r1 = lp.add_row(-INF, 6.0);
+        let r2 = lp.add_row(0.5, 0.5);
+        lp.add_column(1.0, 0.0, INF, [(r0, 1.0), (r1, 3.0), (r2, 1.0)]);
+        lp.add_column(1.0, -INF, INF, [(r0, 2.0), (r1, 1.0), (r2, -1.0)]);
+        let o = SolverOptions {
+            method: crate::lp::Method::DualSimplex,
+            ..SolverOptions::default()
+        };
+        let mut basis = None;
+        let p = crate::lp::solve_warm(&lp, &o, &mut basis).unwrap();
+        assert_eq!(p.status, LpStatus::Optimal);
+        let dp = dual(&lp).unwrap();
+        let mut start = Some(dual_basis(&lp, basis.as_ref().unwrap()).unwrap());
+        let po = SolverOptions {
+            method: crate::lp::Method::PrimalSimplex,
+            ..SolverOptions::default()
+        };
+        let q = crate::lp::solve_warm(&dp.lp, &po, &mut start).unwrap();
+        assert_eq!(q.status, LpStatus::Optimal);
+        assert_eq!(q.iterations, 0, "pivots from the complementary basis");
+        assert!((dp.objective_sign * q.objective - 2.75).abs() < 1e-9);
+        // A basis of another program is refused.
+        let other = Basis {
+            cols: vec![BasisStatus::Basic],
+            rows: vec![],
+        };
+        assert!(dual_basis(&lp, &other).is_none());
     }
 }

@@ -908,6 +908,7 @@ fn without_equilibrium(map: &KinematicMap, solver: &SolverOptions) -> LimitSolut
         least: None,
         note: String::new(),
         reduced_accuracy: false,
+        basis: None,
     }
 }
 

@@ -32,6 +32,10 @@ pub struct LimitSolution {
     pub note: String,
     /// The solver stopped at reduced accuracy ([`LpSolution::reduced_accuracy`]).
     pub reduced_accuracy: bool,
+    /// The optimal basis of the static program where the method left one (a simplex, or
+    /// HiGHS's interior point with crossover): the canonical mechanism's kinematic program
+    /// starts from its complementary basis ([`crate::duality::dual_basis`]).
+    pub basis: Option<lp::Basis>,
 }
 
 /// Solve the static LP of `st` and read the mechanism from its duals.
@@ -72,7 +76,8 @@ fn solve_static<S: Assembly>(
         return Ok((s, fp, None, None));
     }
     let s = limit_solution(map, &fp, &live, &sol, opts.info());
-    let c = cleaned_up(map, &fp, &dead, &live, s, &sol, opts);
+    let mut c = cleaned_up(map, &fp, &dead, &live, s, &sol, opts);
+    c.basis = basis.clone();
     let raw = (c.lambda == sol.x.get(fp.lambda.unwrap_or(usize::MAX)).copied()).then_some(sol);
     Ok((c, fp, basis, raw))
 }
@@ -436,6 +441,7 @@ pub fn limit_solution(
         least: None,
         note: String::new(),
         reduced_accuracy: sol.reduced_accuracy,
+        basis: None,
     };
     match status {
         LpStatus::Unbounded => return none(LimitStatus::Locked),
@@ -479,6 +485,7 @@ pub fn limit_solution(
         least: None,
         note: String::new(),
         reduced_accuracy: sol.reduced_accuracy,
+        basis: None,
     }
 }
 
@@ -531,6 +538,7 @@ pub fn multiplier_certificate<S: Assembly>(
         least: None,
         note: String::new(),
         reduced_accuracy: false,
+        basis: None,
     };
     limit_certificate(map, &as_collapse, wd, wl, unit)
 }

@@ -120,6 +120,8 @@ mod issue29_session26_capacity_steps;
 mod issue29_session27_kept_pivots;
 #[path = "issue29_session28_friction_limit.rs"]
 mod issue29_session28_friction_limit;
+#[path = "issue29_session29_zero_first.rs"]
+mod issue29_session29_zero_first;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

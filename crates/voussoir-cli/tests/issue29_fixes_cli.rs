@@ -47,7 +47,9 @@ fn answered_lines(text: &str) -> Vec<(String, usize, String, String)> {
 /// method is another says why (a warm start, a fallback or the kind's design); the JSON's
 /// `answered` is the same list; the bisection's programs number 1 + ⌈log2(1/1e-6)⌉ = 21 (the
 /// structure as given, then 20 halvings of [0, 1] to the default tolerance 1e-6; it falls
-/// at some fraction, so f = 0 is not asked): as many answers by the dual simplex.
+/// at some fraction, so f = 0 is decided by none of them — since session 29 a 2D structure
+/// has Clarabel look at f = 0 once after f = 1, an `elastic decisions` line, undecided on
+/// the arch): as many answers by the dual simplex.
 fn check(d: &Path, model: &str, method: &str) -> (String, serde_json::Value) {
     let text = run(d, &["safety", model, "--method", method]);
     let v: serde_json::Value =
@@ -154,10 +156,18 @@ fn issue29_item3_safety_states_which_method_answered_each_kind_of_program() {
         "{text_ipm}"
     );
 
-    // The paper's arch (2D) by the dual simplex: no Clarabel at all.
+    // The paper's arch (2D) by the dual simplex: Clarabel only for its one look at f = 0 on
+    // the merged program after f = 1 stood (session 29, by design; it does not stand there,
+    // and the bisection goes on by the dual simplex).
     let (text, v) = check(&d, "arch.json", "dual-simplex");
     eprintln!("{text}");
-    assert!(!text.contains("clarabel"), "{text}");
+    let lines = answered_lines(&text);
+    assert!(
+        lines
+            .iter()
+            .all(|l| l.2 != "clarabel" || (l.0 == "elastic decisions" && l.1 == 1)),
+        "{text}"
+    );
     assert_eq!(v["solver"]["method"], "dual-simplex");
     // By Clarabel: its interior-point answers, the dual simplex only with its reason.
     let (text, _) = check(&d, "arch.json", "clarabel");

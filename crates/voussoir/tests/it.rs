@@ -122,6 +122,8 @@ mod issue29_session27_kept_pivots;
 mod issue29_session28_friction_limit;
 #[path = "issue29_session29_force_trials.rs"]
 mod issue29_session29_force_trials;
+#[path = "issue29_session29_zero_first.rs"]
+mod issue29_session29_zero_first;
 #[path = "issue29_symmetric_ranges3d.rs"]
 mod issue29_symmetric_ranges3d;
 #[path = "issue29_undecided_ipm.rs"]

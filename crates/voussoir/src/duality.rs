@@ -117,15 +117,20 @@ mod tests {
     use super::*;
     use crate::lp::{solve, LpStatus, SolverOptions};
 
-    #[test]
-    fn dual_of_a_small_lp_has_the_same_optimum() {
-        // max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x − y = 0.5, x ≥ 0, y free.
+    /// max x + y  s.t. x + 2y ≤ 4, 3x + y ≤ 6, x − y = 0.5, x ≥ 0, y free.
+    fn small_lp() -> LinearProgram {
         let mut lp = LinearProgram::new(Direction::Maximise);
         let r0 = lp.add_row(-INF, 4.0);
         let r1 = lp.add_row(-INF, 6.0);
         let r2 = lp.add_row(0.5, 0.5);
         lp.add_column(1.0, 0.0, INF, [(r0, 1.0), (r1, 3.0), (r2, 1.0)]);
         lp.add_column(1.0, -INF, INF, [(r0, 2.0), (r1, 1.0), (r2, -1.0)]);
+        lp
+    }
+
+    #[test]
+    fn dual_of_a_small_lp_has_the_same_optimum() {
+        let lp = small_lp();
         let o = SolverOptions::default();
         let p = solve(&lp, &o).unwrap();
         let dp = dual(&lp).unwrap();
@@ -146,12 +151,7 @@ mod tests {
         // The program above, solved by the dual simplex for its optimal basis; its dual from
         // the complementary basis by the primal simplex: no pivot, the same optimum (2.75, by
         // hand above).
-        let mut lp = LinearProgram::new(Direction::Maximise);
-        let r0 = lp.add_row(-INF, 4.0);
-        let r1 = lp.add_row(-INF, 6.0);
-        let r2 = lp.add_row(0.5, 0.5);
-        lp.add_column(1.0, 0.0, INF, [(r0, 1.0), (r1, 3.0), (r2, 1.0)]);
-        lp.add_column(1.0, -INF, INF, [(r0, 2.0), (r1, 1.0), (r2, -1.0)]);
+        let lp = small_lp();
         let o = SolverOptions {
             method: crate::lp::Method::DualSimplex,
             ..SolverOptions::default()

@@ -12,29 +12,18 @@
 //! forces.
 
 mod support;
-use support::{least_friction_by_bisection, readme_wall, wall_settled};
-use voussoir::analysis::canonical::{
-    settle_canonical, CanonicalForces, CanonicalOptions, FRICTION_SEARCH_LIMIT,
+use support::{
+    canonical_forces_of as forces, least_friction_by_bisection, readme_wall,
+    settle_certified as settle, wall_settled,
 };
-use voussoir::analysis::settlement::SettlementForm;
+use voussoir::analysis::canonical::{CanonicalOptions, FRICTION_SEARCH_LIMIT};
 use voussoir::analysis::SettlementResult;
-use voussoir::lp::SolverOptions;
 use voussoir::Structure;
 
 /// `gen wall --courses 10 --units 20 --unit 1,0.5`, `settle --profile uniform:0,6,-0.01`: the
 /// 3,200-block wall's case at a sixteenth of its size, whose least μ is above 2.
 fn stack_wall() -> Structure {
     wall_settled(10, 20, [1.0, 0.5], 0.0, 6.0, -0.01)
-}
-
-fn settle(st: &Structure, o: CanonicalOptions) -> SettlementResult {
-    let r = settle_canonical(st, &SolverOptions::default(), SettlementForm::Both, &o).unwrap();
-    assert!(r.certificate.as_ref().unwrap().ok, "certified");
-    r
-}
-
-fn forces(r: &SettlementResult) -> &CanonicalForces<voussoir::dim::Two> {
-    r.canonical.as_ref().unwrap().forces.as_ref().unwrap()
 }
 
 /// The largest `|p_t| − μ p_n` (kN) over the points of the result's field, and its largest

@@ -13,23 +13,11 @@
 //!   same μ imposed, the same energy program).
 
 mod support;
-use support::{least_friction_by_bisection, wall_settled};
-use voussoir::analysis::canonical::{
-    settle_canonical, CanonicalForces, CanonicalOptions, FRICTION_SEARCH_LIMIT,
+use support::{
+    canonical_forces_of as forces, least_friction_by_bisection, settle_certified as settle,
+    wall_settled,
 };
-use voussoir::analysis::settlement::SettlementForm;
-use voussoir::analysis::SettlementResult;
-use voussoir::lp::SolverOptions;
-
-fn settle(st: &voussoir::Structure, o: CanonicalOptions) -> SettlementResult {
-    let r = settle_canonical(st, &SolverOptions::default(), SettlementForm::Both, &o).unwrap();
-    assert!(r.certificate.as_ref().unwrap().ok, "certified");
-    r
-}
-
-fn forces(r: &SettlementResult) -> &CanonicalForces<voussoir::dim::Two> {
-    r.canonical.as_ref().unwrap().forces.as_ref().unwrap()
-}
+use voussoir::analysis::canonical::{CanonicalOptions, FRICTION_SEARCH_LIMIT};
 
 fn base() -> CanonicalOptions {
     CanonicalOptions {

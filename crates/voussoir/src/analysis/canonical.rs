@@ -1362,15 +1362,14 @@ pub fn canonical_forces<S: Assembly>(
                         4.0
                     };
                 }
-                // With a limit, μ = 0 where no trial of the climb has shown its μ inadmissible.
-                let at_climb = admissible.clone();
+                // With a limit, μ = 0 where no trial of the climb has shown its μ inadmissible
+                // (a trial that does not admit its μ leaves `admissible` as it was).
                 if limit.is_some()
                     && shown == 0.0
                     && zero(&mut stages, &mut basis, &mut admissible)?
                 {
                     (Some(0.0), Some(0.0))
                 } else if found {
-                    admissible = at_climb;
                     let mut at_hi = admissible.clone();
                     // Above the limit (shown inadmissible there, or undecided) the bracket is the
                     // answer: no bisection.

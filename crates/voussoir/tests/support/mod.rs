@@ -364,3 +364,26 @@ pub fn same_curve(
         }
     }
 }
+
+/// The canonical settlement of `st` under `o` by the default method, asserted certified.
+pub fn settle_certified(
+    st: &Structure,
+    o: voussoir::analysis::canonical::CanonicalOptions,
+) -> SettlementResult {
+    let r = voussoir::analysis::canonical::settle_canonical(
+        st,
+        &SolverOptions::default(),
+        voussoir::analysis::settlement::SettlementForm::Both,
+        &o,
+    )
+    .unwrap();
+    assert!(r.certificate.as_ref().unwrap().ok, "certified");
+    r
+}
+
+/// The canonical force record of a canonical settlement.
+pub fn canonical_forces_of(
+    r: &SettlementResult,
+) -> &voussoir::analysis::canonical::CanonicalForces<voussoir::dim::Two> {
+    r.canonical.as_ref().unwrap().forces.as_ref().unwrap()
+}

@@ -179,7 +179,14 @@ pub fn solve_limit_checked<S: Assembly>(
         );
     }
     let t0 = std::time::Instant::now();
-    let lambda = fp.lambda.filter(|_| <S::D as crate::dim::Dim>::N == 3);
+    let friction = map.shear_limits.is_none() && map.laws.iter().any(|l| l.friction.is_some());
+    let lambda = fp.lambda.filter(|_| {
+        lp::policy::least_multiplier_by_clarabel(
+            <S::D as crate::dim::Dim>::N as u8,
+            friction,
+            fp.lp.num_cols(),
+        )
+    });
     // A structure symmetric about a vertical line under a horizontal live load (the tilting
     // table): the least multiplier is the mirror image of the largest's optimum, certified on
     // its own program, without solving it (safety::least_by_mirror; the 0.5 m grid façade's
@@ -223,14 +230,10 @@ pub fn solve_limit_checked<S: Assembly>(
 /// where the crossover from scratch took over 60 (docs/performance.md, "Clarabel with
 /// crossover (session 19)").
 ///
-/// A large 3D program (at least [`LEAST_CLARABEL_MIN_COLUMNS`] columns; `lambda` is `None` in
-/// 2D) after HiGHS's interior point goes to Clarabel alone first, as after Clarabel with crossover: on the 48 × 48 dome the
-/// primal simplex from the crossover basis took over 10,000 iterations and about as much CPU as
-/// the interior point (docs/performance.md, "Dome 48 × 48 (session 20)"). Where Clarabel's
-/// value is within [`LEAST_CLARABEL_MARGIN`] of zero, or not certified, the warm primal simplex
-/// answers, exact to its tolerance. Not in 2D: on the 0.5 m grid façade (20,993 columns)
-/// Clarabel did not certify and its fallback chain solved the program again by the interior
-/// point from scratch, 10.1 → 32.6 CPU s for `limit` (session 20).
+/// A large program of the class [`lp::policy::least_multiplier_by_clarabel`] names (`lambda`
+/// is `None` otherwise) after HiGHS's interior point goes to Clarabel alone first, as after
+/// Clarabel with crossover. Where Clarabel's value is within [`LEAST_CLARABEL_MARGIN`] of
+/// zero, or not certified, the warm primal simplex answers, exact to its tolerance.
 fn least_program(
     lp: &lp::LinearProgram,
     opts: &SolverOptions,

@@ -184,6 +184,23 @@ pub fn elastic_trials(columns: usize) -> bool {
     columns >= ELASTIC_TRIAL_MIN_COLUMNS
 }
 
+/// Whether the least load multiplier's program of a limit analysis (`analysis::limit`: the
+/// limit program minimised, to check that the structure stands under its dead loads alone),
+/// after HiGHS's interior point with crossover answered the largest, asks Clarabel alone
+/// first, before the primal simplex from the crossover's basis: a `dim`-dimensional program of
+/// `columns` columns, with associative Coulomb friction or not. Only its optimal value is
+/// read, which needs no vertex; Clarabel's answer is used where the solver layer certifies it
+/// and it is clear of zero, else the warm primal simplex answers.
+///
+/// | class | measured | chosen |
+/// |---|---|---|
+/// | 3D, ≥ 20,000 columns | 48 × 48 dome: the warm primal simplex over 10,000 iterations, about as long as the interior point; Clarabel about 5 CPU s (docs/performance.md, "Dome 48 × 48 (session 20)") | Clarabel first |
+/// | 2D with friction, ≥ 20,000 columns | 0.5 m running-bond façade, μ = 0.6, tilted (30,641 columns): the warm primal simplex 90,774 iterations, 325 s of wall clock (docs/performance.md, "Frictional façades: the least multiplier and the mirror (session 30)") | Clarabel first |
+/// | 2D without friction | 0.5 m grid façade (20,993 columns): Clarabel did not certify and its fallback chain solved the program again from scratch, `limit` 10.1 → 32.6 CPU s (session 20); the warm primal simplex 80 iterations on the running bond | the warm primal simplex |
+pub fn least_multiplier_by_clarabel(dim: u8, friction: bool, columns: usize) -> bool {
+    columns >= super::clarabel::PRESOLVE_MIN_COLUMNS && (dim == 3 || friction)
+}
+
 /// Degrees of freedom above which the canonical selection's extremes from scratch (the least
 /// and largest value of a generic functional on a face, solved by the dual simplex with
 /// presolve) go to HiGHS's interior point with crossover, not to the primal simplex, where the

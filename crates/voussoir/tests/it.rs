@@ -124,6 +124,8 @@ mod issue29_session28_friction_limit;
 mod issue29_session29_force_trials;
 #[path = "issue29_session29_zero_first.rs"]
 mod issue29_session29_zero_first;
+#[path = "issue29_session30_friction_decisions.rs"]
+mod issue29_session30_friction_decisions;
 #[path = "issue29_session30_friction_mirror.rs"]
 mod issue29_session30_friction_mirror;
 #[path = "issue29_symmetric_ranges3d.rs"]

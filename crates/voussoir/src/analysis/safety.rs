@@ -38,6 +38,9 @@ pub struct SafetyOptions {
     /// Compute the ranges of the support reactions (2·N LPs per support, N = 2 in 2D, 3 in 3D).
     pub reactions: bool,
     pub solver: SolverOptions,
+    /// The solver of the bisection's decisions where it is not `solver` (the solver policy's
+    /// [`lp::policy::decision_method`]); `None`: `solver`, which also solves the ranges.
+    pub decisions: Option<SolverOptions>,
 }
 
 impl Default for SafetyOptions {
@@ -46,6 +49,7 @@ impl Default for SafetyOptions {
             tolerance: 1e-6,
             reactions: true,
             solver: SolverOptions::default(),
+            decisions: None,
         }
     }
 }
@@ -2450,7 +2454,8 @@ fn ranges_from<S: Assembly>(
 /// ranges of its support reactions.
 pub fn safety<S: Assembly>(st: &S, opts: &SafetyOptions) -> Result<SafetyResult> {
     let kind = lp::ProgramKind::set("bisection", "");
-    let (fraction, mut solves, start) = bisect_fraction(st, opts.tolerance, &opts.solver)?;
+    let decisions = opts.decisions.as_ref().unwrap_or(&opts.solver);
+    let (fraction, mut solves, start) = bisect_fraction(st, opts.tolerance, decisions)?;
     drop(kind);
     let stands = fraction.is_some();
     let factor = fraction.and_then(|f| (f > 0.0).then_some(1.0 / f));

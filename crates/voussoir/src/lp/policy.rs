@@ -184,6 +184,31 @@ pub fn elastic_trials(columns: usize) -> bool {
     columns >= ELASTIC_TRIAL_MIN_COLUMNS
 }
 
+/// The method of the bisection's decisions (`safety`: does the structure stand with its joints
+/// shrunk to a fraction `f`) where it differs from the class's own ([`default_method`], which
+/// also solves the reaction ranges after them): `None` but for a 2D program with Coulomb
+/// friction above [`SIMPLEX_MAX_BLOCKS_2D`] blocks, whose decisions go to Clarabel. A decision
+/// needs no vertex: "stands" is checked on the program itself and "does not stand" decided
+/// again by the elastic program with a certificate (`analysis::safety::Decisions`), whatever
+/// the method. Measured (docs/performance.md, "Frictional façades: the least multiplier and
+/// the mirror (session 30)"):
+///
+/// | model (μ = 0.6) | HiGHS's interior point with crossover | Clarabel |
+/// |---|---:|---:|
+/// | 0.5 m running-bond façade (2,672 blocks), f = 1, stands | 87.7 s wall (IPX 26 iterations, 63 s; crossover 11,598 iterations) | 1.3 s (10 iterations) |
+/// | 0.25 m grid façade (10,062 blocks), f = 1, does not stand | 214 s wall ("infeasible" after 25 iterations), then Clarabel's elastic program 28.7 s | 4.1 s ("infeasible", 17 iterations), then the same elastic program 32.3 s |
+///
+/// The ranges keep the class's method: without the decisions' basis their first program is
+/// solved from scratch by it.
+pub fn decision_method(class: &ProblemClass) -> Option<Method> {
+    (class.purpose == Purpose::Feasibility
+        && class.dim == 2
+        && class.friction
+        && !class.cones
+        && class.blocks > SIMPLEX_MAX_BLOCKS_2D)
+        .then_some(Method::Clarabel)
+}
+
 /// Whether the least load multiplier's program of a limit analysis (`analysis::limit`: the
 /// limit program minimised, to check that the structure stands under its dead loads alone),
 /// after HiGHS's interior point with crossover answered the largest, asks Clarabel alone

@@ -1062,11 +1062,22 @@ fn solve_any<S: Assembly>(
         Analysis::Settle(r) => r.solve(st, req, dims),
         Analysis::Capacity(r) => r.solve(st, req, dims),
         Analysis::Safety(r) => {
-            let solver = req.solver.options(&class(st, req));
+            let c = class(st, req);
+            let solver = req.solver.options(&c);
+            // The bisection's decisions by a method of their own where the policy gives one
+            // and the user named none (large frictional 2D programs: Clarabel).
+            let decisions = req
+                .solver
+                .method
+                .is_none()
+                .then(|| policy::decision_method(&c))
+                .flatten()
+                .map(|method| SolverOptions { method, ..solver });
             // Its many programs (bisection, reaction ranges): the result states the method
             // that answered them and every fallback taken.
-            let (out, solves) =
-                crate::lp::collecting(|| crate::analysis::safety::safety(st, &r.options(solver)));
+            let (out, solves) = crate::lp::collecting(|| {
+                crate::analysis::safety::safety(st, &r.options(solver, decisions))
+            });
             let mut out = out?;
             out.solver = crate::lp::SolverInfo::of_solves(&solver, &solves);
             out.answered = crate::lp::SolverInfo::by_programs(&solver, &solves);

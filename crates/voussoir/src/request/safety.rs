@@ -54,12 +54,18 @@ impl SafetyRequest {
         )
     }
 
-    /// The analysis's options.
-    pub fn options(&self, solver: SolverOptions) -> SafetyOptions {
+    /// The analysis's options: `solver` for every program, the bisection's decisions by
+    /// `decisions` where given.
+    pub fn options(
+        &self,
+        solver: SolverOptions,
+        decisions: Option<SolverOptions>,
+    ) -> SafetyOptions {
         SafetyOptions {
             tolerance: self.bisection_tolerance,
             reactions: !self.no_ranges,
             solver,
+            decisions,
         }
     }
 }

@@ -16,7 +16,7 @@
 //! Times: docs/performance.md, "0.5 m façade safety and tilt (session 19)".
 
 mod support;
-use support::{facade_grid, same_ranges};
+use support::{facade_grid, range_ends, same_ranges};
 use voussoir::analysis::safety::{
     merged_columns, reaction_ranges_by, safety, shrunk_map, RangeSolve, SafetyOptions,
 };
@@ -45,13 +45,7 @@ fn mirrored_against_scratch(element: f64) {
     assert_eq!(cold.mirrored, 0);
     // At least a third of the bounded ends by the mirror (the supports pair up; the first
     // support of each pair and the rays need programs).
-    let bounded = warm
-        .ranges
-        .iter()
-        .flat_map(|r| r.components.iter())
-        .flat_map(|c| [c.min, c.max])
-        .filter(|v| v.is_some())
-        .count();
+    let bounded = range_ends(&warm, true);
     assert!(
         3 * warm.mirrored >= bounded,
         "{} of {bounded}",

@@ -11,28 +11,11 @@
 //! Times: docs/performance.md, "Façade tilt, safety and capacity (session 25)".
 
 mod support;
-use support::facade_grid;
+use support::{dual_simplex_and_ipm, facade_grid, least_multiplier_from_scratch};
 use voussoir::analysis::limit::limit;
 use voussoir::analysis::tilt::tilt;
-use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
-use voussoir::lp::{self, LpStatus, Method, SolverOptions};
-use voussoir::programs::limit_force_program;
 use voussoir::{Assembly, BuildOptions, Structure};
-
-/// The least multiplier of `st` (its own live loads) by the dual simplex from scratch.
-fn least_from_scratch(st: &Structure) -> f64 {
-    let map = KinematicMap::new(st);
-    let mut fp = limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
-    fp.lp.maximise = false;
-    let o = SolverOptions {
-        method: Method::DualSimplex,
-        ..SolverOptions::default()
-    };
-    let s = lp::solve(&fp.lp, &o).unwrap();
-    assert_eq!(s.status, LpStatus::Optimal);
-    s.x[fp.lambda.unwrap()]
-}
 
 fn paper_arch(live: LiveLoad) -> Structure {
     let m = arch(&ArchSpec {
@@ -43,23 +26,13 @@ fn paper_arch(live: LiveLoad) -> Structure {
     Structure::new(&m, BuildOptions::default()).unwrap()
 }
 
-fn methods() -> [SolverOptions; 2] {
-    [
-        SolverOptions::default(),
-        SolverOptions {
-            method: Method::Ipm,
-            ..SolverOptions::default()
-        },
-    ]
-}
-
 #[test]
 fn issue29_session25_least_multiplier_of_a_symmetric_tilt_is_the_mirror_image() {
     // The paper's arch under horizontal loads equal to its voussoirs' weights (the tilting
     // table), by the 2D default (dual simplex) and by HiGHS's interior point (the CLI's).
     let st = paper_arch(LiveLoad::Horizontal);
-    let reference = least_from_scratch(&st);
-    for o in methods() {
+    let reference = least_multiplier_from_scratch(&st);
+    for o in dual_simplex_and_ipm() {
         let r = limit(&st, &o).unwrap();
         let (hi, lo) = (r.load_multiplier.unwrap(), r.least_load_multiplier.unwrap());
         println!(
@@ -77,8 +50,8 @@ fn issue29_session25_least_multiplier_of_a_symmetric_tilt_is_the_mirror_image() 
     let st = facade_grid(2.0);
     for direction in [1.0, -1.0] {
         let tilted = st.with_weight_as_live_load([direction, 0.0]).unwrap();
-        let reference = least_from_scratch(&tilted);
-        for o in methods() {
+        let reference = least_multiplier_from_scratch(&tilted);
+        for o in dual_simplex_and_ipm() {
             let r = tilt(&st, direction, &o).unwrap();
             let (hi, lo) = (
                 r.limit.load_multiplier.unwrap(),
@@ -102,8 +75,8 @@ fn issue29_session25_no_mirror_where_the_live_load_is_not_flipped() {
     // its program's, not −λ_max.
     for live in [LiveLoad::Full, LiveLoad::Left] {
         let st = paper_arch(live);
-        let reference = least_from_scratch(&st);
-        for o in methods() {
+        let reference = least_multiplier_from_scratch(&st);
+        for o in dual_simplex_and_ipm() {
             let r = limit(&st, &o).unwrap();
             let hi = r.load_multiplier.unwrap();
             let lo = r.least_load_multiplier.unwrap();

@@ -14,32 +14,16 @@
 //! mirror (session 30)".
 
 mod support;
-use support::same_ranges;
+use support::{dual_simplex_and_ipm, least_multiplier_from_scratch, range_ends, same_ranges};
 use voussoir::analysis::limit::limit;
 use voussoir::analysis::safety::{reaction_ranges_by, RangeSolve};
 use voussoir::analysis::tilt::tilt;
-use voussoir::discretize::KinematicMap;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
 use voussoir::generate_facade::{bondeno, facade, FacadeMesh};
-use voussoir::lp::{self, LpStatus, Method, SolverOptions};
-use voussoir::programs::limit_force_program;
+use voussoir::lp::SolverOptions;
 use voussoir::{Assembly, BuildOptions, Structure};
 
 const MU: f64 = 0.6;
-
-/// The least multiplier of `st` (its own live loads) by the dual simplex from scratch.
-fn least_from_scratch(st: &Structure) -> f64 {
-    let map = KinematicMap::new(st);
-    let mut fp = limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
-    fp.lp.maximise = false;
-    let o = SolverOptions {
-        method: Method::DualSimplex,
-        ..SolverOptions::default()
-    };
-    let s = lp::solve(&fp.lp, &o).unwrap();
-    assert_eq!(s.status, LpStatus::Optimal);
-    s.x[fp.lambda.unwrap()]
-}
 
 fn frictional(mut m: voussoir::model::Model) -> Structure {
     m.override_joint_laws(Some(MU), None);
@@ -48,16 +32,6 @@ fn frictional(mut m: voussoir::model::Model) -> Structure {
 
 fn facade_of(element: f64, mesh: FacadeMesh) -> Structure {
     frictional(facade(&bondeno(element, mesh)).unwrap())
-}
-
-fn methods() -> [SolverOptions; 2] {
-    [
-        SolverOptions::default(),
-        SolverOptions {
-            method: Method::Ipm,
-            ..SolverOptions::default()
-        },
-    ]
 }
 
 #[test]
@@ -70,8 +44,8 @@ fn issue29_session30_least_multiplier_with_friction_is_the_mirror_image() {
         })
         .unwrap(),
     );
-    let reference = least_from_scratch(&arch);
-    for o in methods() {
+    let reference = least_multiplier_from_scratch(&arch);
+    for o in dual_simplex_and_ipm() {
         let r = limit(&arch, &o).unwrap();
         let (hi, lo) = (r.load_multiplier.unwrap(), r.least_load_multiplier.unwrap());
         println!(
@@ -89,8 +63,8 @@ fn issue29_session30_least_multiplier_with_friction_is_the_mirror_image() {
         let st = facade_of(2.0, mesh);
         for direction in [1.0, -1.0] {
             let tilted = st.with_weight_as_live_load([direction, 0.0]).unwrap();
-            let reference = least_from_scratch(&tilted);
-            for o in methods() {
+            let reference = least_multiplier_from_scratch(&tilted);
+            for o in dual_simplex_and_ipm() {
                 let r = tilt(&st, direction, &o).unwrap();
                 let (hi, lo) = (
                     r.limit.load_multiplier.unwrap(),
@@ -119,8 +93,8 @@ fn issue29_session30_no_mirror_with_friction_where_the_structure_is_not_symmetri
         })
         .unwrap(),
     );
-    let reference = least_from_scratch(&st);
-    for o in methods() {
+    let reference = least_multiplier_from_scratch(&st);
+    for o in dual_simplex_and_ipm() {
         let r = limit(&st, &o).unwrap();
         let (hi, lo) = (r.load_multiplier.unwrap(), r.least_load_multiplier.unwrap());
         println!(
@@ -161,13 +135,7 @@ fn issue29_session30_frictional_reaction_ranges_by_the_mirror_equal_the_programs
         warm.solves, warm.mirrored, cold.solves
     );
     assert_eq!(cold.mirrored, 0);
-    let ends = warm
-        .ranges
-        .iter()
-        .flat_map(|r| r.components.iter())
-        .flat_map(|c| [c.min, c.max])
-        .filter(|v| v.is_some())
-        .count();
+    let ends = range_ends(&warm, true);
     // The supports pair up about the façade's midline: a third of the bounded ends at least
     // come as images.
     assert!(3 * warm.mirrored >= ends, "{} of {ends}", warm.mirrored);

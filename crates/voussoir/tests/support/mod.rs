@@ -387,3 +387,39 @@ pub fn canonical_forces_of(
 ) -> &voussoir::analysis::canonical::CanonicalForces<voussoir::dim::Two> {
     r.canonical.as_ref().unwrap().forces.as_ref().unwrap()
 }
+
+/// The least load multiplier of `st` (its own live loads): the limit program minimised, solved
+/// from scratch by the dual simplex (the reference of the mirror-image tests).
+pub fn least_multiplier_from_scratch(st: &Structure) -> f64 {
+    let map = KinematicMap::new(st);
+    let mut fp = programs::limit_force_program(&map, &st.load_vector(false), &st.load_vector(true));
+    fp.lp.maximise = false;
+    let o = SolverOptions {
+        method: Method::DualSimplex,
+        ..SolverOptions::default()
+    };
+    let s = lp::solve(&fp.lp, &o).unwrap();
+    assert_eq!(s.status, LpStatus::Optimal);
+    s.x[fp.lambda.unwrap()]
+}
+
+/// The 2D default method (the dual simplex) and the CLI's at scale (HiGHS's interior point).
+pub fn dual_simplex_and_ipm() -> [SolverOptions; 2] {
+    [
+        SolverOptions::default(),
+        SolverOptions {
+            method: Method::Ipm,
+            ..SolverOptions::default()
+        },
+    ]
+}
+
+/// How many ends of `r`'s reaction ranges are bounded (`bounded`) or not.
+pub fn range_ends(r: &voussoir::result::safety::ReactionRanges, bounded: bool) -> usize {
+    r.ranges
+        .iter()
+        .flat_map(|r| r.components.iter())
+        .flat_map(|c| [c.min, c.max])
+        .filter(|v| v.is_some() == bounded)
+        .count()
+}

@@ -11,11 +11,13 @@
 //! Times: docs/performance.md, "Façade tilt, safety and capacity (session 25)".
 
 mod support;
-use support::{dual_simplex_and_ipm, facade_grid, least_multiplier_from_scratch};
+use support::{
+    dual_simplex_and_ipm, facade_grid, least_multiplier_from_scratch,
+    tilt_least_is_the_mirror_image,
+};
 use voussoir::analysis::limit::limit;
-use voussoir::analysis::tilt::tilt;
 use voussoir::generate::{arch, ArchSpec, LiveLoad};
-use voussoir::{Assembly, BuildOptions, Structure};
+use voussoir::{BuildOptions, Structure};
 
 fn paper_arch(live: LiveLoad) -> Structure {
     let m = arch(&ArchSpec {
@@ -47,25 +49,7 @@ fn issue29_session25_least_multiplier_of_a_symmetric_tilt_is_the_mirror_image() 
         assert!((lo - reference).abs() <= 1e-9 * hi, "{lo} {reference}");
     }
     // The 2.0 m grid façade (223 blocks, 44 supports) on the tilting table both ways.
-    let st = facade_grid(2.0);
-    for direction in [1.0, -1.0] {
-        let tilted = st.with_weight_as_live_load([direction, 0.0]).unwrap();
-        let reference = least_multiplier_from_scratch(&tilted);
-        for o in dual_simplex_and_ipm() {
-            let r = tilt(&st, direction, &o).unwrap();
-            let (hi, lo) = (
-                r.limit.load_multiplier.unwrap(),
-                r.limit.least_load_multiplier.unwrap(),
-            );
-            println!(
-                "façade {direction}, {:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
-                o.method
-            );
-            assert!(hi > 0.1, "{hi}");
-            assert_eq!(lo, -hi);
-            assert!((lo - reference).abs() <= 1e-9 * hi, "{lo} {reference}");
-        }
-    }
+    tilt_least_is_the_mirror_image(&facade_grid(2.0), "grid façade", 1e-9);
 }
 
 #[test]

@@ -423,3 +423,31 @@ pub fn range_ends(r: &voussoir::result::safety::ReactionRanges, bounded: bool) -
         .filter(|v| v.is_some() == bounded)
         .count()
 }
+
+/// `st` on the tilting table both ways, by [`dual_simplex_and_ipm`]: the least multiplier is
+/// exactly −λ_max (the mirror image of the largest's optimum; a program solved would agree
+/// only to its tolerance) and within `rel`·λ_max of its program solved from scratch
+/// ([`least_multiplier_from_scratch`]).
+pub fn tilt_least_is_the_mirror_image(st: &Structure, what: &str, rel: f64) {
+    for direction in [1.0, -1.0] {
+        let tilted = voussoir::Assembly::with_weight_as_live_load(st, [direction, 0.0]).unwrap();
+        let reference = least_multiplier_from_scratch(&tilted);
+        for o in dual_simplex_and_ipm() {
+            let r = voussoir::analysis::tilt::tilt(st, direction, &o).unwrap();
+            let (hi, lo) = (
+                r.limit.load_multiplier.unwrap(),
+                r.limit.least_load_multiplier.unwrap(),
+            );
+            println!(
+                "{what} {direction}, {:?}: λ_max {hi}, λ_min {lo}, from scratch {reference}",
+                o.method
+            );
+            assert!(hi > 0.1, "{what}: {hi}");
+            assert_eq!(lo, -hi, "{what}");
+            assert!(
+                (lo - reference).abs() <= rel * hi,
+                "{what}: {lo} {reference}"
+            );
+        }
+    }
+}

@@ -121,3 +121,39 @@ fn issue29_session30_clarabels_decisions_give_the_dual_simplexs_least_fraction()
     assert!(fs > 0.05 && fs < 1.0, "{fs}");
     assert!((fs - fc).abs() <= 2.0 * tolerance, "{fs} {fc}");
 }
+
+#[test]
+fn issue29_session30_a_large_frictional_limit_looks_for_no_equilibrium_with_clarabel_first() {
+    // The 0.5 m grid façade with μ = 0.6 on the tilting table: no λ has an equilibrium (it
+    // cannot stand under its own weight). The policy's options look with Clarabel first
+    // (`SolverOptions::infeasibility_first`) and answer "no equilibrium" without HiGHS's
+    // interior point; a method named by the user is honoured: HiGHS's interior point answers,
+    // the same.
+    use voussoir::analysis::limit::{dead_loads_certificate, limit, LimitStatus};
+    use voussoir::lp::policy::{infeasibility_first, options};
+    use voussoir::Assembly;
+    let m = with_friction(facade(&bondeno(0.5, FacadeMesh::Grid)).unwrap(), 0.6);
+    let st = Structure::new(&m, BuildOptions::default()).unwrap();
+    let tilted = st.with_weight_as_live_load([1.0, 0.0]).unwrap();
+    let class = class_of(&tilted, Purpose::Optimise);
+    assert!(infeasibility_first(&class));
+    let policy = options(&class, None, &SolverOptions::default());
+    assert!(policy.infeasibility_first);
+    let named = options(&class, Some(Method::Ipm), &SolverOptions::default());
+    assert!(!named.infeasibility_first);
+    let first = limit(&tilted, &policy).unwrap();
+    assert_eq!(first.status, LimitStatus::NoEquilibrium);
+    assert_eq!(first.solver.method, Method::Clarabel);
+    let by_ipm = limit(&tilted, &named).unwrap();
+    assert_eq!(by_ipm.status, LimitStatus::NoEquilibrium);
+    assert_ne!(by_ipm.solver.method, Method::Clarabel);
+    // And the dead loads alone have no equilibrium, certified (the sessions-18–28 answer:
+    // least violation 7.0e-3 of the largest load).
+    let mut message = String::new();
+    let c = dead_loads_certificate(&st, &SolverOptions::default(), None, &mut message)
+        .unwrap()
+        .unwrap();
+    println!("{message}: {c:?}");
+    assert!(c.ok);
+    assert!((c.violation.unwrap() - 7.0e-3).abs() < 0.05e-3, "{c:?}");
+}

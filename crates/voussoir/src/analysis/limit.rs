@@ -65,6 +65,27 @@ fn solve_static<S: Assembly>(
 )> {
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
+    if opts.infeasibility_first && fp.cones.is_empty() && no_equilibrium_first(&fp.lp, opts)? {
+        let sol = LpSolution {
+            status: LpStatus::Infeasible,
+            objective: f64::NAN,
+            x: vec![],
+            row_dual: vec![],
+            col_dual: vec![],
+            iterations: 0,
+            dual_objective: f64::NAN,
+            reduced_accuracy: false,
+            method: lp::Method::Clarabel,
+            tried: vec![],
+        };
+        // Decided by Clarabel (the look and its elastic program): the result names it.
+        let by = SolverOptions {
+            method: lp::Method::Clarabel,
+            ..*opts
+        };
+        let s = limit_solution(map, &fp, &live, &sol, by.info());
+        return Ok((s, fp, None, None));
+    }
     let mut basis = None;
     let sol = if fp.cones.is_empty() {
         lp::solve_warm(&fp.lp, opts, &mut basis)?
@@ -80,6 +101,35 @@ fn solve_static<S: Assembly>(
     c.basis = basis.clone();
     let raw = (c.lambda == sol.x.get(fp.lambda.unwrap_or(usize::MAX)).copied()).then_some(sol);
     Ok((c, fp, basis, raw))
+}
+
+/// Whether the limit program `lp` has no feasible point, decided before the policy's method
+/// runs ([`lp::policy::infeasibility_first`]): Clarabel on its zero-objective form, and where
+/// that says "infeasible", the elastic program by Clarabel, which certifies it (a positive
+/// least violation bounded by its duals). `false` wherever either does not say so: the
+/// program then goes to the policy's method as before.
+fn no_equilibrium_first(lp: &lp::LinearProgram, opts: &SolverOptions) -> Result<bool> {
+    let o = SolverOptions {
+        method: lp::Method::Clarabel,
+        infeasibility_first: false,
+        decision: true,
+        ..*opts
+    };
+    let t0 = std::time::Instant::now();
+    let mut zero = lp.clone();
+    zero.cost.iter_mut().for_each(|c| *c = 0.0);
+    let look = lp::solve_without_fallback(&zero, &o).map(|s| s.status);
+    let mut decided = None;
+    if matches!(look, Ok(LpStatus::Infeasible)) {
+        decided = lp::sequence::decide_feasibility(lp, &o, 0.0)?.map(|d| !d.feasible);
+    }
+    if std::env::var_os("VOUSSOIR_TRACE").is_some() {
+        eprintln!(
+            "trace: limit: infeasibility first by clarabel: {look:?}, certified infeasible {decided:?} {:.3} s",
+            t0.elapsed().as_secs_f64()
+        );
+    }
+    Ok(decided == Some(true))
 }
 
 /// The cleanup pass: when an interior point's collapse multiplier fails its certificate (or

@@ -324,6 +324,12 @@ pub struct SolverOptions {
     /// deforms a structure (`scale::without_round_off`; docs/performance.md "Capacity step
     /// round-off and the as-written face extremes (session 26)").
     pub as_written_first: bool,
+    /// Before a limit program by HiGHS's interior point, look with Clarabel for whether it has
+    /// any equilibrium at all (its zero-objective form); where Clarabel says no and the elastic
+    /// program certifies it, the answer is "no equilibrium" without the interior point. Set by
+    /// the solver policy where no method is named ([`policy::infeasibility_first`]); off by
+    /// default.
+    pub infeasibility_first: bool,
 }
 
 impl Default for SolverOptions {
@@ -339,6 +345,7 @@ impl Default for SolverOptions {
             iteration_limit: None,
             decision: false,
             as_written_first: false,
+            infeasibility_first: false,
         }
     }
 }

@@ -86,9 +86,26 @@ pub fn options(
         },
         None => super::SolverOptions {
             method: default_method(class),
+            infeasibility_first: infeasibility_first(class),
             ..*base
         },
     }
+}
+
+/// Whether an optimisation of `class` by the policy's method first asks Clarabel whether its
+/// program has any feasible point (`SolverOptions::infeasibility_first`, read by
+/// `analysis::limit`): a 2D program with Coulomb friction above [`SIMPLEX_MAX_BLOCKS_2D`]
+/// blocks. HiGHS's interior point is slow to prove such a program infeasible (the 0.5 m grid
+/// façade with μ = 0.6, tilted: 38 iterations, 24.6 s, then Clarabel's certificate 5.3 s;
+/// `tilt` 36.1 CPU s), where Clarabel's look at the zero-objective program takes about a
+/// second either way (docs/performance.md, "Frictional façades: the least multiplier and the
+/// mirror (session 30)"). Never where the user names a method: then that method answers.
+pub fn infeasibility_first(class: &ProblemClass) -> bool {
+    class.purpose == Purpose::Optimise
+        && class.dim == 2
+        && class.friction
+        && !class.cones
+        && class.blocks > SIMPLEX_MAX_BLOCKS_2D
 }
 
 /// The solver options for structure `st` when the user named no method (`method_named`

@@ -57,15 +57,10 @@ fn solve_static<S: Assembly>(
     st: &S,
     map: &KinematicMap,
     opts: &SolverOptions,
-) -> Result<(
-    LimitSolution,
-    ForceProgram,
-    Option<lp::Basis>,
-    Option<LpSolution>,
-)> {
+) -> Result<(LimitSolution, ForceProgram, Option<LpSolution>)> {
     let (dead, live) = load_vectors(st)?;
     let fp = programs::limit_force_program(map, &dead, &live);
-    if opts.infeasibility_first && fp.cones.is_empty() && no_equilibrium_first(&fp.lp, opts)? {
+    if opts.infeasibility_first && fp.cones.is_empty() && no_equilibrium_first(&fp, opts)? {
         let sol = LpSolution {
             status: LpStatus::Infeasible,
             objective: f64::NAN,
@@ -84,7 +79,7 @@ fn solve_static<S: Assembly>(
             ..*opts
         };
         let s = limit_solution(map, &fp, &live, &sol, by.info());
-        return Ok((s, fp, None, None));
+        return Ok((s, fp, None));
     }
     let mut basis = None;
     let sol = if fp.cones.is_empty() {
@@ -94,21 +89,21 @@ fn solve_static<S: Assembly>(
     };
     if sol.status == LpStatus::Optimal && programs::crushing_cap_reached(map, &fp, &sol.x) {
         let (s, fp) = solve_widened(map, &dead, &live, opts)?;
-        return Ok((s, fp, None, None));
+        return Ok((s, fp, None));
     }
     let s = limit_solution(map, &fp, &live, &sol, opts.info());
     let mut c = cleaned_up(map, &fp, &dead, &live, s, &sol, opts);
-    c.basis = basis.clone();
+    c.basis = basis;
     let raw = (c.lambda == sol.x.get(fp.lambda.unwrap_or(usize::MAX)).copied()).then_some(sol);
-    Ok((c, fp, basis, raw))
+    Ok((c, fp, raw))
 }
 
-/// Whether the limit program `lp` has no feasible point, decided before the policy's method
+/// Whether the limit program `fp` has no feasible point, decided before the policy's method
 /// runs ([`lp::policy::infeasibility_first`]): Clarabel on its zero-objective form, and where
 /// that says "infeasible", the elastic program by Clarabel, which certifies it (a positive
 /// least violation bounded by its duals). `false` wherever either does not say so: the
 /// program then goes to the policy's method as before.
-fn no_equilibrium_first(lp: &lp::LinearProgram, opts: &SolverOptions) -> Result<bool> {
+fn no_equilibrium_first(fp: &ForceProgram, opts: &SolverOptions) -> Result<bool> {
     let o = SolverOptions {
         method: lp::Method::Clarabel,
         infeasibility_first: false,
@@ -116,12 +111,13 @@ fn no_equilibrium_first(lp: &lp::LinearProgram, opts: &SolverOptions) -> Result<
         ..*opts
     };
     let t0 = std::time::Instant::now();
-    let mut zero = lp.clone();
+    let mut zero = fp.lp.clone();
     zero.cost.iter_mut().for_each(|c| *c = 0.0);
     let look = lp::solve_without_fallback(&zero, &o).map(|s| s.status);
     let mut decided = None;
     if matches!(look, Ok(LpStatus::Infeasible)) {
-        decided = lp::sequence::decide_feasibility(lp, &o, 0.0)?.map(|d| !d.feasible);
+        // The no-equilibrium certificate's own first look: the elastic program by Clarabel.
+        decided = no_equilibrium_certificate_by(fp, &o, &[lp::Method::Clarabel])?.map(|c| c.ok);
     }
     if std::env::var_os("VOUSSOIR_TRACE").is_some() {
         eprintln!(
@@ -216,7 +212,8 @@ pub fn solve_limit_checked<S: Assembly>(
     opts: &SolverOptions,
 ) -> Result<LimitSolution> {
     let t0 = std::time::Instant::now();
-    let (s, fp, basis, largest) = solve_static(st, map, opts)?;
+    let (s, fp, largest) = solve_static(st, map, opts)?;
+    let basis = s.basis.clone();
     let trace = std::env::var_os("VOUSSOIR_TRACE").is_some();
     if trace {
         eprintln!(
@@ -428,7 +425,7 @@ pub fn solve_limit_conic<S: Assembly>(
         .map(|sol| limit_solution(map, &fp, &live, &sol, solver));
     let mut fine = map.clone();
     fine.facets = CHECK_FACETS;
-    let (poly, _, _, _) = solve_static(st, &fine, opts)?;
+    let (poly, _, _) = solve_static(st, &fine, opts)?;
     let why = match &conic {
         Err(e) => format!("the cone program failed ({e})"),
         Ok(c) => match (c.status, c.lambda, poly.status, poly.lambda) {

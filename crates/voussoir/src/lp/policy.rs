@@ -101,11 +101,15 @@ pub fn options(
 /// second either way (docs/performance.md, "Frictional façades: the least multiplier and the
 /// mirror (session 30)"). Never where the user names a method: then that method answers.
 pub fn infeasibility_first(class: &ProblemClass) -> bool {
-    class.purpose == Purpose::Optimise
-        && class.dim == 2
-        && class.friction
-        && !class.cones
-        && class.blocks > SIMPLEX_MAX_BLOCKS_2D
+    class.purpose == Purpose::Optimise && large_frictional_2d(class)
+}
+
+/// A 2D program with Coulomb friction rows and no cones above [`SIMPLEX_MAX_BLOCKS_2D`]
+/// blocks: the class on which HiGHS's interior point is slow (IPX on the frictional rows) and
+/// Clarabel answers yes/no questions in about a second ([`infeasibility_first`],
+/// [`decision_method`]).
+fn large_frictional_2d(class: &ProblemClass) -> bool {
+    class.dim == 2 && class.friction && !class.cones && class.blocks > SIMPLEX_MAX_BLOCKS_2D
 }
 
 /// The solver options for structure `st` when the user named no method (`method_named`
@@ -218,11 +222,7 @@ pub fn elastic_trials(columns: usize) -> bool {
 /// The ranges keep the class's method: without the decisions' basis their first program is
 /// solved from scratch by it.
 pub fn decision_method(class: &ProblemClass) -> Option<Method> {
-    (class.purpose == Purpose::Feasibility
-        && class.dim == 2
-        && class.friction
-        && !class.cones
-        && class.blocks > SIMPLEX_MAX_BLOCKS_2D)
+    (class.purpose == Purpose::Feasibility && large_frictional_2d(class))
         .then_some(Method::Clarabel)
 }
 
